@@ -1,0 +1,71 @@
+# confsurf: `make` builds, `make run` runs the default experiment, `make test` runs the test suite,
+# `make bench` runs the benchmarks in runs/. Missing system packages are installed by scripts/install-deps.sh.
+.DEFAULT_GOAL := all
+GOALS := all run test test-serial bench clean
+
+HAVE_DEPS := $(shell pkg-config --exists petsc slepc 2>/dev/null && command -v mpirun >/dev/null && dpkg -s libopenblas0 >/dev/null 2>&1 && echo yes)
+
+ifneq ($(HAVE_DEPS),yes)
+$(GOALS):
+	bash scripts/install-deps.sh
+	$(MAKE) $@
+else
+
+CC       := $(shell pkg-config --variable=ccompiler petsc)
+CPPFLAGS := -Iinclude $(shell pkg-config --cflags slepc petsc)
+CFLAGS   ?= -O2 -g
+CFLAGS   += -std=gnu11 -Wall -Wextra -Wno-unused-parameter -Werror -MMD -MP
+LDLIBS   := $(shell pkg-config --libs slepc petsc) -lm
+
+LIB_SRC  := $(sort $(wildcard src/*/*.c))
+LIB_SRC  := $(filter-out src/driver/%,$(LIB_SRC))
+DRV_SRC  := $(wildcard src/driver/*.c)
+TEST_SRC := $(wildcard tests/unit/*.c)
+LIB_OBJ  := $(LIB_SRC:%.c=build/obj/%.o)
+DRV_OBJ  := $(DRV_SRC:%.c=build/obj/%.o)
+TESTS    := $(TEST_SRC:tests/unit/%.c=build/tests/%)
+BENCH_SRC:= $(wildcard runs/*.c)
+BENCHES  := $(BENCH_SRC:runs/%.c=build/runs/%)
+LIB      := build/libconfsurf.a
+
+all: bin/confsurf $(TESTS) $(BENCHES)
+
+build/obj/%.o: %.c
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) $(CFLAGS) -c $< -o $@
+
+$(LIB): $(LIB_OBJ)
+	@rm -f $@
+	ar rcs $@ $^
+
+bin/confsurf: $(DRV_OBJ) $(LIB)
+	@mkdir -p bin
+	$(CC) $(CFLAGS) -o $@ $(DRV_OBJ) $(LIB) $(LDLIBS)
+
+build/tests/%: tests/unit/%.c $(LIB)
+	@mkdir -p build/tests
+	$(CC) $(CPPFLAGS) $(CFLAGS) -o $@ $< $(LIB) $(LDLIBS)
+
+build/runs/%: runs/%.c $(LIB)
+	@mkdir -p build/runs
+	$(CC) $(CPPFLAGS) $(CFLAGS) -o $@ $< $(LIB) $(LDLIBS)
+
+run: all
+	bash scripts/run-default.sh
+
+test: all
+	bash tests/run.sh
+
+test-serial: all
+	CS_TEST_NPROCS=1 bash tests/run.sh
+
+bench: all
+	bash runs/run-all.sh
+
+clean:
+	rm -rf build bin
+
+-include $(LIB_OBJ:.o=.d) $(DRV_OBJ:.o=.d)
+endif
+
+.PHONY: $(GOALS)

@@ -1,0 +1,51 @@
+/* Constraints of constrained Willmore flow (soliman2021 Sec. 3 and App. D, "Constraints"): vector-valued
+   maps xi(f) = 0 with value c and Jacobian rows X. Two kinds:
+   - the conformal constraint c = C lambda(f) - c0 (one row per edge, sparse Jacobian X = C Dlambda as a Mat);
+   - "global" constraints with few rows (total area, enclosed volume, point positions): values c[k] and the
+     Jacobian rows as k dmV3 vectors (dense rows; the saddle solver appends them by bordering).
+   Also the fairing energy of soliman2021 Eq. 21 (it needs the initial positions). */
+#ifndef CS_CONSTRAINTS_H
+#define CS_CONSTRAINTS_H
+#include "cs_operators_conformal.h"
+#include "cs_energy.h"
+
+typedef struct {
+  CSMesh    mesh;
+  PetscBool interior_only; /* C0 of App. D: only interior edges (surfaces with boundary) */
+  const PetscBool *fixed;  /* Dirichlet vertices (columns dropped from X), may be NULL; not owned */
+  Mat       C, D, X;       /* cross-ratio map, Dlambda, X = C Dlambda */
+  Vec       c0, lambda;    /* target log cross ratios, work */
+} CSConformalConstraint;
+
+/* Target = the log cross ratios of positions xt (the initial mesh or a -target_mesh). */
+PETSC_EXTERN PetscErrorCode CSConformalConstraintCreate(CSMesh mesh, Vec xt, PetscBool interior_only, const PetscBool fixed[], CSConformalConstraint *cc);
+/* c = C lambda(x) - c0 (dmE1 vector; zero on boundary edges with interior_only); if wantX, X at x. */
+PETSC_EXTERN PetscErrorCode CSConformalConstraintEvaluate(CSConformalConstraint *cc, Vec x, Vec c, PetscBool wantX);
+PETSC_EXTERN PetscErrorCode CSConformalConstraintDestroy(CSConformalConstraint *cc);
+
+/* Global constraints. evaluate fills c[0..k) and, if rows != NULL, rows[0..k) (dmV3 global vectors). */
+typedef struct _p_CSGlobalConstraint *CSGlobalConstraint;
+struct _p_CSGlobalConstraint {
+  char     name[64];
+  CSMesh   mesh;
+  PetscInt k;
+  void    *ctx;
+  PetscErrorCode (*evaluate)(CSGlobalConstraint, Vec x, PetscReal c[], Vec rows[]);
+  PetscErrorCode (*destroy)(CSGlobalConstraint);
+};
+PETSC_EXTERN PetscErrorCode CSGlobalConstraintEvaluate(CSGlobalConstraint g, Vec x, PetscReal c[], Vec rows[]);
+PETSC_EXTERN PetscErrorCode CSGlobalConstraintDestroy(CSGlobalConstraint *g);
+/* Total area A(f) = target (soliman2021 Sec. 2; gradient Lf). */
+PETSC_EXTERN PetscErrorCode CSConstraintCreateArea(CSMesh mesh, PetscReal target, CSGlobalConstraint *g);
+/* Enclosed volume V(f) = target (App. B.2; gradient Eq. 23). Refused on surfaces with boundary. */
+PETSC_EXTERN PetscErrorCode CSConstraintCreateVolume(CSMesh mesh, PetscReal target, CSGlobalConstraint *g);
+/* Point constraints f_v = p_v read from a file of lines "vertex_index x y z" (0-based file-order vertex
+   indices; '#' starts a comment). Clear errors for an unreadable file, a bad line, an index out of range or
+   a repeated vertex. 3 rows per point. */
+PETSC_EXTERN PetscErrorCode CSConstraintCreatePointsFromFile(CSMesh mesh, const char option[], const char path[], CSGlobalConstraint *g);
+
+/* Fairing energy E = 1/2 ||f - f0||^2_{L2} + eps W(f) (soliman2021 Eq. 21), with the L2 norm of the input
+   mesh (mass *0(f0), fixed), so grad E = *0(f0) (f - f0) + eps grad W. */
+PETSC_EXTERN PetscErrorCode CSEnergyCreateFairing(CSMesh mesh, Vec x0, PetscReal eps, CSEnergy *e);
+
+#endif

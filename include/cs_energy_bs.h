@@ -1,0 +1,46 @@
+/* The discrete Willmore energy of Bobenko-Schroeder (bobenko-schroeder2005, "Discrete Willmore Flow"):
+   circle-intersection angles beta on the diamonds of the interior edges, W_i = sum_{edges at i} beta - 2 pi,
+   W = sum_i W_i (Sec. 2), its gradient in the scalar form of Eq. 1, the |sin beta| < eps heuristic (Sec. 3.2),
+   the n x n linearised Hessian K collecting Eq. 1's coefficients (Sec. 4), and the two boundary treatments
+   of Sec. 3.3. Distributed: the diamond of an edge on a partition cut has its two faces on different ranks;
+   the far opposite vertex is exchanged through an edge field (see bs_willmore.c). */
+#ifndef CS_ENERGY_BS_H
+#define CS_ENERGY_BS_H
+#include "cs_energy.h"
+
+/* Sec. 3.3. FIXED (G1): boundary vertices and their one-ring are fixed, W sums W_i over the non-boundary
+   vertices (the only ones where W_i is defined). FREE: a vertex at infinity closes every boundary loop;
+   W adds beta_2 (boundary edges, pi minus the opposite angle) and beta_3 (boundary vertices, the turning
+   angle of the boundary polygon) and counts the infinity vertices in the -2 pi term. On a closed mesh the
+   two agree. */
+typedef enum {
+  CS_BS_BOUNDARY_FIXED = 0,
+  CS_BS_BOUNDARY_FREE  = 1
+} CSBSBoundary;
+PETSC_EXTERN const char *const CSBSBoundaries[]; /* "fixed", "free", then PetscOptionsEnum's trailer */
+
+/* beta_eps: diamonds (and boundary angles) with |sin beta| < beta_eps contribute no gradient and no K
+   (Sec. 3.2, paper value 1e-6). */
+PETSC_EXTERN PetscErrorCode CSEnergyCreateWillmoreBS(CSMesh mesh, CSBSBoundary bc, PetscReal beta_eps, CSEnergy *e);
+
+/* Per-vertex W_i (a dmV1 global vector; 0 on boundary vertices in FIXED mode) and the total. */
+PETSC_EXTERN PetscErrorCode CSEnergyWillmoreBSVertex(CSEnergy e, Vec x, Vec Wv, PetscReal *W);
+
+/* Fixed vertices (FIXED mode with a boundary): a local array over the mesh's nv local vertices (owned by e),
+   and the global count. The gradient is exactly 0 there. */
+PETSC_EXTERN PetscErrorCode CSEnergyWillmoreBSGetFixed(CSEnergy e, const PetscBool **fixed, PetscInt *nfixed);
+
+/* The linearised Hessian K (Sec. 4): n x n scalar AIJ on dmV1's layout with grad W = K x per coordinate
+   (K collects the Eq. 1 coefficients of every diamond; rows sum to zero). Rows and columns of fixed
+   vertices are dropped and fixdiag put on their diagonal. MAT_INITIAL_MATRIX creates *K (preallocated for
+   the 1-ring with flaps), MAT_REUSE_MATRIX refills it. Also returns the gradient g (dmV3, may be NULL) and W
+   (may be NULL) from the same pass. K is not symmetric in general. */
+PETSC_EXTERN PetscErrorCode CSEnergyWillmoreBSHessian(CSEnergy e, Vec x, PetscReal fixdiag, MatReuse reuse, Mat *K, PetscReal *W, Vec g);
+
+/* Single-diamond kernel (exposed for the unit tests): P = {k, j, l, i} counter-clockwise around the diamond
+   of edge ij (bobenko-schroeder2005 Fig. 1). Returns beta (atan2 of |Im Q|, -Re Q for the quaternion cross
+   ratio Q = A B^-1 C D^-1) and M with grad_{P[r]} beta = sum_m M[r][m] P[m] (Eq. 1 and its cyclic
+   permutations); *active = PETSC_FALSE (M = 0) when sin beta < eps. */
+PETSC_EXTERN void CSBSDiamond(const PetscReal *const P[4], PetscReal eps, PetscReal *beta, PetscReal M[4][4], PetscBool *active);
+
+#endif

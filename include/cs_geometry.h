@@ -1,0 +1,109 @@
+/* Discrete geometry of the distributed mesh: per-triangle kernels (lengths, angles, cotans, areas, normals,
+   and their derivatives) and the assembled per-vertex/per-edge quantities built from them. */
+#ifndef CS_GEOMETRY_H
+#define CS_GEOMETRY_H
+#include "cs_mesh.h"
+
+/* ---- per-triangle kernels; corners p[0], p[1], p[2] counter-clockwise ---- */
+static inline void CSVecSub(const PetscReal a[3], const PetscReal b[3], PetscReal c[3])
+{
+  c[0] = a[0] - b[0];
+  c[1] = a[1] - b[1];
+  c[2] = a[2] - b[2];
+}
+static inline PetscReal CSVecDot(const PetscReal a[3], const PetscReal b[3])
+{
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+static inline void CSVecCross(const PetscReal a[3], const PetscReal b[3], PetscReal c[3])
+{
+  c[0] = a[1] * b[2] - a[2] * b[1];
+  c[1] = a[2] * b[0] - a[0] * b[2];
+  c[2] = a[0] * b[1] - a[1] * b[0];
+}
+static inline PetscReal CSVecNorm(const PetscReal a[3])
+{
+  return PetscSqrtReal(CSVecDot(a, a));
+}
+
+/* Area vector (p1-p0)x(p2-p0)/2 = A N. */
+static inline void CSTriangleAreaVector(const PetscReal *const p[3], PetscReal an[3])
+{
+  PetscReal u[3], v[3];
+  CSVecSub(p[1], p[0], u);
+  CSVecSub(p[2], p[0], v);
+  CSVecCross(u, v, an);
+  an[0] *= 0.5;
+  an[1] *= 0.5;
+  an[2] *= 0.5;
+}
+
+/* cot of the interior angle at each corner: cot = (u.v)/|u x v| with u, v the two edges leaving the corner. */
+static inline void CSTriangleCotans(const PetscReal *const p[3], PetscReal cot[3])
+{
+  for (int a = 0; a < 3; a++) {
+    PetscReal u[3], v[3], w[3];
+    CSVecSub(p[(a + 1) % 3], p[a], u);
+    CSVecSub(p[(a + 2) % 3], p[a], v);
+    CSVecCross(u, v, w);
+    cot[a] = CSVecDot(u, v) / CSVecNorm(w);
+  }
+}
+
+/* d(area)/d p[k] = 1/2 N x (p[k-1] - p[k+1]): in-plane, orthogonal to the opposite edge, pointing away. */
+static inline void CSTriangleAreaGradient(const PetscReal *const p[3], const PetscReal N[3], PetscReal dA[3][3])
+{
+  for (int k = 0; k < 3; k++) {
+    PetscReal e[3];
+    CSVecSub(p[(k + 2) % 3], p[(k + 1) % 3], e);
+    CSVecCross(N, e, dA[k]);
+    for (int d = 0; d < 3; d++) dA[k][d] *= 0.5;
+  }
+}
+
+/* d cot(angle at corner a) / d p[k] for k = 0,1,2, by the quotient rule on cot = (u.v)/(2A). */
+static inline void CSTriangleCotanGradient(const PetscReal *const p[3], int a, PetscReal dcot[3][3])
+{
+  PetscReal u[3], v[3], an[3], N[3], A, cot, dA[3][3];
+  int       b = (a + 1) % 3, c = (a + 2) % 3;
+  CSVecSub(p[b], p[a], u);
+  CSVecSub(p[c], p[a], v);
+  CSTriangleAreaVector(p, an);
+  A = CSVecNorm(an);
+  for (int d = 0; d < 3; d++) N[d] = an[d] / A;
+  cot = CSVecDot(u, v) / (2 * A);
+  CSTriangleAreaGradient(p, N, dA);
+  for (int d = 0; d < 3; d++) {
+    PetscReal dd[3];
+    dd[a] = -(u[d] + v[d]);
+    dd[b] = v[d];
+    dd[c] = u[d];
+    for (int k = 0; k < 3; k++) dcot[k][d] = (dd[k] - 2 * cot * dA[k][d]) / (2 * A);
+  }
+}
+
+/* ---- distributed quantities ---- */
+/* Local (ghosted) copy of a global dmV3 positions vector; give it back with CSMeshRestoreLocalPositions. */
+PETSC_EXTERN PetscErrorCode CSMeshGetLocalPositions(CSMesh mesh, Vec x, Vec *xl, const PetscReal **p);
+PETSC_EXTERN PetscErrorCode CSMeshRestoreLocalPositions(CSMesh mesh, Vec x, Vec *xl, const PetscReal **p);
+
+/* Barycentric vertex dual areas A_i = sum of one third of the incident face areas (the diagonal *0). */
+PETSC_EXTERN PetscErrorCode CSGeometryVertexAreas(CSMesh mesh, Vec x, Vec area);
+/* Cotan edge weights w_ij = (cot a_ij + cot b_ij)/2 (one term on boundary edges), a dmE1 vector. */
+PETSC_EXTERN PetscErrorCode CSGeometryCotanWeights(CSMesh mesh, Vec x, Vec w);
+/* Edge lengths l_ij = |f_j - f_i|, a dmE1 vector. */
+PETSC_EXTERN PetscErrorCode CSGeometryEdgeLengths(CSMesh mesh, Vec x, Vec l);
+/* Face areas (dmF1) and unit normals (3 per face, local array of length 3*nf owned by the caller). */
+PETSC_EXTERN PetscErrorCode CSGeometryFaceAreas(CSMesh mesh, Vec x, Vec area);
+/* Lf (dmV3; (Lf)_i = sum_j w_ij (f_i - f_j), the positive cotan Laplacian of soliman2021 Sec. 2) and the
+   vertex areas *0 (dmV1) in one pass over the faces; either output may be NULL. */
+PETSC_EXTERN PetscErrorCode CSGeometryLaplacianPositions(CSMesh mesh, Vec x, Vec Lf, Vec area);
+/* Integrated mean curvature vector Lf (dmV3) and pointwise h = 1/2 *0^{-1} L f (soliman2021 Eq. 27). */
+PETSC_EXTERN PetscErrorCode CSGeometryMeanCurvature(CSMesh mesh, Vec x, Vec h);
+/* Total area, enclosed volume (soliman2021 App. B.2: 1/6 sum f_i.(f_j x f_k)). */
+PETSC_EXTERN PetscErrorCode CSGeometryAreaVolume(CSMesh mesh, Vec x, PetscReal *area, PetscReal *volume);
+/* Quasi-conformal error (crane2011 Sec. 6.1): per face the ratio sigma_max/sigma_min of the affine map from
+   the reference triangle to the current one; q_mean is weighted by reference face area. q may be NULL. */
+PETSC_EXTERN PetscErrorCode CSGeometryQuasiConformal(CSMesh mesh, Vec xref, Vec x, Vec q, PetscReal *qmean, PetscReal *qmax);
+
+#endif

@@ -1,0 +1,82 @@
+/* The distributed surface mesh: an interpolated DMPlex (faces = cells, edges, vertices) distributed with
+   PT-Scotch, the dof layouts for per-vertex and per-edge fields, and the local connectivity tables that the
+   geometry kernels loop over. Everything here is collective on the mesh communicator. */
+#ifndef CS_MESH_H
+#define CS_MESH_H
+#include <petscdmplex.h>
+#include <petscsf.h>
+#include "cs_meshdata.h"
+
+typedef struct _p_CSMesh *CSMesh;
+
+struct _p_CSMesh {
+  MPI_Comm comm;
+  DM       dm;   /* interpolated, distributed DMPlex; overlap 0, so every local face is owned here */
+  DM       dmV3; /* clone of dm: 3 dofs per vertex (positions, vertex vector fields) */
+  DM       dmV1; /* clone of dm: 1 dof per vertex (areas, scalar vertex fields, the scalar Laplacian) */
+  DM       dmE1; /* clone of dm: 1 dof per edge (cross ratios, Lagrange multipliers) */
+  DM       dmF1; /* clone of dm: 1 dof per face (per-face fields) */
+
+  /* Local tables (local numbering = plex point minus stratum start; ghost vertices/edges included). */
+  PetscInt  nf, nv, ne;        /* local faces, vertices, edges */
+  PetscInt *faceVert;          /* 3*nf: oriented corners (counter-clockwise seen from outside) */
+  PetscInt *faceEdge;          /* 3*nf: faceEdge[3f+a] is the edge opposite corner a */
+  PetscInt *edgeVert;          /* 2*ne: the edge's two vertices (plex cone order) */
+  PetscBool *vertOwned;        /* nv: owned by this rank (global sums run over owned vertices) */
+  PetscBool *edgeOwned;        /* ne */
+  PetscBool *vertBoundary;     /* nv: on the mesh boundary */
+  PetscBool *edgeBoundary;     /* ne: has only one face */
+  PetscInt *vertNatural;       /* nv: vertex index in the input file (after dropping unreferenced ones) */
+  PetscInt *faceNatural;       /* nf: face index in the input file */
+
+  /* Global facts. */
+  PetscInt   Nv, Ne, Nf;
+  CSTopology topo; /* from validation; identical on every rank */
+  char       name[PETSC_MAX_PATH_LEN];
+
+  Vec x; /* positions, global vector of dmV3 */
+
+  /* Natural-order scatters (rank 0 holds the whole field in file order) for I/O of vertex/face fields. */
+  VecScatter natV3, natV1, natF1;
+  Vec        natV3vec, natV1vec, natF1vec; /* sequential on rank 0 (length 0 elsewhere) */
+
+  CSMeshData serial; /* rank 0: the validated input (faces kept for output); empty elsewhere */
+};
+
+/* Reads the mesh source from the options (see CSMeshDataFromOptions), validates, distributes. */
+PETSC_EXTERN PetscErrorCode CSMeshCreateFromOptions(MPI_Comm comm, const char prefix[], CSMesh *mesh);
+/* Distributes md (significant on rank 0 only; consumed: md is emptied). */
+PETSC_EXTERN PetscErrorCode CSMeshCreateFromData(MPI_Comm comm, CSMeshData *md, const CSTopology *topo, CSMesh *mesh);
+PETSC_EXTERN PetscErrorCode CSMeshDestroy(CSMesh *mesh);
+
+/* Vector fields in the natural (file) order, gathered on / scattered from rank 0. A natural vector is
+   a sequential Vec on rank 0 (3*Nv, Nv or Nf long) and empty elsewhere; the returned one is owned by mesh. */
+PETSC_EXTERN PetscErrorCode CSMeshGatherV3(CSMesh mesh, Vec g, Vec *nat);
+PETSC_EXTERN PetscErrorCode CSMeshScatterV3(CSMesh mesh, Vec nat, Vec g);
+PETSC_EXTERN PetscErrorCode CSMeshGatherV1(CSMesh mesh, Vec g, Vec *nat);
+PETSC_EXTERN PetscErrorCode CSMeshScatterV1(CSMesh mesh, Vec nat, Vec g);
+PETSC_EXTERN PetscErrorCode CSMeshGatherF1(CSMesh mesh, Vec g, Vec *nat);
+PETSC_EXTERN PetscErrorCode CSMeshScatterF1(CSMesh mesh, Vec nat, Vec g);
+
+/* A second set of positions with the same connectivity (a -reference or -target_mesh file), read on rank 0,
+   checked face by face against the mesh (clear error naming the option and the first differing face), and
+   scattered into a new global positions vector. */
+PETSC_EXTERN PetscErrorCode CSMeshLoadCompatiblePositions(CSMesh mesh, const char option[], const char path[], Vec *x);
+
+/* Writes the mesh with positions x (global, dmV3) to .obj/.ply (by extension), in file order, from rank 0. */
+PETSC_EXTERN PetscErrorCode CSMeshWrite(CSMesh mesh, Vec x, const char path[]);
+
+/* ParaView output: one .pvtu per step (a piece per rank, with named per-vertex and per-face fields) plus a
+   .pvd series index in dir. Fields are global Vecs of dmV1/dmV3 (vertex) or dmF1 (face). */
+typedef struct _p_CSViewer *CSViewer;
+PETSC_EXTERN PetscErrorCode CSViewerCreate(CSMesh mesh, const char dir[], CSViewer *v);
+PETSC_EXTERN PetscErrorCode CSViewerAddVertexField(CSViewer v, const char name[], Vec g);
+PETSC_EXTERN PetscErrorCode CSViewerAddFaceField(CSViewer v, const char name[], Vec g);
+PETSC_EXTERN PetscErrorCode CSViewerWriteStep(CSViewer v, Vec x, PetscReal time); /* writes and clears the fields */
+PETSC_EXTERN PetscErrorCode CSViewerDestroy(CSViewer *v);
+
+/* Logging */
+PETSC_EXTERN PetscLogEvent CS_EVENT_MeshRead, CS_EVENT_MeshDistribute, CS_EVENT_Geometry, CS_EVENT_Energy, CS_EVENT_Gradient, CS_EVENT_Assemble;
+PETSC_EXTERN PetscErrorCode CSRegisterEvents(void);
+
+#endif

@@ -1,0 +1,47 @@
+/* Serial triangle-mesh data: what a file or a generator gives, before it becomes a DMPlex.
+   Lives on rank 0 only (the one global array the design allows: the file as read). */
+#ifndef CS_MESHDATA_H
+#define CS_MESHDATA_H
+#include <petscsys.h>
+
+typedef struct {
+  PetscInt   nv, nf;                  /* vertices, triangles */
+  PetscReal *x;                       /* 3*nv coordinates */
+  PetscInt  *f;                       /* 3*nf vertex indices, 0-based, counter-clockwise = outward */
+  char       name[PETSC_MAX_PATH_LEN]; /* file name or generator description, used in messages */
+} CSMeshData;
+
+/* Facts found by validation (Euler characteristic chi = V - E + F = 2*components - 2*genus - boundary_loops). */
+typedef struct {
+  PetscInt vertices, edges, faces;
+  PetscInt boundary_edges, boundary_loops, components;
+  PetscInt euler, genus; /* genus summed over components */
+  PetscInt dropped_vertices; /* unreferenced vertices removed */
+} CSTopology;
+
+/* Readers/writers by extension: .obj, .off, .ply (ascii and binary_little_endian). Errors name the
+   file, the line (or element) and the reason. Serial, PETSC_COMM_SELF. */
+PETSC_EXTERN PetscErrorCode CSMeshDataRead(const char path[], CSMeshData *md);
+PETSC_EXTERN PetscErrorCode CSMeshDataWrite(const char path[], const CSMeshData *md);
+PETSC_EXTERN PetscErrorCode CSMeshDataDestroy(CSMeshData *md);
+PETSC_EXTERN PetscErrorCode CSMeshDataDuplicate(const CSMeshData *in, CSMeshData *out);
+
+/* Refuses (with md->name, element and reason): NaN/Inf coordinates, indices out of range, repeated-vertex
+   or zero-area faces, duplicate faces, non-manifold edges, pinched vertices, inconsistent orientation.
+   Drops unreferenced vertices with a warning (renumbering f). Fills topo. */
+PETSC_EXTERN PetscErrorCode CSMeshDataValidate(CSMeshData *md, CSTopology *topo);
+
+/* Generators (all outward-oriented). */
+PETSC_EXTERN PetscErrorCode CSMeshDataIcosphere(PetscInt level, PetscReal radius, PetscBool project, CSMeshData *md);
+PETSC_EXTERN PetscErrorCode CSMeshDataTorus(PetscReal R, PetscReal r, PetscInt n, PetscInt m, CSMeshData *md);
+PETSC_EXTERN PetscErrorCode CSMeshDataFlatTorus(PetscReal tau_re, PetscReal tau_im, PetscInt n, PetscInt m, CSMeshData *md);
+PETSC_EXTERN PetscErrorCode CSMeshDataCylinder(PetscReal radius, PetscReal height, PetscInt n, PetscInt m, CSMeshData *md);
+PETSC_EXTERN PetscErrorCode CSMeshDataDisk(PetscReal radius, PetscInt rings, CSMeshData *md);
+
+/* Builds md from the options database: -mesh FILE, or -gen icosphere|torus|flattorus|cylinder|disk with
+   -gen_level, -gen_radius, -gen_torus_R, -gen_tube_r (PETSc option names ignore case), -gen_n, -gen_m, -gen_tau_re, -gen_tau_im, -gen_height, -gen_rings,
+   then validates it (topo filled on rank 0). Collective on comm: options are read on every rank, the data is
+   loaded on rank 0 only (other ranks get an empty md); an error on rank 0 is raised on every rank (no hang). */
+PETSC_EXTERN PetscErrorCode CSMeshDataFromOptions(MPI_Comm comm, const char prefix[], CSMeshData *md, CSTopology *topo);
+
+#endif

@@ -1,0 +1,23 @@
+/* Discrete Willmore flow of Bobenko-Schroeder (bobenko-schroeder2005 Sec. 4): -task flow -flow_type bs.
+   Schemes (-bs_scheme):
+     semi  semi-implicit steps (1/dt I + K) dx = -grad W, one n x n solve per coordinate with the KSP of
+           prefix "bs_" (K: the linearised Hessian of Eq. 1, symmetric, indefinite only by a few small
+           negative eigenvalues; default CG + GAMG; an indefinite/failed solve or an energy increase rejects
+           the step and halves dt; accepted steps grow dt by -bs_dt_grow up to -bs_dt_max);
+     tao   TAO of prefix "bs_" (any -bs_tao_type; objective/gradient = W, Hessian = K on each coordinate as
+           a 3V x 3V AIJ with block size 3): -bs_tao_mode static minimises W in one TaoSolve (the static
+           problem), -bs_tao_mode euler does backward Euler steps min W(x) + |x - x_n|^2 / (2 dt).
+   Boundaries (-bs_boundary fixed|free, Sec. 3.3), heuristic threshold -bs_beta_eps (Sec. 3.2).
+   Stopping: W < -bs_atol, or a relative decrease (W_n - W_{n+1}) / W_n < -bs_rtol, or -bs_max_it steps.
+   dt has units of length^2 (K ~ 1/length^2); the default -bs_dt_rel 1 takes dt = (mean edge length)^2.
+   Summary keys: willmore_bs, iterations, converged, seconds, rejected, dt_final, seconds_per_step, scheme,
+   boundary, and the mesh facts (xref = initial positions). History: it,willmore_bs,willmore,area,dt,
+   ksp_its,seconds. ParaView (-viewer_dir): per step, vertex field W_i. */
+#ifndef CS_METHODS_BS_H
+#define CS_METHODS_BS_H
+#include "cs_driver.h"
+#include "cs_energy_bs.h"
+
+PETSC_EXTERN PetscErrorCode CSFlowBS(MPI_Comm comm, CSOutput *out);
+
+#endif

@@ -1,0 +1,87 @@
+/* Spin transformations (crane2011): prescribe a change rho of mean curvature half-density, solve the
+   eigenvalue problem (D - rho) lambda = gamma lambda for the smallest eigenpair (Sec. 5.5, Eq. 6 or 7; SLEPc
+   EPS with prefix spin_, or inverse iteration with a kept factorisation, KSP prefix spin_inverse_), then the
+   Poisson problem Delta f~ = div e~ for the new positions (Sec. 5.6, KSP prefix spin_poisson_).
+   Boundary conditions of Sec. 5.7 (prescribed tangent directions) and the nearest spin transformation of an
+   arbitrary deformation (Sec. 7.2). bin/confsurf -task spin and -task spectrum (Fig. 8). */
+#ifndef CS_METHODS_SPIN_H
+#define CS_METHODS_SPIN_H
+#include <slepceps.h>
+#include "cs_operators_dirac.h"
+
+typedef enum {
+  CS_SPIN_BOUNDARY_NONE, /* natural (free) boundary */
+  CS_SPIN_BOUNDARY_KEEP, /* target tangents = current tangents */
+  CS_SPIN_BOUNDARY_FILE, /* target tangents from -spin_boundary_file (3 values per vertex, file order) */
+  CS_SPIN_BOUNDARY_TARGET /* target tangents = outgoing boundary edges of -target_mesh (Sec. 7.4) */
+} CSSpinBoundary;
+
+typedef struct _p_CSSpin *CSSpin;
+struct _p_CSSpin {
+  CSMesh mesh;
+  DM     dm;  /* 4 dofs per vertex: lambda */
+  DM     dmr; /* reduced space of Sec. 5.7 (2 dofs on boundary vertices), or NULL */
+
+  /* options */
+  PetscBool      generalized; /* Eq. 6 instead of Eq. 7 */
+  PetscBool      shell;       /* matrix-free Dirac operator */
+  PetscBool      inverse;     /* inverse iteration instead of EPS */
+  PetscInt       inverse_its;
+  PetscBool      keep_factor; /* inverse iteration: keep the numeric factorisation across solves */
+  PetscBool      pin;         /* Poisson: pin one vertex instead of mean-zero */
+  CSSpinBoundary boundary;
+  PetscReal      target;      /* shift toward 0 (dimensionless: in units of the unit sphere's spectrum) */
+  PetscBool      target_set;
+
+  /* state */
+  Vec       mass;    /* dmV1: barycentric vertex areas M_V */
+  Vec       v4;      /* dm: V = M_V^{-1/2} rescaled to mean 1 (Sec. 5.5), 4 entries per vertex */
+  PetscReal vmean;   /* the mean of M_V^{-1/2} divided out */
+  Vec       Ttarget; /* dmV3: target unit tangents on boundary vertices (Sec. 5.7), or NULL */
+  Mat       P;       /* V U (dm x dmr) for Sec. 5.7, or NULL */
+  Mat       X, K, Y; /* X = A^H M_F A; K = the operator of the standard problem; Y = B^H M_F A (Eq. 6) */
+  EPS       eps;
+  KSP       kinv;
+  Mat       Kinv;    /* K - sigma I for the inverse iteration */
+  KSP       kpois;
+  Mat       L;
+  Vec       start;   /* initial vector of the eigensolver (reduced space), kept between solves */
+
+  /* results */
+  PetscReal gamma;    /* the eigenvalue, in the units of A^* A lambda = gamma M_V lambda (Eq. 7) or Eq. 6 */
+  PetscReal residual; /* ||K x - gamma_K x|| / ||x|| of the scaled problem */
+  PetscInt  eps_its, inner_its, poisson_its;
+  PetscLogDouble t_setup, t_eigen, t_poisson;
+};
+
+PETSC_EXTERN PetscErrorCode CSSpinCreate(CSMesh mesh, CSSpin *spin);
+PETSC_EXTERN PetscErrorCode CSSpinSetFromOptions(CSSpin spin);
+/* Boundary tangents (Sec. 5.7): Ttarget is a dmV3 global vector (read on boundary vertices), NULL for "keep". */
+PETSC_EXTERN PetscErrorCode CSSpinSetBoundaryTangents(CSSpin spin, Vec x, Vec Ttarget);
+/* Smallest eigenpair for the surface x and rho; lambda is a global vector of spin->dm. */
+PETSC_EXTERN PetscErrorCode CSSpinSolveEigen(CSSpin spin, Vec x, CSRhoLocation loc, Vec rho, Vec lambda);
+/* The nev smallest eigenvalues of Eq. 7 (rho = 0 unless given), ascending, unscaled (Fig. 8). */
+PETSC_EXTERN PetscErrorCode CSSpinSpectrum(CSSpin spin, Vec x, CSRhoLocation loc, Vec rho, PetscInt nev, PetscReal eig[], PetscInt *nconv);
+/* lambda is determined up to a constant right factor c in H (a global similarity): choose c by least squares
+   against mu (a dm vector; NULL = 1), or only a positive scale when rotation_too is false. */
+PETSC_EXTERN PetscErrorCode CSSpinNormalize(CSSpin spin, Vec lambda, Vec mu, PetscBool rotation_too);
+/* New positions from Eq. 8 and the Poisson problem; the translation is fixed by matching the vertex mean of
+   xcenter (or pinning one vertex at its position in xcenter with -spin_poisson_pin). */
+PETSC_EXTERN PetscErrorCode CSSpinReconstruct(CSSpin spin, Vec x, Vec lambda, Vec xcenter, Vec xnew);
+PETSC_EXTERN PetscErrorCode CSSpinDestroy(CSSpin *spin);
+
+/* Inputs of rho (src/methods/spin_rho.c): -rho FILE, -rho_location vertex|face, -rho_scale, -rho_bump_*,
+   -rho_mean_curvature s, -target_mesh FILE (Sec. 7.2). On return *loc/*rho describe rho (NULL if zero), and
+   with -target_mesh *xtarget holds the target positions and *mu the averaged best-fit similarities. */
+PETSC_EXTERN PetscErrorCode CSSpinRhoFromOptions(CSSpin spin, Vec x, CSRhoLocation *loc, Vec *rho, Vec *xtarget, Vec *mu);
+/* Outgoing unit boundary-edge vectors at boundary vertices (dmV3 global; zero elsewhere). */
+PETSC_EXTERN PetscErrorCode CSSpinBoundaryTangents(CSMesh mesh, Vec x, Vec T);
+/* Best-fit similarity per face averaged to vertices (Sec. 7.2), mu global on spin->dm. */
+PETSC_EXTERN PetscErrorCode CSSpinBestFitSimilarities(CSSpin spin, Vec x, Vec xt, Vec mu);
+/* Optimal per-face rho for mu (Sec. 7.2): rho_k = Re(conj(B mu)_k (D mu)_k) / |(B mu)_k|^2, dmF1 global. */
+PETSC_EXTERN PetscErrorCode CSSpinOptimalRho(CSSpin spin, Vec x, Vec mu, Vec rho);
+
+PETSC_EXTERN PetscErrorCode CSTaskSpin(MPI_Comm comm);
+PETSC_EXTERN PetscErrorCode CSTaskSpectrum(MPI_Comm comm);
+
+#endif

@@ -1,0 +1,15 @@
+/* Discrete operators as PETSc matrices on the distributed mesh. */
+#ifndef CS_OPERATORS_H
+#define CS_OPERATORS_H
+#include <petscmat.h>
+#include "cs_geometry.h"
+
+/* Positive semi-definite cotan Laplacian L = -d*d (soliman2021 Sec. 2): (Lu)_i = sum_j w_ij (u_i - u_j).
+   Scalar V x V AIJ on dmV1 (MAT_INITIAL_MATRIX creates *L, MAT_REUSE_MATRIX refills it). */
+PETSC_EXTERN PetscErrorCode CSOperatorLaplacian(CSMesh mesh, Vec x, MatReuse reuse, Mat *L);
+/* The same operator acting on R^3-valued vertex fields: 3V x 3V, block size 3, on dmV3. */
+PETSC_EXTERN PetscErrorCode CSOperatorLaplacian3(CSMesh mesh, Vec x, MatReuse reuse, Mat *L3);
+/* Vertex mass *0 = diag(barycentric dual areas) as a dmV1 vector (create with DMCreateGlobalVector). */
+PETSC_EXTERN PetscErrorCode CSOperatorMass(CSMesh mesh, Vec x, Vec mass);
+
+#endif

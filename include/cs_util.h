@@ -1,0 +1,45 @@
+/* Small utilities shared by every layer: collective error propagation, JSON summary, CSV history. */
+#ifndef CS_UTIL_H
+#define CS_UTIL_H
+#include <petscsys.h>
+
+/* Rank 0 did work that may have failed with ierr (run under PetscReturnErrorHandler so nothing was printed).
+   Every rank then raises the same error with rank 0's message, or all return 0. Collective. */
+PETSC_EXTERN PetscErrorCode CSSyncRootError(MPI_Comm comm, PetscErrorCode ierr);
+
+/* Call expr on rank 0 only, capturing its error for CSSyncRootError. Use:
+     CSRootCall(comm, CSMeshDataRead(path, &md)); */
+#define CSRootCall(comm, expr) \
+  do { \
+    PetscMPIInt    _rank; \
+    PetscErrorCode _ierr = 0; \
+    PetscCallMPI(MPI_Comm_rank((comm), &_rank)); \
+    if (!_rank) { \
+      PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL)); \
+      _ierr = (expr); \
+      PetscCall(PetscPopErrorHandler()); \
+    } \
+    PetscCall(CSSyncRootError((comm), _ierr)); \
+  } while (0)
+
+/* JSON summary: a flat object of numbers, integers, strings and number arrays, written by rank 0. */
+typedef struct _p_CSJSON *CSJSON;
+PETSC_EXTERN PetscErrorCode CSJSONCreate(MPI_Comm comm, CSJSON *js);
+PETSC_EXTERN PetscErrorCode CSJSONAddReal(CSJSON js, const char key[], PetscReal v);
+PETSC_EXTERN PetscErrorCode CSJSONAddInt(CSJSON js, const char key[], PetscInt v);
+PETSC_EXTERN PetscErrorCode CSJSONAddBool(CSJSON js, const char key[], PetscBool v);
+PETSC_EXTERN PetscErrorCode CSJSONAddString(CSJSON js, const char key[], const char v[]);
+PETSC_EXTERN PetscErrorCode CSJSONAddRealArray(CSJSON js, const char key[], PetscInt n, const PetscReal v[]);
+PETSC_EXTERN PetscErrorCode CSJSONWrite(CSJSON js, const char path[]);
+PETSC_EXTERN PetscErrorCode CSJSONDestroy(CSJSON *js);
+
+/* CSV history: header fixed at creation, one row of reals per call; rank 0 writes, flushed per row. */
+typedef struct _p_CSHistory *CSHistory;
+PETSC_EXTERN PetscErrorCode CSHistoryCreate(MPI_Comm comm, const char path[], const char header[], CSHistory *h);
+PETSC_EXTERN PetscErrorCode CSHistoryAppend(CSHistory h, PetscInt n, const PetscReal row[]);
+PETSC_EXTERN PetscErrorCode CSHistoryDestroy(CSHistory *h);
+
+/* Path helpers */
+PETSC_EXTERN PetscErrorCode CSPathExtension(const char path[], char ext[], size_t len); /* lower-case, without dot */
+
+#endif

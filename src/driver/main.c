@@ -1,0 +1,93 @@
+static const char help[] = "confsurf: conformal geometry processing of triangle meshes on PETSc/SLEPc.\n"
+                           "  -task info|flow|spin|spectrum   what to do (default info)\n"
+                           "  -mesh FILE (.obj .off .ply) or -gen icosphere|torus|flattorus|cylinder|disk\n"
+                           "  -o FILE -viewer_dir DIR -summary FILE.json -history FILE.csv -reference FILE\n"
+                           "Unknown options are an error (they are listed at the end of the run).\n";
+
+#include <slepcsys.h>
+#include "cs_driver.h"
+
+typedef struct {
+  const char *name;
+  PetscErrorCode (*run)(MPI_Comm);
+} CSTask;
+
+/* Every task of bin/confsurf; later issues add theirs here. */
+static const CSTask tasks[] = {
+  {"info", CSTaskInfo},
+  {"flow", CSTaskFlow},
+};
+
+/* Options nobody asked for are typos: name them and fail, instead of silently running something else. */
+static PetscErrorCode CheckUnusedOptions(MPI_Comm comm, PetscBool *bad)
+{
+  PetscInt N;
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsAllUsed(NULL, &N));
+  *bad = (PetscBool)(N > 0);
+  if (N) {
+    PetscInt n;
+    char   **names, **values;
+    PetscCall(PetscOptionsLeftGet(NULL, &n, &names, &values));
+    for (PetscInt i = 0; i < n; i++) PetscCall(PetscPrintf(comm, "Error: unknown or unused option -%s%s%s\n", names[i], values[i] ? " " : "", values[i] ? values[i] : ""));
+    PetscCall(PetscOptionsLeftRestore(NULL, &n, &names, &values));
+    PetscCall(PetscPrintf(comm, "Error: %" PetscInt_FMT " option(s) were not used (misspelled, or not valid for this task; see -help)\n", N));
+  }
+  PetscFunctionReturn(0);
+}
+
+/* Users get the message and where it was raised, once per communicator, instead of PETSc's full traceback
+   with its configure line; -cs_traceback restores PETSc's default handler for debugging. */
+static PetscErrorCode ConciseErrorHandler(MPI_Comm comm, int line, const char *func, const char *file, PetscErrorCode n, PetscErrorType p, const char *mess, void *ctx)
+{
+  PetscMPIInt rank = 0, size = 1;
+  if (p != PETSC_ERROR_INITIAL) return n;
+  if (comm != MPI_COMM_NULL) {
+    MPI_Comm_rank(comm, &rank);
+    MPI_Comm_size(comm, &size);
+  }
+  if (rank == 0) {
+    PetscMPIInt wrank = 0;
+    MPI_Comm_rank(MPI_COMM_WORLD, &wrank);
+    if (size == 1 && wrank) fprintf(stderr, "[rank %d] ", (int)wrank);
+    fprintf(stderr, "confsurf: error: %s\n  (%s() at %s:%d; -cs_traceback for the PETSc traceback)\n", mess ? mess : "unknown error", func, file, line);
+    fflush(stderr);
+  }
+  return n;
+}
+
+static PetscErrorCode Run(MPI_Comm comm)
+{
+  char      task[64] = "info";
+  PetscBool found    = PETSC_FALSE;
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(comm, NULL, "confsurf", NULL);
+  PetscCall(PetscOptionsString("-task", "info|flow|spin|spectrum", NULL, task, task, sizeof(task), NULL));
+  PetscOptionsEnd();
+  for (size_t i = 0; i < sizeof(tasks) / sizeof(tasks[0]); i++) {
+    PetscBool same;
+    PetscCall(PetscStrcmp(task, tasks[i].name, &same));
+    if (same) {
+      PetscCall(tasks[i].run(comm));
+      found = PETSC_TRUE;
+    }
+  }
+  PetscCheck(found, comm, PETSC_ERR_ARG_OUTOFRANGE, "-task %s: unknown task (known: info flow spin spectrum)", task);
+  PetscFunctionReturn(0);
+}
+
+int main(int argc, char **argv)
+{
+  PetscErrorCode ierr;
+  PetscBool      bad = PETSC_FALSE, traceback = PETSC_FALSE;
+
+  PetscCall(SlepcInitialize(&argc, &argv, NULL, help));
+  PetscCall(PetscOptionsHasName(NULL, NULL, "-cs_traceback", &traceback));
+  if (!traceback) PetscCall(PetscPushErrorHandler(ConciseErrorHandler, NULL));
+  ierr = Run(PETSC_COMM_WORLD);
+  if (!traceback) PetscCall(PetscPopErrorHandler());
+  if (!ierr) PetscCall(CheckUnusedOptions(PETSC_COMM_WORLD, &bad));
+  /* finalize also after an error so -malloc_debug/valgrind see a clean exit */
+  PetscCall(SlepcFinalize());
+  return ierr ? (int)ierr : (bad ? 2 : 0);
+}

@@ -1,0 +1,702 @@
+/* Discrete Willmore energy of bobenko-schroeder2005 (Secs. 2, 3.1-3.3, 4): value, per-vertex W_i, gradient
+   in the scalar form of Eq. 1 and the linearised Hessian K.
+
+   Notation (paper Fig. 1): interior edge e_ij with faces t_ijl (traversed i -> j) and t_jik (j -> i); the
+   diamond is (k, j, l, i) counter-clockwise, a = v_j - v_k, b = v_l - v_j, c = v_i - v_l, d = v_k - v_i and
+   A, B, C, D their unit vectors. cos beta = <A,C><B,D> - <A,B><C,D> - <B,C><D,A> = -Re(A B^-1 C D^-1)
+   (Sec. 3.1). Each edge contributes beta to W_i and W_j (beta^i_j = beta^j_i), so W = 2 sum_e beta - 2 pi V.
+
+   Eq. 1 (checked against central differences, see tests/unit/test_bs_energy.c: the printed signs are right):
+     -sin(beta) beta_,k = (cos b/|a|^2 - <B,C>/(|a||d|)) a + (<A,C>/(|b||d|) + <C,D>/(|b||a|)) b
+                          - (<A,B>/(|c||d|) + <B,D>/(|c||a|)) c - (cos b/|d|^2 - <B,C>/(|a||d|)) d.
+   The other three vertex gradients are the same function with cyclically permuted arguments (Sec. 3.1:
+   beta_,j = f1(j,l,i,k) etc.). Since a..d are differences of positions, grad beta = M p with a scalar 4x4 M
+   per diamond whose rows sum to zero; K = sum over diamonds of (edge weight) M is the n x n "linearised
+   Hessian" of Sec. 4, and grad W = K x holds exactly at the current positions (per coordinate).
+
+   Distribution (CSMesh has overlap 0): the two faces of an edge on a partition cut live on different ranks,
+   so the far opposite vertex of a diamond may not be local. Each face writes its opposite vertex into its
+   side's slot of a per-edge field (side 0: the face traversing edgeVert[0] -> edgeVert[1], i.e. t_ijl with
+   i = edgeVert[0]; side 1: t_jik); LocalToGlobal(ADD) + GlobalToLocal gives every rank holding the edge the
+   whole diamond. Every rank then evaluates its local diamonds; the edge owner adds the value and the rows of
+   i and j, the rank of each face adds the row of that face's opposite vertex (each face is on one rank only),
+   so every term is added exactly once. K rows/columns use global vertex numbers (the far vertex's number
+   travels with it at creation). The free boundary's beta_3 needs both boundary neighbours of a boundary
+   vertex: exchanged the same way through a per-vertex field. */
+#include "cs_energy_bs.h"
+
+const char *const CSBSBoundaries[] = {"fixed", "free", "CSBSBoundary", "CS_BS_BOUNDARY_", NULL};
+
+typedef struct {
+  CSBSBoundary bc;
+  PetscReal    eps;
+  PetscBool    freebd;   /* FREE and the mesh has a boundary */
+  DM           dmE6;     /* 6 dofs per edge: opposite vertex position per side */
+  DM           dmV6;     /* 6 dofs per vertex: previous/next boundary neighbour position (FREE) */
+  PetscInt    *oppGid;   /* 2*ne: global number of the opposite vertex per side (-1: none) */
+  PetscBool   *oppFixed; /* 2*ne */
+  PetscInt    *bdGid;    /* 2*nv: global numbers of the previous/next boundary neighbours (FREE) */
+  const PetscInt *gid;   /* nv: global vertex numbers (dmV1 local-to-global) */
+  PetscBool   *fixed;    /* nv */
+  PetscInt     nfixed;
+  PetscReal   *wEdge;    /* ne: multiplicity of beta(e) in W */
+  PetscReal    Wconst;   /* the 2 pi (number of vertices carrying W_i) term */
+  PetscReal   *gkl;      /* 6*ne scratch: weighted gradient rows of l (side 0) and k (side 1) */
+  PetscReal   *Mkl;      /* 8*ne scratch: weighted K rows of l and k */
+  PetscBool   *act;      /* ne scratch */
+  PetscInt    *nnz;      /* owned rows: preallocation bound 1 + 2 * valence */
+  ISLocalToGlobalMapping ltog;
+} BSCtx;
+
+/* ---------------------------------------------------------------- kernels */
+static inline void QuatMul(const PetscReal p[4], const PetscReal q[4], PetscReal r[4])
+{
+  /* (a, A)(b, B) = (ab - A.B, aB + bA + A x B) */
+  r[0] = p[0] * q[0] - p[1] * q[1] - p[2] * q[2] - p[3] * q[3];
+  r[1] = p[0] * q[1] + q[0] * p[1] + p[2] * q[3] - p[3] * q[2];
+  r[2] = p[0] * q[2] + q[0] * p[2] + p[3] * q[1] - p[1] * q[3];
+  r[3] = p[0] * q[3] + q[0] * p[3] + p[1] * q[2] - p[2] * q[1];
+}
+
+void CSBSDiamond(const PetscReal *const P[4], PetscReal eps, PetscReal *beta, PetscReal M[4][4], PetscBool *active)
+{
+  PetscReal E[4][3], U[4][4], len[4], G[4][4], q1[4], q2[4], q[4], cb, sb;
+  for (int r = 0; r < 4; r++) {
+    CSVecSub(P[(r + 1) % 4], P[r], E[r]); /* E0 = a = j - k, E1 = b = l - j, E2 = c = i - l, E3 = d = k - i */
+    len[r]  = CSVecNorm(E[r]);
+    U[r][0] = 0;
+    for (int t = 0; t < 3; t++) U[r][t + 1] = E[r][t] / len[r];
+  }
+  for (int r = 0; r < 4; r++)
+    for (int s = 0; s < 4; s++) G[r][s] = U[r][1] * U[s][1] + U[r][2] * U[s][2] + U[r][3] * U[s][3];
+  /* Q = A B^-1 C D^-1 = A B C D (X^-1 = -X for unit imaginary X); cos beta = -Re Q, sin beta = |Im Q| >= 0.
+     atan2 keeps beta accurate near 0 and pi where acos(cos) loses half the digits. */
+  QuatMul(U[0], U[1], q1);
+  QuatMul(q1, U[2], q2);
+  QuatMul(q2, U[3], q);
+  cb    = -q[0];
+  sb    = PetscSqrtReal(q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+  *beta = PetscAtan2Real(sb, cb);
+  *active = (PetscBool)(sb >= eps);
+  for (int r = 0; r < 4; r++)
+    for (int m = 0; m < 4; m++) M[r][m] = 0;
+  if (!*active) return;
+  /* The paper's cos beta uses exactly these dot products; use it (not -Re Q, equal up to rounding). */
+  cb = G[0][2] * G[1][3] - G[0][1] * G[2][3] - G[1][2] * G[3][0];
+  for (int r = 0; r < 4; r++) {
+    const int a = r, b = (r + 1) % 4, c = (r + 2) % 4, d = (r + 3) % 4;
+    const PetscReal la = len[a], lb = len[b], lc = len[c], ld = len[d];
+    /* Eq. 1 for f1(P[r], P[r+1], P[r+2], P[r+3]) */
+    const PetscReal aa = cb / (la * la) - G[b][c] / (la * ld);
+    const PetscReal ab = G[a][c] / (lb * ld) + G[c][d] / (lb * la);
+    const PetscReal ac = G[a][b] / (lc * ld) + G[b][d] / (lc * la);
+    const PetscReal ad = cb / (ld * ld) - G[b][c] / (la * ld);
+    /* -sin b grad = aa (P1 - P0) + ab (P2 - P1) - ac (P3 - P2) - ad (P0 - P3) */
+    M[r][a] = (aa + ad) / sb;
+    M[r][b] = (ab - aa) / sb;
+    M[r][c] = -(ab + ac) / sb;
+    M[r][d] = (ac - ad) / sb;
+  }
+}
+
+/* Angle theta at P[0] between P[1] - P[0] and P[2] - P[0], with grad_{P[r]} theta = sum_m M[r][m] P[m]
+   (the edge-angle gradient of [DMA02] App. B the paper refers to, in the same scalar form as Eq. 1:
+   grad_{P1} theta = -(1/sin)(v/(|u||v|) - cos u/|u|^2), u = P1 - P0, v = P2 - P0). */
+static void BSAngle(const PetscReal *const P[3], PetscReal eps, PetscReal *theta, PetscReal M[3][3], PetscBool *active)
+{
+  PetscReal u[3], v[3], w[3], lu, lv, cs, sn;
+  CSVecSub(P[1], P[0], u);
+  CSVecSub(P[2], P[0], v);
+  CSVecCross(u, v, w);
+  lu     = CSVecNorm(u);
+  lv     = CSVecNorm(v);
+  cs     = CSVecDot(u, v) / (lu * lv);
+  sn     = CSVecNorm(w) / (lu * lv);
+  *theta = PetscAtan2Real(sn, cs);
+  *active = (PetscBool)(sn >= eps);
+  for (int r = 0; r < 3; r++)
+    for (int m = 0; m < 3; m++) M[r][m] = 0;
+  if (!*active) return;
+  M[1][1] = cs / (sn * lu * lu);
+  M[1][2] = -1 / (sn * lu * lv);
+  M[1][0] = -(M[1][1] + M[1][2]);
+  M[2][2] = cs / (sn * lv * lv);
+  M[2][1] = -1 / (sn * lu * lv);
+  M[2][0] = -(M[2][1] + M[2][2]);
+  for (int m = 0; m < 3; m++) M[0][m] = -(M[1][m] + M[2][m]); /* translation invariance */
+}
+
+/* ---------------------------------------------------------------- setup */
+static PetscErrorCode CreateFieldDM(DM dm, PetscInt depth, PetscInt dof, const char name[], DM *out)
+{
+  PetscSection s;
+  PetscInt     pStart, pEnd, sStart, sEnd;
+  PetscFunctionBeginUser;
+  PetscCall(DMClone(dm, out));
+  PetscCall(PetscObjectSetName((PetscObject)*out, name));
+  PetscCall(DMPlexGetChart(dm, &pStart, &pEnd));
+  PetscCall(DMPlexGetDepthStratum(dm, depth, &sStart, &sEnd));
+  PetscCall(PetscSectionCreate(PetscObjectComm((PetscObject)dm), &s));
+  PetscCall(PetscSectionSetChart(s, pStart, pEnd));
+  for (PetscInt p = sStart; p < sEnd; p++) PetscCall(PetscSectionSetDof(s, p, dof));
+  PetscCall(PetscSectionSetUp(s));
+  PetscCall(DMSetLocalSection(*out, s));
+  PetscCall(PetscSectionDestroy(&s));
+  PetscFunctionReturn(0);
+}
+
+/* Sum a local field over all copies (LocalToGlobal ADD) and give every copy the sum (GlobalToLocal). */
+static PetscErrorCode SumShare(DM dm, Vec l)
+{
+  Vec g;
+  PetscFunctionBeginUser;
+  PetscCall(DMGetGlobalVector(dm, &g));
+  PetscCall(VecSet(g, 0));
+  PetscCall(DMLocalToGlobal(dm, l, ADD_VALUES, g));
+  PetscCall(DMGlobalToLocal(dm, g, INSERT_VALUES, l));
+  PetscCall(DMRestoreGlobalVector(dm, &g));
+  PetscFunctionReturn(0);
+}
+
+/* Side of face corner a's edge: 0 if the face traverses edgeVert[0] -> edgeVert[1]. */
+static inline int EdgeSide(CSMesh m, PetscInt f, int a)
+{
+  const PetscInt *v = m->faceVert + 3 * f;
+  PetscInt        e = m->faceEdge[3 * f + a];
+  return v[(a + 1) % 3] == m->edgeVert[2 * e] ? 0 : 1;
+}
+
+/* Fixed set, edge weights, the far opposite vertices' global numbers (checking that every interior edge
+   has exactly one face per side), boundary neighbours (FREE), preallocation of K. Collective. */
+static PetscErrorCode BSSetUp(CSEnergy en)
+{
+  BSCtx          *c = (BSCtx *)en->ctx;
+  CSMesh          m = en->mesh;
+  DM              dmE4, dmV4;
+  Vec             l;
+  PetscScalar    *a;
+  PetscInt        nint = 0, nbdv = 0, N[3], Nsum[3], nown = 0;
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLocalToGlobalMapping(m->dmV1, &c->ltog));
+  PetscCall(ISLocalToGlobalMappingGetIndices(c->ltog, &c->gid));
+
+  /* fixed vertices (FIXED mode): the boundary and its one-ring (Sec. 3.3) */
+  PetscCall(PetscCalloc1(m->nv, &c->fixed));
+  PetscCall(DMGetLocalVector(m->dmV1, &l));
+  PetscCall(VecSet(l, 0));
+  PetscCall(VecGetArray(l, &a));
+  if (c->bc == CS_BS_BOUNDARY_FIXED) {
+    for (PetscInt v = 0; v < m->nv; v++)
+      if (m->vertBoundary[v]) a[v] = 1;
+    for (PetscInt e = 0; e < m->ne; e++) {
+      PetscInt i = m->edgeVert[2 * e], j = m->edgeVert[2 * e + 1];
+      if (m->vertBoundary[i]) a[j] = 1;
+      if (m->vertBoundary[j]) a[i] = 1;
+    }
+  }
+  PetscCall(VecRestoreArray(l, &a));
+  PetscCall(SumShare(m->dmV1, l));
+  PetscCall(VecGetArray(l, &a));
+  N[0] = 0;
+  for (PetscInt v = 0; v < m->nv; v++) {
+    c->fixed[v] = (PetscBool)(PetscRealPart(a[v]) > 0.5);
+    if (m->vertOwned[v] && c->fixed[v]) N[0]++;
+    if (m->vertOwned[v] && !m->vertBoundary[v]) nint++;
+    if (m->vertOwned[v] && m->vertBoundary[v]) nbdv++;
+  }
+  PetscCall(VecRestoreArray(l, &a));
+  PetscCall(DMRestoreLocalVector(m->dmV1, &l));
+  N[1] = nint;
+  N[2] = nbdv;
+  PetscCall(MPIU_Allreduce(N, Nsum, 3, MPIU_INT, MPI_SUM, m->comm));
+  c->nfixed = Nsum[0];
+  c->freebd = (PetscBool)(c->bc == CS_BS_BOUNDARY_FREE && Nsum[2] > 0);
+  /* W = sum of W_i over the vertices that carry one: all of them (+ one infinity vertex per boundary loop)
+     in FREE mode, the non-boundary ones in FIXED mode */
+  if (c->bc == CS_BS_BOUNDARY_FREE) c->Wconst = 2 * PETSC_PI * (PetscReal)(m->Nv + (Nsum[2] > 0 ? m->topo.boundary_loops : 0));
+  else c->Wconst = 2 * PETSC_PI * (PetscReal)Nsum[1];
+
+  /* edge multiplicities */
+  PetscCall(PetscMalloc1(m->ne, &c->wEdge));
+  for (PetscInt e = 0; e < m->ne; e++) {
+    PetscInt i = m->edgeVert[2 * e], j = m->edgeVert[2 * e + 1];
+    if (c->bc == CS_BS_BOUNDARY_FREE) c->wEdge[e] = 2;
+    else c->wEdge[e] = (PetscReal)(!m->vertBoundary[i]) + (PetscReal)(!m->vertBoundary[j]);
+  }
+
+  /* opposite vertices per edge side: global number, count, fixed flag (positions travel per evaluation) */
+  PetscCall(CreateFieldDM(m->dm, 1, 6, "bs_edge6", &c->dmE6));
+  PetscCall(CreateFieldDM(m->dm, 1, 3, "bs_edge3", &dmE4));
+  PetscCall(DMGetLocalVector(dmE4, &l));
+  PetscCall(VecSet(l, 0));
+  PetscCall(VecGetArray(l, &a));
+  for (PetscInt f = 0; f < m->nf; f++)
+    for (int k = 0; k < 3; k++) {
+      PetscInt e = m->faceEdge[3 * f + k], o = m->faceVert[3 * f + k];
+      int      s = EdgeSide(m, f, k);
+      /* encode side s in a base-4 digit so the two sides sum without colliding: slot values
+         gid+1 (side 0 in dof 0, side 1 in dof 1) and the count in dof 2 as 1 (side 0) + 4 (side 1) */
+      a[3 * e + s] += (PetscScalar)(c->gid[o] + 1);
+      a[3 * e + 2] += s ? 4 : 1;
+    }
+  PetscCall(VecRestoreArray(l, &a));
+  PetscCall(SumShare(dmE4, l));
+  PetscCall(PetscMalloc2(2 * m->ne, &c->oppGid, 2 * m->ne, &c->oppFixed));
+  PetscCall(VecGetArray(l, &a));
+  {
+    PetscInt bad = 0, badsum;
+    for (PetscInt e = 0; e < m->ne; e++) {
+      PetscInt cnt = (PetscInt)PetscRealPart(a[3 * e + 2]);
+      if (m->edgeBoundary[e] ? !(cnt == 1 || cnt == 4) : cnt != 5) bad++;
+      for (int s = 0; s < 2; s++) c->oppGid[2 * e + s] = (PetscInt)PetscRealPart(a[3 * e + s]) - 1;
+    }
+    PetscCall(MPIU_Allreduce(&bad, &badsum, 1, MPIU_INT, MPI_SUM, m->comm));
+    PetscCheck(!badsum, m->comm, PETSC_ERR_PLIB, "bs_willmore: %" PetscInt_FMT " edges do not have one face per side (inconsistent orientation, or edge cone order differs across ranks)", badsum);
+  }
+  PetscCall(VecRestoreArray(l, &a));
+  /* fixed flag of the far vertices */
+  PetscCall(VecSet(l, 0));
+  PetscCall(VecGetArray(l, &a));
+  for (PetscInt f = 0; f < m->nf; f++)
+    for (int k = 0; k < 3; k++) {
+      PetscInt e = m->faceEdge[3 * f + k], o = m->faceVert[3 * f + k];
+      if (c->fixed[o]) a[3 * e + EdgeSide(m, f, k)] += 1;
+    }
+  PetscCall(VecRestoreArray(l, &a));
+  PetscCall(SumShare(dmE4, l));
+  PetscCall(VecGetArray(l, &a));
+  for (PetscInt e = 0; e < m->ne; e++)
+    for (int s = 0; s < 2; s++) c->oppFixed[2 * e + s] = (PetscBool)(PetscRealPart(a[3 * e + s]) > 0.5);
+  PetscCall(VecRestoreArray(l, &a));
+  PetscCall(DMRestoreLocalVector(dmE4, &l));
+  PetscCall(DMDestroy(&dmE4));
+
+  /* boundary neighbours (FREE): dof 0 = previous (the edge prev -> v), dof 1 = next (v -> next) */
+  if (c->freebd) {
+    PetscCall(CreateFieldDM(m->dm, 0, 6, "bs_vert6", &c->dmV6));
+    PetscCall(CreateFieldDM(m->dm, 0, 4, "bs_vert4", &dmV4));
+    PetscCall(DMGetLocalVector(dmV4, &l));
+    PetscCall(VecSet(l, 0));
+    PetscCall(VecGetArray(l, &a));
+    for (PetscInt f = 0; f < m->nf; f++)
+      for (int k = 0; k < 3; k++) {
+        PetscInt e = m->faceEdge[3 * f + k], i, j;
+        if (!m->edgeBoundary[e]) continue;
+        i = m->faceVert[3 * f + (k + 1) % 3];
+        j = m->faceVert[3 * f + (k + 2) % 3];
+        a[4 * i + 1] += (PetscScalar)(c->gid[j] + 1); /* next of i */
+        a[4 * i + 3] += 1;
+        a[4 * j + 0] += (PetscScalar)(c->gid[i] + 1); /* prev of j */
+        a[4 * j + 2] += 1;
+      }
+    PetscCall(VecRestoreArray(l, &a));
+    PetscCall(SumShare(dmV4, l));
+    PetscCall(PetscMalloc1(2 * m->nv, &c->bdGid));
+    PetscCall(VecGetArray(l, &a));
+    {
+      PetscInt bad = 0, badsum;
+      for (PetscInt v = 0; v < m->nv; v++) {
+        PetscInt cp = (PetscInt)PetscRealPart(a[4 * v + 2]), cn = (PetscInt)PetscRealPart(a[4 * v + 3]);
+        if (m->vertBoundary[v] && !(cp == 1 && cn == 1)) bad++;
+        c->bdGid[2 * v]     = (PetscInt)PetscRealPart(a[4 * v + 0]) - 1;
+        c->bdGid[2 * v + 1] = (PetscInt)PetscRealPart(a[4 * v + 1]) - 1;
+      }
+      PetscCall(MPIU_Allreduce(&bad, &badsum, 1, MPIU_INT, MPI_SUM, m->comm));
+      PetscCheck(!badsum, m->comm, PETSC_ERR_PLIB, "bs_willmore: %" PetscInt_FMT " boundary vertices do not have one incoming and one outgoing boundary edge", badsum);
+    }
+    PetscCall(VecRestoreArray(l, &a));
+    PetscCall(DMRestoreLocalVector(dmV4, &l));
+    PetscCall(DMDestroy(&dmV4));
+  }
+
+  /* preallocation bound of K: 1 + 2 valence (the 1-ring with flaps, Sec. 4: 13 for valence 6) per owned row */
+  PetscCall(DMGetLocalVector(m->dmV1, &l));
+  PetscCall(VecSet(l, 0));
+  PetscCall(VecGetArray(l, &a));
+  for (PetscInt e = 0; e < m->ne; e++)
+    if (m->edgeOwned[e]) {
+      a[m->edgeVert[2 * e]] += 1;
+      a[m->edgeVert[2 * e + 1]] += 1;
+    }
+  PetscCall(VecRestoreArray(l, &a));
+  PetscCall(SumShare(m->dmV1, l));
+  for (PetscInt v = 0; v < m->nv; v++)
+    if (m->vertOwned[v]) nown++;
+  PetscCall(PetscMalloc1(nown, &c->nnz));
+  PetscCall(VecGetArray(l, &a));
+  {
+    Vec      g;
+    PetscInt rstart;
+    PetscCall(DMGetGlobalVector(m->dmV1, &g));
+    PetscCall(VecGetOwnershipRange(g, &rstart, NULL));
+    PetscCall(DMRestoreGlobalVector(m->dmV1, &g));
+    for (PetscInt v = 0; v < m->nv; v++)
+      if (m->vertOwned[v]) {
+        PetscInt r = c->gid[v] - rstart;
+        PetscCheck(r >= 0 && r < nown, PETSC_COMM_SELF, PETSC_ERR_PLIB, "bs_willmore: owned vertex %" PetscInt_FMT " has global number %" PetscInt_FMT " outside the local range", v, c->gid[v]);
+        /* FREE: beta_3 at a boundary neighbour couples v to the next-but-one boundary vertex on each side */
+        c->nnz[r] = PetscMin(1 + 2 * (PetscInt)PetscRealPart(a[v]) + (c->freebd && m->vertBoundary[v] ? 2 : 0), m->Nv);
+      }
+  }
+  PetscCall(VecRestoreArray(l, &a));
+  PetscCall(DMRestoreLocalVector(m->dmV1, &l));
+  PetscCall(PetscMalloc3(6 * m->ne, &c->gkl, 8 * m->ne, &c->Mkl, m->ne, &c->act));
+  PetscFunctionReturn(0);
+}
+
+/* ---------------------------------------------------------------- evaluation */
+/* One pass: W (always), per-vertex W_i (Wv, dmV1 global, may be NULL), gradient (g, dmV3 global, may be
+   NULL), K (may be NULL, already zeroed and preallocated; assembled here with fixdiag on fixed rows). */
+static PetscErrorCode BSEvaluate(CSEnergy en, Vec x, PetscReal *Wout, Vec Wv, Vec g, Mat K, PetscReal fixdiag)
+{
+  BSCtx             *c = (BSCtx *)en->ctx;
+  CSMesh             m = en->mesh;
+  Vec                xl, el, vl = NULL, gl = NULL, wl = NULL;
+  const PetscReal   *p;
+  PetscScalar       *ea, *va = NULL, *ga = NULL, *wa = NULL;
+  PetscReal          Wl = 0, Wsum;
+  PetscFunctionBeginUser;
+  PetscCall(CSMeshGetLocalPositions(m, x, &xl, &p));
+  /* diamonds: opposite positions per edge side */
+  PetscCall(DMGetLocalVector(c->dmE6, &el));
+  PetscCall(VecSet(el, 0));
+  PetscCall(VecGetArray(el, &ea));
+  for (PetscInt f = 0; f < m->nf; f++)
+    for (int k = 0; k < 3; k++) {
+      PetscInt e = m->faceEdge[3 * f + k], o = m->faceVert[3 * f + k];
+      int      s = EdgeSide(m, f, k);
+      for (int d = 0; d < 3; d++) ea[6 * e + 3 * s + d] = p[3 * o + d];
+    }
+  PetscCall(VecRestoreArray(el, &ea));
+  PetscCall(SumShare(c->dmE6, el));
+  PetscCall(VecGetArray(el, &ea));
+  if (c->freebd) {
+    PetscCall(DMGetLocalVector(c->dmV6, &vl));
+    PetscCall(VecSet(vl, 0));
+    PetscCall(VecGetArray(vl, &va));
+    for (PetscInt f = 0; f < m->nf; f++)
+      for (int k = 0; k < 3; k++) {
+        PetscInt e = m->faceEdge[3 * f + k], i, j;
+        if (!m->edgeBoundary[e]) continue;
+        i = m->faceVert[3 * f + (k + 1) % 3];
+        j = m->faceVert[3 * f + (k + 2) % 3];
+        for (int d = 0; d < 3; d++) {
+          va[6 * i + 3 + d] = p[3 * j + d];
+          va[6 * j + d]     = p[3 * i + d];
+        }
+      }
+    PetscCall(VecRestoreArray(vl, &va));
+    PetscCall(SumShare(c->dmV6, vl));
+    PetscCall(VecGetArray(vl, &va));
+  }
+  if (g) {
+    PetscCall(DMGetLocalVector(m->dmV3, &gl));
+    PetscCall(VecSet(gl, 0));
+    PetscCall(VecGetArray(gl, &ga));
+  }
+  if (Wv) {
+    PetscCall(DMGetLocalVector(m->dmV1, &wl));
+    PetscCall(VecSet(wl, 0));
+    PetscCall(VecGetArray(wl, &wa));
+  }
+
+  /* interior edges: beta_1 (Sec. 3.1), edge owner adds value and rows i, j */
+  for (PetscInt e = 0; e < m->ne; e++) {
+    PetscInt         i = m->edgeVert[2 * e], j = m->edgeVert[2 * e + 1];
+    const PetscReal *P[4];
+    PetscReal        beta, M[4][4], w = c->wEdge[e];
+    PetscBool        active;
+    c->act[e] = PETSC_FALSE;
+    if (m->edgeBoundary[e]) continue;
+    P[0] = ea + 6 * e + 3; /* k: opposite in t_jik (side 1) */
+    P[1] = p + 3 * j;
+    P[2] = ea + 6 * e; /* l: opposite in t_ijl (side 0) */
+    P[3] = p + 3 * i;
+    CSBSDiamond(P, c->eps, &beta, M, &active);
+    if (m->edgeOwned[e]) {
+      Wl += w * beta;
+      if (wa) {
+        wa[i] += beta;
+        wa[j] += beta;
+      }
+    }
+    c->act[e] = active;
+    if (!active || w == 0) continue;
+    if (ga) {
+      for (int d = 0; d < 3; d++) {
+        PetscReal gr[4] = {0, 0, 0, 0};
+        for (int r = 0; r < 4; r++)
+          for (int q = 0; q < 4; q++) gr[r] += M[r][q] * P[q][d];
+        if (m->edgeOwned[e]) {
+          if (!c->fixed[i]) ga[3 * i + d] += w * gr[3];
+          if (!c->fixed[j]) ga[3 * j + d] += w * gr[1];
+        }
+        c->gkl[6 * e + d]     = w * gr[2]; /* side 0: l */
+        c->gkl[6 * e + 3 + d] = w * gr[0]; /* side 1: k */
+      }
+    }
+    if (K) {
+      PetscInt    cols[4] = {c->oppGid[2 * e + 1], c->gid[j], c->oppGid[2 * e], c->gid[i]};
+      PetscBool   cfix[4] = {c->oppFixed[2 * e + 1], c->fixed[j], c->oppFixed[2 * e], c->fixed[i]};
+      PetscScalar vals[4];
+      for (int q = 0; q < 4; q++) {
+        c->Mkl[8 * e + q]     = cfix[q] ? 0 : w * M[2][q];
+        c->Mkl[8 * e + 4 + q] = cfix[q] ? 0 : w * M[0][q];
+      }
+      if (m->edgeOwned[e]) {
+        const int rows[2] = {3, 1};
+        for (int r = 0; r < 2; r++) {
+          if (cfix[rows[r]]) continue;
+          for (int q = 0; q < 4; q++) vals[q] = cfix[q] ? 0 : w * M[rows[r]][q];
+          PetscCall(MatSetValues(K, 1, &cols[rows[r]], 4, cols, vals, ADD_VALUES));
+        }
+      }
+    }
+  }
+  /* rows of the opposite vertices: added by the rank of the face they belong to */
+  if (ga || K) {
+    for (PetscInt f = 0; f < m->nf; f++)
+      for (int k = 0; k < 3; k++) {
+        PetscInt e = m->faceEdge[3 * f + k], o = m->faceVert[3 * f + k];
+        int      s = EdgeSide(m, f, k);
+        if (m->edgeBoundary[e] || !c->act[e] || c->fixed[o] || c->wEdge[e] == 0) continue;
+        if (ga)
+          for (int d = 0; d < 3; d++) ga[3 * o + d] += c->gkl[6 * e + 3 * s + d];
+        if (K) {
+          PetscInt    cols[4] = {c->oppGid[2 * e + 1], c->gid[m->edgeVert[2 * e + 1]], c->oppGid[2 * e], c->gid[m->edgeVert[2 * e]]};
+          PetscScalar vals[4];
+          for (int q = 0; q < 4; q++) vals[q] = c->Mkl[8 * e + 4 * s + q];
+          PetscCall(MatSetValues(K, 1, &c->gid[o], 4, cols, vals, ADD_VALUES));
+        }
+      }
+  }
+
+  /* free boundary (Sec. 3.3): beta_2 = pi - (angle opposite the boundary edge), beta_3 = pi - (angle of the
+     boundary polygon at v_b) = the intersection angle of the two boundary lines through v_b and infinity.
+     Both are limits of the diamond formula with one vertex sent to infinity (cos beta -> <D,A> resp. <C,D>).
+     Each appears at two vertices of the closed surface (for beta_3: v_b and infinity), hence weight 2. */
+  if (c->freebd) {
+    for (PetscInt f = 0; f < m->nf; f++)
+      for (int k = 0; k < 3; k++) {
+        PetscInt         e = m->faceEdge[3 * f + k], vk, i, j;
+        const PetscReal *P[3];
+        PetscReal        th, M[3][3];
+        PetscBool        active;
+        if (!m->edgeBoundary[e]) continue;
+        vk   = m->faceVert[3 * f + k];
+        i    = m->faceVert[3 * f + (k + 1) % 3];
+        j    = m->faceVert[3 * f + (k + 2) % 3];
+        /* beta_2 of edge i -> j (the boundary edge is local on this rank only, and owned here) */
+        P[0] = p + 3 * vk;
+        P[1] = p + 3 * i;
+        P[2] = p + 3 * j;
+        BSAngle(P, c->eps, &th, M, &active);
+        Wl += 2 * (PETSC_PI - th);
+        if (wa) {
+          wa[i] += PETSC_PI - th;
+          wa[j] += PETSC_PI - th;
+        }
+        if (active) {
+          PetscInt idx[3] = {vk, i, j};
+          if (ga)
+            for (int r = 0; r < 3; r++)
+              for (int d = 0; d < 3; d++)
+                for (int q = 0; q < 3; q++) ga[3 * idx[r] + d] -= 2 * M[r][q] * P[q][d];
+          if (K) {
+            PetscInt    cols[3] = {c->gid[vk], c->gid[i], c->gid[j]};
+            PetscScalar vals[9];
+            for (int r = 0; r < 3; r++)
+              for (int q = 0; q < 3; q++) vals[3 * r + q] = -2 * M[r][q];
+            PetscCall(MatSetValues(K, 3, cols, 3, cols, vals, ADD_VALUES));
+          }
+        }
+        /* beta_3 at i (prev(i), i, j): this rank adds the row of j; at j (i, j, next(j)): the row of i */
+        for (int t = 0; t < 2; t++) {
+          PetscInt         b = t ? j : i, other = t ? i : j;
+          PetscInt         cols[3];
+          const PetscReal *Q[3];
+          PetscScalar      vals[3];
+          int              ro = 0;
+          Q[0]    = p + 3 * b;
+          cols[0] = c->gid[b];
+          if (!t) { /* b = i: prev(i) (slot 0), next = j */
+            Q[1]    = va + 6 * i;
+            cols[1] = c->bdGid[2 * i];
+            Q[2]    = p + 3 * j;
+            cols[2] = c->gid[j];
+            ro      = 2;
+          } else { /* b = j: prev = i, next(j) (slot 1) */
+            Q[1]    = p + 3 * i;
+            cols[1] = c->gid[i];
+            Q[2]    = va + 6 * j + 3;
+            cols[2] = c->bdGid[2 * j + 1];
+            ro      = 1;
+          }
+          BSAngle(Q, c->eps, &th, M, &active);
+          if (!active) continue;
+          if (ga)
+            for (int d = 0; d < 3; d++)
+              for (int q = 0; q < 3; q++) ga[3 * other + d] -= 2 * M[ro][q] * Q[q][d];
+          if (K) {
+            for (int q = 0; q < 3; q++) vals[q] = -2 * M[ro][q];
+            PetscCall(MatSetValues(K, 1, &cols[ro], 3, cols, vals, ADD_VALUES));
+          }
+        }
+      }
+    /* beta_3 value and the row of v_b itself: the owner of v_b */
+    for (PetscInt b = 0; b < m->nv; b++) {
+      const PetscReal *Q[3];
+      PetscReal        th, M[3][3];
+      PetscBool        active;
+      if (!m->vertBoundary[b] || !m->vertOwned[b]) continue;
+      Q[0] = p + 3 * b;
+      Q[1] = va + 6 * b;
+      Q[2] = va + 6 * b + 3;
+      BSAngle(Q, c->eps, &th, M, &active);
+      Wl += 2 * (PETSC_PI - th);
+      if (wa) wa[b] += PETSC_PI - th;
+      if (!active) continue;
+      if (ga)
+        for (int d = 0; d < 3; d++)
+          for (int q = 0; q < 3; q++) ga[3 * b + d] -= 2 * M[0][q] * Q[q][d];
+      if (K) {
+        PetscInt    cols[3] = {c->gid[b], c->bdGid[2 * b], c->bdGid[2 * b + 1]};
+        PetscScalar vals[3];
+        for (int q = 0; q < 3; q++) vals[q] = -2 * M[0][q];
+        PetscCall(MatSetValues(K, 1, &cols[0], 3, cols, vals, ADD_VALUES));
+      }
+    }
+    PetscCall(VecRestoreArray(vl, &va));
+    PetscCall(DMRestoreLocalVector(c->dmV6, &vl));
+  }
+  PetscCall(VecRestoreArray(el, &ea));
+  PetscCall(DMRestoreLocalVector(c->dmE6, &el));
+  PetscCall(CSMeshRestoreLocalPositions(m, x, &xl, &p));
+
+  PetscCall(MPIU_Allreduce(&Wl, &Wsum, 1, MPIU_REAL, MPIU_SUM, m->comm));
+  if (Wout) *Wout = Wsum - c->Wconst;
+  if (g) {
+    PetscCall(VecRestoreArray(gl, &ga));
+    PetscCall(VecSet(g, 0));
+    PetscCall(DMLocalToGlobal(m->dmV3, gl, ADD_VALUES, g));
+    PetscCall(DMRestoreLocalVector(m->dmV3, &gl));
+  }
+  if (Wv) {
+    PetscScalar *w;
+    PetscInt     n = 0;
+    PetscCall(VecRestoreArray(wl, &wa));
+    PetscCall(VecSet(Wv, 0));
+    PetscCall(DMLocalToGlobal(m->dmV1, wl, ADD_VALUES, Wv));
+    PetscCall(DMRestoreLocalVector(m->dmV1, &wl));
+    PetscCall(VecGetArray(Wv, &w));
+    for (PetscInt v = 0; v < m->nv; v++) {
+      if (!m->vertOwned[v]) continue;
+      if (c->bc == CS_BS_BOUNDARY_FIXED && m->vertBoundary[v]) w[n] = 0;
+      else w[n] -= 2 * PETSC_PI;
+      n++;
+    }
+    PetscCall(VecRestoreArray(Wv, &w));
+  }
+  if (K) {
+    for (PetscInt v = 0; v < m->nv; v++)
+      if (m->vertOwned[v] && c->fixed[v]) PetscCall(MatSetValue(K, c->gid[v], c->gid[v], fixdiag, ADD_VALUES));
+    PetscCall(MatAssemblyBegin(K, MAT_FINAL_ASSEMBLY));
+    PetscCall(MatAssemblyEnd(K, MAT_FINAL_ASSEMBLY));
+  }
+  PetscFunctionReturn(0);
+}
+
+/* ---------------------------------------------------------------- interface */
+static PetscErrorCode BSValue(CSEnergy e, Vec x, PetscReal *W)
+{
+  PetscFunctionBeginUser;
+  PetscCall(BSEvaluate(e, x, W, NULL, NULL, NULL, 0));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode BSGradient(CSEnergy e, Vec x, PetscReal *W, Vec g)
+{
+  PetscFunctionBeginUser;
+  PetscCall(BSEvaluate(e, x, W, NULL, g, NULL, 0));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode BSDestroy(CSEnergy e)
+{
+  BSCtx *c = (BSCtx *)e->ctx;
+  PetscFunctionBeginUser;
+  if (c->gid) PetscCall(ISLocalToGlobalMappingRestoreIndices(c->ltog, &c->gid));
+  PetscCall(DMDestroy(&c->dmE6));
+  PetscCall(DMDestroy(&c->dmV6));
+  PetscCall(PetscFree2(c->oppGid, c->oppFixed));
+  PetscCall(PetscFree(c->bdGid));
+  PetscCall(PetscFree(c->fixed));
+  PetscCall(PetscFree(c->wEdge));
+  PetscCall(PetscFree(c->nnz));
+  PetscCall(PetscFree3(c->gkl, c->Mkl, c->act));
+  PetscCall(PetscFree(c));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSEnergyCreateWillmoreBS(CSMesh mesh, CSBSBoundary bc, PetscReal beta_eps, CSEnergy *e)
+{
+  BSCtx *c;
+  PetscFunctionBeginUser;
+  PetscCheck(beta_eps >= 0 && beta_eps < 1, mesh->comm, PETSC_ERR_ARG_OUTOFRANGE, "-bs_beta_eps %g: must lie in [0, 1)", (double)beta_eps);
+  PetscCall(CSEnergyCreateShell(mesh, "willmore_bs", e));
+  PetscCall(PetscNew(&c));
+  c->bc          = bc;
+  c->eps         = beta_eps;
+  (*e)->ctx      = c;
+  (*e)->value    = BSValue;
+  (*e)->gradient = BSGradient;
+  (*e)->destroy  = BSDestroy;
+  PetscCall(BSSetUp(*e));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSEnergyWillmoreBSVertex(CSEnergy e, Vec x, Vec Wv, PetscReal *W)
+{
+  PetscReal Wt;
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(CS_EVENT_Energy, 0, 0, 0, 0));
+  PetscCall(BSEvaluate(e, x, &Wt, Wv, NULL, NULL, 0));
+  PetscCall(PetscLogEventEnd(CS_EVENT_Energy, 0, 0, 0, 0));
+  if (W) *W = Wt;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSEnergyWillmoreBSGetFixed(CSEnergy e, const PetscBool **fixed, PetscInt *nfixed)
+{
+  BSCtx *c = (BSCtx *)e->ctx;
+  PetscFunctionBeginUser;
+  if (fixed) *fixed = c->fixed;
+  if (nfixed) *nfixed = c->nfixed;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSEnergyWillmoreBSHessian(CSEnergy e, Vec x, PetscReal fixdiag, MatReuse reuse, Mat *K, PetscReal *W, Vec g)
+{
+  BSCtx   *c = (BSCtx *)e->ctx;
+  CSMesh   m = e->mesh;
+  PetscReal Wt;
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(CS_EVENT_Assemble, 0, 0, 0, 0));
+  if (reuse == MAT_INITIAL_MATRIX) {
+    Vec      v;
+    PetscInt n;
+    PetscCall(DMGetGlobalVector(m->dmV1, &v));
+    PetscCall(VecGetLocalSize(v, &n));
+    PetscCall(DMRestoreGlobalVector(m->dmV1, &v));
+    PetscCall(MatCreate(m->comm, K));
+    PetscCall(MatSetSizes(*K, n, n, m->Nv, m->Nv));
+    PetscCall(MatSetType(*K, MATAIJ));
+    PetscCall(MatSeqAIJSetPreallocation(*K, 0, c->nnz));
+    PetscCall(MatMPIAIJSetPreallocation(*K, 0, c->nnz, 0, c->nnz));
+    PetscCall(MatSetOption(*K, MAT_IGNORE_ZERO_ENTRIES, PETSC_FALSE));
+  } else PetscCall(MatZeroEntries(*K));
+  PetscCall(BSEvaluate(e, x, &Wt, NULL, g, *K, fixdiag));
+  if (W) *W = Wt;
+  PetscCall(PetscLogEventEnd(CS_EVENT_Assemble, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}

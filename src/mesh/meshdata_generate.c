@@ -1,0 +1,252 @@
+/* Generated test surfaces: icosphere, torus of revolution, flat (rectangular-class) torus, open cylinder,
+   flat disk. All are outward oriented (normals by the right-hand rule on counter-clockwise corners) and have
+   no duplicate vertices. */
+#include "cs_meshdata.h"
+#include <stdio.h>
+
+static PetscErrorCode MeshAlloc(PetscInt nv, PetscInt nf, CSMeshData *md)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscMemzero(md, sizeof(*md)));
+  md->nv = nv;
+  md->nf = nf;
+  PetscCall(PetscMalloc1(3 * nv, &md->x));
+  PetscCall(PetscMalloc1(3 * nf, &md->f));
+  PetscFunctionReturn(0);
+}
+
+/* Two triangles (a b c), (a c d) for the quad a b c d, counter-clockwise. */
+static inline void Quad(PetscInt *t, PetscInt a, PetscInt b, PetscInt c, PetscInt d)
+{
+  t[0] = a;
+  t[1] = b;
+  t[2] = c;
+  t[3] = a;
+  t[4] = c;
+  t[5] = d;
+}
+
+/* Closed surfaces only: flip every face if the enclosed (signed) volume is negative. */
+static void OrientOutward(CSMeshData *md)
+{
+  PetscReal vol = 0;
+  for (PetscInt i = 0; i < md->nf; i++) {
+    const PetscReal *a = md->x + 3 * md->f[3 * i], *b = md->x + 3 * md->f[3 * i + 1], *c = md->x + 3 * md->f[3 * i + 2];
+    vol += a[0] * (b[1] * c[2] - b[2] * c[1]) + a[1] * (b[2] * c[0] - b[0] * c[2]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
+  }
+  if (vol >= 0) return;
+  for (PetscInt i = 0; i < md->nf; i++) {
+    PetscInt t       = md->f[3 * i + 1];
+    md->f[3 * i + 1] = md->f[3 * i + 2];
+    md->f[3 * i + 2] = t;
+  }
+}
+
+static void Project(PetscReal *p, PetscReal radius)
+{
+  PetscReal s = radius / PetscSqrtReal(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+  for (int d = 0; d < 3; d++) p[d] *= s;
+}
+
+/* One 1-to-4 split; each edge gets one midpoint, found by a search in the bucket of its smaller vertex
+   (buckets hold about 3 edges, so this is linear in the mesh size). */
+static PetscErrorCode Subdivide(CSMeshData *md, PetscBool project, PetscReal radius)
+{
+  PetscInt   nv = md->nv, nf = md->nf, nh = 3 * nf, ne = 0, *off, *fill, *hi, *id, *mid, *f;
+  PetscReal *x;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscCalloc1(nv + 1, &off));
+  PetscCall(PetscMalloc4(nv, &fill, nh, &hi, nh, &id, nh, &mid));
+  for (PetscInt h = 0; h < nh; h++) off[PetscMin(md->f[h], md->f[h % 3 == 2 ? h - 2 : h + 1]) + 1]++;
+  for (PetscInt v = 0; v < nv; v++) off[v + 1] += off[v];
+  PetscCall(PetscArraycpy(fill, off, nv));
+  for (PetscInt h = 0; h < nh; h++) {
+    PetscInt a = md->f[h], b = md->f[h % 3 == 2 ? h - 2 : h + 1], lo = PetscMin(a, b), s;
+    for (s = off[lo]; s < fill[lo] && hi[s] != PetscMax(a, b); s++) {}
+    if (s == fill[lo]) {
+      hi[s] = PetscMax(a, b);
+      id[s] = nv + ne++;
+      fill[lo]++;
+    }
+    mid[h] = id[s];
+  }
+  PetscCall(PetscMalloc1(3 * (nv + ne), &x));
+  PetscCall(PetscMalloc1(12 * nf, &f));
+  PetscCall(PetscArraycpy(x, md->x, 3 * nv));
+  for (PetscInt h = 0; h < nh; h++) {
+    PetscInt a = md->f[h], b = md->f[h % 3 == 2 ? h - 2 : h + 1];
+    for (int d = 0; d < 3; d++) x[3 * mid[h] + d] = 0.5 * (md->x[3 * a + d] + md->x[3 * b + d]);
+    if (project) Project(x + 3 * mid[h], radius);
+  }
+  for (PetscInt i = 0; i < nf; i++) {
+    const PetscInt *t = md->f + 3 * i, *m = mid + 3 * i; /* m[k] is the midpoint of t[k] t[k+1] */
+    PetscInt        n[12] = {t[0], m[0], m[2], m[0], t[1], m[1], m[2], m[1], t[2], m[0], m[1], m[2]};
+    PetscCall(PetscArraycpy(f + 12 * i, n, 12));
+  }
+  PetscCall(PetscFree(off));
+  PetscCall(PetscFree4(fill, hi, id, mid));
+  PetscCall(PetscFree(md->x));
+  PetscCall(PetscFree(md->f));
+  md->x  = x;
+  md->f  = f;
+  md->nv = nv + ne;
+  md->nf = 4 * nf;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSMeshDataIcosphere(PetscInt level, PetscReal radius, PetscBool project, CSMeshData *md)
+{
+  const PetscReal p      = (1 + PetscSqrtReal(5.0)) / 2;
+  const PetscReal v[36]  = {-1, p, 0, 1, p, 0, -1, -p, 0, 1, -p, 0, 0, -1, p, 0, 1, p, 0, -1, -p, 0, 1, -p, p, 0, -1, p, 0, 1, -p, 0, -1, -p, 0, 1};
+  const PetscInt  t[60]  = {0, 11, 5, 0, 5, 1, 0, 1, 7, 0, 7, 10, 0, 10, 11, 1, 5, 9, 5, 11, 4, 11, 10, 2, 10, 7, 6, 7, 1, 8, 3, 9, 4, 3, 4, 2, 3, 2, 6, 3, 6, 8, 3, 8, 9, 4, 9, 5, 2, 4, 11, 6, 2, 10, 8, 6, 7, 9, 8, 1};
+
+  PetscFunctionBeginUser;
+  PetscCheck(level >= 0 && level <= 10, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "icosphere level %" PetscInt_FMT " not in [0, 10]", level);
+  PetscCheck(radius > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "icosphere radius %g must be positive", (double)radius);
+  PetscCall(MeshAlloc(12, 20, md));
+  for (PetscInt i = 0; i < 12; i++) {
+    PetscCall(PetscArraycpy(md->x + 3 * i, v + 3 * i, 3));
+    Project(md->x + 3 * i, radius); /* circumradius = radius, projected or not */
+  }
+  PetscCall(PetscArraycpy(md->f, t, 60));
+  OrientOutward(md);
+  for (PetscInt l = 0; l < level; l++) PetscCall(Subdivide(md, project, radius));
+  snprintf(md->name, sizeof(md->name), "icosphere(level=%" PetscInt_FMT ",radius=%g,project=%s)", level, (double)radius, project ? "true" : "false");
+  PetscFunctionReturn(0);
+}
+
+/* (u, v) grid on a closed n x m torus: vertex i*m + j, quads (i,j) (i+1,j) (i+1,j+1) (i,j+1). */
+static void TorusGrid(PetscInt n, PetscInt m, PetscInt *f)
+{
+  for (PetscInt i = 0; i < n; i++)
+    for (PetscInt j = 0; j < m; j++) {
+      PetscInt i1 = (i + 1) % n, j1 = (j + 1) % m;
+      Quad(f + 6 * (i * m + j), i * m + j, i1 * m + j, i1 * m + j1, i * m + j1);
+    }
+}
+
+PetscErrorCode CSMeshDataTorus(PetscReal R, PetscReal r, PetscInt n, PetscInt m, CSMeshData *md)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(R > r && r > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "torus needs -gen_torus_R > -gen_tube_r > 0, got R = %g, r = %g", (double)R, (double)r);
+  PetscCheck(n >= 3 && m >= 3, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "torus needs n, m >= 3, got %" PetscInt_FMT ", %" PetscInt_FMT, n, m);
+  PetscCall(MeshAlloc(n * m, 2 * n * m, md));
+  for (PetscInt i = 0; i < n; i++)
+    for (PetscInt j = 0; j < m; j++) {
+      PetscReal u = 2 * PETSC_PI * i / n, v = 2 * PETSC_PI * j / m, rho = R + r * PetscCosReal(v);
+      PetscReal *p = md->x + 3 * (i * m + j);
+      p[0]         = rho * PetscCosReal(u);
+      p[1]         = rho * PetscSinReal(u);
+      p[2]         = r * PetscSinReal(v);
+    }
+  TorusGrid(n, m, md->f);
+  OrientOutward(md);
+  snprintf(md->name, sizeof(md->name), "torus(R=%g,r=%g,n=%" PetscInt_FMT ",m=%" PetscInt_FMT ")", (double)R, (double)r, n, m);
+  PetscFunctionReturn(0);
+}
+
+/* Flat torus of conformal class tau = i*tau_im.
+   In S^3 c C^2 the torus T = {(r1 e^{ia}, r2 e^{ib})}, r1^2 + r2^2 = 1, is intrinsically flat: (a, b) -> point is
+   a local isometry from the rectangle [0, 2 pi r1) x [0, 2 pi r2) with opposite sides glued, so its conformal
+   class is tau = i r2/r1; we take r2/r1 = tau_im (tau_im = 1 is the Clifford torus). Stereographic projection
+   from N = (0,0,0,1), X -> (X1, X2, X3)/(1 - X4), is conformal and N is not on T (|X3 + i X4| = r2 < 1), so the
+   image is a bounded torus of revolution about the x3 axis with the same conformal class (for tau_im = 1 it is
+   the torus of revolution with R/r = sqrt 2). The n x m grid is uniform in (a, b): with m/n = tau_im the cells
+   are squares of the flat metric, i.e. the mesh is a discretisation of exactly this conformal class.
+   A class with Re tau != 0 is a sheared lattice; its flat torus is not a product of two circles in S^3, so it
+   has no realisation of this kind and is refused. */
+PetscErrorCode CSMeshDataFlatTorus(PetscReal tau_re, PetscReal tau_im, PetscInt n, PetscInt m, CSMeshData *md)
+{
+  PetscReal r1 = 1 / PetscSqrtReal(1 + tau_im * tau_im), r2 = tau_im * r1;
+
+  PetscFunctionBeginUser;
+  PetscCheck(tau_re == 0, PETSC_COMM_SELF, PETSC_ERR_SUP, "flat torus with tau = %g + %g i: only rectangular conformal classes (tau_re = 0) have a flat realisation as a product of circles in S^3", (double)tau_re, (double)tau_im);
+  PetscCheck(tau_im > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "flat torus needs tau_im > 0, got %g", (double)tau_im);
+  PetscCheck(n >= 3 && m >= 3, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "flat torus needs n, m >= 3, got %" PetscInt_FMT ", %" PetscInt_FMT, n, m);
+  PetscCall(MeshAlloc(n * m, 2 * n * m, md));
+  for (PetscInt i = 0; i < n; i++)
+    for (PetscInt j = 0; j < m; j++) {
+      PetscReal a = 2 * PETSC_PI * i / n, b = 2 * PETSC_PI * j / m, s = 1 / (1 - r2 * PetscSinReal(b));
+      PetscReal *p = md->x + 3 * (i * m + j);
+      p[0]         = s * r1 * PetscCosReal(a);
+      p[1]         = s * r1 * PetscSinReal(a);
+      p[2]         = s * r2 * PetscCosReal(b);
+    }
+  TorusGrid(n, m, md->f);
+  OrientOutward(md);
+  snprintf(md->name, sizeof(md->name), "flattorus(tau=%g+%gi,n=%" PetscInt_FMT ",m=%" PetscInt_FMT ")", (double)tau_re, (double)tau_im, n, m);
+  PetscFunctionReturn(0);
+}
+
+/* Open cylinder about the z axis, z in [-height/2, height/2]: n around, m rows of quads, two boundary loops. */
+PetscErrorCode CSMeshDataCylinder(PetscReal radius, PetscReal height, PetscInt n, PetscInt m, CSMeshData *md)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(radius > 0 && height > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "cylinder needs radius, height > 0, got %g, %g", (double)radius, (double)height);
+  PetscCheck(n >= 3 && m >= 1, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "cylinder needs n >= 3, m >= 1, got %" PetscInt_FMT ", %" PetscInt_FMT, n, m);
+  PetscCall(MeshAlloc(n * (m + 1), 2 * n * m, md));
+  for (PetscInt j = 0; j <= m; j++)
+    for (PetscInt i = 0; i < n; i++) {
+      PetscReal  u = 2 * PETSC_PI * i / n, *p = md->x + 3 * (j * n + i);
+      p[0] = radius * PetscCosReal(u);
+      p[1] = radius * PetscSinReal(u);
+      p[2] = height * ((PetscReal)j / m - 0.5);
+    }
+  /* d/du x d/dz points away from the axis: (i,j) (i+1,j) (i+1,j+1) is counter-clockwise seen from outside */
+  for (PetscInt j = 0; j < m; j++)
+    for (PetscInt i = 0; i < n; i++) {
+      PetscInt i1 = (i + 1) % n;
+      Quad(md->f + 6 * (j * n + i), j * n + i, j * n + i1, (j + 1) * n + i1, (j + 1) * n + i);
+    }
+  snprintf(md->name, sizeof(md->name), "cylinder(radius=%g,height=%g,n=%" PetscInt_FMT ",m=%" PetscInt_FMT ")", (double)radius, (double)height, n, m);
+  PetscFunctionReturn(0);
+}
+
+/* Flat disk in the z = 0 plane, normal +z: the centre and rings k = 1..rings of 6k vertices at radius
+   k/rings, all starting at angle 0. Consecutive rings are zipped by angle (exact integer comparison), which
+   gives 12k - 6 triangles between rings k-1 and k: V = 1 + 3 rings (rings+1), F = 6 rings^2. */
+PetscErrorCode CSMeshDataDisk(PetscReal radius, PetscInt rings, CSMeshData *md)
+{
+  PetscInt nf = 0;
+
+  PetscFunctionBeginUser;
+  PetscCheck(radius > 0 && rings >= 1, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "disk needs radius > 0 and rings >= 1, got %g, %" PetscInt_FMT, (double)radius, rings);
+  PetscCall(MeshAlloc(1 + 3 * rings * (rings + 1), 6 * rings * rings, md));
+  md->x[0] = md->x[1] = md->x[2] = 0;
+  for (PetscInt k = 1; k <= rings; k++) {
+    PetscInt start = 1 + 3 * k * (k - 1);
+    for (PetscInt t = 0; t < 6 * k; t++) {
+      PetscReal a = 2 * PETSC_PI * t / (6 * k), *p = md->x + 3 * (start + t);
+      p[0] = radius * k / rings * PetscCosReal(a);
+      p[1] = radius * k / rings * PetscSinReal(a);
+      p[2] = 0;
+    }
+  }
+  for (PetscInt t = 0; t < 6; t++) {
+    PetscInt tri[3] = {0, 1 + t, 1 + (t + 1) % 6};
+    PetscCall(PetscArraycpy(md->f + 3 * nf++, tri, 3));
+  }
+  for (PetscInt k = 2; k <= rings; k++) {
+    PetscInt A = 6 * (k - 1), B = 6 * k, in0 = 1 + 3 * (k - 1) * (k - 2), out0 = 1 + 3 * k * (k - 1), i = 0, o = 0;
+    while (i < A || o < B) {
+      PetscInt tri[3];
+      /* advance on the ring whose next vertex comes first in angle: (i+1)/A < (o+1)/B */
+      if (o == B || (i < A && (i + 1) * B < (o + 1) * A)) {
+        tri[0] = in0 + i % A;
+        tri[1] = out0 + o % B;
+        tri[2] = in0 + (i + 1) % A;
+        i++;
+      } else {
+        tri[0] = in0 + i % A;
+        tri[1] = out0 + o % B;
+        tri[2] = out0 + (o + 1) % B;
+        o++;
+      }
+      PetscCall(PetscArraycpy(md->f + 3 * nf++, tri, 3));
+    }
+  }
+  PetscCheck(nf == md->nf, PETSC_COMM_SELF, PETSC_ERR_PLIB, "disk: %" PetscInt_FMT " faces made, %" PetscInt_FMT " expected", nf, md->nf);
+  snprintf(md->name, sizeof(md->name), "disk(radius=%g,rings=%" PetscInt_FMT ")", (double)radius, rings);
+  PetscFunctionReturn(0);
+}

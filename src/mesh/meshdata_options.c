@@ -1,0 +1,89 @@
+/* The mesh source from the options database: a file (-mesh) or a generator (-gen). Options are read on every
+   rank; the data is made and validated on rank 0 only, and an error there is raised on every rank. */
+#include "cs_meshdata.h"
+#include "cs_util.h"
+
+typedef enum {
+  GEN_ICOSPHERE,
+  GEN_TORUS,
+  GEN_FLATTORUS,
+  GEN_CYLINDER,
+  GEN_DISK
+} GenType;
+static const char *const GenNames[] = {"icosphere", "torus", "flattorus", "cylinder", "disk"};
+
+typedef struct {
+  char      path[PETSC_MAX_PATH_LEN];
+  PetscBool file;
+  GenType   gen;
+  PetscInt  level, n, m, rings;
+  PetscReal radius, R, r, tau_re, tau_im, height;
+  PetscBool project;
+} MeshSource;
+
+/* Rank 0, under PetscReturnErrorHandler: on failure nothing stays allocated in md. */
+static PetscErrorCode MeshSourceLoad(const MeshSource *src, CSMeshData *md, CSTopology *topo)
+{
+  PetscErrorCode ierr;
+
+  PetscFunctionBeginUser;
+  if (src->file) PetscCall(CSMeshDataRead(src->path, md));
+  else {
+    switch (src->gen) {
+    case GEN_ICOSPHERE: PetscCall(CSMeshDataIcosphere(src->level, src->radius, src->project, md)); break;
+    case GEN_TORUS: PetscCall(CSMeshDataTorus(src->R, src->r, src->n, src->m, md)); break;
+    case GEN_FLATTORUS: PetscCall(CSMeshDataFlatTorus(src->tau_re, src->tau_im, src->n, src->m, md)); break;
+    case GEN_CYLINDER: PetscCall(CSMeshDataCylinder(src->radius, src->height, src->n, src->m, md)); break;
+    case GEN_DISK: PetscCall(CSMeshDataDisk(src->radius, src->rings, md)); break;
+    }
+  }
+  ierr = CSMeshDataValidate(md, topo);
+  if (ierr) { /* keep the validation message (CSSyncRootError reads it) and free the data */
+    PetscCall(CSMeshDataDestroy(md));
+    return ierr;
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSMeshDataFromOptions(MPI_Comm comm, const char prefix[], CSMeshData *md, CSTopology *topo)
+{
+  MeshSource  src;
+  PetscBool   genset = PETSC_FALSE;
+  PetscInt    gen    = GEN_ICOSPHERE;
+  const char *pre    = prefix ? prefix : "";
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscMemzero(md, sizeof(*md)));
+  PetscCall(PetscMemzero(topo, sizeof(*topo)));
+  PetscCall(PetscMemzero(&src, sizeof(src)));
+  src.level   = 3;
+  src.radius  = 1;
+  src.project = PETSC_TRUE;
+  src.R       = PetscSqrtReal(2.0); /* with r = 1: the Clifford torus' conformal class (square) */
+  src.r       = 1;
+  src.n       = 32;
+  src.m       = 16;
+  src.tau_re  = 0;
+  src.tau_im  = 1;
+  src.height  = 2;
+  src.rings   = 8;
+  PetscOptionsBegin(comm, prefix, "Mesh source", NULL);
+  PetscCall(PetscOptionsString("-mesh", "Mesh file (.obj, .off, .ply)", "CSMeshDataFromOptions", src.path, src.path, sizeof(src.path), &src.file));
+  PetscCall(PetscOptionsEList("-gen", "Generated mesh", "CSMeshDataFromOptions", GenNames, 5, GenNames[gen], &gen, &genset));
+  PetscCall(PetscOptionsInt("-gen_level", "Icosphere: subdivision level", "CSMeshDataIcosphere", src.level, &src.level, NULL));
+  PetscCall(PetscOptionsReal("-gen_radius", "Icosphere, cylinder, disk: radius", "CSMeshDataIcosphere", src.radius, &src.radius, NULL));
+  PetscCall(PetscOptionsBool("-gen_project", "Icosphere: project the new vertices to the sphere", "CSMeshDataIcosphere", src.project, &src.project, NULL));
+  PetscCall(PetscOptionsReal("-gen_torus_R", "Torus: radius R of the big circle (PETSc option names ignore case, hence not -gen_R)", "CSMeshDataTorus", src.R, &src.R, NULL));
+  PetscCall(PetscOptionsReal("-gen_tube_r", "Torus: radius r of the tube", "CSMeshDataTorus", src.r, &src.r, NULL));
+  PetscCall(PetscOptionsInt("-gen_n", "Torus, flat torus, cylinder: segments around", "CSMeshDataTorus", src.n, &src.n, NULL));
+  PetscCall(PetscOptionsInt("-gen_m", "Torus, flat torus: segments around the tube; cylinder: rows", "CSMeshDataTorus", src.m, &src.m, NULL));
+  PetscCall(PetscOptionsReal("-gen_tau_re", "Flat torus: real part of the conformal class tau (must be 0)", "CSMeshDataFlatTorus", src.tau_re, &src.tau_re, NULL));
+  PetscCall(PetscOptionsReal("-gen_tau_im", "Flat torus: imaginary part of tau", "CSMeshDataFlatTorus", src.tau_im, &src.tau_im, NULL));
+  PetscCall(PetscOptionsReal("-gen_height", "Cylinder: height", "CSMeshDataCylinder", src.height, &src.height, NULL));
+  PetscCall(PetscOptionsInt("-gen_rings", "Disk: number of rings", "CSMeshDataDisk", src.rings, &src.rings, NULL));
+  PetscOptionsEnd();
+  PetscCheck(src.file != genset, comm, PETSC_ERR_ARG_WRONG, "give exactly one of -%smesh FILE and -%sgen icosphere|torus|flattorus|cylinder|disk (%s)", pre, pre, src.file ? "both were given" : "neither was given");
+  src.gen = (GenType)gen;
+  CSRootCall(comm, MeshSourceLoad(&src, md, topo));
+  PetscFunctionReturn(0);
+}

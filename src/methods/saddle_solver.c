@@ -1,0 +1,291 @@
+/* The linear solve of each CGD / PGD / GD step (soliman2021 Algorithm 1 line 11) through one KSP of
+   prefix "flow_". See include/cs_methods_willmore.h for the block layout. Default solver (measured on this
+   machine, PETSC-NOTES "The CGD saddle system"): FGMRES + PCFIELDSPLIT Schur with the multiplier (edge)
+   block first, A00 = -I_Q/t_mu diagonal, so `selfp` is the exact Schur complement
+   S = H/t + t_mu X^T I_Q^{-1} X (sparse SPD), factored by MUMPS Cholesky with AMD ordering; the outer
+   iteration then converges in 1-2 steps. The default is inserted as a preset when -flow_pc_type is not
+   given; any single preset option can be overridden on the command line. */
+#include "cs_methods_willmore.h"
+
+static const char *PresetSchur[][2] = {
+  {"-flow_ksp_type", "fgmres"},
+  {"-flow_ksp_rtol", "1e-9"},
+  {"-flow_pc_type", "fieldsplit"},
+  {"-flow_pc_fieldsplit_type", "schur"},
+  {"-flow_pc_fieldsplit_schur_fact_type", "full"},
+  {"-flow_pc_fieldsplit_schur_precondition", "selfp"},
+  {"-flow_fieldsplit_0_ksp_type", "preonly"},
+  {"-flow_fieldsplit_0_pc_type", "jacobi"},
+  {"-flow_fieldsplit_1_ksp_type", "preonly"},
+  {"-flow_fieldsplit_1_pc_type", "cholesky"},
+  {"-flow_fieldsplit_1_pc_factor_mat_solver_type", "mumps"},
+  {"-flow_fieldsplit_1_mat_mumps_icntl_7", "0"},
+};
+/* Without multipliers: the metric alone, CG preconditioned by its Cholesky factorisation. */
+static const char *PresetMetric[][2] = {
+  {"-flow_ksp_type", "cg"},
+  {"-flow_ksp_rtol", "1e-9"},
+  {"-flow_pc_type", "cholesky"},
+  {"-flow_pc_factor_mat_solver_type", "mumps"},
+  {"-flow_mat_mumps_icntl_7", "0"},
+};
+
+static PetscErrorCode InsertPreset(CSSaddle *s, const char *p[][2], PetscInt n)
+{
+  PetscBool set;
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsHasName(NULL, NULL, "-flow_pc_type", &set));
+  if (set) PetscFunctionReturn(0); /* the user chose a solver: no preset at all */
+  PetscCall(PetscMalloc1(n, &s->preset));
+  for (PetscInt i = 0; i < n; i++) {
+    PetscCall(PetscOptionsHasName(NULL, NULL, p[i][0], &set));
+    if (set) continue;
+    PetscCall(PetscOptionsSetValue(NULL, p[i][0], p[i][1]));
+    PetscCall(PetscStrallocpy(p[i][0], &s->preset[s->npreset++]));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSSaddleCreate(CSMesh mesh, PetscBool edges, PetscInt k, CSSaddle *s)
+{
+  char      type[16] = "nest";
+  PetscBool aij;
+  PetscFunctionBeginUser;
+  PetscCall(PetscMemzero(s, sizeof(*s)));
+  s->mesh      = mesh;
+  s->edges     = edges;
+  s->k         = k;
+  s->reuse_its = 0;
+  PetscOptionsBegin(mesh->comm, NULL, "Willmore flow linear solver", NULL);
+  PetscCall(PetscOptionsString("-flow_saddle_mat", "nest|aij: the saddle matrix as MATNEST (fieldsplit) or converted to AIJ (monolithic direct solvers)", NULL, type, type, sizeof(type), NULL));
+  PetscCall(PetscOptionsInt("-flow_pc_reuse_its", "Keep the preconditioner (factorisation) of an earlier step while the last solve needed at most this many iterations (0: refactor every step)", NULL, s->reuse_its, &s->reuse_its, NULL));
+  PetscOptionsEnd();
+  PetscCall(PetscStrcmp(type, "aij", &aij));
+  s->monolithic = aij;
+  if (!aij) {
+    PetscBool nest;
+    PetscCall(PetscStrcmp(type, "nest", &nest));
+    PetscCheck(nest, mesh->comm, PETSC_ERR_ARG_OUTOFRANGE, "-flow_saddle_mat %s: unknown (nest|aij)", type);
+  }
+  if (edges) PetscCall(InsertPreset(s, PresetSchur, (PetscInt)(sizeof(PresetSchur) / sizeof(PresetSchur[0]))));
+  else PetscCall(InsertPreset(s, PresetMetric, (PetscInt)(sizeof(PresetMetric) / sizeof(PresetMetric[0]))));
+  PetscCall(KSPCreate(mesh->comm, &s->ksp));
+  PetscCall(KSPSetOptionsPrefix(s->ksp, "flow_"));
+  if (k) {
+    PetscCall(PetscMalloc1(k, &s->G));
+    PetscCall(PetscCalloc1(k, &s->W));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSSaddleSetOperators(CSSaddle *s, Mat H, PetscReal t, Vec iq, PetscReal tmu, Mat X, Vec rows[], const PetscReal g[])
+{
+  PetscBool first = s->H11 ? PETSC_FALSE : PETSC_TRUE;
+  Mat       op;
+  PetscFunctionBeginUser;
+  if (first) PetscCall(MatDuplicate(H, MAT_COPY_VALUES, &s->H11));
+  else PetscCall(MatCopy(H, s->H11, SAME_NONZERO_PATTERN));
+  PetscCall(MatScale(s->H11, 1.0 / t));
+  if (s->fixed) PetscCall(MatZeroRowsColumnsIS(s->H11, s->fixed, 1.0 / t, NULL, NULL));
+  if (s->edges) {
+    Vec d;
+    if (first) {
+      PetscInt nE, NE;
+      PetscCall(VecGetLocalSize(iq, &nE));
+      PetscCall(VecGetSize(iq, &NE));
+      PetscCall(MatCreateAIJ(s->mesh->comm, nE, nE, NE, NE, 1, NULL, 0, NULL, &s->A00));
+      PetscCall(MatSetUp(s->A00));
+      PetscCall(MatSetOption(s->A00, MAT_SYMMETRIC, PETSC_TRUE));
+    }
+    PetscCall(VecDuplicate(iq, &d));
+    PetscCall(VecCopy(iq, d));
+    PetscCall(VecScale(d, -1.0 / tmu));
+    PetscCall(MatDiagonalSet(s->A00, d, INSERT_VALUES));
+    PetscCall(VecDestroy(&d));
+    PetscCall(MatTranspose(X, first ? MAT_INITIAL_MATRIX : MAT_REUSE_MATRIX, &s->Xt));
+    if (first) {
+      Mat blocks[4] = {s->A00, X, s->Xt, s->H11};
+      PetscCall(MatCreateNest(s->mesh->comm, 2, NULL, 2, NULL, blocks, &s->K));
+      PetscCall(MatNestGetISs(s->K, s->is, NULL));
+      PetscCall(PetscObjectReference((PetscObject)s->is[0]));
+      PetscCall(PetscObjectReference((PetscObject)s->is[1]));
+      PetscCall(MatCreateVecs(s->K, NULL, &s->b));
+    } else {
+      Mat Xold;
+      PetscCall(MatNestGetSubMat(s->K, 0, 1, &Xold));
+      if (Xold != X) PetscCall(MatNestSetSubMat(s->K, 0, 1, X));
+    }
+    PetscCall(MatAssemblyBegin(s->K, MAT_FINAL_ASSEMBLY)); /* bumps the nest's state: the PC sees a new operator */
+    PetscCall(MatAssemblyEnd(s->K, MAT_FINAL_ASSEMBLY));
+    if (s->monolithic) {
+      PetscCall(MatConvert(s->K, MATAIJ, s->Kaij ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX, &s->Kaij));
+      PetscCall(MatSetOption(s->Kaij, MAT_SYMMETRIC, PETSC_TRUE));
+      op = s->Kaij;
+    } else op = s->K;
+  } else {
+    op = s->H11;
+    if (first) PetscCall(MatCreateVecs(s->H11, NULL, &s->b));
+  }
+  if (first) PetscCall(VecDuplicate(s->b, &s->z));
+  for (PetscInt j = 0; j < s->k; j++) {
+    if (!s->B) PetscCall(PetscCalloc1(s->k, &s->B));
+    if (!s->B[j]) PetscCall(VecDuplicate(s->b, &s->B[j]));
+    if (!s->W[j]) PetscCall(VecDuplicate(s->b, &s->W[j]));
+    PetscCall(VecSet(s->B[j], 0));
+    if (s->edges) {
+      Vec sub;
+      PetscCall(VecGetSubVector(s->B[j], s->is[1], &sub));
+      PetscCall(VecCopy(rows[j], sub));
+      PetscCall(VecRestoreSubVector(s->B[j], s->is[1], &sub));
+    } else PetscCall(VecCopy(rows[j], s->B[j]));
+    s->G[j] = g[j] / tmu;
+  }
+  PetscCall(KSPSetOperators(s->ksp, op, op));
+  if (!s->have_pc) {
+    PC pc;
+    PetscCall(KSPSetFromOptions(s->ksp));
+    PetscCall(KSPGetPC(s->ksp, &pc));
+    if (s->edges && !s->monolithic) {
+      PetscBool fs;
+      PetscCall(PetscObjectTypeCompare((PetscObject)pc, PCFIELDSPLIT, &fs));
+      if (fs) {
+        PetscCall(PCFieldSplitSetIS(pc, "0", s->is[0])); /* multipliers (edges) first: PETSC-NOTES */
+        PetscCall(PCFieldSplitSetIS(pc, "1", s->is[1])); /* positions */
+      }
+    }
+    s->have_pc = PETSC_TRUE;
+    PetscCall(KSPSetReusePreconditioner(s->ksp, PETSC_FALSE));
+  } else {
+    /* an earlier factorisation is a strong preconditioner for the slightly changed matrix (PETSC-NOTES) */
+    PetscBool reuse = (PetscBool)(s->reuse_its > 0 && s->last_its <= s->reuse_its);
+    PetscCall(KSPSetReusePreconditioner(s->ksp, reuse));
+  }
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode KSolve(CSSaddle *s, Vec b, Vec z, PetscInt *its)
+{
+  KSPConvergedReason reason;
+  PetscInt           n;
+  PetscFunctionBeginUser;
+  PetscCall(KSPSolve(s->ksp, b, z));
+  PetscCall(KSPGetConvergedReason(s->ksp, &reason));
+  PetscCall(KSPGetIterationNumber(s->ksp, &n));
+  PetscCheck(reason > 0, s->mesh->comm, PETSC_ERR_NOT_CONVERGED, "flow: the linear solve (prefix -flow_) did not converge: %s after %" PetscInt_FMT " iterations; try -flow_saddle_mat aij -flow_pc_type cholesky -flow_pc_factor_mat_solver_type mumps, or a smaller -flow_t", KSPConvergedReasons[reason], n);
+  *its += n;
+  PetscFunctionReturn(0);
+}
+
+/* k x k dense solve (column-major S), Gaussian elimination with partial pivoting; k is a handful. */
+static PetscErrorCode SmallSolve(MPI_Comm comm, PetscInt k, PetscScalar *S, PetscScalar *b)
+{
+  PetscReal big = 0;
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < k * k; i++) big = PetscMax(big, PetscAbsScalar(S[i]));
+  for (PetscInt c = 0; c < k; c++) {
+    PetscInt p = c;
+    for (PetscInt r = c + 1; r < k; r++)
+      if (PetscAbsScalar(S[r + c * k]) > PetscAbsScalar(S[p + c * k])) p = r;
+    PetscCheck(PetscAbsScalar(S[p + c * k]) > 1e-14 * big, comm, PETSC_ERR_MAT_LU_ZRPVT, "flow: the bordered system of the area/volume/point constraints is singular: are the constraints dependent (e.g. area + volume + points fixing the same thing)?");
+    if (p != c) {
+      for (PetscInt j = 0; j < k; j++) {
+        PetscScalar tmp = S[c + j * k];
+        S[c + j * k]    = S[p + j * k];
+        S[p + j * k]    = tmp;
+      }
+      PetscScalar tb = b[c];
+      b[c]           = b[p];
+      b[p]           = tb;
+    }
+    for (PetscInt r = c + 1; r < k; r++) {
+      PetscScalar f = S[r + c * k] / S[c + c * k];
+      for (PetscInt j = c; j < k; j++) S[r + j * k] -= f * S[c + j * k];
+      b[r] -= f * b[c];
+    }
+  }
+  for (PetscInt c = k - 1; c >= 0; c--) {
+    for (PetscInt j = c + 1; j < k; j++) b[c] -= S[c + j * k] * b[j];
+    b[c] /= S[c + c * k];
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSSaddleSolve(CSSaddle *s, Vec rE, Vec rV, const PetscReal rX[], Vec zE, Vec zV, PetscReal zX[], PetscInt *its)
+{
+  PetscInt n = 0;
+  PetscFunctionBeginUser;
+  if (s->edges) {
+    Vec sub;
+    PetscCall(VecGetSubVector(s->b, s->is[0], &sub));
+    PetscCall(VecCopy(rE, sub));
+    PetscCall(VecRestoreSubVector(s->b, s->is[0], &sub));
+    PetscCall(VecGetSubVector(s->b, s->is[1], &sub));
+    PetscCall(VecCopy(rV, sub));
+    PetscCall(VecRestoreSubVector(s->b, s->is[1], &sub));
+  } else PetscCall(VecCopy(rV, s->b));
+  PetscCall(KSolve(s, s->b, s->z, &n));
+  if (s->k) {
+    /* bordering: z = K^{-1}(r - B zX), (B^T K^{-1} B + G) zX = B^T K^{-1} r - rX */
+    PetscScalar *S, *rhs;
+    PetscCall(PetscMalloc2(s->k * s->k, &S, s->k, &rhs));
+    for (PetscInt j = 0; j < s->k; j++) PetscCall(KSolve(s, s->B[j], s->W[j], &n));
+    for (PetscInt i = 0; i < s->k; i++) {
+      PetscScalar v;
+      PetscCall(VecDot(s->z, s->B[i], &v));
+      rhs[i] = v - rX[i];
+      for (PetscInt j = 0; j < s->k; j++) {
+        PetscCall(VecDot(s->W[j], s->B[i], &v));
+        S[i + j * s->k] = v + (i == j ? s->G[i] : 0.0);
+      }
+    }
+    PetscCall(SmallSolve(s->mesh->comm, s->k, S, rhs));
+    for (PetscInt j = 0; j < s->k; j++) {
+      zX[j] = PetscRealPart(rhs[j]);
+      PetscCall(VecAXPY(s->z, -rhs[j], s->W[j]));
+    }
+    PetscCall(PetscFree2(S, rhs));
+  }
+  if (s->edges) {
+    Vec sub;
+    PetscCall(VecGetSubVector(s->z, s->is[0], &sub));
+    PetscCall(VecCopy(sub, zE));
+    PetscCall(VecRestoreSubVector(s->z, s->is[0], &sub));
+    PetscCall(VecGetSubVector(s->z, s->is[1], &sub));
+    PetscCall(VecCopy(sub, zV));
+    PetscCall(VecRestoreSubVector(s->z, s->is[1], &sub));
+  } else PetscCall(VecCopy(s->z, zV));
+  s->last_its = n / (s->k + 1);
+  *its        = n;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSSaddleDestroy(CSSaddle *s)
+{
+  PetscFunctionBeginUser;
+  PetscCall(KSPDestroy(&s->ksp));
+  PetscCall(MatDestroy(&s->A00));
+  PetscCall(MatDestroy(&s->Xt));
+  PetscCall(MatDestroy(&s->H11));
+  PetscCall(MatDestroy(&s->K));
+  PetscCall(MatDestroy(&s->Kaij));
+  PetscCall(ISDestroy(&s->is[0]));
+  PetscCall(ISDestroy(&s->is[1]));
+  PetscCall(VecDestroy(&s->b));
+  PetscCall(VecDestroy(&s->z));
+  for (PetscInt j = 0; j < s->k; j++) {
+    if (s->B) PetscCall(VecDestroy(&s->B[j]));
+    if (s->W) PetscCall(VecDestroy(&s->W[j]));
+  }
+  PetscCall(PetscFree(s->B));
+  PetscCall(PetscFree(s->W));
+  PetscCall(PetscFree(s->G));
+  /* preset defaults that the chosen solver did not read are removed, so they do not count as unused */
+  for (PetscInt i = 0; i < s->npreset; i++) {
+    PetscBool used;
+    PetscCall(PetscOptionsUsed(NULL, s->preset[i], &used));
+    if (!used) PetscCall(PetscOptionsClearValue(NULL, s->preset[i]));
+    PetscCall(PetscFree(s->preset[i]));
+  }
+  PetscCall(PetscFree(s->preset));
+  PetscFunctionReturn(0);
+}

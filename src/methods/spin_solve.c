@@ -1,0 +1,620 @@
+/* The eigenvalue problem of spin transformations (crane2011 Sec. 5.5, 5.7): the smallest eigenpair of
+     (AV)^* (AV) lam^ = gamma lam^          (Eq. 7, standard; V = M_V^{-1/2} rescaled to mean 1), or
+     A^* A lam = gamma B^* A lam            (Eq. 6, generalised, -spin_problem generalized),
+   optionally restricted to lam = V U lam^ with the boundary parametrisation U of Sec. 5.7.
+   Solved with SLEPc EPS (prefix spin_: shift-and-invert toward a small negative target with a Cholesky
+   factorisation by default; every part selectable by -spin_eps_*, -spin_st_*) or by inverse iteration with a
+   kept factorisation (-spin_solver inverse, KSP prefix spin_inverse_; crane2013 Sec. 6.4.2). */
+#include "cs_methods_spin.h"
+
+static PetscLogEvent CS_EVENT_SpinEigen = 0, CS_EVENT_SpinPoisson = 0;
+
+PetscErrorCode CSSpinCreate(CSMesh mesh, CSSpin *spin)
+{
+  CSSpin s;
+  PetscFunctionBeginUser;
+  if (!CS_EVENT_SpinEigen) {
+    PetscClassId id;
+    PetscCall(PetscClassIdRegister("confsurf spin", &id));
+    PetscCall(PetscLogEventRegister("CSSpinEigen", id, &CS_EVENT_SpinEigen));
+    PetscCall(PetscLogEventRegister("CSSpinPoisson", id, &CS_EVENT_SpinPoisson));
+  }
+  PetscCall(PetscNew(&s));
+  s->mesh        = mesh;
+  s->inverse_its = 1;
+  s->target      = 1e-2;
+  PetscCall(CSDiracCreateDM(mesh, NULL, &s->dm));
+  *spin = s;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSSpinSetFromOptions(CSSpin s)
+{
+  const char *problems[] = {"standard", "generalized"}, *types[] = {"aij", "shell"}, *solvers[] = {"eps", "inverse"};
+  const char *bnames[] = {"none", "keep", "file", "target"};
+  PetscInt    ip = s->generalized, it = s->shell, is = s->inverse, ib = (PetscInt)s->boundary;
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(s->mesh->comm, NULL, "Spin transformations (crane2011)", NULL);
+  PetscCall(PetscOptionsEList("-spin_problem", "Eigenvalue problem: standard (Eq. 7) or generalized (Eq. 6)", NULL, problems, 2, problems[ip], &ip, NULL));
+  PetscCall(PetscOptionsEList("-spin_dirac_type", "Dirac operator: assembled AIJ (block size 4) or matrix-free shell", NULL, types, 2, types[it], &it, NULL));
+  PetscCall(PetscOptionsEList("-spin_solver", "Smallest eigenpair by SLEPc EPS or by inverse iteration", NULL, solvers, 2, solvers[is], &is, NULL));
+  PetscCall(PetscOptionsInt("-spin_inverse_its", "Inverse iteration steps", NULL, s->inverse_its, &s->inverse_its, NULL));
+  PetscCall(PetscOptionsBool("-spin_inverse_keep_factor", "Inverse iteration: keep the first factorisation as preconditioner for later solves", NULL, s->keep_factor, &s->keep_factor, NULL));
+  PetscCall(PetscOptionsReal("-spin_shift", "Shift toward 0 (negative target), in units of the unit sphere's spectrum", NULL, s->target, &s->target, &s->target_set));
+  PetscCall(PetscOptionsBool("-spin_poisson_pin", "Fix the translation by pinning the first vertex instead of matching the mean", NULL, s->pin, &s->pin, NULL));
+  PetscCall(PetscOptionsEList("-spin_boundary", "Boundary condition (Sec. 5.7): none (free), keep tangents, tangents from -spin_boundary_file, or from -target_mesh", NULL, bnames, 4, bnames[ib], &ib, NULL));
+  PetscOptionsEnd();
+  s->generalized = (PetscBool)(ip == 1);
+  s->shell       = (PetscBool)(it == 1);
+  s->inverse     = (PetscBool)(is == 1);
+  s->boundary    = (CSSpinBoundary)ib;
+  PetscCheck(s->inverse_its >= 1, s->mesh->comm, PETSC_ERR_ARG_OUTOFRANGE, "-spin_inverse_its %" PetscInt_FMT ": need at least 1", s->inverse_its);
+  PetscCheck(s->target > 0, s->mesh->comm, PETSC_ERR_ARG_OUTOFRANGE, "-spin_shift %g: must be positive (the target is -shift)", (double)s->target);
+  PetscCheck(!(s->shell && s->generalized), s->mesh->comm, PETSC_ERR_SUP, "-spin_dirac_type shell supports only -spin_problem standard");
+  PetscCheck(!(s->shell && s->inverse), s->mesh->comm, PETSC_ERR_SUP, "-spin_dirac_type shell needs -spin_solver eps (inverse iteration factors the assembled matrix)");
+  if (s->boundary != CS_SPIN_BOUNDARY_NONE) {
+    PetscCheck(s->mesh->topo.boundary_loops > 0, s->mesh->comm, PETSC_ERR_ARG_WRONG, "-spin_boundary %s: mesh %s has no boundary", bnames[ib], s->mesh->name);
+    PetscCheck(!s->shell, s->mesh->comm, PETSC_ERR_SUP, "-spin_boundary %s needs -spin_dirac_type aij (the reduced operator is a Galerkin product)", bnames[ib]);
+  }
+  PetscFunctionReturn(0);
+}
+
+/* M_V and V = M_V^{-1/2} divided by its mean (Sec. 5.5: "improved numerics if the entries of V are rescaled to
+   have mean value 1"). */
+static PetscErrorCode ComputeScaling(CSSpin s, Vec x)
+{
+  const PetscScalar *m;
+  PetscScalar       *v;
+  PetscInt           n;
+  PetscReal          sum = 0;
+  PetscFunctionBeginUser;
+  if (!s->mass) PetscCall(DMCreateGlobalVector(s->mesh->dmV1, &s->mass));
+  if (!s->v4) PetscCall(DMCreateGlobalVector(s->dm, &s->v4));
+  PetscCall(CSGeometryVertexAreas(s->mesh, x, s->mass));
+  PetscCall(VecGetLocalSize(s->mass, &n));
+  PetscCall(VecGetArrayRead(s->mass, &m));
+  for (PetscInt i = 0; i < n; i++) {
+    PetscCheck(PetscRealPart(m[i]) > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "vertex with zero area");
+    sum += 1 / PetscSqrtReal(PetscRealPart(m[i]));
+  }
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &sum, 1, MPIU_REAL, MPIU_SUM, s->mesh->comm));
+  s->vmean = sum / s->mesh->Nv;
+  PetscCall(VecGetArray(s->v4, &v));
+  for (PetscInt i = 0; i < n; i++)
+    for (int c = 0; c < 4; c++) v[4 * i + c] = 1 / PetscSqrtReal(PetscRealPart(m[i])) / s->vmean;
+  PetscCall(VecRestoreArray(s->v4, &v));
+  PetscCall(VecRestoreArrayRead(s->mass, &m));
+  PetscFunctionReturn(0);
+}
+
+/* P = V U (crane2011 Sec. 5.7): on interior vertices V_i I_4; on boundary vertex i the 4x2 block
+   V_i [W_i | W_i T~_i], lam_i = W_i (a + b T~_i). W_i rotates the current tangent T_i into T~_i under the
+   similarity lam -> conj(lam) v lam: W_i = cos(theta/2) - sin(theta/2) w with w = T x T~ / sin(theta).
+   NOTE: the paper writes cos(theta/2) + w sin(theta/2); with its own convention d f~ = conj(lam) df lam (Eq. 1)
+   conj(W) T W is T rotated by -theta about w, away from T~, so the sign of the sine term is flipped here
+   (checked in tests/unit/test_spin_boundary.c). */
+static PetscErrorCode BuildBoundaryMap(CSSpin s, Vec x)
+{
+  CSMesh                 mesh = s->mesh;
+  PetscInt              *vdofs, vS, vE, nrow, ncol;
+  PetscSection           sr;
+  ISLocalToGlobalMapping l4, lr;
+  Vec                    T, Tl, Ttl, g, v4l = NULL;
+  const PetscScalar     *t, *tt, *v = NULL;
+  PetscFunctionBeginUser;
+  if (!s->dmr) {
+    PetscCall(PetscMalloc1(mesh->nv, &vdofs));
+    for (PetscInt i = 0; i < mesh->nv; i++) vdofs[i] = mesh->vertBoundary[i] ? 2 : 4;
+    PetscCall(CSDiracCreateDM(mesh, vdofs, &s->dmr));
+    PetscCall(PetscFree(vdofs));
+  }
+  PetscCall(MatDestroy(&s->P));
+  PetscCall(DMPlexGetDepthStratum(mesh->dm, 0, &vS, &vE));
+  PetscCall(DMGetLocalSection(s->dmr, &sr));
+  PetscCall(DMGetLocalToGlobalMapping(s->dm, &l4));
+  PetscCall(DMGetLocalToGlobalMapping(s->dmr, &lr));
+  PetscCall(DMGetGlobalVector(s->dm, &g));
+  PetscCall(VecGetLocalSize(g, &nrow));
+  PetscCall(DMRestoreGlobalVector(s->dm, &g));
+  PetscCall(DMGetGlobalVector(s->dmr, &g));
+  PetscCall(VecGetLocalSize(g, &ncol));
+  PetscCall(DMRestoreGlobalVector(s->dmr, &g));
+  PetscCall(MatCreateAIJ(mesh->comm, nrow, ncol, PETSC_DETERMINE, PETSC_DETERMINE, 4, NULL, 0, NULL, &s->P));
+  PetscCall(DMCreateGlobalVector(mesh->dmV3, &T));
+  PetscCall(CSSpinBoundaryTangents(mesh, x, T));
+  PetscCall(DMGetLocalVector(mesh->dmV3, &Tl));
+  PetscCall(DMGetLocalVector(mesh->dmV3, &Ttl));
+  PetscCall(DMGlobalToLocal(mesh->dmV3, T, INSERT_VALUES, Tl));
+  PetscCall(DMGlobalToLocal(mesh->dmV3, s->Ttarget ? s->Ttarget : T, INSERT_VALUES, Ttl));
+  if (!s->generalized) {
+    PetscCall(DMGetLocalVector(s->dm, &v4l));
+    PetscCall(DMGlobalToLocal(s->dm, s->v4, INSERT_VALUES, v4l));
+    PetscCall(VecGetArrayRead(v4l, &v));
+  }
+  PetscCall(VecGetArrayRead(Tl, &t));
+  PetscCall(VecGetArrayRead(Ttl, &tt));
+  for (PetscInt i = 0; i < mesh->nv; i++) {
+    PetscInt    rows[4], cols[4], off, nc;
+    PetscScalar K[16];
+    PetscReal   Vi = v ? PetscRealPart(v[4 * i]) : 1;
+    if (!mesh->vertOwned[i]) continue;
+    PetscCall(PetscSectionGetOffset(sr, vS + i, &off));
+    for (int c = 0; c < 4; c++) rows[c] = 4 * i + c;
+    PetscCall(ISLocalToGlobalMappingApply(l4, 4, rows, rows));
+    if (!mesh->vertBoundary[i]) {
+      nc = 4;
+      for (int c = 0; c < 16; c++) K[c] = (c % 5 == 0) ? Vi : 0;
+    } else {
+      PetscReal T0[3], T1[3], w[3], sn, cs, nt0, nt1, W[4], Tq[4], WT[4];
+      for (int d = 0; d < 3; d++) {
+        T0[d] = PetscRealPart(t[3 * i + d]);
+        T1[d] = PetscRealPart(tt[3 * i + d]);
+      }
+      nt0 = CSVecNorm(T0);
+      nt1 = CSVecNorm(T1);
+      PetscCheck(nt0 > 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "boundary vertex %" PetscInt_FMT " without outgoing boundary edge", mesh->vertNatural[i]);
+      PetscCheck(nt1 > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "-spin_boundary: zero target tangent at boundary vertex %" PetscInt_FMT " (file order)", mesh->vertNatural[i]);
+      for (int d = 0; d < 3; d++) {
+        T0[d] /= nt0;
+        T1[d] /= nt1;
+      }
+      CSVecCross(T0, T1, w);
+      sn = CSVecNorm(w);
+      cs = CSVecDot(T0, T1);
+      if (sn < 1e-12) { /* T~ = +-T: any axis orthogonal to T */
+        PetscReal e[3] = {1, 0, 0};
+        if (PetscAbsReal(T0[0]) > 0.9) {
+          e[0] = 0;
+          e[1] = 1;
+        }
+        CSVecCross(T0, e, w);
+        sn = CSVecNorm(w);
+        for (int d = 0; d < 3; d++) w[d] /= sn;
+        sn = 0;
+      } else
+        for (int d = 0; d < 3; d++) w[d] /= sn;
+      {
+        PetscReal th = PetscAtan2Real(sn, cs);
+        W[0]         = PetscCosReal(th / 2);
+        for (int d = 0; d < 3; d++) W[d + 1] = -PetscSinReal(th / 2) * w[d];
+      }
+      Tq[0] = 0;
+      for (int d = 0; d < 3; d++) Tq[d + 1] = T1[d];
+      CSQuatMul(W, Tq, WT);
+      nc = 2;
+      for (int c = 0; c < 4; c++) {
+        K[2 * c]     = Vi * W[c];
+        K[2 * c + 1] = Vi * WT[c];
+      }
+    }
+    for (int c = 0; c < nc; c++) cols[c] = off + c;
+    PetscCall(ISLocalToGlobalMappingApply(lr, nc, cols, cols));
+    PetscCall(MatSetValues(s->P, 4, rows, nc, cols, K, INSERT_VALUES));
+  }
+  PetscCall(VecRestoreArrayRead(Tl, &t));
+  PetscCall(VecRestoreArrayRead(Ttl, &tt));
+  if (v4l) {
+    PetscCall(VecRestoreArrayRead(v4l, &v));
+    PetscCall(DMRestoreLocalVector(s->dm, &v4l));
+  }
+  PetscCall(DMRestoreLocalVector(mesh->dmV3, &Tl));
+  PetscCall(DMRestoreLocalVector(mesh->dmV3, &Ttl));
+  PetscCall(VecDestroy(&T));
+  PetscCall(MatAssemblyBegin(s->P, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(s->P, MAT_FINAL_ASSEMBLY));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSSpinSetBoundaryTangents(CSSpin s, Vec x, Vec Ttarget)
+{
+  PetscFunctionBeginUser;
+  PetscCall(VecDestroy(&s->Ttarget));
+  if (Ttarget) {
+    PetscCall(VecDuplicate(Ttarget, &s->Ttarget));
+    PetscCall(VecCopy(Ttarget, s->Ttarget));
+  }
+  PetscFunctionReturn(0);
+}
+
+/* The operators of the problem for (x, rho): K (and Y for Eq. 6), in the reduced space when P is set. */
+static PetscErrorCode BuildOperators(CSSpin s, Vec x, CSRhoLocation loc, Vec rho)
+{
+  PetscFunctionBeginUser;
+  PetscCall(ComputeScaling(s, x));
+  if (s->boundary != CS_SPIN_BOUNDARY_NONE) PetscCall(BuildBoundaryMap(s, x));
+  if (s->shell) {
+    PetscCall(MatDestroy(&s->K));
+    PetscCall(CSDiracCreateShell(s->mesh, s->dm, x, loc, rho, &s->K));
+    PetscCall(MatDiagonalScale(s->K, s->v4, s->v4));
+    /* the assembled copy only preconditions the inner solve (set up in SetupEPS) */
+    PetscCall(CSDiracAssemble(s->mesh, s->dm, x, loc, rho, s->X ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX, &s->X));
+    PetscCall(MatDiagonalScale(s->X, s->v4, s->v4));
+    PetscFunctionReturn(0);
+  }
+  PetscCall(CSDiracAssemble(s->mesh, s->dm, x, loc, rho, s->X ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX, &s->X));
+  if (s->generalized) {
+    PetscCall(CSDiracAssembleBA(s->mesh, s->dm, x, loc, rho, s->Y && !s->P ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX, &s->Y));
+    if (s->P) {
+      Mat t;
+      PetscCall(MatPtAP(s->X, s->P, MAT_INITIAL_MATRIX, 2.0, &t));
+      PetscCall(MatDestroy(&s->K));
+      s->K = t;
+      PetscCall(MatPtAP(s->Y, s->P, MAT_INITIAL_MATRIX, 2.0, &t));
+      PetscCall(MatDestroy(&s->Y));
+      s->Y = t;
+    } else {
+      PetscCall(PetscObjectReference((PetscObject)s->X));
+      PetscCall(MatDestroy(&s->K));
+      s->K = s->X;
+    }
+  } else if (s->P) {
+    PetscCall(MatDestroy(&s->K));
+    PetscCall(MatPtAP(s->X, s->P, MAT_INITIAL_MATRIX, 2.0, &s->K));
+    PetscCall(MatSetOption(s->K, MAT_SYMMETRIC, PETSC_TRUE));
+  } else {
+    PetscCall(MatDiagonalScale(s->X, s->v4, s->v4)); /* K = V X V in place */
+    PetscCall(PetscObjectReference((PetscObject)s->X));
+    PetscCall(MatDestroy(&s->K));
+    s->K = s->X;
+  }
+  PetscFunctionReturn(0);
+}
+
+/* The target sigma in the units of K: the spectrum of Eq. 7 on a unit sphere is n^2, so a dimensionless
+   shift tau corresponds to gamma = tau 4 pi / area; K = V X V has eigenvalues gamma / vmean^2. For Eq. 6
+   (eigenvalues ~ n, unscaled) sigma = -tau sqrt(4 pi / area). */
+static PetscErrorCode DefaultTarget(CSSpin s, PetscReal *sigma)
+{
+  PetscReal area;
+  PetscFunctionBeginUser;
+  PetscCall(VecSum(s->mass, &area));
+  if (s->generalized) *sigma = -s->target * PetscSqrtReal(4 * PETSC_PI / area);
+  else *sigma = -s->target * 4 * PETSC_PI / area / (s->vmean * s->vmean);
+  PetscFunctionReturn(0);
+}
+
+/* Default direct solver for the shifted factorisation: CHOLMOD in serial (sequential only), MUMPS in parallel
+   with the AMD ordering (PETSC-NOTES: Debian's MUMPS has no METIS/SCOTCH; PORD is slow). */
+static PetscErrorCode SetDefaultFactor(CSSpin s, PC pc, PetscBool lu)
+{
+  PetscMPIInt size;
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_size(s->mesh->comm, &size));
+  PetscCall(PCSetType(pc, lu ? PCLU : PCCHOLESKY));
+  PetscCall(PCFactorSetMatSolverType(pc, size == 1 ? (lu ? MATSOLVERPETSC : MATSOLVERCHOLMOD) : MATSOLVERMUMPS));
+  PetscFunctionReturn(0);
+}
+
+/* After SetFromOptions: if the factorisation is MUMPS and the user did not choose an ordering, use AMD. */
+static PetscErrorCode MumpsDefaultOrdering(PC pc)
+{
+  PetscBool   isfactor, has;
+  MatSolverType st = NULL;
+  const char *prefix;
+  char        name[256];
+  PetscFunctionBeginUser;
+  PetscCall(PetscObjectTypeCompareAny((PetscObject)pc, &isfactor, PCLU, PCCHOLESKY, ""));
+  if (!isfactor) PetscFunctionReturn(0);
+  PetscCall(PCFactorGetMatSolverType(pc, &st));
+  if (!st || strcmp(st, MATSOLVERMUMPS)) PetscFunctionReturn(0);
+  PetscCall(PCGetOptionsPrefix(pc, &prefix));
+  PetscCall(PetscSNPrintf(name, sizeof(name), "-%smat_mumps_icntl_7", prefix ? prefix : ""));
+  PetscCall(PetscOptionsHasName(NULL, NULL, name, &has));
+  if (!has) PetscCall(PetscOptionsSetValue(NULL, name, "0"));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode SetupEPS(CSSpin s, PetscInt nev)
+{
+  ST        st;
+  KSP       ksp;
+  PC        pc;
+  PetscReal sigma;
+  PetscFunctionBeginUser;
+  PetscCall(DefaultTarget(s, &sigma));
+  if (!s->eps) {
+    PetscCall(EPSCreate(s->mesh->comm, &s->eps));
+    PetscCall(EPSSetOptionsPrefix(s->eps, "spin_"));
+    PetscCall(EPSGetST(s->eps, &st));
+    PetscCall(STSetType(st, STSINVERT));
+    PetscCall(STGetKSP(st, &ksp));
+    PetscCall(KSPGetPC(ksp, &pc));
+    if (s->shell) {
+      /* the shell cannot be factored: Krylov inner solve preconditioned by the factored assembled copy */
+      PetscCall(STSetMatMode(st, ST_MATMODE_SHELL));
+      PetscCall(KSPSetType(ksp, KSPGMRES));
+      PetscCall(KSPSetTolerances(ksp, 1e-12, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
+    } else PetscCall(KSPSetType(ksp, KSPPREONLY));
+    PetscCall(SetDefaultFactor(s, pc, s->generalized));
+    PetscCall(EPSSetProblemType(s->eps, s->generalized ? EPS_GNHEP : EPS_HEP));
+    PetscCall(EPSSetWhichEigenpairs(s->eps, EPS_TARGET_MAGNITUDE));
+    PetscCall(EPSSetTarget(s->eps, sigma));
+    PetscCall(EPSSetDimensions(s->eps, nev, PETSC_DEFAULT, PETSC_DEFAULT));
+    PetscCall(EPSSetTolerances(s->eps, 1e-10, PETSC_DEFAULT));
+    PetscCall(EPSSetOperators(s->eps, s->K, s->generalized ? s->Y : NULL));
+    PetscCall(EPSSetFromOptions(s->eps));
+    PetscCall(KSPGetPC(ksp, &pc));
+    PetscCall(MumpsDefaultOrdering(pc));
+  } else {
+    PetscCall(EPSSetOperators(s->eps, s->K, s->generalized ? s->Y : NULL));
+    PetscCall(EPSGetST(s->eps, &st));
+  }
+  if (s->shell) {
+    Mat       Pm;
+    PetscReal tgt;
+    PetscCall(EPSGetTarget(s->eps, &tgt));
+    PetscCall(MatDuplicate(s->X, MAT_COPY_VALUES, &Pm));
+    PetscCall(MatShift(Pm, -tgt));
+    PetscCall(STSetPreconditionerMat(st, Pm));
+    PetscCall(MatDestroy(&Pm));
+  }
+  PetscFunctionReturn(0);
+}
+
+/* The starting vector: lam = 1 (the identity), i.e. lam^ = V^{-1} 1, or P^T e_0 in the reduced space. */
+static PetscErrorCode DefaultStart(CSSpin s, Vec start)
+{
+  Vec          one;
+  PetscScalar *a;
+  PetscInt     n;
+  PetscFunctionBeginUser;
+  PetscCall(DMCreateGlobalVector(s->dm, &one));
+  PetscCall(VecGetLocalSize(one, &n));
+  PetscCall(VecGetArray(one, &a));
+  for (PetscInt i = 0; i < n; i++) a[i] = (i % 4 == 0) ? 1 : 0;
+  PetscCall(VecRestoreArray(one, &a));
+  if (s->P) PetscCall(MatMultTranspose(s->P, one, start));
+  else if (!s->generalized) PetscCall(VecPointwiseDivide(start, one, s->v4));
+  else PetscCall(VecCopy(one, start));
+  PetscCall(VecDestroy(&one));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode InverseIteration(CSSpin s, Vec xr, PetscReal *kr)
+{
+  PetscReal sigma, nrm, xKx;
+  Vec       y;
+  PetscFunctionBeginUser;
+  PetscCheck(!s->generalized, s->mesh->comm, PETSC_ERR_SUP, "-spin_solver inverse supports -spin_problem standard only");
+  PetscCall(DefaultTarget(s, &sigma));
+  if (!s->kinv) {
+    PC pc;
+    PetscCall(KSPCreate(s->mesh->comm, &s->kinv));
+    PetscCall(KSPSetOptionsPrefix(s->kinv, "spin_inverse_"));
+    PetscCall(KSPSetType(s->kinv, s->keep_factor ? KSPGMRES : KSPPREONLY));
+    PetscCall(KSPSetTolerances(s->kinv, 1e-12, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
+    PetscCall(KSPGetPC(s->kinv, &pc));
+    PetscCall(SetDefaultFactor(s, pc, PETSC_FALSE));
+    PetscCall(KSPSetFromOptions(s->kinv));
+    PetscCall(MumpsDefaultOrdering(pc));
+    PetscCall(MatDuplicate(s->K, MAT_COPY_VALUES, &s->Kinv));
+  } else {
+    PetscCall(MatCopy(s->K, s->Kinv, SAME_NONZERO_PATTERN));
+    /* crane2013 Sec. 6.4.2: consecutive problems are close, so the old factorisation preconditions the new one */
+    if (s->keep_factor) PetscCall(KSPSetReusePreconditioner(s->kinv, PETSC_TRUE));
+  }
+  PetscCall(MatShift(s->Kinv, -sigma));
+  PetscCall(KSPSetOperators(s->kinv, s->Kinv, s->Kinv));
+  PetscCall(VecDuplicate(xr, &y));
+  PetscCall(VecCopy(s->start, xr));
+  PetscCall(VecNormalize(xr, NULL));
+  s->inner_its = 0;
+  for (PetscInt it = 0; it < s->inverse_its; it++) {
+    KSPConvergedReason reason;
+    PetscInt           kits;
+    PetscCall(KSPSolve(s->kinv, xr, y));
+    PetscCall(KSPGetConvergedReason(s->kinv, &reason));
+    PetscCheck(reason >= 0, s->mesh->comm, PETSC_ERR_NOT_CONVERGED, "spin: inverse iteration solve failed (KSP reason %s; options -spin_inverse_ksp_*, -spin_inverse_pc_*)", KSPConvergedReasons[reason]);
+    PetscCall(KSPGetIterationNumber(s->kinv, &kits));
+    s->inner_its += kits;
+    PetscCall(VecNormalize(y, &nrm));
+    PetscCall(VecCopy(y, xr));
+  }
+  PetscCall(MatMult(s->K, xr, y));
+  PetscCall(VecDot(xr, y, &xKx));
+  *kr        = xKx;
+  s->eps_its = s->inverse_its;
+  PetscCall(VecDestroy(&y));
+  PetscFunctionReturn(0);
+}
+
+/* ||K x - k x|| / ||x|| (or ||K x - k Y x|| for Eq. 6) */
+static PetscErrorCode Residual(CSSpin s, Vec xr, PetscReal k, PetscReal *res)
+{
+  Vec       r, t;
+  PetscReal nx;
+  PetscFunctionBeginUser;
+  PetscCall(VecDuplicate(xr, &r));
+  PetscCall(VecDuplicate(xr, &t));
+  PetscCall(MatMult(s->K, xr, r));
+  if (s->generalized) PetscCall(MatMult(s->Y, xr, t));
+  else PetscCall(VecCopy(xr, t));
+  PetscCall(VecAXPY(r, -k, t));
+  PetscCall(VecNorm(r, NORM_2, res));
+  PetscCall(VecNorm(xr, NORM_2, &nx));
+  *res /= nx;
+  PetscCall(VecDestroy(&r));
+  PetscCall(VecDestroy(&t));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode CheckEPSConverged(CSSpin s, PetscInt need, PetscInt *nconv)
+{
+  EPSConvergedReason reason;
+  EPSType            type;
+  ST                 st;
+  STType             sttype;
+  PetscInt           its, maxit;
+  PetscReal          tol;
+  PetscFunctionBeginUser;
+  PetscCall(EPSGetConverged(s->eps, nconv));
+  PetscCall(EPSGetConvergedReason(s->eps, &reason));
+  PetscCall(EPSGetIterationNumber(s->eps, &its));
+  PetscCall(EPSGetType(s->eps, &type));
+  PetscCall(EPSGetST(s->eps, &st));
+  PetscCall(STGetType(st, &sttype));
+  PetscCall(EPSGetTolerances(s->eps, &tol, &maxit));
+  PetscCheck(*nconv >= need, s->mesh->comm, PETSC_ERR_NOT_CONVERGED,
+             "spin: the eigensolver did not converge: %" PetscInt_FMT " of %" PetscInt_FMT " eigenpairs after %" PetscInt_FMT " iterations (reason %s; -spin_eps_type %s -spin_st_type %s -spin_eps_max_it %" PetscInt_FMT " -spin_eps_tol %g). Nothing was written.",
+             *nconv, need, its, EPSConvergedReasons[reason], type, sttype, maxit, (double)tol);
+  s->eps_its = its;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSSpinSolveEigen(CSSpin s, Vec x, CSRhoLocation loc, Vec rho, Vec lambda)
+{
+  Vec            xr;
+  PetscReal      kr;
+  PetscLogDouble t0, t1, t2;
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(CS_EVENT_SpinEigen, 0, 0, 0, 0));
+  PetscCall(PetscTime(&t0));
+  PetscCall(BuildOperators(s, x, loc, rho));
+  PetscCall(MatCreateVecs(s->K, &xr, NULL));
+  if (!s->start) {
+    PetscCall(VecDuplicate(xr, &s->start));
+    PetscCall(DefaultStart(s, s->start));
+  }
+  PetscCall(PetscTime(&t1));
+  if (s->inverse) PetscCall(InverseIteration(s, xr, &kr));
+  else {
+    PetscScalar ki;
+    PetscInt    nconv;
+    ST          st;
+    KSP         ksp;
+    PetscCall(SetupEPS(s, 1));
+    PetscCall(EPSSetInitialSpace(s->eps, 1, &s->start));
+    PetscCall(EPSSolve(s->eps));
+    PetscCall(CheckEPSConverged(s, 1, &nconv));
+    PetscCall(EPSGetEigenpair(s->eps, 0, &kr, &ki, xr, NULL));
+    if (PetscAbsScalar(ki) > 1e-8 * PetscAbsReal(kr)) PetscCall(PetscPrintf(s->mesh->comm, "Warning: spin: eigenvalue %g has imaginary part %g; using the real part\n", (double)kr, (double)PetscRealPart(ki)));
+    PetscCall(EPSGetST(s->eps, &st));
+    PetscCall(STGetKSP(st, &ksp));
+    PetscCall(KSPGetTotalIterations(ksp, &s->inner_its));
+  }
+  PetscCall(Residual(s, xr, kr, &s->residual));
+  PetscCall(VecCopy(xr, s->start)); /* the next solve (a flow step) starts here */
+  s->gamma = s->generalized ? kr : kr * s->vmean * s->vmean;
+  if (s->P) PetscCall(MatMult(s->P, xr, lambda));
+  else if (!s->generalized) PetscCall(VecPointwiseMult(lambda, xr, s->v4));
+  else PetscCall(VecCopy(xr, lambda));
+  PetscCall(VecDestroy(&xr));
+  PetscCall(PetscTime(&t2));
+  s->t_setup = t1 - t0;
+  s->t_eigen = t2 - t1;
+  PetscCall(PetscLogEventEnd(CS_EVENT_SpinEigen, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+static int CompareReal(const void *a, const void *b)
+{
+  PetscReal x = *(const PetscReal *)a, y = *(const PetscReal *)b;
+  return x < y ? -1 : (x > y ? 1 : 0);
+}
+
+PetscErrorCode CSSpinSpectrum(CSSpin s, Vec x, CSRhoLocation loc, Vec rho, PetscInt nev, PetscReal eig[], PetscInt *nout)
+{
+  PetscInt   nconv;
+  PetscReal *all;
+  PetscFunctionBeginUser;
+  PetscCheck(!s->generalized && !s->inverse, s->mesh->comm, PETSC_ERR_SUP, "-task spectrum solves the standard problem (Eq. 7) with EPS: drop -spin_problem/-spin_solver");
+  PetscCall(BuildOperators(s, x, loc, rho));
+  PetscCall(SetupEPS(s, nev));
+  PetscCall(EPSSolve(s->eps));
+  PetscCall(CheckEPSConverged(s, nev, &nconv));
+  PetscCall(PetscMalloc1(nconv, &all));
+  for (PetscInt i = 0; i < nconv; i++) {
+    PetscScalar kr, ki;
+    PetscCall(EPSGetEigenvalue(s->eps, i, &kr, &ki));
+    all[i] = PetscRealPart(kr) * s->vmean * s->vmean;
+  }
+  qsort(all, (size_t)nconv, sizeof(PetscReal), CompareReal);
+  for (PetscInt i = 0; i < nev; i++) eig[i] = all[i];
+  *nout = nev;
+  PetscCall(PetscFree(all));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSSpinNormalize(CSSpin s, Vec lambda, Vec mu, PetscBool rotation_too)
+{
+  const PetscScalar *l, *m, *u = NULL;
+  PetscScalar       *lw;
+  PetscReal          num[4] = {0, 0, 0, 0}, den = 0, mu2 = 0, c[4], buf[6];
+  PetscInt           n;
+  PetscFunctionBeginUser;
+  PetscCall(VecGetLocalSize(s->mass, &n));
+  PetscCall(VecGetArrayRead(lambda, &l));
+  PetscCall(VecGetArrayRead(s->mass, &m));
+  if (mu) PetscCall(VecGetArrayRead(mu, &u));
+  for (PetscInt i = 0; i < n; i++) {
+    PetscReal li[4], ui[4] = {1, 0, 0, 0}, t[4], Mi = PetscRealPart(m[i]);
+    for (int k = 0; k < 4; k++) li[k] = PetscRealPart(l[4 * i + k]);
+    if (u)
+      for (int k = 0; k < 4; k++) ui[k] = PetscRealPart(u[4 * i + k]);
+    CSQuatConjMul(li, ui, t); /* least squares min sum M_i |lam_i c - mu_i|^2: c = sum M conj(lam) mu / sum M |lam|^2 */
+    CSQuatAXPY(Mi, t, num);
+    den += Mi * CSQuatNorm2(li);
+    mu2 += Mi * CSQuatNorm2(ui);
+  }
+  PetscCall(VecRestoreArrayRead(lambda, &l));
+  PetscCall(VecRestoreArrayRead(s->mass, &m));
+  if (mu) PetscCall(VecRestoreArrayRead(mu, &u));
+  for (int k = 0; k < 4; k++) buf[k] = num[k];
+  buf[4] = den;
+  buf[5] = mu2;
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, buf, 6, MPIU_REAL, MPIU_SUM, s->mesh->comm));
+  PetscCheck(buf[4] > 0, s->mesh->comm, PETSC_ERR_PLIB, "spin: eigenvector is zero");
+  if (rotation_too && CSQuatNorm2(buf) > 1e-24 * buf[4] * buf[5]) {
+    for (int k = 0; k < 4; k++) c[k] = buf[k] / buf[4];
+  } else {
+    c[0] = PetscSqrtReal(buf[5] / buf[4]);
+    c[1] = c[2] = c[3] = 0;
+  }
+  PetscCall(VecGetArray(lambda, &lw));
+  for (PetscInt i = 0; i < n; i++) {
+    PetscReal li[4], t[4];
+    for (int k = 0; k < 4; k++) li[k] = PetscRealPart(lw[4 * i + k]);
+    CSQuatMul(li, c, t); /* right factor: (D - rho)(lam c) = ((D - rho) lam) c */
+    for (int k = 0; k < 4; k++) lw[4 * i + k] = t[k];
+  }
+  PetscCall(VecRestoreArray(lambda, &lw));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSSpinDestroy(CSSpin *spin)
+{
+  CSSpin s = *spin;
+  PetscFunctionBeginUser;
+  if (!s) PetscFunctionReturn(0);
+  PetscCall(EPSDestroy(&s->eps));
+  PetscCall(KSPDestroy(&s->kinv));
+  PetscCall(KSPDestroy(&s->kpois));
+  PetscCall(MatDestroy(&s->Kinv));
+  PetscCall(MatDestroy(&s->L));
+  PetscCall(MatDestroy(&s->X));
+  PetscCall(MatDestroy(&s->K));
+  PetscCall(MatDestroy(&s->Y));
+  PetscCall(MatDestroy(&s->P));
+  PetscCall(VecDestroy(&s->mass));
+  PetscCall(VecDestroy(&s->v4));
+  PetscCall(VecDestroy(&s->Ttarget));
+  PetscCall(VecDestroy(&s->start));
+  PetscCall(DMDestroy(&s->dm));
+  PetscCall(DMDestroy(&s->dmr));
+  PetscCall(PetscFree(s));
+  *spin = NULL;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSSpinLogPoissonBegin(void)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(CS_EVENT_SpinPoisson, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+PetscErrorCode CSSpinLogPoissonEnd(void)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventEnd(CS_EVENT_SpinPoisson, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}

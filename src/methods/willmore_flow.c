@@ -1,0 +1,532 @@
+/* Constrained Willmore flow: soliman2021 Algorithm 1 (CGD), Sec. 4.1 (PGD with projection) and Eq. GD,
+   in the H^2 metric (Eq. 26) or L2, with the conformal constraint (Sec. 3, App. D) and area / volume /
+   point constraints (App. D "Constraints"), Dirichlet boundaries and C0 on surfaces with boundary.
+
+   Step (CGD, Algorithm 1 line 11, whose block signs we follow; the displayed (CGD) equation of Sec. 4.2
+   has -X and +I/t in its second row with right-hand side -c, i.e. X df - dmu/t = +c, which would push the
+   constraint away from c = 0: a sign slip):
+     [ H/t   X^T        ] [df ]   [ -g - X^T mu ]
+     [ X    -I_Q/t_mu   ] [dmu] = [ -c          ]
+   solved with the edge block first (CSSaddle). The primal step t and the dual step t_mu are separate:
+   the second row reads X df = -c + I_Q dmu / t_mu, so with t_mu = t (the paper's single t) a small t also
+   damps the Newton correction of the constraint; a large t_mu makes X df ~ -c (Gauss-Newton on c) while t
+   still controls the energy descent.
+
+   Step control: a trial step is accepted when the merit function decreases,
+     CGD/GD: phi(f) = E(f) + rho ||c(f)||_1 + sum_j rho_j |xi_j(f)|   (l1 exact penalty, rho >= 2 |multiplier|),
+     PGD:    phi(f) = E(f) after the projection back onto the constraint set;
+   else t is halved and the step recomputed (each rejection is reported); after an accepted step t grows by
+   -flow_t_grow up to -flow_t_max.
+
+   Stopping: el_residual = ||g + X^T mu + B^T nu||_2, the Euclidean norm of the residual 2-form of the
+   Euler-Lagrange equations (soliman2021 Eq. 7 with the extra constraints; entries of fixed vertices
+   excluded), below -flow_rtol, and the constraint violation max(||C lambda - c0||_inf, max_j |xi_j|)
+   below -flow_ctol. */
+#include "willmore_flow.h"
+#include "cs_util.h"
+
+typedef struct {
+  CSFlowKind            kind;
+  MPI_Comm              comm;
+  CSMesh                mesh;
+  CSEnergy              energy;
+  char                  energy_name[32];
+  PetscBool             conformal;
+  CSConformalConstraint cc;
+  PetscInt              ng, k;
+  CSGlobalConstraint    gc[3];
+  PetscBool            *fixed; /* local vertices held fixed (Dirichlet), or NULL */
+  IS                    fixedIS; /* global dmV3 dofs of owned fixed vertices */
+  CSMetric              metric;
+  CSSaddle              saddle;
+  Vec                   x, x0, g, r, c, mu, dmu, df, iq, xt, ct, tmp;
+  Vec                  *rows;
+  PetscReal            *cx, *cxt, *nu, *dnu, *gw;
+  PetscReal             t, tmu, tmax, grow, rtol, ctol, wmin, rhoE, *rhoX;
+  PetscInt              max_it, max_rej, proj_max_it;
+  PetscBool             step_control;
+  PetscReal             proj_tmu;
+} Flow;
+
+/* ---------- options and setup ---------- */
+
+/* "-constraint_area [value]": no value means the initial value. */
+static PetscErrorCode OptionalTarget(const char name[], const char help[], PetscBool *set, PetscReal *value, PetscBool *given, PetscOptionItems *PetscOptionsObject)
+{
+  char s[128] = "";
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsString(name, help, NULL, s, s, sizeof(s), set));
+  *given = PETSC_FALSE;
+  if (*set && s[0]) {
+    PetscCall(PetscOptionsStringToReal(s, value));
+    *given = PETSC_TRUE;
+  }
+  PetscFunctionReturn(0);
+}
+
+/* Test inputs: f <- S (f (1 + a sin(k f_x) sin(k f_y) sin(k f_z))) applied to the initial positions
+   (-flow_init_bump a, -flow_init_bump_freq k, -flow_init_stretch sx,sy,sz); pointwise, so the same on any
+   number of ranks. */
+static PetscErrorCode DeformInitial(Vec x, PetscReal a, PetscReal k, const PetscReal s[3])
+{
+  PetscInt     n;
+  PetscScalar *p;
+  PetscFunctionBeginUser;
+  PetscCall(VecGetLocalSize(x, &n));
+  PetscCall(VecGetArray(x, &p));
+  for (PetscInt i = 0; i < n / 3; i++) {
+    PetscReal *q = (PetscReal *)p + 3 * i, b = 1 + a * PetscSinReal(k * q[0]) * PetscSinReal(k * q[1]) * PetscSinReal(k * q[2]);
+    for (int d = 0; d < 3; d++) q[d] *= b * s[d];
+  }
+  PetscCall(VecRestoreArray(x, &p));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode ZeroFixed(Flow *F, Vec v)
+{
+  PetscFunctionBeginUser;
+  if (F->fixedIS) PetscCall(VecISSet(v, F->fixedIS, 0.0));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode FlowSetUp(MPI_Comm comm, Flow *F, CSFlowKind kind, CSOutput *out)
+{
+  CSMesh    m;
+  char      metric[16] = "h2", energy[32] = "willmore", target[PETSC_MAX_PATH_LEN] = "", points[PETSC_MAX_PATH_LEN] = "", boundary[32] = "";
+  PetscBool conformal = (PetscBool)(kind != CS_FLOW_GD), conformal_set, has_target, has_points, has_boundary, area_set, area_given, vol_set, vol_given, h2;
+  PetscReal area_target = 0, vol_target = 0, bump = 0, bump_k = 3, stretch[3] = {1, 1, 1}, eps = 1e-3;
+  PetscInt  nstretch = 3;
+  PetscFunctionBeginUser;
+  PetscCall(PetscMemzero(F, sizeof(*F)));
+  F->kind = kind;
+  F->comm = comm;
+  PetscCall(CSMeshCreateFromOptions(comm, NULL, &F->mesh));
+  m            = F->mesh;
+  F->t         = 1.0;
+  F->tmu       = -1;
+  F->tmax      = 1e3;
+  F->grow      = 2.0;
+  F->rtol      = 1e-6;
+  F->ctol      = 1e-10;
+  F->wmin      = 1e-2;
+  F->max_it    = 100;
+  F->max_rej   = 30;
+  F->proj_max_it = 20;
+  F->proj_tmu  = 1e10;
+  F->step_control = PETSC_TRUE;
+  PetscOptionsBegin(comm, NULL, "Constrained Willmore flow (soliman2021)", NULL);
+  PetscCall(PetscOptionsReal("-flow_t", "Initial primal step size t", NULL, F->t, &F->t, NULL));
+  PetscCall(PetscOptionsReal("-flow_t_mu", "Dual step size t_mu of the multipliers (default 1e6 t)", NULL, F->tmu, &F->tmu, NULL));
+  PetscCall(PetscOptionsReal("-flow_t_max", "Largest primal step", NULL, F->tmax, &F->tmax, NULL));
+  PetscCall(PetscOptionsReal("-flow_t_grow", "Factor on t after an accepted step", NULL, F->grow, &F->grow, NULL));
+  PetscCall(PetscOptionsBool("-flow_step_control", "Accept a step only if the merit function decreases (else halve t)", NULL, F->step_control, &F->step_control, NULL));
+  PetscCall(PetscOptionsInt("-flow_max_rejections", "Consecutive rejected steps before giving up", NULL, F->max_rej, &F->max_rej, NULL));
+  PetscCall(PetscOptionsReal("-flow_rtol", "Stop when ||g + X^T mu||_2 is below this", NULL, F->rtol, &F->rtol, NULL));
+  PetscCall(PetscOptionsReal("-flow_ctol", "... and the constraint violation (inf-norm) below this", NULL, F->ctol, &F->ctol, NULL));
+  PetscCall(PetscOptionsInt("-flow_max_it", "Maximum number of iterations", NULL, F->max_it, &F->max_it, NULL));
+  PetscCall(PetscOptionsString("-flow_metric", "h2|l2: metric of the primal step (soliman2021 Eq. 26 or the mass)", NULL, metric, metric, sizeof(metric), NULL));
+  PetscCall(PetscOptionsReal("-flow_iq_wmin", "Floor on cotan weights in I_Q (Eq. 25) for non-Delaunay edges", NULL, F->wmin, &F->wmin, NULL));
+  PetscCall(PetscOptionsString("-energy", "willmore|area|fairing", NULL, energy, energy, sizeof(energy), NULL));
+  PetscCall(PetscOptionsReal("-fairing_epsilon", "Weight of W in the fairing energy (soliman2021 Eq. 21)", NULL, eps, &eps, NULL));
+  PetscCall(PetscOptionsBool("-flow_conformal", "Exact conformal constraint (default on for cgd and pgd)", NULL, conformal, &conformal, &conformal_set));
+  PetscCall(PetscOptionsString("-target_mesh", "Mesh with the same connectivity whose conformal class is the target (soliman2021 Fig. 2)", NULL, target, target, sizeof(target), &has_target));
+  PetscCall(OptionalTarget("-constraint_area", "Total area constraint [target value, default the initial area]", &area_set, &area_target, &area_given, PetscOptionsObject));
+  PetscCall(OptionalTarget("-constraint_volume", "Enclosed volume constraint [target value, default the initial volume]", &vol_set, &vol_target, &vol_given, PetscOptionsObject));
+  PetscCall(PetscOptionsString("-constraint_points", "File of point constraints: lines 'vertex_index x y z' (0-based)", NULL, points, points, sizeof(points), &has_points));
+  PetscCall(PetscOptionsString("-flow_boundary", "dirichlet|free: boundary vertices fixed, or free (C0 only)", NULL, boundary, boundary, sizeof(boundary), &has_boundary));
+  PetscCall(PetscOptionsReal("-flow_init_bump", "Test input: radial bump amplitude applied to the initial positions", NULL, bump, &bump, NULL));
+  PetscCall(PetscOptionsReal("-flow_init_bump_freq", "Test input: bump frequency k in sin(k x) sin(k y) sin(k z)", NULL, bump_k, &bump_k, NULL));
+  PetscCall(PetscOptionsRealArray("-flow_init_stretch", "Test input: stretch factors sx,sy,sz applied after the bump", NULL, stretch, &nstretch, NULL));
+  PetscCall(PetscOptionsInt("-pgd_projection_max_it", "PGD: Gauss-Newton iterations of the projection onto the constraint set", NULL, F->proj_max_it, &F->proj_max_it, NULL));
+  PetscOptionsEnd();
+  if (F->tmu <= 0) F->tmu = 1e6 * F->t;
+  PetscCheck(F->t > 0 && F->tmu > 0 && F->grow >= 1 && F->tmax >= F->t, comm, PETSC_ERR_ARG_OUTOFRANGE, "-flow_t %g, -flow_t_mu %g, -flow_t_grow %g, -flow_t_max %g: need t > 0, t_mu > 0, grow >= 1, t_max >= t", (double)F->t, (double)F->tmu, (double)F->grow, (double)F->tmax);
+  PetscCheck(kind != CS_FLOW_GD || !conformal, comm, PETSC_ERR_ARG_INCOMP, "-flow_type gd is unconstrained Sobolev gradient descent: -flow_conformal true is not allowed (use cgd or pgd)");
+  F->conformal = conformal;
+  PetscCheck(!has_target || conformal, comm, PETSC_ERR_ARG_INCOMP, "-target_mesh %s needs the conformal constraint (cgd, or pgd with -flow_conformal)", target);
+  PetscCheck(!has_target || kind != CS_FLOW_PGD, comm, PETSC_ERR_ARG_INCOMP, "-target_mesh with -flow_type pgd: PGD keeps the class of its input and cannot move to another class (soliman2021 Sec. 4.2); use cgd");
+  PetscCall(PetscStrcmp(metric, "h2", &h2));
+  if (!h2) {
+    PetscBool l2;
+    PetscCall(PetscStrcmp(metric, "l2", &l2));
+    PetscCheck(l2, comm, PETSC_ERR_ARG_OUTOFRANGE, "-flow_metric %s: unknown (h2|l2)", metric);
+  }
+  PetscCall(PetscStrncpy(F->energy_name, energy, sizeof(F->energy_name)));
+  (void)out;
+
+  /* positions */
+  PetscCall(VecDuplicate(m->x, &F->x));
+  PetscCall(VecCopy(m->x, F->x));
+  PetscCheck(nstretch == 3, comm, PETSC_ERR_ARG_SIZ, "-flow_init_stretch needs three values sx,sy,sz");
+  if (bump != 0 || stretch[0] != 1 || stretch[1] != 1 || stretch[2] != 1) PetscCall(DeformInitial(F->x, bump, bump_k, stretch));
+  PetscCall(VecDuplicate(F->x, &F->x0));
+  PetscCall(VecCopy(F->x, F->x0));
+
+  /* boundary */
+  if (has_boundary) PetscCheck(m->topo.boundary_loops > 0, comm, PETSC_ERR_ARG_INCOMP, "-flow_boundary %s: the mesh %s is closed (no boundary); boundary methods need a surface with boundary", boundary, m->name);
+  if (m->topo.boundary_loops > 0) {
+    PetscBool dir = PETSC_TRUE;
+    if (has_boundary) {
+      PetscBool isdir, isfree, isnormal;
+      PetscCall(PetscStrcmp(boundary, "dirichlet", &isdir));
+      PetscCall(PetscStrcmp(boundary, "free", &isfree));
+      PetscCall(PetscStrcmp(boundary, "normals", &isnormal));
+      PetscCheck(!isnormal, comm, PETSC_ERR_SUP, "-flow_boundary normals (the boundary-face normal constraint of soliman2021 App. D) is not implemented yet");
+      PetscCheck(isdir || isfree, comm, PETSC_ERR_ARG_OUTOFRANGE, "-flow_boundary %s: unknown (dirichlet|free)", boundary);
+      dir = isdir;
+    }
+    if (dir) {
+      ISLocalToGlobalMapping l2g;
+      PetscInt              *idx, n = 0;
+      PetscCall(PetscCalloc1(m->nv, &F->fixed));
+      PetscCall(PetscMalloc1(3 * m->nv, &idx));
+      for (PetscInt v = 0; v < m->nv; v++) {
+        F->fixed[v] = m->vertBoundary[v];
+        if (m->vertBoundary[v] && m->vertOwned[v])
+          for (int d = 0; d < 3; d++) idx[n++] = 3 * v + d;
+      }
+      PetscCall(DMGetLocalToGlobalMapping(m->dmV3, &l2g));
+      PetscCall(ISLocalToGlobalMappingApply(l2g, n, idx, idx));
+      PetscCall(ISCreateGeneral(comm, n, idx, PETSC_OWN_POINTER, &F->fixedIS));
+    }
+  }
+
+  /* energy */
+  {
+    PetscBool isw, isa, isf;
+    PetscCall(PetscStrcmp(energy, "willmore", &isw));
+    PetscCall(PetscStrcmp(energy, "area", &isa));
+    PetscCall(PetscStrcmp(energy, "fairing", &isf));
+    if (isw) PetscCall(CSEnergyCreateWillmore(m, &F->energy));
+    else if (isa) PetscCall(CSEnergyCreateArea(m, &F->energy));
+    else if (isf) PetscCall(CSEnergyCreateFairing(m, F->x0, eps, &F->energy));
+    else SETERRQ(comm, PETSC_ERR_ARG_OUTOFRANGE, "-energy %s: unknown (willmore|area|fairing)", energy);
+  }
+
+  /* conformal constraint: target = the initial class or the -target_mesh class */
+  if (conformal) {
+    Vec xt = F->x0;
+    if (has_target) PetscCall(CSMeshLoadCompatiblePositions(m, "-target_mesh", target, &xt));
+    PetscCall(CSConformalConstraintCreate(m, xt, (PetscBool)(m->topo.boundary_loops > 0), F->fixed, &F->cc));
+    if (has_target) PetscCall(VecDestroy(&xt));
+  }
+  /* global constraints */
+  if (area_set) {
+    PetscReal A, V;
+    PetscCall(CSGeometryAreaVolume(m, F->x0, &A, &V));
+    PetscCall(CSConstraintCreateArea(m, area_given ? area_target : A, &F->gc[F->ng++]));
+  }
+  if (vol_set) {
+    PetscReal A, V;
+    PetscCall(CSGeometryAreaVolume(m, F->x0, &A, &V));
+    PetscCall(CSConstraintCreateVolume(m, vol_given ? vol_target : V, &F->gc[F->ng++]));
+  }
+  if (has_points) PetscCall(CSConstraintCreatePointsFromFile(m, "-constraint_points", points, &F->gc[F->ng++]));
+  for (PetscInt j = 0; j < F->ng; j++) F->k += F->gc[j]->k;
+  PetscCheck(F->conformal || F->k == 0 || kind != CS_FLOW_PGD, comm, PETSC_ERR_ARG_INCOMP, "pgd without the conformal constraint is not supported");
+
+  /* work vectors */
+  PetscCall(VecDuplicate(F->x, &F->g));
+  PetscCall(VecDuplicate(F->x, &F->r));
+  PetscCall(VecDuplicate(F->x, &F->df));
+  PetscCall(VecDuplicate(F->x, &F->xt));
+  PetscCall(VecDuplicate(F->x, &F->tmp));
+  if (conformal) {
+    PetscCall(DMCreateGlobalVector(m->dmE1, &F->c));
+    PetscCall(VecDuplicate(F->c, &F->mu));
+    PetscCall(VecDuplicate(F->c, &F->dmu));
+    PetscCall(VecDuplicate(F->c, &F->iq));
+    PetscCall(VecDuplicate(F->c, &F->ct));
+    PetscCall(VecSet(F->mu, 0));
+  }
+  PetscCall(PetscCalloc6(F->k + 1, &F->cx, F->k + 1, &F->cxt, F->k + 1, &F->nu, F->k + 1, &F->dnu, F->k + 1, &F->gw, F->k + 1, &F->rhoX));
+  if (F->k) PetscCall(VecDuplicateVecs(F->x, F->k, &F->rows));
+  PetscCall(CSMetricCreate(m, h2, &F->metric));
+  PetscCall(CSSaddleCreate(m, conformal, F->k, &F->saddle));
+  F->saddle.fixed = F->fixedIS;
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode FlowDestroy(Flow *F)
+{
+  PetscFunctionBeginUser;
+  PetscCall(CSSaddleDestroy(&F->saddle));
+  PetscCall(CSMetricDestroy(&F->metric));
+  if (F->conformal) PetscCall(CSConformalConstraintDestroy(&F->cc));
+  for (PetscInt j = 0; j < F->ng; j++) PetscCall(CSGlobalConstraintDestroy(&F->gc[j]));
+  if (F->k) PetscCall(VecDestroyVecs(F->k, &F->rows));
+  PetscCall(PetscFree6(F->cx, F->cxt, F->nu, F->dnu, F->gw, F->rhoX));
+  PetscCall(CSEnergyDestroy(&F->energy));
+  PetscCall(VecDestroy(&F->x));
+  PetscCall(VecDestroy(&F->x0));
+  PetscCall(VecDestroy(&F->g));
+  PetscCall(VecDestroy(&F->r));
+  PetscCall(VecDestroy(&F->df));
+  PetscCall(VecDestroy(&F->xt));
+  PetscCall(VecDestroy(&F->tmp));
+  PetscCall(VecDestroy(&F->c));
+  PetscCall(VecDestroy(&F->mu));
+  PetscCall(VecDestroy(&F->dmu));
+  PetscCall(VecDestroy(&F->iq));
+  PetscCall(VecDestroy(&F->ct));
+  PetscCall(ISDestroy(&F->fixedIS));
+  PetscCall(PetscFree(F->fixed));
+  PetscCall(CSMeshDestroy(&F->mesh));
+  PetscFunctionReturn(0);
+}
+
+/* ---------- evaluation ---------- */
+
+/* Constraint values at x (c and cx), with Jacobians (X in F->cc.X, rows) if wantJ. */
+static PetscErrorCode EvalConstraints(Flow *F, Vec x, Vec c, PetscReal cx[], PetscBool wantJ)
+{
+  PetscInt off = 0;
+  PetscFunctionBeginUser;
+  if (F->conformal) PetscCall(CSConformalConstraintEvaluate(&F->cc, x, c, wantJ));
+  for (PetscInt j = 0; j < F->ng; j++) {
+    PetscCall(CSGlobalConstraintEvaluate(F->gc[j], x, cx + off, wantJ ? F->rows + off : NULL));
+    off += F->gc[j]->k;
+  }
+  if (wantJ)
+    for (PetscInt j = 0; j < F->k; j++) PetscCall(ZeroFixed(F, F->rows[j]));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode Violation(Flow *F, Vec c, const PetscReal cx[], PetscReal *conf, PetscReal *glob, PetscReal *l1)
+{
+  PetscReal v = 0, s = 0;
+  PetscFunctionBeginUser;
+  *conf = 0;
+  if (F->conformal) {
+    PetscCall(VecNorm(c, NORM_INFINITY, conf));
+    PetscCall(VecNorm(c, NORM_1, &s));
+  }
+  s *= F->rhoE;
+  for (PetscInt j = 0; j < F->k; j++) {
+    v = PetscMax(v, PetscAbsReal(cx[j]));
+    s += F->rhoX[j] * PetscAbsReal(cx[j]);
+  }
+  *glob = v;
+  if (l1) *l1 = s;
+  PetscFunctionReturn(0);
+}
+
+/* r = g + X^T mu + sum_j nu_j rows_j (the Euler-Lagrange residual), fixed entries zero. */
+static PetscErrorCode Residual(Flow *F, PetscReal *el)
+{
+  PetscFunctionBeginUser;
+  PetscCall(VecCopy(F->g, F->r));
+  if (F->conformal) PetscCall(MatMultTransposeAdd(F->cc.X, F->mu, F->r, F->r));
+  for (PetscInt j = 0; j < F->k; j++) PetscCall(VecAXPY(F->r, F->nu[j], F->rows[j]));
+  PetscCall(ZeroFixed(F, F->r));
+  PetscCall(VecNorm(F->r, NORM_2, el));
+  PetscFunctionReturn(0);
+}
+
+/* Metric weights of the global multipliers: g_j = |row_j|^2, so that the dual step acts alike on
+   constraints of any unit (the paper leaves this metric open). */
+static PetscErrorCode GlobalWeights(Flow *F)
+{
+  PetscFunctionBeginUser;
+  for (PetscInt j = 0; j < F->k; j++) {
+    PetscReal n;
+    PetscCall(VecNorm(F->rows[j], NORM_2, &n));
+    F->gw[j] = PetscMax(n * n, PETSC_SMALL);
+  }
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode SetOperators(Flow *F, PetscReal t, PetscReal tmu)
+{
+  PetscFunctionBeginUser;
+  PetscCall(CSSaddleSetOperators(&F->saddle, F->metric.H, t, F->iq, tmu, F->conformal ? F->cc.X : NULL, F->rows, F->gw));
+  PetscFunctionReturn(0);
+}
+
+/* PGD projection onto the constraint set (soliman2021 Sec. 4.1: the explicit step leaves the nonlinear
+   constraint manifold): Gauss-Newton steps, each the minimal-H^2-norm correction dx with X dx = -c,
+   solved as the saddle system with t = 1 and a huge t_mu (the -I_Q/t_mu block only regularises the
+   rank deficiency of X, PETSC-NOTES). */
+static PetscErrorCode Project(Flow *F, Vec x, PetscBool *ok, PetscInt *kspits)
+{
+  PetscReal conf, glob;
+  PetscFunctionBeginUser;
+  *ok = PETSC_FALSE;
+  for (PetscInt it = 0; it < F->proj_max_it; it++) {
+    PetscInt its;
+    PetscCall(EvalConstraints(F, x, F->ct, F->cxt, PETSC_TRUE));
+    PetscCall(Violation(F, F->ct, F->cxt, &conf, &glob, NULL));
+    if (!(conf == conf) || !(glob == glob)) PetscFunctionReturn(0);
+    if (PetscMax(conf, glob) < 0.1 * F->ctol) {
+      *ok = PETSC_TRUE;
+      PetscFunctionReturn(0);
+    }
+    if (F->k) PetscCall(GlobalWeights(F));
+    PetscCall(CSMetricUpdate(&F->metric, x));
+    PetscCall(SetOperators(F, 1.0, F->proj_tmu));
+    PetscCall(VecScale(F->ct, -1.0));
+    for (PetscInt j = 0; j < F->k; j++) F->cxt[j] = -F->cxt[j];
+    PetscCall(VecSet(F->tmp, 0));
+    PetscCall(CSSaddleSolve(&F->saddle, F->ct, F->tmp, F->cxt, F->dmu, F->df, F->dnu, &its));
+    *kspits += its;
+    PetscCall(VecAXPY(x, 1.0, F->df));
+  }
+  PetscCall(EvalConstraints(F, x, F->ct, F->cxt, PETSC_FALSE));
+  PetscCall(Violation(F, F->ct, F->cxt, &conf, &glob, NULL));
+  *ok = (PetscBool)(PetscMax(conf, glob) < F->ctol);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSWillmoreFlowRun(MPI_Comm comm, CSOutput *out, CSFlowKind kind)
+{
+  Flow           F;
+  CSHistory      hist = NULL;
+  PetscLogDouble t0, tnow;
+  PetscReal      E = 0, el = 0, conf = 0, glob = 0, A, V;
+  PetscInt       it, kspits = 0, kspits_total = 0, rejections = 0, nguard = 0;
+  PetscBool      converged = PETSC_FALSE;
+  const char    *names[] = {"cgd", "pgd", "gd"};
+  PetscFunctionBeginUser;
+  PetscCall(PetscTime(&t0));
+  PetscCall(FlowSetUp(comm, &F, kind, out));
+  if (out->has_history) PetscCall(CSHistoryCreate(comm, out->history, "it,energy,area,volume,conformal_violation,constraint_violation,el_residual,t,ksp_its,rejections,seconds", &hist));
+  PetscCall(PetscPrintf(comm, "flow %s: mesh %s V=%" PetscInt_FMT " E=%" PetscInt_FMT " F=%" PetscInt_FMT ", energy %s, metric %s, conformal %s, %" PetscInt_FMT " global constraint rows%s, t=%g t_mu=%g\n", names[kind], F.mesh->name, F.mesh->Nv, F.mesh->Ne, F.mesh->Nf, F.energy_name, F.metric.h2 ? "h2" : "l2", F.conformal ? "on" : "off", F.k, F.fixedIS ? ", Dirichlet boundary" : "", (double)F.t, (double)F.tmu));
+
+  if (kind == CS_FLOW_PGD) { /* PGD starts on the constraint set */
+    PetscBool ok;
+    PetscCall(Project(&F, F.x, &ok, &kspits_total));
+    PetscCheck(ok, comm, PETSC_ERR_NOT_CONVERGED, "pgd: the initial projection onto the constraint set did not converge");
+  }
+  for (it = 0;; it++) {
+    PetscReal l1;
+    PetscCall(CSEnergyGradient(F.energy, F.x, &E, F.g));
+    PetscCall(ZeroFixed(&F, F.g));
+    PetscCall(EvalConstraints(&F, F.x, F.c, F.cx, PETSC_TRUE));
+    PetscCall(Residual(&F, &el));
+    PetscCall(Violation(&F, F.c, F.cx, &conf, &glob, &l1));
+    PetscCall(CSGeometryAreaVolume(F.mesh, F.x, &A, &V));
+    PetscCall(PetscTime(&tnow));
+    PetscCall(PetscPrintf(comm, "%4" PetscInt_FMT " E %.12g area %.8g vol %.8g |c|inf %.3e |xi| %.3e el %.3e t %.3g ksp %" PetscInt_FMT "\n", it, (double)E, (double)A, (double)V, (double)conf, (double)glob, (double)el, (double)F.t, kspits));
+    if (hist) {
+      PetscReal row[11] = {(PetscReal)it, E, A, V, conf, glob, el, F.t, (PetscReal)kspits, (PetscReal)rejections, tnow - t0};
+      PetscCall(CSHistoryAppend(hist, 11, row));
+    }
+    if (!(E == E) || !(el == el)) SETERRQ(comm, PETSC_ERR_FP, "flow: the energy or the residual is not a number at iteration %" PetscInt_FMT " (degenerate triangles?); try a smaller -flow_t", it);
+    if (el < F.rtol && PetscMax(conf, glob) < F.ctol) {
+      converged = PETSC_TRUE;
+      break;
+    }
+    if (it >= F.max_it) break;
+
+    /* operators at x */
+    PetscCall(CSMetricUpdate(&F.metric, F.x));
+    if (F.conformal) {
+      PetscInt ng;
+      PetscCall(CSOperatorQuadDiffMetric(F.mesh, F.x, F.wmin, F.iq, &ng));
+      nguard = PetscMax(nguard, ng);
+    }
+    if (F.k) PetscCall(GlobalWeights(&F));
+    kspits = 0;
+    for (PetscInt rej = 0;; rej++) {
+      PetscReal Et, phi0, phit, conft, globt, l1t;
+      PetscBool accept = PETSC_TRUE;
+      PetscInt  its;
+      PetscCheck(rej <= F.max_rej, comm, PETSC_ERR_NOT_CONVERGED, "flow: %" PetscInt_FMT " consecutive steps rejected at iteration %" PetscInt_FMT " (t = %g): the merit function does not decrease", rej - 1, it, (double)F.t);
+      PetscCall(SetOperators(&F, F.t, kind == CS_FLOW_PGD ? F.proj_tmu : F.tmu));
+      /* right-hand side (Algorithm 1 line 11): [-c; -g - X^T mu - B^T nu; -xi] for CGD/GD, [0; -g; 0] for PGD */
+      if (kind == CS_FLOW_PGD) {
+        PetscCall(VecSet(F.ct, 0));
+        PetscCall(VecCopy(F.g, F.tmp));
+        PetscCall(VecScale(F.tmp, -1.0));
+        for (PetscInt j = 0; j < F.k; j++) F.cxt[j] = 0;
+      } else {
+        if (F.conformal) {
+          PetscCall(VecCopy(F.c, F.ct));
+          PetscCall(VecScale(F.ct, -1.0));
+        }
+        PetscCall(VecCopy(F.r, F.tmp));
+        PetscCall(VecScale(F.tmp, -1.0));
+        for (PetscInt j = 0; j < F.k; j++) F.cxt[j] = -F.cx[j];
+      }
+      PetscCall(CSSaddleSolve(&F.saddle, F.ct, F.tmp, F.cxt, F.dmu, F.df, F.dnu, &its));
+      kspits += its;
+      /* trial point */
+      PetscCall(VecWAXPY(F.xt, 1.0, F.df, F.x));
+      if (kind == CS_FLOW_PGD) {
+        PetscBool ok;
+        PetscCall(Project(&F, F.xt, &ok, &kspits));
+        if (!ok) accept = PETSC_FALSE;
+      }
+      if (accept && F.step_control) {
+        if (kind == CS_FLOW_PGD) {
+          phi0 = E;
+          PetscCall(CSEnergyValue(F.energy, F.xt, &Et));
+          phit = Et;
+        } else {
+          /* l1 exact penalty: rho >= 2 |multiplier| after the update */
+          if (F.conformal) {
+            PetscReal mn;
+            PetscCall(VecWAXPY(F.ct, 1.0, F.dmu, F.mu));
+            PetscCall(VecNorm(F.ct, NORM_INFINITY, &mn));
+            F.rhoE = PetscMax(F.rhoE, 2 * mn);
+          }
+          for (PetscInt j = 0; j < F.k; j++) F.rhoX[j] = PetscMax(F.rhoX[j], 2 * PetscAbsReal(F.nu[j] + F.dnu[j]));
+          PetscCall(Violation(&F, F.c, F.cx, &conf, &glob, &l1));
+          phi0 = E + l1;
+          PetscCall(CSEnergyValue(F.energy, F.xt, &Et));
+          PetscCall(EvalConstraints(&F, F.xt, F.ct, F.cxt, PETSC_FALSE));
+          PetscCall(Violation(&F, F.ct, F.cxt, &conft, &globt, &l1t));
+          phit = Et + l1t;
+        }
+        /* a relative slack of 1e-12 lets converged iterates (changes at round-off level) pass */
+        if (!(phit == phit) || phit > phi0 + 1e-12 * PetscAbsReal(phi0)) accept = PETSC_FALSE;
+        if (!accept) PetscCall(PetscPrintf(comm, "     step rejected: merit %.15g -> %.15g with t = %g; halving t\n", (double)phi0, (double)phit, (double)F.t));
+      }
+      if (accept) break;
+      rejections++;
+      F.t *= 0.5;
+      if (kind != CS_FLOW_PGD) F.tmu *= 0.5; /* keep t_mu / t */
+    }
+    /* accept */
+    PetscCall(VecCopy(F.xt, F.x));
+    if (kind == CS_FLOW_PGD) {
+      /* PGD's multipliers are those of the last linearised problem */
+      if (F.conformal) PetscCall(VecCopy(F.dmu, F.mu));
+      for (PetscInt j = 0; j < F.k; j++) F.nu[j] = F.dnu[j];
+    } else {
+      if (F.conformal) PetscCall(VecAXPY(F.mu, 1.0, F.dmu));
+      for (PetscInt j = 0; j < F.k; j++) F.nu[j] += F.dnu[j];
+    }
+    kspits_total += kspits;
+    if (F.t * F.grow <= F.tmax) {
+      F.t *= F.grow;
+      if (kind != CS_FLOW_PGD) F.tmu *= F.grow;
+    }
+  }
+  PetscCall(PetscTime(&tnow));
+  PetscCall(PetscPrintf(comm, "flow %s: %s after %" PetscInt_FMT " iterations (%" PetscInt_FMT " rejected steps, %" PetscInt_FMT " KSP iterations, %" PetscInt_FMT " edges with guarded I_Q weight), %.3f s\n", names[kind], converged ? "converged" : "NOT converged", it, rejections, kspits_total, nguard, tnow - t0));
+  PetscCall(CSJSONAddString(out->json, "flow_type", names[kind]));
+  PetscCall(CSJSONAddString(out->json, "energy_name", F.energy_name));
+  PetscCall(CSJSONAddInt(out->json, "iterations", it));
+  PetscCall(CSJSONAddBool(out->json, "converged", converged));
+  PetscCall(CSJSONAddReal(out->json, "energy", E));
+  PetscCall(CSJSONAddReal(out->json, "conformal_violation", conf));
+  PetscCall(CSJSONAddReal(out->json, "constraint_violation", glob));
+  PetscCall(CSJSONAddReal(out->json, "el_residual", el));
+  PetscCall(CSJSONAddInt(out->json, "rejections", rejections));
+  PetscCall(CSJSONAddInt(out->json, "ksp_iterations", kspits_total));
+  PetscCall(CSJSONAddReal(out->json, "t_final", F.t));
+  PetscCall(CSJSONAddReal(out->json, "seconds_per_iteration", it ? (tnow - t0) / it : 0));
+  if (F.k) PetscCall(CSJSONAddRealArray(out->json, "constraint_values", F.k, F.cx));
+  if (out->has_viewer) {
+    CSViewer v;
+    PetscCall(CSViewerCreate(F.mesh, out->viewer_dir, &v));
+    PetscCall(CSViewerWriteStep(v, F.x, (PetscReal)it));
+    PetscCall(CSViewerDestroy(&v));
+  }
+  PetscCall(CSOutputAddMeshFacts(out, F.mesh, F.x, F.x0));
+  PetscCall(CSOutputFinish(out, F.mesh, F.x));
+  if (hist) PetscCall(CSHistoryDestroy(&hist));
+  PetscCall(FlowDestroy(&F));
+  PetscFunctionReturn(0);
+}

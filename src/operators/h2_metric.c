@@ -1,0 +1,94 @@
+/* The Sobolev metrics of the flow: H^2 = *0 + L *0^{-1} L (soliman2021 Eq. 11, Eq. 26) or L2 = *0. */
+#include "cs_operators_conformal.h"
+
+static PetscErrorCode H2ShellMult(Mat A, Vec u, Vec y)
+{
+  CSMetric *m;
+  PetscFunctionBeginUser;
+  PetscCall(MatShellGetContext(A, &m));
+  PetscCall(MatMult(m->Ls, u, m->work));        /* *0^{-1} L u */
+  PetscCall(MatMult(m->L3, m->work, y));        /* L *0^{-1} L u */
+  PetscCall(VecPointwiseMult(m->work, m->m3, u));
+  PetscCall(VecAXPY(y, 1.0, m->work));          /* + *0 u */
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSMetricCreate(CSMesh mesh, PetscBool h2, CSMetric *m)
+{
+  PetscInt n, N;
+  PetscFunctionBeginUser;
+  PetscCall(PetscMemzero(m, sizeof(*m)));
+  m->mesh = mesh;
+  m->h2   = h2;
+  PetscCall(DMCreateGlobalVector(mesh->dmV3, &m->m3));
+  PetscCall(VecDuplicate(m->m3, &m->minv3));
+  PetscCall(VecDuplicate(m->m3, &m->work));
+  PetscCall(VecGetLocalSize(m->m3, &n));
+  PetscCall(VecGetSize(m->m3, &N));
+  PetscCall(MatCreateShell(mesh->comm, n, n, N, N, m, &m->shell));
+  PetscCall(MatShellSetOperation(m->shell, MATOP_MULT, (void (*)(void))H2ShellMult));
+  PetscCall(MatSetOption(m->shell, MAT_SYMMETRIC, PETSC_TRUE));
+  PetscFunctionReturn(0);
+}
+
+/* The product L *0^{-1} L couples two-rings, beyond the closure adjacency of the DM, so it is formed with
+   MatMatMult (PETSC-NOTES), symbolic product reused from the second call on. */
+PetscErrorCode CSMetricUpdate(CSMetric *m, Vec x)
+{
+  CSMesh             mesh = m->mesh;
+  Vec                a;
+  const PetscScalar *aa;
+  PetscScalar       *m3, *mi;
+  PetscInt           n;
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(CS_EVENT_Assemble, 0, 0, 0, 0));
+  PetscCall(DMGetGlobalVector(mesh->dmV1, &a));
+  PetscCall(CSOperatorMass(mesh, x, a));
+  PetscCall(VecGetLocalSize(a, &n));
+  PetscCall(VecGetArrayRead(a, &aa));
+  PetscCall(VecGetArray(m->m3, &m3));
+  PetscCall(VecGetArray(m->minv3, &mi));
+  for (PetscInt i = 0; i < n; i++)
+    for (int d = 0; d < 3; d++) {
+      m3[3 * i + d] = aa[i];
+      mi[3 * i + d] = 1.0 / aa[i];
+    }
+  PetscCall(VecRestoreArray(m->minv3, &mi));
+  PetscCall(VecRestoreArray(m->m3, &m3));
+  PetscCall(VecRestoreArrayRead(a, &aa));
+  PetscCall(DMRestoreGlobalVector(mesh->dmV1, &a));
+  if (m->h2) {
+    PetscBool first = m->L3 ? PETSC_FALSE : PETSC_TRUE;
+    PetscCall(CSOperatorLaplacian3(mesh, x, first ? MAT_INITIAL_MATRIX : MAT_REUSE_MATRIX, &m->L3));
+    if (first) PetscCall(MatDuplicate(m->L3, MAT_COPY_VALUES, &m->Ls));
+    else PetscCall(MatCopy(m->L3, m->Ls, SAME_NONZERO_PATTERN));
+    PetscCall(MatDiagonalScale(m->Ls, m->minv3, NULL));
+    PetscCall(MatMatMult(m->L3, m->Ls, first ? MAT_INITIAL_MATRIX : MAT_REUSE_MATRIX, PETSC_DEFAULT, &m->H));
+    PetscCall(MatDiagonalSet(m->H, m->m3, ADD_VALUES));
+    PetscCall(MatSetOption(m->H, MAT_SYMMETRIC, PETSC_TRUE));
+  } else {
+    if (!m->H) {
+      PetscInt N;
+      PetscCall(VecGetSize(m->m3, &N));
+      PetscCall(MatCreateAIJ(mesh->comm, 3 * n, 3 * n, N, N, 1, NULL, 0, NULL, &m->H));
+      PetscCall(MatSetOption(m->H, MAT_SYMMETRIC, PETSC_TRUE));
+      PetscCall(MatSetUp(m->H));
+    }
+    PetscCall(MatDiagonalSet(m->H, m->m3, INSERT_VALUES));
+  }
+  PetscCall(PetscLogEventEnd(CS_EVENT_Assemble, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSMetricDestroy(CSMetric *m)
+{
+  PetscFunctionBeginUser;
+  PetscCall(MatDestroy(&m->L3));
+  PetscCall(MatDestroy(&m->Ls));
+  PetscCall(MatDestroy(&m->H));
+  PetscCall(MatDestroy(&m->shell));
+  PetscCall(VecDestroy(&m->m3));
+  PetscCall(VecDestroy(&m->minv3));
+  PetscCall(VecDestroy(&m->work));
+  PetscFunctionReturn(0);
+}

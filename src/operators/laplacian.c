@@ -1,0 +1,61 @@
+/* Cotan Laplacian assembled face by face: each face adds the 3x3 block of its half-cotan edge weights. */
+#include "cs_operators.h"
+
+/* Adds the face blocks to A (dof block size bs: the same weight on each of the bs components). */
+static PetscErrorCode AssembleCotanLaplacian(CSMesh m, Vec x, DM dmX, PetscInt bs, MatReuse reuse, Mat *A)
+{
+  Vec              xl;
+  const PetscReal *p;
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(CS_EVENT_Assemble, 0, 0, 0, 0));
+  if (reuse == MAT_INITIAL_MATRIX) {
+    PetscCall(DMCreateMatrix(dmX, A));
+    PetscCall(MatSetOption(*A, MAT_SYMMETRIC, PETSC_TRUE));
+  } else PetscCall(MatZeroEntries(*A));
+  PetscCall(CSMeshGetLocalPositions(m, x, &xl, &p));
+  for (PetscInt f = 0; f < m->nf; f++) {
+    const PetscInt  *v    = m->faceVert + 3 * f;
+    const PetscReal *c[3] = {p + 3 * v[0], p + 3 * v[1], p + 3 * v[2]};
+    PetscReal        cot[3];
+    PetscScalar      K[9] = {0};
+    CSTriangleCotans(c, cot);
+    for (int k = 0; k < 3; k++) {
+      int       i = (k + 1) % 3, j = (k + 2) % 3;
+      PetscReal w = 0.5 * cot[k];
+      K[3 * i + i] += w;
+      K[3 * j + j] += w;
+      K[3 * i + j] -= w;
+      K[3 * j + i] -= w;
+    }
+    for (PetscInt d = 0; d < bs; d++) {
+      PetscInt rows[3] = {bs * v[0] + d, bs * v[1] + d, bs * v[2] + d};
+      PetscCall(MatSetValuesLocal(*A, 3, rows, 3, rows, K, ADD_VALUES));
+    }
+  }
+  PetscCall(CSMeshRestoreLocalPositions(m, x, &xl, &p));
+  PetscCall(MatAssemblyBegin(*A, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(*A, MAT_FINAL_ASSEMBLY));
+  PetscCall(PetscLogEventEnd(CS_EVENT_Assemble, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSOperatorLaplacian(CSMesh m, Vec x, MatReuse reuse, Mat *L)
+{
+  PetscFunctionBeginUser;
+  PetscCall(AssembleCotanLaplacian(m, x, m->dmV1, 1, reuse, L));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSOperatorLaplacian3(CSMesh m, Vec x, MatReuse reuse, Mat *L3)
+{
+  PetscFunctionBeginUser;
+  PetscCall(AssembleCotanLaplacian(m, x, m->dmV3, 3, reuse, L3));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSOperatorMass(CSMesh m, Vec x, Vec mass)
+{
+  PetscFunctionBeginUser;
+  PetscCall(CSGeometryVertexAreas(m, x, mass));
+  PetscFunctionReturn(0);
+}

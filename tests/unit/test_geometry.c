@@ -1,0 +1,240 @@
+static const char help[] = "Checks of the foundation layer: energy gradients against finite differences, Willmore energy\n"
+                           "convergence (4 pi, 2 pi^2) and invariances, cotan Laplacian identities. Prints one line per\n"
+                           "check; the exit status is the number of failed checks.\n";
+
+#include "cs_energy.h"
+#include "cs_util.h"
+#include <petscksp.h>
+
+static PetscInt nfail = 0;
+
+static PetscErrorCode Check(MPI_Comm comm, PetscBool ok, const char what[], PetscReal value, PetscReal bound)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscPrintf(comm, "%s %s: %.3e (bound %.1e)\n", ok ? "ok  " : "FAIL", what, (double)value, (double)bound));
+  if (!ok) nfail++;
+  PetscFunctionReturn(0);
+}
+
+/* Random perturbation of the serial data on rank 0 (fixed seed), so every process count sees the same mesh. */
+static PetscErrorCode Perturb(CSMeshData *md, PetscReal amp)
+{
+  PetscRandom r;
+  PetscFunctionBeginUser;
+  if (!md->nv || amp <= 0) PetscFunctionReturn(0);
+  PetscCall(PetscRandomCreate(PETSC_COMM_SELF, &r));
+  PetscCall(PetscRandomSetInterval(r, -amp, amp));
+  PetscCall(PetscRandomSetSeed(r, 7));
+  PetscCall(PetscRandomSeed(r));
+  for (PetscInt i = 0; i < 3 * md->nv; i++) {
+    PetscReal d;
+    PetscCall(PetscRandomGetValueReal(r, &d));
+    md->x[i] += d;
+  }
+  PetscCall(PetscRandomDestroy(&r));
+  PetscFunctionReturn(0);
+}
+
+typedef enum { GEN_ICOSPHERE, GEN_TORUS, GEN_CYLINDER, GEN_DISK } Gen;
+
+static PetscErrorCode MakeMesh(MPI_Comm comm, Gen g, PetscInt a, PetscInt b, PetscReal R, PetscReal r, PetscReal amp, CSMesh *mesh)
+{
+  CSMeshData  md;
+  CSTopology  topo;
+  PetscMPIInt rank;
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCall(PetscMemzero(&md, sizeof(md)));
+  PetscCall(PetscMemzero(&topo, sizeof(topo)));
+  if (!rank) {
+    switch (g) {
+    case GEN_ICOSPHERE:
+      PetscCall(CSMeshDataIcosphere(a, 1.0, PETSC_TRUE, &md));
+      break;
+    case GEN_TORUS:
+      PetscCall(CSMeshDataTorus(R, r, a, b, &md));
+      break;
+    case GEN_CYLINDER:
+      PetscCall(CSMeshDataCylinder(1.0, 2.0, a, b, &md));
+      break;
+    case GEN_DISK:
+      PetscCall(CSMeshDataDisk(1.0, a, &md));
+      break;
+    }
+    PetscCall(Perturb(&md, amp));
+    PetscCall(CSMeshDataValidate(&md, &topo));
+  }
+  PetscCall(CSMeshCreateFromData(comm, &md, &topo, mesh));
+  PetscFunctionReturn(0);
+}
+
+/* Gradients of W, area and volume against central differences (relative error <= 1e-6). */
+static PetscErrorCode CheckGradients(MPI_Comm comm, CSMesh mesh, const char label[])
+{
+  PetscErrorCode (*create[3])(CSMesh, CSEnergy *) = {CSEnergyCreateWillmore, CSEnergyCreateArea, CSEnergyCreateVolume};
+  PetscFunctionBeginUser;
+  for (int k = 0; k < 3; k++) {
+    CSEnergy  e;
+    PetscReal err;
+    char      what[128];
+    PetscCall(create[k](mesh, &e));
+    PetscCall(CSEnergyCheckGradient(e, mesh->x, 1e-6, 4, &err));
+    PetscCall(PetscSNPrintf(what, sizeof(what), "FD gradient of %s on %s", e->name, label));
+    PetscCall(Check(comm, (PetscBool)(err <= 1e-6), what, err, 1e-6));
+    PetscCall(CSEnergyDestroy(&e));
+  }
+  PetscFunctionReturn(0);
+}
+
+/* W under x -> s Q x + t must not change (Willmore energy is scale, rotation and translation invariant). */
+static PetscErrorCode CheckInvariance(MPI_Comm comm, CSMesh mesh)
+{
+  CSEnergy           e;
+  Vec                y;
+  PetscReal          W0, W1;
+  const PetscReal    c = PetscCosReal(0.7), s = PetscSinReal(0.7), scale = 3.7, t[3] = {1.5, -2.0, 0.25};
+  const PetscScalar *xa;
+  PetscScalar       *ya;
+  PetscInt           n;
+  PetscFunctionBeginUser;
+  PetscCall(CSEnergyCreateWillmore(mesh, &e));
+  PetscCall(CSEnergyValue(e, mesh->x, &W0));
+  PetscCall(VecDuplicate(mesh->x, &y));
+  PetscCall(VecGetLocalSize(y, &n));
+  PetscCall(VecGetArrayRead(mesh->x, &xa));
+  PetscCall(VecGetArray(y, &ya));
+  for (PetscInt i = 0; i < n / 3; i++) {
+    const PetscScalar *p = xa + 3 * i;
+    /* rotation about (1,1,1)/sqrt3 by Rodrigues, then scale and shift */
+    PetscReal k[3] = {1 / PetscSqrtReal(3), 1 / PetscSqrtReal(3), 1 / PetscSqrtReal(3)}, kx[3], kp = k[0] * p[0] + k[1] * p[1] + k[2] * p[2];
+    kx[0] = k[1] * p[2] - k[2] * p[1];
+    kx[1] = k[2] * p[0] - k[0] * p[2];
+    kx[2] = k[0] * p[1] - k[1] * p[0];
+    for (int d = 0; d < 3; d++) ya[3 * i + d] = scale * (p[d] * c + kx[d] * s + k[d] * kp * (1 - c)) + t[d];
+  }
+  PetscCall(VecRestoreArray(y, &ya));
+  PetscCall(VecRestoreArrayRead(mesh->x, &xa));
+  PetscCall(CSEnergyValue(e, y, &W1));
+  PetscCall(Check(comm, (PetscBool)(PetscAbsReal(W1 - W0) <= 1e-12 * W0), "W invariant under rotation+scale+translation (rel. diff)", PetscAbsReal(W1 - W0) / W0, 1e-12));
+  PetscCall(VecDestroy(&y));
+  PetscCall(CSEnergyDestroy(&e));
+  PetscFunctionReturn(0);
+}
+
+/* L 1 = 0, L symmetric, u^T L u >= 0 for random u (the test meshes are Delaunay), 1/2 <Lf, f> = area. */
+static PetscErrorCode CheckLaplacian(MPI_Comm comm, CSMesh mesh, const char label[])
+{
+  Mat         L, L3;
+  Vec         one, y, f3, y3;
+  PetscReal   nrm, area, minq = PETSC_MAX_REAL;
+  PetscBool   sym;
+  PetscScalar half;
+  PetscRandom rnd;
+  char        what[128];
+  PetscFunctionBeginUser;
+  PetscCall(CSOperatorLaplacian(mesh, mesh->x, MAT_INITIAL_MATRIX, &L));
+  PetscCall(MatCreateVecs(L, &one, &y));
+  PetscCall(VecSet(one, 1));
+  PetscCall(MatMult(L, one, y));
+  PetscCall(VecNorm(y, NORM_INFINITY, &nrm));
+  PetscCall(PetscSNPrintf(what, sizeof(what), "|L 1|_inf on %s", label));
+  PetscCall(Check(comm, (PetscBool)(nrm <= 1e-12), what, nrm, 1e-12));
+  PetscCall(MatIsSymmetric(L, 1e-14, &sym));
+  PetscCall(PetscSNPrintf(what, sizeof(what), "L symmetric on %s", label));
+  PetscCall(Check(comm, sym, what, sym ? 0 : 1, 0));
+  PetscCall(PetscRandomCreate(comm, &rnd));
+  PetscCall(PetscRandomSetFromOptions(rnd));
+  for (int k = 0; k < 10; k++) {
+    PetscScalar q, uu;
+    PetscCall(VecSetRandom(one, rnd));
+    PetscCall(MatMult(L, one, y));
+    PetscCall(VecDot(one, y, &q));
+    PetscCall(VecDot(one, one, &uu));
+    minq = PetscMin(minq, PetscRealPart(q / uu));
+  }
+  PetscCall(PetscSNPrintf(what, sizeof(what), "min u^T L u / u^T u >= 0 (random u) on %s", label));
+  PetscCall(Check(comm, (PetscBool)(minq >= 0), what, minq, 0));
+  PetscCall(CSOperatorLaplacian3(mesh, mesh->x, MAT_INITIAL_MATRIX, &L3));
+  PetscCall(MatCreateVecs(L3, &f3, &y3));
+  PetscCall(VecCopy(mesh->x, f3));
+  PetscCall(MatMult(L3, f3, y3));
+  PetscCall(VecDot(y3, f3, &half));
+  half *= 0.5;
+  PetscCall(CSGeometryAreaVolume(mesh, mesh->x, &area, NULL));
+  PetscCall(PetscSNPrintf(what, sizeof(what), "1/2 <Lf,f> = area on %s (rel. diff)", label));
+  PetscCall(Check(comm, (PetscBool)(PetscAbsReal(PetscRealPart(half) - area) <= 1e-12 * area), what, PetscAbsReal(PetscRealPart(half) - area) / area, 1e-12));
+  PetscCall(PetscRandomDestroy(&rnd));
+  PetscCall(VecDestroy(&one));
+  PetscCall(VecDestroy(&y));
+  PetscCall(VecDestroy(&f3));
+  PetscCall(VecDestroy(&y3));
+  PetscCall(MatDestroy(&L));
+  PetscCall(MatDestroy(&L3));
+  PetscFunctionReturn(0);
+}
+
+/* W -> 4 pi on refined icospheres and W -> 2 pi^2 on refined tori with R = sqrt 2, r = 1: the error must
+   fall monotonically at second order (ratio ~4 per halving of h), and the Richardson extrapolation of the last
+   two levels, W + (W - W_prev)/3, must match the exact value. */
+static PetscErrorCode CheckSequence(MPI_Comm comm, Gen g, const char label[], PetscReal exact, PetscReal tol)
+{
+  PetscReal W = 0, Wprev = 0, err = 0, prev = PETSC_MAX_REAL, ratio = 0, rich;
+  PetscBool mono = PETSC_TRUE;
+  char      what[160];
+  PetscFunctionBeginUser;
+  for (PetscInt k = 0; k < 4; k++) {
+    CSMesh   mesh;
+    CSEnergy e;
+    PetscInt n = 16 << k;
+    if (g == GEN_ICOSPHERE) PetscCall(MakeMesh(comm, g, k + 2, 0, 0, 0, 0, &mesh));
+    else PetscCall(MakeMesh(comm, g, n, n / 2, PetscSqrtReal(2), 1, 0, &mesh));
+    PetscCall(CSEnergyCreateWillmore(mesh, &e));
+    Wprev = W;
+    PetscCall(CSEnergyValue(e, mesh->x, &W));
+    err = PetscAbsReal(W - exact);
+    PetscCall(PetscPrintf(comm, "     %s, %" PetscInt_FMT " faces: W = %.12f, |W - exact| = %.3e\n", label, mesh->Nf, (double)W, (double)err));
+    if (err >= prev) mono = PETSC_FALSE;
+    if (k) ratio = prev / err;
+    prev = err;
+    PetscCall(CSEnergyDestroy(&e));
+    PetscCall(CSMeshDestroy(&mesh));
+  }
+  rich = W + (W - Wprev) / 3;
+  PetscCall(PetscSNPrintf(what, sizeof(what), "%s: error falls monotonically at 2nd order (last ratio)", label));
+  PetscCall(Check(comm, (PetscBool)(mono && ratio > 3.5 && ratio < 4.5), what, ratio, 4));
+  PetscCall(PetscSNPrintf(what, sizeof(what), "%s: Richardson-extrapolated W matches exact (rel. error)", label));
+  PetscCall(Check(comm, (PetscBool)(PetscAbsReal(rich - exact) <= tol * exact), what, PetscAbsReal(rich - exact) / exact, tol));
+  PetscFunctionReturn(0);
+}
+
+int main(int argc, char **argv)
+{
+  MPI_Comm comm;
+  CSMesh   mesh;
+  PetscCall(PetscInitialize(&argc, &argv, NULL, help));
+  comm = PETSC_COMM_WORLD;
+
+  PetscCall(MakeMesh(comm, GEN_ICOSPHERE, 2, 0, 0, 0, 0.03, &mesh));
+  PetscCall(CheckGradients(comm, mesh, "perturbed icosphere"));
+  PetscCall(CheckInvariance(comm, mesh));
+  PetscCall(CSMeshDestroy(&mesh));
+  PetscCall(MakeMesh(comm, GEN_TORUS, 16, 8, 2.0, 0.7, 0.03, &mesh));
+  PetscCall(CheckGradients(comm, mesh, "perturbed torus"));
+  PetscCall(CSMeshDestroy(&mesh));
+  PetscCall(MakeMesh(comm, GEN_CYLINDER, 16, 6, 0, 0, 0.03, &mesh));
+  PetscCall(CheckGradients(comm, mesh, "perturbed open cylinder (boundary)"));
+  PetscCall(CSMeshDestroy(&mesh));
+
+  PetscCall(MakeMesh(comm, GEN_ICOSPHERE, 3, 0, 0, 0, 0, &mesh));
+  PetscCall(CheckLaplacian(comm, mesh, "icosphere"));
+  PetscCall(CSMeshDestroy(&mesh));
+  PetscCall(MakeMesh(comm, GEN_DISK, 6, 0, 0, 0, 0, &mesh));
+  PetscCall(CheckLaplacian(comm, mesh, "disk (boundary)"));
+  PetscCall(CSMeshDestroy(&mesh));
+
+  PetscCall(CheckSequence(comm, GEN_ICOSPHERE, "unit icosphere -> 4pi", 4 * PETSC_PI, 1e-5));
+  PetscCall(CheckSequence(comm, GEN_TORUS, "torus R=sqrt2 r=1 -> 2pi^2", 2 * PETSC_PI * PETSC_PI, 1e-4));
+  PetscCall(PetscPrintf(comm, "%" PetscInt_FMT " failed\n", nfail));
+  PetscCall(PetscFinalize());
+  return (int)nfail;
+}

@@ -1,0 +1,238 @@
+/* Unit checks of the quaternion kernels and the Dirac operators (crane2011 Sec. 5, crane2013 App. G):
+   block = Hamilton product, block^T = conjugate; AIJ X == shell X == A^T M_F A (to round-off), X symmetric,
+   Y = B^T M_F A, constants in the kernel of X for rho = 0. Exit status = number of failures.
+   Run: build/tests/test_spin_dirac [-gen_level 2]   (also under mpirun -n 2) */
+#include <slepcsys.h>
+#include "cs_operators_dirac.h"
+
+static PetscInt nfail = 0;
+
+static PetscErrorCode Check(MPI_Comm comm, const char what[], PetscReal err, PetscReal tol)
+{
+  PetscFunctionBeginUser;
+  if (!(err <= tol)) nfail++;
+  PetscCall(PetscPrintf(comm, "%s %-60s err %.3e (tol %.1e)\n", err <= tol ? "ok  " : "BAD ", what, (double)err, (double)tol));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode CheckQuaternions(MPI_Comm comm)
+{
+  PetscRandom r;
+  PetscReal   e1 = 0, e2 = 0, e3 = 0, e4 = 0;
+  PetscFunctionBeginUser;
+  PetscCall(PetscRandomCreate(PETSC_COMM_SELF, &r));
+  PetscCall(PetscRandomSetInterval(r, -1, 1));
+  PetscCall(PetscRandomSetSeed(r, 7));
+  PetscCall(PetscRandomSeed(r));
+  for (int t = 0; t < 50; t++) {
+    PetscReal   p[4], q[4], pq[4], cq[4], cpq[4], n[4], R[9], u[4];
+    PetscScalar B[16], Bc[16];
+    for (int c = 0; c < 4; c++) PetscCall(PetscRandomGetValueReal(r, &p[c]));
+    for (int c = 0; c < 4; c++) PetscCall(PetscRandomGetValueReal(r, &q[c]));
+    CSQuatMul(q, p, pq);
+    CSQuatBlock(q, B);
+    for (int s = 0; s < 4; s++) {
+      PetscReal v = 0;
+      for (int t2 = 0; t2 < 4; t2++) v += PetscRealPart(B[4 * s + t2]) * p[t2];
+      e1 = PetscMax(e1, PetscAbsReal(v - pq[s]));
+    }
+    CSQuatConj(q, cq);
+    CSQuatBlock(cq, Bc);
+    for (int s = 0; s < 4; s++)
+      for (int t2 = 0; t2 < 4; t2++) e2 = PetscMax(e2, PetscAbsScalar(B[4 * s + t2] - Bc[4 * t2 + s]));
+    CSQuatConjMul(q, p, cpq);
+    CSQuatMul(cq, p, pq);
+    for (int c = 0; c < 4; c++) e3 = PetscMax(e3, PetscAbsReal(cpq[c] - pq[c]));
+    /* rotation matrix of a unit quaternion and back (up to sign) */
+    {
+      PetscReal nn = PetscSqrtReal(CSQuatNorm2(q)), w, x, y, z, d1 = 0, d2 = 0;
+      for (int c = 0; c < 4; c++) n[c] = q[c] / nn;
+      w    = n[0];
+      x    = n[1];
+      y    = n[2];
+      z    = n[3];
+      R[0] = 1 - 2 * (y * y + z * z);
+      R[1] = 2 * (x * y - w * z);
+      R[2] = 2 * (x * z + w * y);
+      R[3] = 2 * (x * y + w * z);
+      R[4] = 1 - 2 * (x * x + z * z);
+      R[5] = 2 * (y * z - w * x);
+      R[6] = 2 * (x * z - w * y);
+      R[7] = 2 * (y * z + w * x);
+      R[8] = 1 - 2 * (x * x + y * y);
+      CSQuatFromRotation(R, u);
+      for (int c = 0; c < 4; c++) {
+        d1 = PetscMax(d1, PetscAbsReal(u[c] - n[c]));
+        d2 = PetscMax(d2, PetscAbsReal(u[c] + n[c]));
+      }
+      e4 = PetscMax(e4, PetscMin(d1, d2));
+      /* conj(n) v n rotates by R^T: check on a vector */
+      {
+        PetscReal v[3] = {p[1], p[2], p[3]}, rv[3];
+        CSQuatSandwich(n, v, rv);
+        for (int d = 0; d < 3; d++) e4 = PetscMax(e4, PetscAbsReal(rv[d] - (R[d] * v[0] + R[3 + d] * v[1] + R[6 + d] * v[2])));
+      }
+    }
+  }
+  PetscCall(PetscRandomDestroy(&r));
+  PetscCall(Check(comm, "4x4 block of q times p == Hamilton product q p", e1, 1e-14));
+  PetscCall(Check(comm, "block(q)^T == block(conj q)", e2, 0));
+  PetscCall(Check(comm, "CSQuatConjMul == conj then multiply", e3, 1e-14));
+  PetscCall(Check(comm, "rotation <-> quaternion, conj(q) v q == R^T v", e4, 1e-13));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode RelDiff(Vec a, Vec b, PetscReal *err)
+{
+  Vec       d;
+  PetscReal na, nd;
+  PetscFunctionBeginUser;
+  PetscCall(VecDuplicate(a, &d));
+  PetscCall(VecWAXPY(d, -1, b, a));
+  PetscCall(VecNorm(d, NORM_INFINITY, &nd));
+  PetscCall(VecNorm(a, NORM_INFINITY, &na));
+  *err = nd / PetscMax(na, PETSC_SMALL);
+  PetscCall(VecDestroy(&d));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode CheckOperators(CSMesh mesh, Vec x, CSRhoLocation loc, Vec rho, const char label[])
+{
+  DM          dm;
+  Mat         X, S, A, B, Y;
+  Vec         MF, u, y1, y2, y3, fa, fb;
+  PetscRandom r;
+  PetscReal   err;
+  PetscBool   sym;
+  char        what[128];
+  PetscFunctionBeginUser;
+  PetscCall(CSDiracCreateDM(mesh, NULL, &dm));
+  PetscCall(CSDiracAssemble(mesh, dm, x, loc, rho, MAT_INITIAL_MATRIX, &X));
+  PetscCall(CSDiracCreateShell(mesh, dm, x, loc, rho, &S));
+  PetscCall(CSDiracCreateFaceOperators(mesh, dm, x, loc, rho, NULL, &B, &A, &MF));
+  PetscCall(CSDiracAssembleBA(mesh, dm, x, loc, rho, MAT_INITIAL_MATRIX, &Y));
+  PetscCall(DMCreateGlobalVector(dm, &u));
+  PetscCall(VecDuplicate(u, &y1));
+  PetscCall(VecDuplicate(u, &y2));
+  PetscCall(VecDuplicate(u, &y3));
+  PetscCall(MatCreateVecs(A, NULL, &fa));
+  PetscCall(VecDuplicate(fa, &fb));
+  PetscCall(PetscRandomCreate(mesh->comm, &r));
+  PetscCall(PetscRandomSetSeed(r, 11));
+  PetscCall(PetscRandomSeed(r));
+  PetscCall(VecSetRandom(u, r));
+  {
+    PetscInt bs;
+    PetscCall(MatGetBlockSize(X, &bs));
+    PetscCall(PetscSNPrintf(what, sizeof(what), "%s: AIJ block size is 4 (got %" PetscInt_FMT ")", label, bs));
+    PetscCall(Check(mesh->comm, what, (PetscReal)PetscAbsInt(bs - 4), 0));
+  }
+  PetscCall(MatMult(X, u, y1));
+  PetscCall(MatMult(S, u, y2));
+  PetscCall(RelDiff(y1, y2, &err));
+  PetscCall(PetscSNPrintf(what, sizeof(what), "%s: shell X u == AIJ X u", label));
+  PetscCall(Check(mesh->comm, what, err, 1e-12));
+  PetscCall(MatGetDiagonal(X, y1));
+  PetscCall(MatGetDiagonal(S, y2));
+  PetscCall(RelDiff(y1, y2, &err));
+  PetscCall(PetscSNPrintf(what, sizeof(what), "%s: shell diag == AIJ diag", label));
+  PetscCall(Check(mesh->comm, what, err, 1e-12));
+  PetscCall(MatIsSymmetric(X, 1e-12, &sym));
+  PetscCall(PetscSNPrintf(what, sizeof(what), "%s: X symmetric", label));
+  PetscCall(Check(mesh->comm, what, sym ? 0 : 1, 0));
+  /* X = A^T M_F A (crane2011 Sec. 5.4 adjoint) */
+  PetscCall(MatMult(X, u, y1));
+  PetscCall(MatMult(A, u, fa));
+  PetscCall(VecPointwiseMult(fa, fa, MF));
+  PetscCall(MatMultTranspose(A, fa, y3));
+  PetscCall(RelDiff(y1, y3, &err));
+  PetscCall(PetscSNPrintf(what, sizeof(what), "%s: X u == A^T M_F A u", label));
+  PetscCall(Check(mesh->comm, what, err, 1e-12));
+  /* Y = B^T M_F A */
+  PetscCall(MatMult(Y, u, y1));
+  PetscCall(MatMultTranspose(B, fa, y3));
+  PetscCall(RelDiff(y1, y3, &err));
+  PetscCall(PetscSNPrintf(what, sizeof(what), "%s: Y u == B^T M_F A u", label));
+  PetscCall(Check(mesh->comm, what, err, 1e-12));
+  /* kernel: for rho = 0 every constant quaternion field is in ker D and ker X */
+  if (!rho) {
+    PetscScalar *ua;
+    PetscInt     n;
+    PetscReal    nx, nu;
+    PetscCall(VecGetLocalSize(u, &n));
+    PetscCall(VecGetArray(u, &ua));
+    for (PetscInt i = 0; i < n; i += 4) {
+      ua[i]     = 0.3;
+      ua[i + 1] = -1.1;
+      ua[i + 2] = 0.7;
+      ua[i + 3] = 2.0;
+    }
+    PetscCall(VecRestoreArray(u, &ua));
+    PetscCall(MatMult(X, u, y1));
+    PetscCall(MatMult(S, u, y2));
+    PetscCall(VecNorm(y1, NORM_INFINITY, &nx));
+    PetscCall(MatMult(A, u, fa));
+    PetscCall(VecNorm(fa, NORM_INFINITY, &nu));
+    PetscCall(PetscSNPrintf(what, sizeof(what), "%s: X const == 0 and D const == 0", label));
+    PetscCall(Check(mesh->comm, what, PetscMax(nx, nu), 1e-12));
+  }
+  PetscCall(PetscRandomDestroy(&r));
+  PetscCall(VecDestroy(&u));
+  PetscCall(VecDestroy(&y1));
+  PetscCall(VecDestroy(&y2));
+  PetscCall(VecDestroy(&y3));
+  PetscCall(VecDestroy(&fa));
+  PetscCall(VecDestroy(&fb));
+  PetscCall(VecDestroy(&MF));
+  PetscCall(MatDestroy(&X));
+  PetscCall(MatDestroy(&S));
+  PetscCall(MatDestroy(&A));
+  PetscCall(MatDestroy(&B));
+  PetscCall(MatDestroy(&Y));
+  PetscCall(DMDestroy(&dm));
+  PetscFunctionReturn(0);
+}
+
+int main(int argc, char **argv)
+{
+  CSMesh      mesh;
+  Vec         x, rv, rf, d;
+  PetscRandom r;
+  MPI_Comm    comm;
+  PetscCall(SlepcInitialize(&argc, &argv, NULL, NULL));
+  comm = PETSC_COMM_WORLD;
+  PetscCall(PetscOptionsSetValue(NULL, "-gen", "icosphere"));
+  {
+    PetscBool has;
+    PetscCall(PetscOptionsHasName(NULL, NULL, "-gen_level", &has));
+    if (!has) PetscCall(PetscOptionsSetValue(NULL, "-gen_level", "2"));
+  }
+  PetscCall(CheckQuaternions(comm));
+  PetscCall(CSMeshCreateFromOptions(comm, NULL, &mesh));
+  /* a generic (non-round) surface: perturb the positions */
+  PetscCall(PetscRandomCreate(comm, &r));
+  PetscCall(PetscRandomSetInterval(r, -0.05, 0.05));
+  PetscCall(PetscRandomSetSeed(r, 3));
+  PetscCall(PetscRandomSeed(r));
+  PetscCall(VecDuplicate(mesh->x, &x));
+  PetscCall(VecDuplicate(mesh->x, &d));
+  PetscCall(VecSetRandom(d, r));
+  PetscCall(VecWAXPY(x, 1, d, mesh->x));
+  PetscCall(PetscRandomSetInterval(r, -2, 2));
+  PetscCall(DMCreateGlobalVector(mesh->dmV1, &rv));
+  PetscCall(DMCreateGlobalVector(mesh->dmF1, &rf));
+  PetscCall(VecSetRandom(rv, r));
+  PetscCall(VecSetRandom(rf, r));
+  PetscCall(CheckOperators(mesh, x, CS_RHO_NONE, NULL, "rho=0"));
+  PetscCall(CheckOperators(mesh, x, CS_RHO_VERTEX, rv, "rho per vertex"));
+  PetscCall(CheckOperators(mesh, x, CS_RHO_FACE, rf, "rho per face"));
+  PetscCall(PetscRandomDestroy(&r));
+  PetscCall(VecDestroy(&x));
+  PetscCall(VecDestroy(&d));
+  PetscCall(VecDestroy(&rv));
+  PetscCall(VecDestroy(&rf));
+  PetscCall(CSMeshDestroy(&mesh));
+  PetscCall(PetscPrintf(comm, "%" PetscInt_FMT " failure(s)\n", nfail));
+  PetscCall(SlepcFinalize());
+  return (int)nfail;
+}
