@@ -3,7 +3,7 @@
 .DEFAULT_GOAL := all
 GOALS := all run test test-serial bench clean
 
-HAVE_DEPS := $(shell pkg-config --exists petsc slepc 2>/dev/null && command -v mpirun >/dev/null && dpkg -s libopenblas0 >/dev/null 2>&1 && echo yes)
+HAVE_DEPS := $(shell bash scripts/install-deps.sh --check >/dev/null 2>&1 && pkg-config --exists petsc slepc 2>/dev/null && echo yes)
 
 ifneq ($(HAVE_DEPS),yes)
 $(GOALS):

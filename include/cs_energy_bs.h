@@ -7,6 +7,7 @@
 #ifndef CS_ENERGY_BS_H
 #define CS_ENERGY_BS_H
 #include "cs_energy.h"
+#include "cs_util.h"
 
 /* Sec. 3.3. FIXED (G1): boundary vertices and their one-ring are fixed, W sums W_i over the non-boundary
    vertices (the only ones where W_i is defined). FREE: a vertex at infinity closes every boundary loop;
@@ -37,10 +38,13 @@ PETSC_EXTERN PetscErrorCode CSEnergyWillmoreBSGetFixed(CSEnergy e, const PetscBo
    (may be NULL) from the same pass. K is not symmetric in general. */
 PETSC_EXTERN PetscErrorCode CSEnergyWillmoreBSHessian(CSEnergy e, Vec x, PetscReal fixdiag, MatReuse reuse, Mat *K, PetscReal *W, Vec g);
 
+/* The summary fact of every task: adds "willmore_bs" (FIXED-mode definition, beta_eps 1e-6) to js. */
+PETSC_EXTERN PetscErrorCode CSEnergyWillmoreBSAddFact(CSMesh mesh, Vec x, CSJSON js);
+
 /* Single-diamond kernel (exposed for the unit tests): P = {k, j, l, i} counter-clockwise around the diamond
    of edge ij (bobenko-schroeder2005 Fig. 1). Returns beta (atan2 of |Im Q|, -Re Q for the quaternion cross
    ratio Q = A B^-1 C D^-1) and M with grad_{P[r]} beta = sum_m M[r][m] P[m] (Eq. 1 and its cyclic
-   permutations); *active = PETSC_FALSE (M = 0) when sin beta < eps. */
+   permutations); *active = PETSC_FALSE (M = 0) when sin beta < eps. M may be NULL (value only). */
 PETSC_EXTERN void CSBSDiamond(const PetscReal *const P[4], PetscReal eps, PetscReal *beta, PetscReal M[4][4], PetscBool *active);
 
 #endif

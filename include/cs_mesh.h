@@ -28,6 +28,7 @@ struct _p_CSMesh {
   PetscBool *edgeBoundary;     /* ne: has only one face */
   PetscInt *vertNatural;       /* nv: vertex index in the input file (after dropping unreferenced ones) */
   PetscInt *faceNatural;       /* nf: face index in the input file */
+  PetscInt *edgeNatural;       /* ne: edge number of the serial interpolated mesh (independent of the ranks) */
 
   /* Global facts. */
   PetscInt   Nv, Ne, Nf;
@@ -37,8 +38,8 @@ struct _p_CSMesh {
   Vec x; /* positions, global vector of dmV3 */
 
   /* Natural-order scatters (rank 0 holds the whole field in file order) for I/O of vertex/face fields. */
-  VecScatter natV3, natV1, natF1;
-  Vec        natV3vec, natV1vec, natF1vec; /* sequential on rank 0 (length 0 elsewhere) */
+  VecScatter natV3, natV1, natF1, natE1;
+  Vec        natV3vec, natV1vec, natF1vec, natE1vec; /* all entries on rank 0 (length 0 elsewhere) */
 
   CSMeshData serial; /* rank 0: the validated input (faces kept for output); empty elsewhere */
 };
@@ -57,6 +58,14 @@ PETSC_EXTERN PetscErrorCode CSMeshGatherV1(CSMesh mesh, Vec g, Vec *nat);
 PETSC_EXTERN PetscErrorCode CSMeshScatterV1(CSMesh mesh, Vec nat, Vec g);
 PETSC_EXTERN PetscErrorCode CSMeshGatherF1(CSMesh mesh, Vec g, Vec *nat);
 PETSC_EXTERN PetscErrorCode CSMeshScatterF1(CSMesh mesh, Vec nat, Vec g);
+PETSC_EXTERN PetscErrorCode CSMeshGatherE1(CSMesh mesh, Vec g, Vec *nat);
+PETSC_EXTERN PetscErrorCode CSMeshScatterE1(CSMesh mesh, Vec nat, Vec g);
+
+/* Checkpoints for long runs: iteration number, a few scalars, the positions and (optionally) one per-edge
+   field (e.g. Lagrange multipliers), all in natural order, so a run resumes on any number of ranks.
+   PETSc binary format; written atomically (temporary file, then rename) so a killed run keeps the last one. */
+PETSC_EXTERN PetscErrorCode CSCheckpointWrite(CSMesh mesh, const char path[], PetscInt it, PetscInt nreal, const PetscReal reals[], Vec x, Vec edgeField);
+PETSC_EXTERN PetscErrorCode CSCheckpointRead(CSMesh mesh, const char path[], PetscInt *it, PetscInt nreal, PetscReal reals[], Vec x, Vec edgeField);
 
 /* A second set of positions with the same connectivity (a -reference or -target_mesh file), read on rank 0,
    checked face by face against the mesh (clear error naming the option and the first differing face), and

@@ -2,11 +2,13 @@
    Schemes (-bs_scheme):
      semi  semi-implicit steps (1/dt I + K) dx = -grad W, one n x n solve per coordinate with the KSP of
            prefix "bs_" (K: the linearised Hessian of Eq. 1, symmetric, indefinite only by a few small
-           negative eigenvalues; default CG + GAMG; an indefinite/failed solve or an energy increase rejects
-           the step and halves dt; accepted steps grow dt by -bs_dt_grow up to -bs_dt_max);
+           negative eigenvalues; default CG + BoomerAMG, rtol 1e-6; a failed solve or an energy increase
+           rejects the step and divides dt by 4; accepted steps grow dt by -bs_dt_grow up to -bs_dt_max);
      tao   TAO of prefix "bs_" (any -bs_tao_type; objective/gradient = W, Hessian = K on each coordinate as
-           a 3V x 3V AIJ with block size 3): -bs_tao_mode static minimises W in one TaoSolve (the static
-           problem), -bs_tao_mode euler does backward Euler steps min W(x) + |x - x_n|^2 / (2 dt).
+           a 3V x 3V AIJ with block size 3, plus I/dt: K alone gives the Newton step -x, a homothety, useless
+           for the scale-invariant W): -bs_tao_mode static minimises W in one TaoSolve (the static problem;
+           dt grows by -bs_dt_grow per Hessian), -bs_tao_mode euler does backward Euler steps
+           min W(x) + |x - x_n|^2 / (2 dt). Default NLS with CG + BoomerAMG (-bs_tao_nls_ksp_type/pc_type).
    Boundaries (-bs_boundary fixed|free, Sec. 3.3), heuristic threshold -bs_beta_eps (Sec. 3.2).
    Stopping: W < -bs_atol, or a relative decrease (W_n - W_{n+1}) / W_n < -bs_rtol, or -bs_max_it steps.
    dt has units of length^2 (K ~ 1/length^2); the default -bs_dt_rel 1 takes dt = (mean edge length)^2.

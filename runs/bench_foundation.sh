@@ -15,8 +15,8 @@ echo "|---|---|---|---|---|---|---|" >> $out
 for src in "-mesh $mesh" "-gen icosphere -gen_level 7"; do
   for np in 1 2; do
     for r in $(seq $reps); do
-      mpirun -n $np build/runs/bench_energy $src -bench_repeat 10 -log_view :$PWD/runs/results/log_$np_$r.txt >/dev/null
-      python3 - runs/results/log_$np_$r.txt <<'PY' >> runs/results/tmp_$np.txt
+      mpirun -n $np build/runs/bench_energy $src -bench_repeat 10 -log_view :$PWD/runs/results/log_${np}_${r}.txt >/dev/null
+      python3 - runs/results/log_${np}_${r}.txt <<'PY' >> runs/results/tmp_$np.txt
 import sys, re
 t = {}
 for line in open(sys.argv[1]):

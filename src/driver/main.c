@@ -6,6 +6,7 @@ static const char help[] = "confsurf: conformal geometry processing of triangle 
 
 #include <slepcsys.h>
 #include "cs_driver.h"
+#include "cs_methods_spin.h"
 
 typedef struct {
   const char *name;
@@ -16,6 +17,8 @@ typedef struct {
 static const CSTask tasks[] = {
   {"info", CSTaskInfo},
   {"flow", CSTaskFlow},
+  {"spin", CSTaskSpin},
+  {"spectrum", CSTaskSpectrum},
 };
 
 /* Options nobody asked for are typos: name them and fail, instead of silently running something else. */

@@ -1,6 +1,7 @@
 /* Output options shared by every task, and the facts every summary carries. */
 #include "cs_driver.h"
 #include "cs_geometry.h"
+#include "cs_energy_bs.h"
 
 PetscErrorCode CSOutputFromOptions(MPI_Comm comm, CSOutput *o)
 {
@@ -43,6 +44,7 @@ PetscErrorCode CSOutputAddMeshFacts(CSOutput *o, CSMesh mesh, Vec x, Vec xref)
   PetscCall(CSJSONAddReal(o->json, "area", area));
   PetscCall(CSJSONAddReal(o->json, "volume", volume));
   PetscCall(CSJSONAddReal(o->json, "willmore", W));
+  PetscCall(CSEnergyWillmoreBSAddFact(mesh, x, o->json)); /* willmore_bs (bobenko-schroeder2005, issue 5) */
   PetscCall(PetscPrintf(mesh->comm, "mesh %s: V=%" PetscInt_FMT " E=%" PetscInt_FMT " F=%" PetscInt_FMT " genus=%" PetscInt_FMT " boundary_loops=%" PetscInt_FMT " components=%" PetscInt_FMT "\n", mesh->name, mesh->Nv, mesh->Ne, mesh->Nf, mesh->topo.genus, mesh->topo.boundary_loops, mesh->topo.components));
   PetscCall(PetscPrintf(mesh->comm, "area=%.12g volume=%.12g willmore=%.12g (4pi=%.12g)\n", (double)area, (double)volume, (double)W, (double)(4 * PETSC_PI)));
   if (xref || o->has_reference) {

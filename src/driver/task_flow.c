@@ -1,6 +1,7 @@
 /* -task flow: dispatch on -flow_type to the flow methods (each registers one line below). */
 #include "cs_driver.h"
 #include "cs_methods_willmore.h"
+#include "cs_methods_bs.h"
 
 typedef struct {
   const char *name;
@@ -10,6 +11,7 @@ typedef struct {
 /* cgd|pgd|gd (soliman2021, issue 3) and bs (Bobenko-Schroeder, issue 5) register here. */
 static const CSFlowType flows[] = {
   {"cgd", CSFlowCGD}, {"pgd", CSFlowPGD}, {"gd", CSFlowGD},
+  {"bs", CSFlowBS},
   {NULL, NULL},
 };
 

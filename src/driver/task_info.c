@@ -49,10 +49,12 @@ PetscErrorCode CSTaskInfo(MPI_Comm comm)
   ierr = CSMeshCreateFromOptions(comm, NULL, &mesh);
   if (ierr) PetscCall(CSOutputDestroy(&out)); /* no leak on the error path */
   PetscCall(ierr);
-  PetscCall(CSOutputAddMeshFacts(&out, mesh, mesh->x, NULL));
-  if (out.has_viewer) PetscCall(WriteInfoFields(mesh, out.viewer_dir));
-  PetscCall(CSOutputFinish(&out, mesh, mesh->x));
+  ierr = CSOutputAddMeshFacts(&out, mesh, mesh->x, NULL);
+  if (!ierr && out.has_viewer) ierr = WriteInfoFields(mesh, out.viewer_dir);
+  if (!ierr) ierr = CSOutputFinish(&out, mesh, mesh->x);
+  /* clean up on every path, so a bad -reference or an unwritable output leaks nothing */
   PetscCall(CSMeshDestroy(&mesh));
   PetscCall(CSOutputDestroy(&out));
+  PetscCall(ierr);
   PetscFunctionReturn(0);
 }

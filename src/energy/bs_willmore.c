@@ -34,6 +34,7 @@ typedef struct {
   DM           dmE6;     /* 6 dofs per edge: opposite vertex position per side */
   DM           dmV6;     /* 6 dofs per vertex: previous/next boundary neighbour position (FREE) */
   PetscInt    *oppGid;   /* 2*ne: global number of the opposite vertex per side (-1: none) */
+  PetscInt    *oppLoc;   /* 2*ne: local number of the opposite vertex per side if its face is local, else -1 */
   PetscBool   *oppFixed; /* 2*ne */
   PetscInt    *bdGid;    /* 2*nv: global numbers of the previous/next boundary neighbours (FREE) */
   const PetscInt *gid;   /* nv: global vertex numbers (dmV1 local-to-global) */
@@ -44,6 +45,8 @@ typedef struct {
   PetscReal   *gkl;      /* 6*ne scratch: weighted gradient rows of l (side 0) and k (side 1) */
   PetscReal   *Mkl;      /* 8*ne scratch: weighted K rows of l and k */
   PetscBool   *act;      /* ne scratch */
+  PetscBool   *both;     /* ne: both faces of the edge are on this rank (then it is owned here and the whole
+                            diamond is added in one block by the edge loop) */
   PetscInt    *nnz;      /* owned rows: preallocation bound 1 + 2 * valence */
   ISLocalToGlobalMapping ltog;
 } BSCtx;
@@ -78,6 +81,7 @@ void CSBSDiamond(const PetscReal *const P[4], PetscReal eps, PetscReal *beta, Pe
   sb    = PetscSqrtReal(q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
   *beta = PetscAtan2Real(sb, cb);
   *active = (PetscBool)(sb >= eps);
+  if (!M) return; /* value only */
   for (int r = 0; r < 4; r++)
     for (int m = 0; m < 4; m++) M[r][m] = 0;
   if (!*active) return;
@@ -341,6 +345,18 @@ static PetscErrorCode BSSetUp(CSEnergy en)
   PetscCall(VecRestoreArray(l, &a));
   PetscCall(DMRestoreLocalVector(m->dmV1, &l));
   PetscCall(PetscMalloc3(6 * m->ne, &c->gkl, 8 * m->ne, &c->Mkl, m->ne, &c->act));
+  {
+    PetscInt *cnt;
+    PetscCall(PetscCalloc1(m->ne, &cnt));
+    PetscCall(PetscMalloc1(m->ne, &c->both));
+    for (PetscInt k = 0; k < 3 * m->nf; k++) cnt[m->faceEdge[k]]++;
+    for (PetscInt e = 0; e < m->ne; e++) c->both[e] = (PetscBool)(cnt[e] == 2 && m->edgeOwned[e]);
+    PetscCall(PetscMalloc1(2 * m->ne, &c->oppLoc));
+    for (PetscInt k = 0; k < 2 * m->ne; k++) c->oppLoc[k] = -1;
+    for (PetscInt f = 0; f < m->nf; f++)
+      for (int k = 0; k < 3; k++) c->oppLoc[2 * m->faceEdge[3 * f + k] + EdgeSide(m, f, k)] = m->faceVert[3 * f + k];
+    PetscCall(PetscFree(cnt));
+  }
   PetscFunctionReturn(0);
 }
 
@@ -412,7 +428,7 @@ static PetscErrorCode BSEvaluate(CSEnergy en, Vec x, PetscReal *Wout, Vec Wv, Ve
     P[1] = p + 3 * j;
     P[2] = ea + 6 * e; /* l: opposite in t_ijl (side 0) */
     P[3] = p + 3 * i;
-    CSBSDiamond(P, c->eps, &beta, M, &active);
+    CSBSDiamond(P, c->eps, &beta, (ga || K) ? M : NULL, &active);
     if (m->edgeOwned[e]) {
       Wl += w * beta;
       if (wa) {
@@ -431,8 +447,14 @@ static PetscErrorCode BSEvaluate(CSEnergy en, Vec x, PetscReal *Wout, Vec Wv, Ve
           if (!c->fixed[i]) ga[3 * i + d] += w * gr[3];
           if (!c->fixed[j]) ga[3 * j + d] += w * gr[1];
         }
-        c->gkl[6 * e + d]     = w * gr[2]; /* side 0: l */
-        c->gkl[6 * e + 3 + d] = w * gr[0]; /* side 1: k */
+        if (c->both[e]) { /* k and l are local: add their rows here */
+          PetscInt vk = c->oppLoc[2 * e + 1], vl = c->oppLoc[2 * e];
+          if (!c->fixed[vl]) ga[3 * vl + d] += w * gr[2];
+          if (!c->fixed[vk]) ga[3 * vk + d] += w * gr[0];
+        } else {
+          c->gkl[6 * e + d]     = w * gr[2]; /* side 0: l */
+          c->gkl[6 * e + 3 + d] = w * gr[0]; /* side 1: k */
+        }
       }
     }
     if (K) {
@@ -443,7 +465,12 @@ static PetscErrorCode BSEvaluate(CSEnergy en, Vec x, PetscReal *Wout, Vec Wv, Ve
         c->Mkl[8 * e + q]     = cfix[q] ? 0 : w * M[2][q];
         c->Mkl[8 * e + 4 + q] = cfix[q] ? 0 : w * M[0][q];
       }
-      if (m->edgeOwned[e]) {
+      if (c->both[e]) { /* the whole 4 x 4 block at once (fixed rows get zeros: entries inside the 1-ring with flaps) */
+        PetscScalar blk[16];
+        for (int r = 0; r < 4; r++)
+          for (int q = 0; q < 4; q++) blk[4 * r + q] = (cfix[r] || cfix[q]) ? 0 : w * M[r][q];
+        PetscCall(MatSetValues(K, 4, cols, 4, cols, blk, ADD_VALUES));
+      } else if (m->edgeOwned[e]) {
         const int rows[2] = {3, 1};
         for (int r = 0; r < 2; r++) {
           if (cfix[rows[r]]) continue;
@@ -459,7 +486,7 @@ static PetscErrorCode BSEvaluate(CSEnergy en, Vec x, PetscReal *Wout, Vec Wv, Ve
       for (int k = 0; k < 3; k++) {
         PetscInt e = m->faceEdge[3 * f + k], o = m->faceVert[3 * f + k];
         int      s = EdgeSide(m, f, k);
-        if (m->edgeBoundary[e] || !c->act[e] || c->fixed[o] || c->wEdge[e] == 0) continue;
+        if (m->edgeBoundary[e] || c->both[e] || !c->act[e] || c->fixed[o] || c->wEdge[e] == 0) continue;
         if (ga)
           for (int d = 0; d < 3; d++) ga[3 * o + d] += c->gkl[6 * e + 3 * s + d];
         if (K) {
@@ -634,6 +661,8 @@ static PetscErrorCode BSDestroy(CSEnergy e)
   PetscCall(PetscFree(c->wEdge));
   PetscCall(PetscFree(c->nnz));
   PetscCall(PetscFree3(c->gkl, c->Mkl, c->act));
+  PetscCall(PetscFree(c->both));
+  PetscCall(PetscFree(c->oppLoc));
   PetscCall(PetscFree(c));
   PetscFunctionReturn(0);
 }
@@ -698,5 +727,18 @@ PetscErrorCode CSEnergyWillmoreBSHessian(CSEnergy e, Vec x, PetscReal fixdiag, M
   PetscCall(BSEvaluate(e, x, &Wt, NULL, g, *K, fixdiag));
   if (W) *W = Wt;
   PetscCall(PetscLogEventEnd(CS_EVENT_Assemble, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSEnergyWillmoreBSAddFact(CSMesh mesh, Vec x, CSJSON js)
+{
+  CSEnergy  e;
+  PetscReal W;
+  PetscFunctionBeginUser;
+  PetscCall(CSEnergyCreateWillmoreBS(mesh, CS_BS_BOUNDARY_FIXED, 1e-6, &e));
+  PetscCall(CSEnergyValue(e, x, &W));
+  PetscCall(CSEnergyDestroy(&e));
+  PetscCall(CSJSONAddReal(js, "willmore_bs", W));
+  PetscCall(PetscPrintf(mesh->comm, "willmore_bs=%.12g (bobenko-schroeder2005)\n", (double)W));
   PetscFunctionReturn(0);
 }

@@ -36,7 +36,7 @@ PetscErrorCode CSGeometryQuasiConformal(CSMesh m, Vec xref, Vec x, Vec q, PetscR
     const PetscInt  *v     = m->faceVert + 3 * f;
     const PetscReal *c[3]  = {p + 3 * v[0], p + 3 * v[1], p + 3 * v[2]};
     const PetscReal *c0[3] = {r + 3 * v[0], r + 3 * v[1], r + 3 * v[2]};
-    PetscReal        E[2][2], E0[2][2], det0, A[2][2], fro2, det, disc, smax, smin, Q, an[3];
+    PetscReal        E[2][2], E0[2][2], det0, A[2][2], Em, Fm, smax, smin, Q, an[3];
     TriangleFrame(c, E);
     TriangleFrame(c0, E0);
     /* A = E E0^{-1} */
@@ -45,12 +45,12 @@ PetscErrorCode CSGeometryQuasiConformal(CSMesh m, Vec xref, Vec x, Vec q, PetscR
     A[0][1] = (-E[0][0] * E0[0][1] + E[0][1] * E0[0][0]) / det0;
     A[1][0] = (E[1][0] * E0[1][1] - E[1][1] * E0[1][0]) / det0;
     A[1][1] = (-E[1][0] * E0[0][1] + E[1][1] * E0[0][0]) / det0;
-    /* singular values of a 2x2 matrix from its Frobenius norm and determinant */
-    fro2 = A[0][0] * A[0][0] + A[0][1] * A[0][1] + A[1][0] * A[1][0] + A[1][1] * A[1][1];
-    det  = PetscAbsReal(A[0][0] * A[1][1] - A[0][1] * A[1][0]);
-    disc = PetscSqrtReal(PetscMax(fro2 * fro2 - 4 * det * det, 0));
-    smax = PetscSqrtReal(0.5 * (fro2 + disc));
-    smin = det / smax;
+    /* singular values of a 2x2 matrix without cancellation: with E = |(a+d, c-b)|/2 and F = |(a-d, c+b)|/2,
+       sigma_max = E + F and sigma_min = |E - F| (the conformal and anti-conformal parts of A) */
+    Em   = 0.5 * PetscSqrtReal(PetscSqr(A[0][0] + A[1][1]) + PetscSqr(A[1][0] - A[0][1]));
+    Fm   = 0.5 * PetscSqrtReal(PetscSqr(A[0][0] - A[1][1]) + PetscSqr(A[1][0] + A[0][1]));
+    smax = Em + Fm;
+    smin = PetscAbsReal(Em - Fm);
     Q    = smax / smin;
     if (qa) qa[f] = Q;
     CSTriangleAreaVector(c0, an);

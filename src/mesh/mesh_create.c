@@ -63,7 +63,7 @@ static PetscErrorCode MigrateNaturalIds(DM serial, PetscSF sfMig, DM dist, Petsc
   n = sEnd - sStart;
   PetscCall(PetscMalloc1(n, &v));
   /* DMPlexCreateFromCellList numbers cells and vertices in input order, and the section orders points
-     by point number: entry i is the i-th cell/vertex of the file */
+     by point number: entry i is the i-th cell/vertex of the file (for edges: of the serial interpolation) */
   for (PetscInt i = 0; i < n; i++) v[i] = i;
   PetscCall(ISCreateGeneral(PETSC_COMM_SELF, n, v, PETSC_OWN_POINTER, &isOld));
   if (sfMig) {
@@ -271,11 +271,13 @@ PetscErrorCode CSMeshCreateFromData(MPI_Comm comm, CSMeshData *md, const CSTopol
   m->dm = dist ? dist : serial;
   PetscCall(PetscObjectSetName((PetscObject)m->dm, "surface"));
   {
-    PetscInt *vnat, *fnat;
+    PetscInt *vnat, *fnat, *enat;
     PetscCall(MigrateNaturalIds(serial, sfMig, m->dm, 0, &vnat));
     PetscCall(MigrateNaturalIds(serial, sfMig, m->dm, 2, &fnat));
+    PetscCall(MigrateNaturalIds(serial, sfMig, m->dm, 1, &enat));
     m->vertNatural = vnat;
     m->faceNatural = fnat;
+    m->edgeNatural = enat;
   }
   if (dist) PetscCall(DMDestroy(&serial));
   PetscCall(PetscSFDestroy(&sfMig));
@@ -305,6 +307,7 @@ PetscErrorCode CSMeshCreateFromData(MPI_Comm comm, CSMeshData *md, const CSTopol
   PetscCall(CreateNaturalScatter(m, m->dmV3, 0, 3, m->vertNatural, m->Nv, &m->natV3vec, &m->natV3));
   PetscCall(CreateNaturalScatter(m, m->dmV1, 0, 1, m->vertNatural, m->Nv, &m->natV1vec, &m->natV1));
   PetscCall(CreateNaturalScatter(m, m->dmF1, 2, 1, m->faceNatural, m->Nf, &m->natF1vec, &m->natF1));
+  PetscCall(CreateNaturalScatter(m, m->dmE1, 1, 1, m->edgeNatural, m->Ne, &m->natE1vec, &m->natE1));
 
   /* rank 0 keeps the connectivity for output; the coordinates now live in the distributed vector */
   m->serial = *md;
@@ -372,6 +375,9 @@ PetscErrorCode CSMeshDestroy(CSMesh *mesh)
   PetscCall(VecScatterDestroy(&m->natV3));
   PetscCall(VecScatterDestroy(&m->natV1));
   PetscCall(VecScatterDestroy(&m->natF1));
+  PetscCall(VecScatterDestroy(&m->natE1));
+  PetscCall(VecDestroy(&m->natE1vec));
+  PetscCall(PetscFree(m->edgeNatural));
   PetscCall(VecDestroy(&m->natV3vec));
   PetscCall(VecDestroy(&m->natV1vec));
   PetscCall(VecDestroy(&m->natF1vec));

@@ -58,6 +58,20 @@ PetscErrorCode CSMeshScatterF1(CSMesh m, Vec nat, Vec g)
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode CSMeshGatherE1(CSMesh m, Vec g, Vec *nat)
+{
+  PetscFunctionBeginUser;
+  PetscCall(Gather(m->natE1, g, m->natE1vec));
+  *nat = m->natE1vec;
+  PetscFunctionReturn(0);
+}
+PetscErrorCode CSMeshScatterE1(CSMesh m, Vec nat, Vec g)
+{
+  PetscFunctionBeginUser;
+  PetscCall(Scatter(m->natE1, nat, g));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode CSMeshWrite(CSMesh m, Vec x, const char path[])
 {
   Vec         nat = NULL;

@@ -13,7 +13,12 @@
    still controls the energy descent.
 
    Step control: a trial step is accepted when the merit function decreases,
-     CGD/GD: phi(f) = E(f) + rho ||c(f)||_1 + sum_j rho_j |xi_j(f)|   (l1 exact penalty, rho >= 2 |multiplier|),
+     CGD/GD: phi(f) = E(f) + <mu+dmu, c(f)> + <nu+dnu, xi(f)> + rho/2 (||c(f)||^2 + sum_j xi_j(f)^2/|B_j|^2),
+       an augmented Lagrangian with the updated multipliers. Along df its slope at 0 is
+       <g + X^T(mu+dmu), df> + rho <c, X df> = -<H df, df>/t - rho |c|^2 + rho <c, I_Q dmu>/t_mu < 0
+       (first row and second row of the CGD system), so a small enough t is always accepted. (An l1
+       exact penalty rho ||c||_1 is not a descent merit here: the regularised second row leaves
+       X df + c = I_Q dmu / t_mu = O(t), which the l1 term sees at first order.)
      PGD:    phi(f) = E(f) after the projection back onto the constraint set;
    else t is halved and the step recomputed (each rejection is reported); after an accepted step t grows by
    -flow_t_grow up to -flow_t_max.
@@ -41,8 +46,9 @@ typedef struct {
   CSSaddle              saddle;
   Vec                   x, x0, g, r, c, mu, dmu, df, iq, xt, ct, tmp;
   Vec                  *rows;
-  PetscReal            *cx, *cxt, *nu, *dnu, *gw;
-  PetscReal             t, tmu, tmax, grow, rtol, ctol, wmin, rhoE, *rhoX;
+  PetscReal            *cx, *cxt, *nu, *dnu, *dnu2, *gw;
+  PetscReal             t, tmu, tmax, grow, rtol, ctol, wmin, rho, *nun;
+  Vec                   mun;
   PetscInt              max_it, max_rej, proj_max_it;
   PetscBool             step_control;
   PetscReal             proj_tmu;
@@ -96,6 +102,7 @@ static PetscErrorCode FlowSetUp(MPI_Comm comm, Flow *F, CSFlowKind kind, CSOutpu
   PetscBool conformal = (PetscBool)(kind != CS_FLOW_GD), conformal_set, has_target, has_points, has_boundary, area_set, area_given, vol_set, vol_given, h2;
   PetscReal area_target = 0, vol_target = 0, bump = 0, bump_k = 3, stretch[3] = {1, 1, 1}, eps = 1e-3;
   PetscInt  nstretch = 3;
+  PetscBool stretch_set;
   PetscFunctionBeginUser;
   PetscCall(PetscMemzero(F, sizeof(*F)));
   F->kind = kind;
@@ -104,7 +111,7 @@ static PetscErrorCode FlowSetUp(MPI_Comm comm, Flow *F, CSFlowKind kind, CSOutpu
   m            = F->mesh;
   F->t         = 1.0;
   F->tmu       = -1;
-  F->tmax      = 1e3;
+  F->tmax      = 2.0;
   F->grow      = 2.0;
   F->rtol      = 1e-6;
   F->ctol      = 1e-10;
@@ -112,15 +119,17 @@ static PetscErrorCode FlowSetUp(MPI_Comm comm, Flow *F, CSFlowKind kind, CSOutpu
   F->max_it    = 100;
   F->max_rej   = 30;
   F->proj_max_it = 20;
-  F->proj_tmu  = 1e10;
+  F->proj_tmu  = 1e6;
   F->step_control = PETSC_TRUE;
+  F->rho       = 1.0;
   PetscOptionsBegin(comm, NULL, "Constrained Willmore flow (soliman2021)", NULL);
   PetscCall(PetscOptionsReal("-flow_t", "Initial primal step size t", NULL, F->t, &F->t, NULL));
-  PetscCall(PetscOptionsReal("-flow_t_mu", "Dual step size t_mu of the multipliers (default 1e6 t)", NULL, F->tmu, &F->tmu, NULL));
+  PetscCall(PetscOptionsReal("-flow_t_mu", "Dual step size t_mu of the multipliers (default 1e3 t)", NULL, F->tmu, &F->tmu, NULL));
   PetscCall(PetscOptionsReal("-flow_t_max", "Largest primal step", NULL, F->tmax, &F->tmax, NULL));
   PetscCall(PetscOptionsReal("-flow_t_grow", "Factor on t after an accepted step", NULL, F->grow, &F->grow, NULL));
   PetscCall(PetscOptionsBool("-flow_step_control", "Accept a step only if the merit function decreases (else halve t)", NULL, F->step_control, &F->step_control, NULL));
   PetscCall(PetscOptionsInt("-flow_max_rejections", "Consecutive rejected steps before giving up", NULL, F->max_rej, &F->max_rej, NULL));
+  PetscCall(PetscOptionsReal("-flow_merit_rho", "Weight of the quadratic constraint penalty in the merit function", NULL, F->rho, &F->rho, NULL));
   PetscCall(PetscOptionsReal("-flow_rtol", "Stop when ||g + X^T mu||_2 is below this", NULL, F->rtol, &F->rtol, NULL));
   PetscCall(PetscOptionsReal("-flow_ctol", "... and the constraint violation (inf-norm) below this", NULL, F->ctol, &F->ctol, NULL));
   PetscCall(PetscOptionsInt("-flow_max_it", "Maximum number of iterations", NULL, F->max_it, &F->max_it, NULL));
@@ -136,10 +145,11 @@ static PetscErrorCode FlowSetUp(MPI_Comm comm, Flow *F, CSFlowKind kind, CSOutpu
   PetscCall(PetscOptionsString("-flow_boundary", "dirichlet|free: boundary vertices fixed, or free (C0 only)", NULL, boundary, boundary, sizeof(boundary), &has_boundary));
   PetscCall(PetscOptionsReal("-flow_init_bump", "Test input: radial bump amplitude applied to the initial positions", NULL, bump, &bump, NULL));
   PetscCall(PetscOptionsReal("-flow_init_bump_freq", "Test input: bump frequency k in sin(k x) sin(k y) sin(k z)", NULL, bump_k, &bump_k, NULL));
-  PetscCall(PetscOptionsRealArray("-flow_init_stretch", "Test input: stretch factors sx,sy,sz applied after the bump", NULL, stretch, &nstretch, NULL));
+  PetscCall(PetscOptionsRealArray("-flow_init_stretch", "Test input: stretch factors sx,sy,sz applied after the bump", NULL, stretch, &nstretch, &stretch_set));
+  PetscCall(PetscOptionsReal("-pgd_t_mu", "PGD: regularising dual step of the (singular) PGD system and of the projection", NULL, F->proj_tmu, &F->proj_tmu, NULL));
   PetscCall(PetscOptionsInt("-pgd_projection_max_it", "PGD: Gauss-Newton iterations of the projection onto the constraint set", NULL, F->proj_max_it, &F->proj_max_it, NULL));
   PetscOptionsEnd();
-  if (F->tmu <= 0) F->tmu = 1e6 * F->t;
+  if (F->tmu <= 0) F->tmu = 1e3 * F->t;
   PetscCheck(F->t > 0 && F->tmu > 0 && F->grow >= 1 && F->tmax >= F->t, comm, PETSC_ERR_ARG_OUTOFRANGE, "-flow_t %g, -flow_t_mu %g, -flow_t_grow %g, -flow_t_max %g: need t > 0, t_mu > 0, grow >= 1, t_max >= t", (double)F->t, (double)F->tmu, (double)F->grow, (double)F->tmax);
   PetscCheck(kind != CS_FLOW_GD || !conformal, comm, PETSC_ERR_ARG_INCOMP, "-flow_type gd is unconstrained Sobolev gradient descent: -flow_conformal true is not allowed (use cgd or pgd)");
   F->conformal = conformal;
@@ -157,7 +167,7 @@ static PetscErrorCode FlowSetUp(MPI_Comm comm, Flow *F, CSFlowKind kind, CSOutpu
   /* positions */
   PetscCall(VecDuplicate(m->x, &F->x));
   PetscCall(VecCopy(m->x, F->x));
-  PetscCheck(nstretch == 3, comm, PETSC_ERR_ARG_SIZ, "-flow_init_stretch needs three values sx,sy,sz");
+  PetscCheck(!stretch_set || nstretch == 3, comm, PETSC_ERR_ARG_SIZ, "-flow_init_stretch needs three values sx,sy,sz");
   if (bump != 0 || stretch[0] != 1 || stretch[1] != 1 || stretch[2] != 1) PetscCall(DeformInitial(F->x, bump, bump_k, stretch));
   PetscCall(VecDuplicate(F->x, &F->x0));
   PetscCall(VecCopy(F->x, F->x0));
@@ -237,9 +247,11 @@ static PetscErrorCode FlowSetUp(MPI_Comm comm, Flow *F, CSFlowKind kind, CSOutpu
     PetscCall(VecDuplicate(F->c, &F->dmu));
     PetscCall(VecDuplicate(F->c, &F->iq));
     PetscCall(VecDuplicate(F->c, &F->ct));
+    PetscCall(VecDuplicate(F->c, &F->mun));
     PetscCall(VecSet(F->mu, 0));
   }
-  PetscCall(PetscCalloc6(F->k + 1, &F->cx, F->k + 1, &F->cxt, F->k + 1, &F->nu, F->k + 1, &F->dnu, F->k + 1, &F->gw, F->k + 1, &F->rhoX));
+  PetscCall(PetscCalloc6(F->k + 1, &F->cx, F->k + 1, &F->cxt, F->k + 1, &F->nu, F->k + 1, &F->dnu, F->k + 1, &F->gw, F->k + 1, &F->nun));
+  PetscCall(PetscCalloc1(F->k + 1, &F->dnu2));
   if (F->k) PetscCall(VecDuplicateVecs(F->x, F->k, &F->rows));
   PetscCall(CSMetricCreate(m, h2, &F->metric));
   PetscCall(CSSaddleCreate(m, conformal, F->k, &F->saddle));
@@ -255,7 +267,8 @@ static PetscErrorCode FlowDestroy(Flow *F)
   if (F->conformal) PetscCall(CSConformalConstraintDestroy(&F->cc));
   for (PetscInt j = 0; j < F->ng; j++) PetscCall(CSGlobalConstraintDestroy(&F->gc[j]));
   if (F->k) PetscCall(VecDestroyVecs(F->k, &F->rows));
-  PetscCall(PetscFree6(F->cx, F->cxt, F->nu, F->dnu, F->gw, F->rhoX));
+  PetscCall(PetscFree(F->dnu2));
+  PetscCall(PetscFree6(F->cx, F->cxt, F->nu, F->dnu, F->gw, F->nun));
   PetscCall(CSEnergyDestroy(&F->energy));
   PetscCall(VecDestroy(&F->x));
   PetscCall(VecDestroy(&F->x0));
@@ -269,6 +282,7 @@ static PetscErrorCode FlowDestroy(Flow *F)
   PetscCall(VecDestroy(&F->dmu));
   PetscCall(VecDestroy(&F->iq));
   PetscCall(VecDestroy(&F->ct));
+  PetscCall(VecDestroy(&F->mun));
   PetscCall(ISDestroy(&F->fixedIS));
   PetscCall(PetscFree(F->fixed));
   PetscCall(CSMeshDestroy(&F->mesh));
@@ -292,22 +306,31 @@ static PetscErrorCode EvalConstraints(Flow *F, Vec x, Vec c, PetscReal cx[], Pet
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode Violation(Flow *F, Vec c, const PetscReal cx[], PetscReal *conf, PetscReal *glob, PetscReal *l1)
+static PetscErrorCode Violation(Flow *F, Vec c, const PetscReal cx[], PetscReal *conf, PetscReal *glob)
 {
-  PetscReal v = 0, s = 0;
+  PetscReal v = 0;
   PetscFunctionBeginUser;
   *conf = 0;
-  if (F->conformal) {
-    PetscCall(VecNorm(c, NORM_INFINITY, conf));
-    PetscCall(VecNorm(c, NORM_1, &s));
-  }
-  s *= F->rhoE;
-  for (PetscInt j = 0; j < F->k; j++) {
-    v = PetscMax(v, PetscAbsReal(cx[j]));
-    s += F->rhoX[j] * PetscAbsReal(cx[j]);
-  }
+  if (F->conformal) PetscCall(VecNorm(c, NORM_INFINITY, conf));
+  for (PetscInt j = 0; j < F->k; j++) v = PetscMax(v, PetscAbsReal(cx[j]));
   *glob = v;
-  if (l1) *l1 = s;
+  PetscFunctionReturn(0);
+}
+
+/* The merit function of CGD/GD step control (see the top of the file), multipliers F->mun and nun. */
+static PetscErrorCode Merit(Flow *F, PetscReal E, Vec c, const PetscReal cx[], const PetscReal nun[], PetscReal *phi)
+{
+  PetscReal s = E;
+  PetscFunctionBeginUser;
+  if (F->conformal) {
+    PetscScalar d;
+    PetscReal   n2;
+    PetscCall(VecDot(F->mun, c, &d));
+    PetscCall(VecNorm(c, NORM_2, &n2));
+    s += PetscRealPart(d) + 0.5 * F->rho * n2 * n2;
+  }
+  for (PetscInt j = 0; j < F->k; j++) s += nun[j] * cx[j] + 0.5 * F->rho * cx[j] * cx[j] / F->gw[j];
+  *phi = s;
   PetscFunctionReturn(0);
 }
 
@@ -355,7 +378,7 @@ static PetscErrorCode Project(Flow *F, Vec x, PetscBool *ok, PetscInt *kspits)
   for (PetscInt it = 0; it < F->proj_max_it; it++) {
     PetscInt its;
     PetscCall(EvalConstraints(F, x, F->ct, F->cxt, PETSC_TRUE));
-    PetscCall(Violation(F, F->ct, F->cxt, &conf, &glob, NULL));
+    PetscCall(Violation(F, F->ct, F->cxt, &conf, &glob));
     if (!(conf == conf) || !(glob == glob)) PetscFunctionReturn(0);
     if (PetscMax(conf, glob) < 0.1 * F->ctol) {
       *ok = PETSC_TRUE;
@@ -372,7 +395,7 @@ static PetscErrorCode Project(Flow *F, Vec x, PetscBool *ok, PetscInt *kspits)
     PetscCall(VecAXPY(x, 1.0, F->df));
   }
   PetscCall(EvalConstraints(F, x, F->ct, F->cxt, PETSC_FALSE));
-  PetscCall(Violation(F, F->ct, F->cxt, &conf, &glob, NULL));
+  PetscCall(Violation(F, F->ct, F->cxt, &conf, &glob));
   *ok = (PetscBool)(PetscMax(conf, glob) < F->ctol);
   PetscFunctionReturn(0);
 }
@@ -398,12 +421,11 @@ PetscErrorCode CSWillmoreFlowRun(MPI_Comm comm, CSOutput *out, CSFlowKind kind)
     PetscCheck(ok, comm, PETSC_ERR_NOT_CONVERGED, "pgd: the initial projection onto the constraint set did not converge");
   }
   for (it = 0;; it++) {
-    PetscReal l1;
     PetscCall(CSEnergyGradient(F.energy, F.x, &E, F.g));
     PetscCall(ZeroFixed(&F, F.g));
     PetscCall(EvalConstraints(&F, F.x, F.c, F.cx, PETSC_TRUE));
     PetscCall(Residual(&F, &el));
-    PetscCall(Violation(&F, F.c, F.cx, &conf, &glob, &l1));
+    PetscCall(Violation(&F, F.c, F.cx, &conf, &glob));
     PetscCall(CSGeometryAreaVolume(F.mesh, F.x, &A, &V));
     PetscCall(PetscTime(&tnow));
     PetscCall(PetscPrintf(comm, "%4" PetscInt_FMT " E %.12g area %.8g vol %.8g |c|inf %.3e |xi| %.3e el %.3e t %.3g ksp %" PetscInt_FMT "\n", it, (double)E, (double)A, (double)V, (double)conf, (double)glob, (double)el, (double)F.t, kspits));
@@ -428,9 +450,11 @@ PetscErrorCode CSWillmoreFlowRun(MPI_Comm comm, CSOutput *out, CSFlowKind kind)
     if (F.k) PetscCall(GlobalWeights(&F));
     kspits = 0;
     for (PetscInt rej = 0;; rej++) {
-      PetscReal Et, phi0, phit, conft, globt, l1t;
+      PetscReal Et, phi0, phit;
       PetscBool accept = PETSC_TRUE;
       PetscInt  its;
+      Vec       dmu2, df2;
+
       PetscCheck(rej <= F.max_rej, comm, PETSC_ERR_NOT_CONVERGED, "flow: %" PetscInt_FMT " consecutive steps rejected at iteration %" PetscInt_FMT " (t = %g): the merit function does not decrease", rej - 1, it, (double)F.t);
       PetscCall(SetOperators(&F, F.t, kind == CS_FLOW_PGD ? F.proj_tmu : F.tmu));
       /* right-hand side (Algorithm 1 line 11): [-c; -g - X^T mu - B^T nu; -xi] for CGD/GD, [0; -g; 0] for PGD */
@@ -450,6 +474,30 @@ PetscErrorCode CSWillmoreFlowRun(MPI_Comm comm, CSOutput *out, CSFlowKind kind)
       }
       PetscCall(CSSaddleSolve(&F.saddle, F.ct, F.tmp, F.cxt, F.dmu, F.df, F.dnu, &its));
       kspits += its;
+      if (kind == CS_FLOW_PGD) {
+        /* The PGD matrix [[H/t, X^T], [X, 0]] is singular (dependent rows of X, PETSC-NOTES); we solve with
+           -I_Q/pgd_t_mu in the (2,2) block and remove the regularisation error by iterative refinement
+           against the unregularised system: only its second row differs, residual -X df (and -B^T df). */
+        for (PetscInt ref = 0; ref < 3; ref++) {
+          PetscCall(MatMult(F.cc.X, F.df, F.ct));
+          PetscCall(VecScale(F.ct, -1.0));
+          for (PetscInt j = 0; j < F.k; j++) {
+            PetscScalar v;
+            PetscCall(VecDot(F.rows[j], F.df, &v));
+            F.cxt[j] = -PetscRealPart(v);
+          }
+          PetscCall(VecSet(F.tmp, 0));
+          PetscCall(VecDuplicate(F.dmu, &dmu2));
+          PetscCall(VecDuplicate(F.df, &df2));
+          PetscCall(CSSaddleSolve(&F.saddle, F.ct, F.tmp, F.cxt, dmu2, df2, F.dnu2, &its));
+          kspits += its;
+          PetscCall(VecAXPY(F.dmu, 1.0, dmu2));
+          PetscCall(VecAXPY(F.df, 1.0, df2));
+          for (PetscInt j = 0; j < F.k; j++) F.dnu[j] += F.dnu2[j];
+          PetscCall(VecDestroy(&dmu2));
+          PetscCall(VecDestroy(&df2));
+        }
+      }
       /* trial point */
       PetscCall(VecWAXPY(F.xt, 1.0, F.df, F.x));
       if (kind == CS_FLOW_PGD) {
@@ -463,20 +511,12 @@ PetscErrorCode CSWillmoreFlowRun(MPI_Comm comm, CSOutput *out, CSFlowKind kind)
           PetscCall(CSEnergyValue(F.energy, F.xt, &Et));
           phit = Et;
         } else {
-          /* l1 exact penalty: rho >= 2 |multiplier| after the update */
-          if (F.conformal) {
-            PetscReal mn;
-            PetscCall(VecWAXPY(F.ct, 1.0, F.dmu, F.mu));
-            PetscCall(VecNorm(F.ct, NORM_INFINITY, &mn));
-            F.rhoE = PetscMax(F.rhoE, 2 * mn);
-          }
-          for (PetscInt j = 0; j < F.k; j++) F.rhoX[j] = PetscMax(F.rhoX[j], 2 * PetscAbsReal(F.nu[j] + F.dnu[j]));
-          PetscCall(Violation(&F, F.c, F.cx, &conf, &glob, &l1));
-          phi0 = E + l1;
+          if (F.conformal) PetscCall(VecWAXPY(F.mun, 1.0, F.dmu, F.mu));
+          for (PetscInt j = 0; j < F.k; j++) F.nun[j] = F.nu[j] + F.dnu[j]; /* nu + dnu */
+          PetscCall(Merit(&F, E, F.c, F.cx, F.nun, &phi0));
           PetscCall(CSEnergyValue(F.energy, F.xt, &Et));
           PetscCall(EvalConstraints(&F, F.xt, F.ct, F.cxt, PETSC_FALSE));
-          PetscCall(Violation(&F, F.ct, F.cxt, &conft, &globt, &l1t));
-          phit = Et + l1t;
+          PetscCall(Merit(&F, Et, F.ct, F.cxt, F.nun, &phit));
         }
         /* a relative slack of 1e-12 lets converged iterates (changes at round-off level) pass */
         if (!(phit == phit) || phit > phi0 + 1e-12 * PetscAbsReal(phi0)) accept = PETSC_FALSE;

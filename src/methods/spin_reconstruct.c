@@ -1,0 +1,199 @@
+/* New positions of a spin transformation (crane2011 Sec. 5.6): the transformed edge vectors e~ (Eq. 8), then
+   the least-squares Poisson problem L f~ = div e~ with the cotan Laplacian, per coordinate, KSP prefix
+   spin_poisson_ (CG + AMG by default). */
+#include "cs_methods_spin.h"
+
+/* crane2011 Eq. 8: e~_ij = 1/3 conj(l_i) e l_i + 1/6 conj(l_i) e l_j + 1/6 conj(l_j) e l_i + 1/3 conj(l_j) e l_j.
+   The two middle terms are q - conj(q) = 2 Im q with q = conj(l_i) e l_j, so e~ is imaginary. */
+static inline void TransformedEdge(const PetscReal li[4], const PetscReal lj[4], const PetscReal e[3], PetscReal out[3])
+{
+  PetscReal eq[4] = {0, e[0], e[1], e[2]}, ti[4], tj[4], a[4], b[4], c[4], d[4];
+  CSQuatConjMul(li, eq, ti);
+  CSQuatConjMul(lj, eq, tj);
+  CSQuatMul(ti, li, a);
+  CSQuatMul(ti, lj, b);
+  CSQuatMul(tj, li, c);
+  CSQuatMul(tj, lj, d);
+  for (int k = 0; k < 3; k++) out[k] = a[k + 1] / 3 + b[k + 1] / 6 + c[k + 1] / 6 + d[k + 1] / 3;
+}
+
+/* b = -sum_j w_ij e~_ij: the gradient of sum_edges w_ij |f_j - f_i - e~_ij|^2 is 2 (L f + sum_j w_ij e~_ij), with
+   (L f)_i = sum_j w_ij (f_i - f_j) the positive cotan Laplacian (cs_operators.h). For e~_ij = f_j - f_i this is
+   b = L f, so lambda = 1 reproduces the input exactly. */
+static PetscErrorCode PoissonRHS(CSSpin s, Vec x, Vec lambda, Vec b)
+{
+  CSMesh             mesh = s->mesh;
+  Vec                xl, ll, bl;
+  const PetscReal   *p;
+  const PetscScalar *l;
+  PetscScalar       *ba;
+  PetscFunctionBeginUser;
+  PetscCall(CSMeshGetLocalPositions(mesh, x, &xl, &p));
+  PetscCall(DMGetLocalVector(s->dm, &ll));
+  PetscCall(DMGlobalToLocal(s->dm, lambda, INSERT_VALUES, ll));
+  PetscCall(DMGetLocalVector(mesh->dmV3, &bl));
+  PetscCall(VecSet(bl, 0));
+  PetscCall(VecGetArrayRead(ll, &l));
+  PetscCall(VecGetArray(bl, &ba));
+  for (PetscInt f = 0; f < mesh->nf; f++) {
+    const PetscInt  *v    = mesh->faceVert + 3 * f;
+    const PetscReal *c[3] = {p + 3 * v[0], p + 3 * v[1], p + 3 * v[2]};
+    PetscReal        cot[3];
+    CSTriangleCotans(c, cot);
+    for (int k = 0; k < 3; k++) {
+      PetscInt  i = v[(k + 1) % 3], j = v[(k + 2) % 3];
+      PetscReal e[3], et[3], li[4], lj[4], w = 0.5 * cot[k];
+      CSVecSub(p + 3 * j, p + 3 * i, e);
+      for (int q = 0; q < 4; q++) {
+        li[q] = PetscRealPart(l[4 * i + q]);
+        lj[q] = PetscRealPart(l[4 * j + q]);
+      }
+      TransformedEdge(li, lj, e, et);
+      for (int d = 0; d < 3; d++) {
+        ba[3 * i + d] -= w * et[d];
+        ba[3 * j + d] += w * et[d];
+      }
+    }
+  }
+  PetscCall(VecRestoreArrayRead(ll, &l));
+  PetscCall(VecRestoreArray(bl, &ba));
+  PetscCall(VecSet(b, 0));
+  PetscCall(DMLocalToGlobal(mesh->dmV3, bl, ADD_VALUES, b));
+  PetscCall(DMRestoreLocalVector(mesh->dmV3, &bl));
+  PetscCall(DMRestoreLocalVector(s->dm, &ll));
+  PetscCall(CSMeshRestoreLocalPositions(mesh, x, &xl, &p));
+  PetscFunctionReturn(0);
+}
+
+/* The cotan Laplacian of cs_operators.h (same face kernel as src/operators/laplacian.c), on a matrix with the
+   fast 1-ring preallocation (CSDiracCreateVertexMatrix) instead of DMCreateMatrix, which dominated the run
+   time of the whole spin transformation at 10k vertices. */
+static PetscErrorCode AssembleLaplacian(CSMesh mesh, Vec x, Mat *L)
+{
+  Vec              xl;
+  const PetscReal *p;
+  PetscFunctionBeginUser;
+  if (!*L) {
+    PetscCall(CSDiracCreateVertexMatrix(mesh, mesh->dmV1, 1, L));
+    PetscCall(MatSetOption(*L, MAT_SYMMETRIC, PETSC_TRUE));
+  } else PetscCall(MatZeroEntries(*L));
+  PetscCall(CSMeshGetLocalPositions(mesh, x, &xl, &p));
+  for (PetscInt f = 0; f < mesh->nf; f++) {
+    const PetscInt  *v    = mesh->faceVert + 3 * f;
+    const PetscReal *c[3] = {p + 3 * v[0], p + 3 * v[1], p + 3 * v[2]};
+    PetscReal        cot[3];
+    PetscScalar      K[9] = {0};
+    CSTriangleCotans(c, cot);
+    for (int k = 0; k < 3; k++) {
+      int       i = (k + 1) % 3, j = (k + 2) % 3;
+      PetscReal w = 0.5 * cot[k];
+      K[3 * i + i] += w;
+      K[3 * j + j] += w;
+      K[3 * i + j] -= w;
+      K[3 * j + i] -= w;
+    }
+    PetscCall(MatSetValuesLocal(*L, 3, v, 3, v, K, ADD_VALUES));
+  }
+  PetscCall(CSMeshRestoreLocalPositions(mesh, x, &xl, &p));
+  PetscCall(MatAssemblyBegin(*L, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(*L, MAT_FINAL_ASSEMBLY));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSSpinReconstruct(CSSpin s, Vec x, Vec lambda, Vec xcenter, Vec xnew)
+{
+  CSMesh         mesh = s->mesh;
+  Vec            b, b1, u1, col = NULL;
+  Mat            A;
+  PetscMPIInt    rank;
+  PetscReal      pinval[3] = {0, 0, 0};
+  PetscLogDouble t0, t1;
+  PetscFunctionBeginUser;
+  PetscCall(CSSpinLogPoissonBegin());
+  PetscCall(PetscTime(&t0));
+  PetscCallMPI(MPI_Comm_rank(mesh->comm, &rank));
+  PetscCall(DMCreateGlobalVector(mesh->dmV3, &b));
+  PetscCall(PoissonRHS(s, x, lambda, b));
+  PetscCall(AssembleLaplacian(mesh, x, &s->L));
+  if (s->pin) {
+    /* translation fixed by pinning the first global vertex at its position in xcenter */
+    PetscInt           row = 0;
+    Vec                e0;
+    const PetscScalar *xc;
+    PetscCall(MatDuplicate(s->L, MAT_COPY_VALUES, &A));
+    PetscCall(MatSetOption(A, MAT_SYMMETRIC, PETSC_TRUE));
+    PetscCall(MatZeroRowsColumns(A, rank ? 0 : 1, &row, 1.0, NULL, NULL));
+    PetscCall(DMCreateGlobalVector(mesh->dmV1, &e0));
+    PetscCall(VecDuplicate(e0, &col));
+    if (!rank) PetscCall(VecSetValue(e0, 0, 1.0, INSERT_VALUES));
+    PetscCall(VecAssemblyBegin(e0));
+    PetscCall(VecAssemblyEnd(e0));
+    PetscCall(MatMult(s->L, e0, col));
+    PetscCall(VecDestroy(&e0));
+    PetscCall(VecGetArrayRead(xcenter, &xc));
+    if (!rank)
+      for (int d = 0; d < 3; d++) pinval[d] = PetscRealPart(xc[d]);
+    PetscCall(VecRestoreArrayRead(xcenter, &xc));
+    PetscCallMPI(MPI_Bcast(pinval, 3, MPIU_REAL, 0, mesh->comm));
+  } else {
+    MatNullSpace ns;
+    PetscCall(MatNullSpaceCreate(mesh->comm, PETSC_TRUE, 0, NULL, &ns));
+    PetscCall(MatSetNullSpace(s->L, ns));
+    PetscCall(MatSetTransposeNullSpace(s->L, ns));
+    PetscCall(MatNullSpaceDestroy(&ns));
+    PetscCall(PetscObjectReference((PetscObject)s->L));
+    A = s->L;
+  }
+  if (!s->kpois) {
+    PC pc;
+    PetscCall(KSPCreate(mesh->comm, &s->kpois));
+    PetscCall(KSPSetOptionsPrefix(s->kpois, "spin_poisson_"));
+    PetscCall(KSPSetType(s->kpois, KSPCG));
+    PetscCall(KSPGetPC(s->kpois, &pc));
+    PetscCall(PCSetType(pc, PCGAMG));
+    PetscCall(KSPSetTolerances(s->kpois, 1e-12, 1e-14, PETSC_DEFAULT, 1000));
+    PetscCall(KSPSetFromOptions(s->kpois));
+  }
+  PetscCall(KSPSetOperators(s->kpois, A, A));
+  PetscCall(DMCreateGlobalVector(mesh->dmV1, &b1));
+  PetscCall(VecDuplicate(b1, &u1));
+  s->poisson_its = 0;
+  for (PetscInt d = 0; d < 3; d++) {
+    KSPConvergedReason reason;
+    PetscInt           its;
+    PetscCall(VecStrideGather(b, d, b1, INSERT_VALUES));
+    if (s->pin) {
+      PetscCall(VecAXPY(b1, -pinval[d], col));
+      if (!rank) PetscCall(VecSetValue(b1, 0, pinval[d], INSERT_VALUES));
+      PetscCall(VecAssemblyBegin(b1));
+      PetscCall(VecAssemblyEnd(b1));
+    }
+    PetscCall(VecSet(u1, 0));
+    PetscCall(KSPSolve(s->kpois, b1, u1));
+    PetscCall(KSPGetConvergedReason(s->kpois, &reason));
+    PetscCheck(reason > 0, mesh->comm, PETSC_ERR_NOT_CONVERGED, "spin: the Poisson solve (coordinate %" PetscInt_FMT ") did not converge (KSP reason %s; options -spin_poisson_ksp_*, -spin_poisson_pc_*). Nothing was written.", d, KSPConvergedReasons[reason]);
+    PetscCall(KSPGetIterationNumber(s->kpois, &its));
+    s->poisson_its += its;
+    PetscCall(VecStrideScatter(u1, d, xnew, INSERT_VALUES));
+  }
+  if (!s->pin) {
+    /* L has the constants in its kernel: put the vertex mean where xcenter has it */
+    for (PetscInt d = 0; d < 3; d++) {
+      PetscScalar sc, sn;
+      PetscCall(VecStrideSum(xcenter, d, &sc));
+      PetscCall(VecStrideSum(xnew, d, &sn));
+      PetscCall(VecStrideGather(xnew, d, u1, INSERT_VALUES));
+      PetscCall(VecShift(u1, (sc - sn) / mesh->Nv));
+      PetscCall(VecStrideScatter(u1, d, xnew, INSERT_VALUES));
+    }
+  }
+  PetscCall(VecDestroy(&b));
+  PetscCall(VecDestroy(&b1));
+  PetscCall(VecDestroy(&u1));
+  PetscCall(VecDestroy(&col));
+  PetscCall(MatDestroy(&A));
+  PetscCall(PetscTime(&t1));
+  s->t_poisson = t1 - t0;
+  PetscCall(CSSpinLogPoissonEnd());
+  PetscFunctionReturn(0);
+}

@@ -1,0 +1,397 @@
+/* Where rho comes from: a file (one value per vertex or per face, in file order), a painted bump, the mean
+   curvature (rho = s H; crane2011 Sec. 7.3 uses rho = -H for minimal surfaces), or the nearest spin
+   transformation of an arbitrary deformation (crane2011 Sec. 7.2). Also the boundary tangents of Sec. 5.7. */
+#include "cs_methods_spin.h"
+#include "cs_util.h"
+
+/* Rank 0: n*ncomp numbers from a text file (whitespace or comma separated, '#' starts a comment) into a[]. */
+static PetscErrorCode ReadValuesFile(const char option[], const char path[], PetscInt n, PetscInt ncomp, const char what[], PetscScalar a[])
+{
+  FILE    *fp;
+  char     line[4096];
+  PetscInt count = 0, lineno = 0, want = n * ncomp;
+  PetscFunctionBeginUser;
+  fp = fopen(path, "r");
+  PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "%s %s: cannot open the file", option, path);
+  while (fgets(line, sizeof(line), fp)) {
+    char *s = line, *hash = strchr(line, '#');
+    lineno++;
+    if (hash) *hash = 0;
+    for (char *c = s; *c; c++)
+      if (*c == ',') *c = ' ';
+    while (1) {
+      char  *end;
+      double v;
+      while (*s == ' ' || *s == '\t' || *s == '\n' || *s == '\r') s++;
+      if (!*s) break;
+      v = strtod(s, &end);
+      if (end == s) {
+        fclose(fp);
+        SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "%s %s: line %" PetscInt_FMT ": not a number: '%.20s'", option, path, lineno, s);
+      }
+      if (PetscIsInfOrNanReal((PetscReal)v)) {
+        fclose(fp);
+        SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "%s %s: line %" PetscInt_FMT ": value %" PetscInt_FMT " is %s", option, path, lineno, count, PetscIsNanReal((PetscReal)v) ? "NaN" : "Inf");
+      }
+      if (count < want) a[count] = v;
+      count++;
+      s = end;
+    }
+  }
+  fclose(fp);
+  PetscCheck(count == want, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "%s %s: %" PetscInt_FMT " values, expected %" PetscInt_FMT " (%s)", option, path, count, want, what);
+  PetscFunctionReturn(0);
+}
+
+/* Reads a per-vertex (ncomp 1 or 3) or per-face field in file order into the global vector g. */
+static PetscErrorCode ReadField(CSMesh mesh, const char option[], const char path[], PetscInt depth, PetscInt ncomp, const char what[], Vec g)
+{
+  Vec          nat = depth == 2 ? mesh->natF1vec : (ncomp == 3 ? mesh->natV3vec : mesh->natV1vec);
+  PetscScalar *a;
+  PetscInt     n = depth == 2 ? mesh->Nf : mesh->Nv;
+  PetscFunctionBeginUser;
+  PetscCall(VecGetArray(nat, &a));
+  CSRootCall(mesh->comm, ReadValuesFile(option, path, n, ncomp, what, a));
+  PetscCall(VecRestoreArray(nat, &a));
+  if (depth == 2) PetscCall(CSMeshScatterF1(mesh, nat, g));
+  else if (ncomp == 3) PetscCall(CSMeshScatterV3(mesh, nat, g));
+  else PetscCall(CSMeshScatterV1(mesh, nat, g));
+  PetscFunctionReturn(0);
+}
+
+/* Area-weighted vertex normals (global dmV3, unit length). */
+static PetscErrorCode VertexNormals(CSMesh mesh, Vec x, Vec N)
+{
+  Vec              xl, nl;
+  const PetscReal *p;
+  PetscScalar     *na;
+  PetscInt         n;
+  PetscFunctionBeginUser;
+  PetscCall(CSMeshGetLocalPositions(mesh, x, &xl, &p));
+  PetscCall(DMGetLocalVector(mesh->dmV3, &nl));
+  PetscCall(VecSet(nl, 0));
+  PetscCall(VecGetArray(nl, &na));
+  for (PetscInt f = 0; f < mesh->nf; f++) {
+    const PetscInt  *v    = mesh->faceVert + 3 * f;
+    const PetscReal *c[3] = {p + 3 * v[0], p + 3 * v[1], p + 3 * v[2]};
+    PetscReal        an[3];
+    CSTriangleAreaVector(c, an);
+    for (int k = 0; k < 3; k++)
+      for (int d = 0; d < 3; d++) na[3 * v[k] + d] += an[d];
+  }
+  PetscCall(VecRestoreArray(nl, &na));
+  PetscCall(VecSet(N, 0));
+  PetscCall(DMLocalToGlobal(mesh->dmV3, nl, ADD_VALUES, N));
+  PetscCall(DMRestoreLocalVector(mesh->dmV3, &nl));
+  PetscCall(CSMeshRestoreLocalPositions(mesh, x, &xl, &p));
+  PetscCall(VecGetLocalSize(N, &n));
+  PetscCall(VecGetArray(N, &na));
+  for (PetscInt i = 0; i < n / 3; i++) {
+    PetscReal l = PetscSqrtReal(PetscSqr(PetscRealPart(na[3 * i])) + PetscSqr(PetscRealPart(na[3 * i + 1])) + PetscSqr(PetscRealPart(na[3 * i + 2])));
+    for (int d = 0; d < 3; d++) na[3 * i + d] /= (l > 0 ? l : 1);
+  }
+  PetscCall(VecRestoreArray(N, &na));
+  PetscFunctionReturn(0);
+}
+
+/* rho += s H with the signed pointwise mean curvature H_i = (L f)_i . N_i / (2 M_i) (positive on a sphere with
+   outward normals; (L f)_i ~ 2 H N M_i for the positive cotan Laplacian). crane2011 Sec. 7.3 takes |HN| = |Lf|,
+   which loses the sign on saddle-shaped regions; the projection on the vertex normal keeps it. */
+static PetscErrorCode AddMeanCurvature(CSMesh mesh, Vec x, PetscReal s, Vec rho)
+{
+  Vec                Lf, M, N;
+  const PetscScalar *l, *m, *nn;
+  PetscScalar       *r;
+  PetscInt           n;
+  PetscFunctionBeginUser;
+  PetscCall(DMCreateGlobalVector(mesh->dmV3, &Lf));
+  PetscCall(DMCreateGlobalVector(mesh->dmV3, &N));
+  PetscCall(DMCreateGlobalVector(mesh->dmV1, &M));
+  PetscCall(CSGeometryLaplacianPositions(mesh, x, Lf, M));
+  PetscCall(VertexNormals(mesh, x, N));
+  PetscCall(VecGetLocalSize(M, &n));
+  PetscCall(VecGetArrayRead(Lf, &l));
+  PetscCall(VecGetArrayRead(N, &nn));
+  PetscCall(VecGetArrayRead(M, &m));
+  PetscCall(VecGetArray(rho, &r));
+  for (PetscInt i = 0; i < n; i++) {
+    PetscReal h = 0;
+    for (int d = 0; d < 3; d++) h += PetscRealPart(l[3 * i + d] * nn[3 * i + d]);
+    r[i] += s * h / (2 * PetscRealPart(m[i]));
+  }
+  PetscCall(VecRestoreArray(rho, &r));
+  PetscCall(VecRestoreArrayRead(M, &m));
+  PetscCall(VecRestoreArrayRead(N, &nn));
+  PetscCall(VecRestoreArrayRead(Lf, &l));
+  PetscCall(VecDestroy(&Lf));
+  PetscCall(VecDestroy(&N));
+  PetscCall(VecDestroy(&M));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSSpinBoundaryTangents(CSMesh mesh, Vec x, Vec T)
+{
+  Vec              xl, tl;
+  const PetscReal *p;
+  PetscScalar     *ta;
+  PetscInt         n;
+  PetscFunctionBeginUser;
+  PetscCall(CSMeshGetLocalPositions(mesh, x, &xl, &p));
+  PetscCall(DMGetLocalVector(mesh->dmV3, &tl));
+  PetscCall(VecSet(tl, 0));
+  PetscCall(VecGetArray(tl, &ta));
+  for (PetscInt f = 0; f < mesh->nf; f++) {
+    const PetscInt *v = mesh->faceVert + 3 * f;
+    for (int a = 0; a < 3; a++) {
+      PetscInt i = v[a], j = v[(a + 1) % 3], e = mesh->faceEdge[3 * f + (a + 2) % 3];
+      /* the boundary half-edge i -> j in the counter-clockwise order of its only face: the outgoing tangent */
+      if (mesh->edgeBoundary[e])
+        for (int d = 0; d < 3; d++) ta[3 * i + d] += p[3 * j + d] - p[3 * i + d];
+    }
+  }
+  PetscCall(VecRestoreArray(tl, &ta));
+  PetscCall(VecSet(T, 0));
+  PetscCall(DMLocalToGlobal(mesh->dmV3, tl, ADD_VALUES, T));
+  PetscCall(DMRestoreLocalVector(mesh->dmV3, &tl));
+  PetscCall(CSMeshRestoreLocalPositions(mesh, x, &xl, &p));
+  PetscCall(VecGetLocalSize(T, &n));
+  PetscCall(VecGetArray(T, &ta));
+  for (PetscInt i = 0; i < n / 3; i++) {
+    PetscReal l = PetscSqrtReal(PetscSqr(PetscRealPart(ta[3 * i])) + PetscSqr(PetscRealPart(ta[3 * i + 1])) + PetscSqr(PetscRealPart(ta[3 * i + 2])));
+    if (l > 0)
+      for (int d = 0; d < 3; d++) ta[3 * i + d] /= l;
+  }
+  PetscCall(VecRestoreArray(T, &ta));
+  PetscFunctionReturn(0);
+}
+
+/* Right-handed orthonormal frame of a triangle (rows u1, u2, n) and its planar corner coordinates. */
+static void TriangleFrame(const PetscReal *c[3], PetscReal F[9], PetscReal s[4])
+{
+  PetscReal e1[3], e2[3], n[3], l1, ln;
+  CSVecSub(c[1], c[0], e1);
+  CSVecSub(c[2], c[0], e2);
+  CSVecCross(e1, e2, n);
+  l1 = CSVecNorm(e1);
+  ln = CSVecNorm(n);
+  for (int d = 0; d < 3; d++) {
+    F[d]     = e1[d] / l1;
+    F[6 + d] = n[d] / ln;
+  }
+  CSVecCross(F + 6, F, F + 3);
+  s[0] = l1; /* planar coordinates: corner 1 = (s0, s1), corner 2 = (s2, s3) */
+  s[1] = 0;
+  s[2] = CSVecDot(e2, F);
+  s[3] = CSVecDot(e2, F + 3);
+}
+
+/* crane2011 Sec. 7.2: per face the best-fit similarity S = sqrt(det Y) A2^{-1} R A1 (B = R Y the polar
+   decomposition of the planar map), as a quaternion l with conj(l) v l = S v, averaged to vertices with the
+   source face areas. The sign of l is chosen with l_w >= 0 (rotation angles <= pi), so that neighbouring faces
+   agree unless the deformation rotates them by about pi. */
+PetscErrorCode CSSpinBestFitSimilarities(CSSpin spin, Vec x, Vec xt, Vec mu)
+{
+  CSMesh             mesh = spin->mesh;
+  Vec                xl, tl, ml, wl, w;
+  const PetscScalar *pa, *qa;
+  PetscScalar       *ma, *wa;
+  const PetscScalar *wg;
+  PetscScalar       *mg;
+  PetscInt           n, nflip = 0;
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLocalVector(mesh->dmV3, &xl));
+  PetscCall(DMGetLocalVector(mesh->dmV3, &tl));
+  PetscCall(DMGlobalToLocal(mesh->dmV3, x, INSERT_VALUES, xl));
+  PetscCall(DMGlobalToLocal(mesh->dmV3, xt, INSERT_VALUES, tl));
+  PetscCall(DMGetLocalVector(spin->dm, &ml));
+  PetscCall(DMGetLocalVector(mesh->dmV1, &wl));
+  PetscCall(VecSet(ml, 0));
+  PetscCall(VecSet(wl, 0));
+  PetscCall(VecGetArrayRead(xl, &pa));
+  PetscCall(VecGetArrayRead(tl, &qa));
+  PetscCall(VecGetArray(ml, &ma));
+  PetscCall(VecGetArray(wl, &wa));
+  for (PetscInt f = 0; f < mesh->nf; f++) {
+    const PetscInt  *v    = mesh->faceVert + 3 * f;
+    const PetscReal *c[3] = {pa + 3 * v[0], pa + 3 * v[1], pa + 3 * v[2]};
+    const PetscReal *d[3] = {qa + 3 * v[0], qa + 3 * v[1], qa + 3 * v[2]};
+    PetscReal        A1[9], A2[9], s[4], t[4], B[4], detS, detB, phi, R2[9], R3[9], q[4], l[4], scale, an[3], area;
+    TriangleFrame(c, A1, s);
+    TriangleFrame(d, A2, t);
+    /* B [s1 s2] = [t1 t2] */
+    detS = s[0] * s[3] - s[2] * s[1];
+    B[0] = (t[0] * s[3] - t[2] * s[1]) / detS;
+    B[1] = (-t[0] * s[2] + t[2] * s[0]) / detS;
+    B[2] = (t[1] * s[3] - t[3] * s[1]) / detS;
+    B[3] = (-t[1] * s[2] + t[3] * s[0]) / detS;
+    detB = B[0] * B[3] - B[1] * B[2];
+    if (detB <= 0) nflip++;
+    /* rotation of the polar decomposition of a 2x2 map with det > 0 */
+    phi   = PetscAtan2Real(B[2] - B[1], B[0] + B[3]);
+    scale = PetscSqrtReal(PetscAbsReal(detB)); /* sqrt(det Y): geometric mean of the principal stretches */
+    for (int k = 0; k < 9; k++) R2[k] = 0;
+    R2[0] = PetscCosReal(phi);
+    R2[1] = -PetscSinReal(phi);
+    R2[3] = PetscSinReal(phi);
+    R2[4] = PetscCosReal(phi);
+    R2[8] = 1;
+    /* R3 = A2^T R2 A1 */
+    for (int i = 0; i < 3; i++)
+      for (int j = 0; j < 3; j++) {
+        PetscReal sum = 0;
+        for (int k = 0; k < 3; k++)
+          for (int m = 0; m < 3; m++) sum += A2[3 * k + i] * R2[3 * k + m] * A1[3 * m + j];
+        R3[3 * i + j] = sum;
+      }
+    CSQuatFromRotation(R3, q); /* q v conj(q) = R3 v, so l = sqrt(scale) conj(q) gives conj(l) v l = scale R3 v */
+    CSQuatConj(q, l);
+    if (l[0] < 0)
+      for (int k = 0; k < 4; k++) l[k] = -l[k];
+    CSTriangleAreaVector(c, an);
+    area = CSVecNorm(an);
+    for (int k = 0; k < 3; k++) {
+      for (int m = 0; m < 4; m++) ma[4 * v[k] + m] += area * PetscSqrtReal(scale) * l[m];
+      wa[v[k]] += area;
+    }
+  }
+  PetscCall(VecRestoreArrayRead(xl, &pa));
+  PetscCall(VecRestoreArrayRead(tl, &qa));
+  PetscCall(VecRestoreArray(ml, &ma));
+  PetscCall(VecRestoreArray(wl, &wa));
+  PetscCall(DMRestoreLocalVector(mesh->dmV3, &xl));
+  PetscCall(DMRestoreLocalVector(mesh->dmV3, &tl));
+  PetscCall(DMCreateGlobalVector(mesh->dmV1, &w));
+  PetscCall(VecSet(mu, 0));
+  PetscCall(DMLocalToGlobal(spin->dm, ml, ADD_VALUES, mu));
+  PetscCall(DMLocalToGlobal(mesh->dmV1, wl, ADD_VALUES, w));
+  PetscCall(DMRestoreLocalVector(spin->dm, &ml));
+  PetscCall(DMRestoreLocalVector(mesh->dmV1, &wl));
+  PetscCall(VecGetLocalSize(w, &n));
+  PetscCall(VecGetArrayRead(w, &wg));
+  PetscCall(VecGetArray(mu, &mg));
+  for (PetscInt i = 0; i < n; i++)
+    for (int m = 0; m < 4; m++) mg[4 * i + m] /= wg[i];
+  PetscCall(VecRestoreArray(mu, &mg));
+  PetscCall(VecRestoreArrayRead(w, &wg));
+  PetscCall(VecDestroy(&w));
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &nflip, 1, MPIU_INT, MPI_SUM, mesh->comm));
+  if (nflip) PetscCall(PetscPrintf(mesh->comm, "Warning: -target_mesh: %" PetscInt_FMT " face(s) are flipped (orientation-reversing map); their similarity uses |det|\n", nflip));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSSpinOptimalRho(CSSpin spin, Vec x, Vec mu, Vec rho)
+{
+  CSMesh       mesh = spin->mesh;
+  PetscReal   *Dmu, *Bmu;
+  PetscScalar *r;
+  PetscFunctionBeginUser;
+  PetscCall(PetscMalloc2(4 * mesh->nf, &Dmu, 4 * mesh->nf, &Bmu));
+  PetscCall(CSDiracFaceApply(mesh, spin->dm, x, mu, Dmu, Bmu));
+  PetscCall(VecGetArray(rho, &r));
+  for (PetscInt f = 0; f < mesh->nf; f++) {
+    /* argmin_rho |(D mu)_k - rho (B mu)_k|^2 = Re(conj(B mu) D mu) / |B mu|^2, and Re(conj(p) q) = p . q */
+    PetscReal num = 0, den = 0;
+    for (int c = 0; c < 4; c++) {
+      num += Bmu[4 * f + c] * Dmu[4 * f + c];
+      den += Bmu[4 * f + c] * Bmu[4 * f + c];
+    }
+    r[f] = den > 0 ? num / den : 0;
+  }
+  PetscCall(VecRestoreArray(rho, &r));
+  PetscCall(PetscFree2(Dmu, Bmu));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSSpinRhoFromOptions(CSSpin spin, Vec x, CSRhoLocation *loc, Vec *rho, Vec *xtarget, Vec *mu)
+{
+  CSMesh      mesh = spin->mesh;
+  char        file[PETSC_MAX_PATH_LEN] = "", target[PETSC_MAX_PATH_LEN] = "";
+  const char *locs[]                   = {"vertex", "face"};
+  PetscInt    iloc = 0, nc = 30;
+  PetscReal   scale = 1, centers[30], radius = 0.3, height = 1, hs = 0;
+  PetscBool   hasfile, hastarget, hasbump, hash;
+  PetscFunctionBeginUser;
+  *loc     = CS_RHO_NONE;
+  *rho     = NULL;
+  *xtarget = NULL;
+  *mu      = NULL;
+  PetscOptionsBegin(mesh->comm, NULL, "Change of mean curvature half-density rho (crane2011 Sec. 4.1)", NULL);
+  PetscCall(PetscOptionsString("-rho", "File of rho values (one per vertex, or per face with -rho_location face), in file order", NULL, file, file, sizeof(file), &hasfile));
+  PetscCall(PetscOptionsEList("-rho_location", "Where -rho values live", NULL, locs, 2, locs[iloc], &iloc, NULL));
+  PetscCall(PetscOptionsReal("-rho_scale", "Multiply rho by this", NULL, scale, &scale, NULL));
+  PetscCall(PetscOptionsRealArray("-rho_bump_center", "Bump centres x,y,z[,x,y,z...]: rho += height exp(-|f - c|^2 / radius^2)", NULL, centers, &nc, &hasbump));
+  PetscCall(PetscOptionsReal("-rho_bump_radius", "Bump radius", NULL, radius, &radius, NULL));
+  PetscCall(PetscOptionsReal("-rho_bump_height", "Bump height", NULL, height, &height, NULL));
+  PetscCall(PetscOptionsReal("-rho_mean_curvature", "rho += s H (s = -1: minimal surface, crane2011 Sec. 7.3)", NULL, hs, &hs, &hash));
+  PetscCall(PetscOptionsString("-target_mesh", "Nearest spin transformation of this deformation (same connectivity; crane2011 Sec. 7.2)", NULL, target, target, sizeof(target), &hastarget));
+  PetscOptionsEnd();
+  if (!hasbump) nc = 0;
+  PetscCheck(nc % 3 == 0, mesh->comm, PETSC_ERR_ARG_WRONG, "-rho_bump_center: %" PetscInt_FMT " numbers; need x,y,z triples", nc);
+  PetscCheck(radius > 0, mesh->comm, PETSC_ERR_ARG_OUTOFRANGE, "-rho_bump_radius %g: must be positive", (double)radius);
+  PetscCheck(!(hastarget && (hasfile || nc || hash)), mesh->comm, PETSC_ERR_ARG_INCOMP, "-target_mesh computes rho itself (crane2011 Sec. 7.2): do not combine it with -rho, -rho_bump_center or -rho_mean_curvature");
+  PetscCheck(!(hasfile && iloc == 1 && (nc || hash)), mesh->comm, PETSC_ERR_ARG_INCOMP, "-rho_location face cannot be combined with the per-vertex -rho_bump_center/-rho_mean_curvature");
+  if (hastarget) {
+    PetscCall(CSMeshLoadCompatiblePositions(mesh, "-target_mesh", target, xtarget));
+    PetscCall(DMCreateGlobalVector(spin->dm, mu));
+    PetscCall(CSSpinBestFitSimilarities(spin, x, *xtarget, *mu));
+    PetscCall(DMCreateGlobalVector(mesh->dmF1, rho));
+    PetscCall(CSSpinOptimalRho(spin, x, *mu, *rho));
+    *loc = CS_RHO_FACE;
+  } else if (hasfile && iloc == 1) {
+    PetscCall(DMCreateGlobalVector(mesh->dmF1, rho));
+    PetscCall(ReadField(mesh, "-rho", file, 2, 1, "one per face in file order (-rho_location face)", *rho));
+    *loc = CS_RHO_FACE;
+  } else if (hasfile || nc || hash) {
+    PetscCall(DMCreateGlobalVector(mesh->dmV1, rho));
+    if (hasfile) PetscCall(ReadField(mesh, "-rho", file, 0, 1, "one per vertex in file order; -rho_location face for one per face", *rho));
+    else PetscCall(VecSet(*rho, 0));
+    if (nc) {
+      const PetscScalar *p;
+      PetscScalar       *r;
+      PetscInt           n;
+      PetscCall(VecGetLocalSize(*rho, &n));
+      PetscCall(VecGetArrayRead(x, &p));
+      PetscCall(VecGetArray(*rho, &r));
+      for (PetscInt i = 0; i < n; i++)
+        for (PetscInt b = 0; b < nc / 3; b++) {
+          PetscReal d2 = 0;
+          for (int d = 0; d < 3; d++) d2 += PetscSqr(PetscRealPart(p[3 * i + d]) - centers[3 * b + d]);
+          r[i] += height * PetscExpReal(-d2 / (radius * radius));
+        }
+      PetscCall(VecRestoreArray(*rho, &r));
+      PetscCall(VecRestoreArrayRead(x, &p));
+    }
+    if (hash) PetscCall(AddMeanCurvature(mesh, x, hs, *rho));
+    *loc = CS_RHO_VERTEX;
+  }
+  if (*rho && scale != 1) PetscCall(VecScale(*rho, scale));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSSpinBoundaryFromOptions(CSSpin spin, Vec xtarget, Vec *Tt)
+{
+  CSMesh    mesh                     = spin->mesh;
+  char      file[PETSC_MAX_PATH_LEN] = "";
+  PetscBool has;
+  PetscFunctionBeginUser;
+  *Tt = NULL;
+  PetscOptionsBegin(mesh->comm, NULL, "Spin boundary tangents (crane2011 Sec. 5.7)", NULL);
+  PetscCall(PetscOptionsString("-spin_boundary_file", "Target boundary tangents: 3 numbers per vertex in file order (read on boundary vertices)", NULL, file, file, sizeof(file), &has));
+  PetscOptionsEnd();
+  PetscCheck(!has || spin->boundary == CS_SPIN_BOUNDARY_FILE, mesh->comm, PETSC_ERR_ARG_INCOMP, "-spin_boundary_file needs -spin_boundary file");
+  switch (spin->boundary) {
+  case CS_SPIN_BOUNDARY_FILE:
+    PetscCheck(has, mesh->comm, PETSC_ERR_ARG_WRONG, "-spin_boundary file needs -spin_boundary_file FILE");
+    PetscCall(DMCreateGlobalVector(mesh->dmV3, Tt));
+    PetscCall(ReadField(mesh, "-spin_boundary_file", file, 0, 3, "3 per vertex in file order", *Tt));
+    break;
+  case CS_SPIN_BOUNDARY_TARGET:
+    PetscCheck(xtarget, mesh->comm, PETSC_ERR_ARG_WRONG, "-spin_boundary target needs -target_mesh FILE");
+    PetscCall(DMCreateGlobalVector(mesh->dmV3, Tt));
+    PetscCall(CSSpinBoundaryTangents(mesh, xtarget, *Tt));
+    break;
+  default:
+    break;
+  }
+  PetscFunctionReturn(0);
+}

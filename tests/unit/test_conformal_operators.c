@@ -1,0 +1,268 @@
+static const char help[] = "Checks of the conformal-constraint operators of soliman2021 (issue 3): X = C Dlambda against\n"
+                           "finite differences of C lambda, the identities C A u = 0 (cross ratios are invariant under\n"
+                           "vertex scaling, Eq. 4), X f = 0 (global scaling), X t = 0 and X (w x f) = 0 (translations,\n"
+                           "rotations), the vertex-star relation sum_j (C lambda)_ij = 0 (why PGD's matrix is singular),\n"
+                           "the shell H^2 metric against the assembled one, H 1 = *0 1, I_Q > 0, the fairing gradient.\n"
+                           "Exit status = number of failed checks.\n";
+
+#include "cs_constraints.h"
+#include "cs_util.h"
+
+static PetscInt nfail = 0;
+
+static PetscErrorCode Check(MPI_Comm comm, PetscBool ok, const char what[], PetscReal value, PetscReal bound)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscPrintf(comm, "%s %s: %.3e (bound %.1e)\n", ok ? "ok  " : "FAIL", what, (double)value, (double)bound));
+  if (!ok) nfail++;
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode MakeMesh(MPI_Comm comm, PetscBool torus, PetscReal amp, CSMesh *mesh)
+{
+  CSMeshData  md;
+  CSTopology  topo;
+  PetscMPIInt rank;
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCall(PetscMemzero(&md, sizeof(md)));
+  PetscCall(PetscMemzero(&topo, sizeof(topo)));
+  if (!rank) {
+    PetscRandom r;
+    if (torus) PetscCall(CSMeshDataTorus(3, 1, 16, 8, &md));
+    else PetscCall(CSMeshDataIcosphere(2, 1.0, PETSC_TRUE, &md));
+    PetscCall(PetscRandomCreate(PETSC_COMM_SELF, &r));
+    PetscCall(PetscRandomSetInterval(r, -amp, amp));
+    PetscCall(PetscRandomSetSeed(r, 11));
+    PetscCall(PetscRandomSeed(r));
+    for (PetscInt i = 0; i < 3 * md.nv; i++) {
+      PetscReal d;
+      PetscCall(PetscRandomGetValueReal(r, &d));
+      md.x[i] += d;
+    }
+    PetscCall(PetscRandomDestroy(&r));
+    PetscCall(CSMeshDataValidate(&md, &topo));
+  }
+  PetscCall(CSMeshCreateFromData(comm, &md, &topo, mesh));
+  PetscFunctionReturn(0);
+}
+
+/* v_i = a (constant) or w x f_i (rotation) or f_i (scaling) */
+static PetscErrorCode FillVertexField(Vec x, Vec v, int kind)
+{
+  PetscInt           n;
+  const PetscScalar *p;
+  PetscScalar       *a;
+  const PetscReal    w[3] = {0.3, -0.7, 0.5}, t[3] = {1.0, -2.0, 0.5};
+  PetscFunctionBeginUser;
+  PetscCall(VecGetLocalSize(x, &n));
+  PetscCall(VecGetArrayRead(x, &p));
+  PetscCall(VecGetArray(v, &a));
+  for (PetscInt i = 0; i < n / 3; i++) {
+    const PetscReal *f = (const PetscReal *)p + 3 * i;
+    PetscReal        c[3];
+    CSVecCross(w, f, c);
+    for (int d = 0; d < 3; d++) a[3 * i + d] = kind == 0 ? t[d] : (kind == 1 ? c[d] : f[d]);
+  }
+  PetscCall(VecRestoreArray(v, &a));
+  PetscCall(VecRestoreArrayRead(x, &p));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode RunChecks(MPI_Comm comm, PetscBool torus)
+{
+  CSMesh                m;
+  CSConformalConstraint cc;
+  Vec                   x, d, xp, cp, cm, fd, Xd, v, y, lam, u, Au, iq;
+  PetscRandom           rnd;
+  PetscReal             err, nrm, mn;
+  const char           *label = torus ? "torus" : "icosphere";
+  char                  what[256];
+  PetscFunctionBeginUser;
+  PetscCall(MakeMesh(comm, torus, 0.02, &m));
+  x = m->x;
+  PetscCall(CSConformalConstraintCreate(m, x, PETSC_FALSE, NULL, &cc));
+  PetscCall(DMCreateGlobalVector(m->dmE1, &cp));
+  PetscCall(VecDuplicate(cp, &cm));
+  PetscCall(VecDuplicate(cp, &fd));
+  PetscCall(VecDuplicate(cp, &Xd));
+  PetscCall(VecDuplicate(cp, &y));
+  PetscCall(VecDuplicate(cp, &lam));
+  PetscCall(VecDuplicate(cp, &Au));
+  PetscCall(VecDuplicate(cp, &iq));
+  PetscCall(VecDuplicate(x, &d));
+  PetscCall(VecDuplicate(x, &xp));
+  PetscCall(VecDuplicate(x, &v));
+  PetscCall(PetscRandomCreate(comm, &rnd));
+  PetscCall(PetscRandomSetInterval(rnd, -1, 1));
+  PetscCall(PetscRandomSetSeed(rnd, 2021));
+  PetscCall(PetscRandomSeed(rnd));
+
+  /* c(x) = 0 at the target, and X = C Dlambda against central differences of c */
+  PetscCall(CSConformalConstraintEvaluate(&cc, x, cp, PETSC_TRUE));
+  PetscCall(VecNorm(cp, NORM_INFINITY, &err));
+  PetscCall(PetscSNPrintf(what, sizeof(what), "%s: C lambda(x) - c0 = 0 at the target", label));
+  PetscCall(Check(comm, (PetscBool)(err < 1e-13), what, err, 1e-13));
+  PetscCall(VecSetRandom(d, rnd));
+  PetscCall(MatMult(cc.X, d, Xd));
+  {
+    const PetscReal h = 1e-6;
+    Mat             Xs;
+    PetscCall(MatDuplicate(cc.X, MAT_COPY_VALUES, &Xs));
+    PetscCall(VecWAXPY(xp, h, d, x));
+    PetscCall(CSConformalConstraintEvaluate(&cc, xp, cp, PETSC_FALSE));
+    PetscCall(VecWAXPY(xp, -h, d, x));
+    PetscCall(CSConformalConstraintEvaluate(&cc, xp, cm, PETSC_FALSE));
+    PetscCall(VecWAXPY(fd, -1.0, cm, cp));
+    PetscCall(VecScale(fd, 1.0 / (2 * h)));
+    PetscCall(VecAXPY(fd, -1.0, Xd));
+    PetscCall(VecNorm(fd, NORM_INFINITY, &err));
+    PetscCall(VecNorm(Xd, NORM_INFINITY, &nrm));
+    PetscCall(PetscSNPrintf(what, sizeof(what), "%s: X d vs central differences of C lambda (relative)", label));
+    PetscCall(Check(comm, (PetscBool)(err / nrm < 1e-6), what, err / nrm, 1e-6));
+    PetscCall(MatDestroy(&Xs));
+  }
+  /* X f = 0, X t = 0, X (w x f) = 0 */
+  for (int k = 0; k < 3; k++) {
+    const char *nm[3] = {"translation", "rotation", "scaling (X f)"};
+    PetscCall(FillVertexField(x, v, k));
+    PetscCall(MatMult(cc.X, v, Xd));
+    PetscCall(VecNorm(Xd, NORM_INFINITY, &err));
+    PetscCall(PetscSNPrintf(what, sizeof(what), "%s: X applied to a %s", label, nm[k]));
+    PetscCall(Check(comm, (PetscBool)(err < 1e-11), what, err, 1e-11));
+  }
+  /* C A u = 0 for random vertex scale factors u (Eq. 4: im A = ker C) */
+  {
+    Vec          ul, Aul;
+    PetscScalar *a;
+    const PetscScalar *ua;
+    PetscCall(DMCreateGlobalVector(m->dmV1, &u));
+    PetscCall(VecSetRandom(u, rnd));
+    PetscCall(DMGetLocalVector(m->dmV1, &ul));
+    PetscCall(DMGlobalToLocal(m->dmV1, u, INSERT_VALUES, ul));
+    PetscCall(DMGetLocalVector(m->dmE1, &Aul));
+    PetscCall(VecGetArrayRead(ul, &ua));
+    PetscCall(VecGetArray(Aul, &a));
+    for (PetscInt e = 0; e < m->ne; e++) a[e] = 0.5 * (ua[m->edgeVert[2 * e]] + ua[m->edgeVert[2 * e + 1]]);
+    PetscCall(VecRestoreArray(Aul, &a));
+    PetscCall(VecRestoreArrayRead(ul, &ua));
+    PetscCall(DMLocalToGlobal(m->dmE1, Aul, INSERT_VALUES, Au));
+    PetscCall(DMRestoreLocalVector(m->dmE1, &Aul));
+    PetscCall(DMRestoreLocalVector(m->dmV1, &ul));
+    PetscCall(MatMult(cc.C, Au, y));
+    PetscCall(VecNorm(y, NORM_INFINITY, &err));
+    PetscCall(PetscSNPrintf(what, sizeof(what), "%s: C A u = 0 for random u (scale invariance of cross ratios)", label));
+    PetscCall(Check(comm, (PetscBool)(err < 1e-13), what, err, 1e-13));
+  }
+  /* vertex-star sums of C lambda vanish for any lambda: rows of C (and X) are dependent */
+  {
+    Vec              sl, s;
+    Vec              yl;
+    PetscScalar     *sa;
+    const PetscScalar *ya;
+    PetscCall(VecSetRandom(lam, rnd));
+    PetscCall(MatMult(cc.C, lam, y));
+    PetscCall(DMGetLocalVector(m->dmE1, &yl));
+    PetscCall(DMGlobalToLocal(m->dmE1, y, INSERT_VALUES, yl));
+    PetscCall(DMGetLocalVector(m->dmV1, &sl));
+    PetscCall(VecSet(sl, 0));
+    PetscCall(VecGetArrayRead(yl, &ya));
+    PetscCall(VecGetArray(sl, &sa));
+    for (PetscInt e = 0; e < m->ne; e++)
+      if (m->edgeOwned[e]) {
+        sa[m->edgeVert[2 * e]] += ya[e];
+        sa[m->edgeVert[2 * e + 1]] += ya[e];
+      }
+    PetscCall(VecRestoreArray(sl, &sa));
+    PetscCall(VecRestoreArrayRead(yl, &ya));
+    PetscCall(DMCreateGlobalVector(m->dmV1, &s));
+    PetscCall(VecSet(s, 0));
+    PetscCall(DMLocalToGlobal(m->dmV1, sl, ADD_VALUES, s));
+    PetscCall(VecNorm(s, NORM_INFINITY, &err));
+    PetscCall(VecNorm(y, NORM_INFINITY, &nrm));
+    PetscCall(PetscSNPrintf(what, sizeof(what), "%s: vertex-star sums of C lambda (random lambda, |C lambda| = %.2g)", label, (double)nrm));
+    PetscCall(Check(comm, (PetscBool)(err < 1e-12 && nrm > 0.1), what, err, 1e-12));
+    PetscCall(VecDestroy(&s));
+    PetscCall(DMRestoreLocalVector(m->dmV1, &sl));
+    PetscCall(DMRestoreLocalVector(m->dmE1, &yl));
+  }
+  /* H^2 metric: shell = assembled, H 1 = *0 1 (L 1 = 0), symmetric positive */
+  {
+    CSMetric    H;
+    Vec         h1, h2;
+    PetscScalar q;
+    PetscCall(CSMetricCreate(m, PETSC_TRUE, &H));
+    PetscCall(CSMetricUpdate(&H, x));
+    PetscCall(VecDuplicate(x, &h1));
+    PetscCall(VecDuplicate(x, &h2));
+    PetscCall(VecSetRandom(d, rnd));
+    PetscCall(MatMult(H.H, d, h1));
+    PetscCall(MatMult(H.shell, d, h2));
+    PetscCall(VecAXPY(h2, -1.0, h1));
+    PetscCall(VecNorm(h2, NORM_INFINITY, &err));
+    PetscCall(VecNorm(h1, NORM_INFINITY, &nrm));
+    PetscCall(PetscSNPrintf(what, sizeof(what), "%s: H^2 shell vs assembled *0 + L *0^-1 L (relative)", label));
+    PetscCall(Check(comm, (PetscBool)(err / nrm < 1e-12), what, err / nrm, 1e-12));
+    PetscCall(VecDot(h1, d, &q));
+    PetscCall(PetscSNPrintf(what, sizeof(what), "%s: <H d, d> > 0", label));
+    PetscCall(Check(comm, (PetscBool)(PetscRealPart(q) > 0), what, PetscRealPart(q), 0));
+    PetscCall(VecSet(d, 1.0));
+    PetscCall(MatMult(H.H, d, h1));
+    PetscCall(VecAXPY(h1, -1.0, H.m3));
+    PetscCall(VecNorm(h1, NORM_INFINITY, &err));
+    PetscCall(PetscSNPrintf(what, sizeof(what), "%s: H 1 = *0 1", label));
+    PetscCall(Check(comm, (PetscBool)(err < 1e-12), what, err, 1e-12));
+    PetscCall(VecDestroy(&h1));
+    PetscCall(VecDestroy(&h2));
+    PetscCall(CSMetricDestroy(&H));
+  }
+  /* I_Q > 0 with the guard */
+  {
+    PetscInt ng;
+    PetscCall(CSOperatorQuadDiffMetric(m, x, 1e-2, iq, &ng));
+    PetscCall(VecMin(iq, NULL, &mn));
+    PetscCall(PetscSNPrintf(what, sizeof(what), "%s: min I_Q > 0 (%" PetscInt_FMT " guarded edges)", label, ng));
+    PetscCall(Check(comm, (PetscBool)(mn > 0), what, mn, 0));
+  }
+  /* fairing gradient (Eq. 21) against finite differences */
+  {
+    CSEnergy e;
+    Vec      x0;
+    PetscCall(VecDuplicate(x, &x0));
+    PetscCall(VecCopy(x, x0));
+    PetscCall(VecShift(x0, 0.01));
+    PetscCall(CSEnergyCreateFairing(m, x0, 0.1, &e));
+    PetscCall(CSEnergyCheckGradient(e, x, 1e-6, 3, &err));
+    PetscCall(PetscSNPrintf(what, sizeof(what), "%s: FD gradient of the fairing energy", label));
+    PetscCall(Check(comm, (PetscBool)(err < 1e-6), what, err, 1e-6));
+    PetscCall(CSEnergyDestroy(&e));
+    PetscCall(VecDestroy(&x0));
+  }
+  PetscCall(PetscRandomDestroy(&rnd));
+  PetscCall(VecDestroy(&cp));
+  PetscCall(VecDestroy(&cm));
+  PetscCall(VecDestroy(&fd));
+  PetscCall(VecDestroy(&Xd));
+  PetscCall(VecDestroy(&y));
+  PetscCall(VecDestroy(&lam));
+  PetscCall(VecDestroy(&Au));
+  PetscCall(VecDestroy(&iq));
+  PetscCall(VecDestroy(&u));
+  PetscCall(VecDestroy(&d));
+  PetscCall(VecDestroy(&xp));
+  PetscCall(VecDestroy(&v));
+  PetscCall(CSConformalConstraintDestroy(&cc));
+  PetscCall(CSMeshDestroy(&m));
+  PetscFunctionReturn(0);
+}
+
+int main(int argc, char **argv)
+{
+  PetscCall(PetscInitialize(&argc, &argv, NULL, help));
+  PetscCall(CSRegisterEvents());
+  PetscCall(RunChecks(PETSC_COMM_WORLD, PETSC_FALSE));
+  PetscCall(RunChecks(PETSC_COMM_WORLD, PETSC_TRUE));
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%" PetscInt_FMT " failed\n", nfail));
+  PetscCall(PetscFinalize());
+  return (int)nfail;
+}
