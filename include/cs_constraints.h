@@ -23,6 +23,26 @@ PETSC_EXTERN PetscErrorCode CSConformalConstraintCreate(CSMesh mesh, Vec xt, Pet
 PETSC_EXTERN PetscErrorCode CSConformalConstraintEvaluate(CSConformalConstraint *cc, Vec x, Vec c, PetscBool wantX);
 PETSC_EXTERN PetscErrorCode CSConformalConstraintDestroy(CSConformalConstraint *cc);
 
+/* Boundary-face normal constraint (soliman2021 App. D, "first-order boundary conditions"): N_f(x) = N_f(x0)
+   for every face with a boundary edge, 3 rows per face, rows owned by the face's rank (a plain MPI layout of
+   3 * local boundary faces). DN has the 3x3 blocks dN_f/df_i = -(N x e_jk) N^T / (2 A_f), e_jk = f_k - f_j
+   the edge opposite i (App. D prints 1/A_ijk: with A the triangle area the factor is 1/(2A), checked by
+   finite differences in tests/unit/test_conformal_operators.c). Columns of fixed vertices are dropped. */
+typedef struct {
+  CSMesh           mesh;
+  const PetscBool *fixed;
+  PetscInt         nb;    /* local boundary faces */
+  PetscInt        *faces; /* their local face indices */
+  Vec              N0;    /* target normals, 3 nb local entries */
+  Mat              DN;
+} CSNormalConstraint;
+PETSC_EXTERN PetscErrorCode CSNormalConstraintCreate(CSMesh mesh, Vec x0, const PetscBool fixed[], CSNormalConstraint *nc);
+/* c = N(x) - N0 (a vector like N0); DN at x if wantJ. */
+PETSC_EXTERN PetscErrorCode CSNormalConstraintEvaluate(CSNormalConstraint *nc, Vec x, Vec c, PetscBool wantJ);
+/* Metric of the normal multipliers (the analogue of I_Q: 1 / (2 A_f)), a vector like N0. */
+PETSC_EXTERN PetscErrorCode CSNormalConstraintMetric(CSNormalConstraint *nc, Vec x, Vec iq);
+PETSC_EXTERN PetscErrorCode CSNormalConstraintDestroy(CSNormalConstraint *nc);
+
 /* Global constraints. evaluate fills c[0..k) and, if rows != NULL, rows[0..k) (dmV3 global vectors). */
 typedef struct _p_CSGlobalConstraint *CSGlobalConstraint;
 struct _p_CSGlobalConstraint {

@@ -49,6 +49,9 @@ PETSC_EXTERN PetscErrorCode CSMeshCreateFromOptions(MPI_Comm comm, const char pr
 /* Distributes md (significant on rank 0 only; consumed: md is emptied). */
 PETSC_EXTERN PetscErrorCode CSMeshCreateFromData(MPI_Comm comm, CSMeshData *md, const CSTopology *topo, CSMesh *mesh);
 PETSC_EXTERN PetscErrorCode CSMeshDestroy(CSMesh *mesh);
+/* A clone of mesh->dm with dof unknowns on every point of the given depth (0 vertices, 1 edges, 2 faces),
+   e.g. 4 per vertex for quaternion fields. Local dof block v of its local vectors is local vertex v. */
+PETSC_EXTERN PetscErrorCode CSMeshCreateFieldDM(DM dm, PetscInt depth, PetscInt dof, const char name[], DM *out);
 
 /* Vector fields in the natural (file) order, gathered on / scattered from rank 0. A natural vector is
    a sequential Vec on rank 0 (3*Nv, Nv or Nf long) and empty elsewhere; the returned one is owned by mesh. */

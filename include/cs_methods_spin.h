@@ -7,10 +7,19 @@
 #ifndef CS_METHODS_SPIN_H
 #define CS_METHODS_SPIN_H
 #include <slepceps.h>
+#include <time.h>
 #include "cs_operators_dirac.h"
 
+/* CPU seconds of this process, all threads (PetscGetCPUTime has a coarse resolution here) */
+static inline PetscLogDouble CSSpinCPUTime(void)
+{
+  struct timespec t;
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return (PetscLogDouble)t.tv_sec + 1e-9 * (PetscLogDouble)t.tv_nsec;
+}
+
 typedef enum {
-  CS_SPIN_BOUNDARY_NONE, /* natural (free) boundary */
+  CS_SPIN_BOUNDARY_NONE, /* natural (free) boundary; the default is KEEP on meshes with a boundary */
   CS_SPIN_BOUNDARY_KEEP, /* target tangents = current tangents */
   CS_SPIN_BOUNDARY_FILE, /* target tangents from -spin_boundary_file (3 values per vertex, file order) */
   CS_SPIN_BOUNDARY_TARGET /* target tangents = outgoing boundary edges of -target_mesh (Sec. 7.4) */
@@ -47,11 +56,15 @@ struct _p_CSSpin {
   Mat       L;
   Vec       start;   /* initial vector of the eigensolver (reduced space), kept between solves */
 
+  char    *mumps_option[2]; /* option names set by default (cleared again at destroy) */
+  PetscInt n_mumps_option;
+
   /* results */
   PetscReal gamma;    /* the eigenvalue, in the units of A^* A lambda = gamma M_V lambda (Eq. 7) or Eq. 6 */
   PetscReal residual; /* ||K x - gamma_K x|| / ||x|| of the scaled problem */
   PetscInt  eps_its, inner_its, poisson_its;
-  PetscLogDouble t_setup, t_eigen, t_poisson;
+  PetscLogDouble t_setup, t_eigen, t_poisson;       /* wall clock */
+  PetscLogDouble c_setup, c_eigen, c_poisson;       /* CPU time of this process (rank 0): robust to a loaded machine */
 };
 
 PETSC_EXTERN PetscErrorCode CSSpinCreate(CSMesh mesh, CSSpin *spin);
@@ -63,11 +76,14 @@ PETSC_EXTERN PetscErrorCode CSSpinSolveEigen(CSSpin spin, Vec x, CSRhoLocation l
 /* The nev smallest eigenvalues of Eq. 7 (rho = 0 unless given), ascending, unscaled (Fig. 8). */
 PETSC_EXTERN PetscErrorCode CSSpinSpectrum(CSSpin spin, Vec x, CSRhoLocation loc, Vec rho, PetscInt nev, PetscReal eig[], PetscInt *nconv);
 /* lambda is determined up to a constant right factor c in H (a global similarity): choose c by least squares
-   against mu (a dm vector; NULL = 1), or only a positive scale when rotation_too is false. */
+   against mu (a dm vector), or with mu = NULL the rotation that best maps lambda to 1 and unit mean |lambda|^2;
+   only a positive scale when rotation_too is false (prescribed boundary tangents must not turn). */
 PETSC_EXTERN PetscErrorCode CSSpinNormalize(CSSpin spin, Vec lambda, Vec mu, PetscBool rotation_too);
 /* New positions from Eq. 8 and the Poisson problem; the translation is fixed by matching the vertex mean of
    xcenter (or pinning one vertex at its position in xcenter with -spin_poisson_pin). */
 PETSC_EXTERN PetscErrorCode CSSpinReconstruct(CSSpin spin, Vec x, Vec lambda, Vec xcenter, Vec xnew);
+/* Scale xnew about its vertex mean to the area of xref (a painted rho fixes the shape, not its size). */
+PETSC_EXTERN PetscErrorCode CSSpinRestoreArea(CSSpin spin, Vec xref, Vec xnew);
 PETSC_EXTERN PetscErrorCode CSSpinDestroy(CSSpin *spin);
 
 /* Inputs of rho (src/methods/spin_rho.c): -rho FILE, -rho_location vertex|face, -rho_scale, -rho_bump_*,

@@ -27,10 +27,14 @@ PETSC_EXTERN PetscErrorCode CSOperatorQuadDiffMetric(CSMesh mesh, Vec x, PetscRe
 /* The Sobolev H^2 metric I_H2 = *0 + L *0^{-1} L (soliman2021 Eq. 26), acting on each coordinate: 3V x 3V.
    CSH2Metric keeps L (3 comps), the mass and the assembled product (a two-ring AIJ made with MatMatMult,
    exact, used as the matrix and for preconditioning), and a shell Mat applying *0 f + L (*0^{-1} (L f))
-   without the product. The L2 alternative (-flow_metric l2) is the diagonal mass *0. */
+   without the product. The L2 alternative (-flow_metric l2) is the diagonal mass *0. Eq. 26 adds terms of
+   different units (*0 ~ length^2, L *0^{-1} L ~ length^-2): the paper's meshes have unit size. The flows set
+   mass_weight = 1/s^4 with s = sqrt(area/4pi) of the input, so that w *0 + L *0^{-1} L scales as length^-2
+   in both terms and the flow does not depend on the size of the input (s = 1: Eq. 26 as printed). */
 typedef struct {
   CSMesh    mesh;
   PetscBool h2;        /* else L2 */
+  PetscReal mass_weight; /* w in w *0 + L *0^{-1} L (1 after Create; see CSMetricCreate) */
   Mat       L3, Ls;    /* L and *0^{-1} L (rows scaled) */
   Mat       H;         /* assembled metric (AIJ, 3V x 3V) */
   Mat       shell;     /* matrix-free H^2 */

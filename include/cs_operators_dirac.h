@@ -48,9 +48,8 @@ PETSC_EXTERN PetscErrorCode CSDiracCreateFaceOperators(CSMesh mesh, DM dm, Vec x
    Dmu[4k..4k+3] and Bmu[4k..4k+3] (arrays of 4*nf, local faces). Used by crane2011 Sec. 7.2. */
 PETSC_EXTERN PetscErrorCode CSDiracFaceApply(CSMesh mesh, DM dm, Vec x, Vec mu, PetscReal Dmu[], PetscReal Bmu[]);
 
-/* A preallocated AIJ matrix with the vertex 1-ring pattern and bs dofs per vertex of dm (dm: CSDiracCreateDM,
+/* A preallocated AIJ (or BAIJ) matrix with the vertex 1-ring pattern and bs dofs per vertex of dm (dm: CSDiracCreateDM,
    or mesh->dmV1 with bs = 1); local-to-global mapping set for MatSetValuesLocal. */
-PETSC_EXTERN PetscErrorCode CSDiracCreateVertexMatrix(CSMesh mesh, DM dm, PetscInt bs, Mat *A);
 
 /* Helpers shared by the implementations: local (ghosted) rho values, and the coefficients a_j of one face. */
 PETSC_EXTERN PetscErrorCode CSDiracGetRho(CSMesh mesh, CSRhoLocation loc, Vec rho, Vec *rl, const PetscScalar **r);

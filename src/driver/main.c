@@ -5,6 +5,9 @@ static const char help[] = "confsurf: conformal geometry processing of triangle 
                            "Unknown options are an error (they are listed at the end of the run).\n";
 
 #include <slepcsys.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
 #include "cs_driver.h"
 #include "cs_methods_spin.h"
 
@@ -79,11 +82,65 @@ static PetscErrorCode Run(MPI_Comm comm)
   PetscFunctionReturn(0);
 }
 
+/* PETSc reserves -history FILE for its own log (PetscInitialize opens it and copies every PetscPrintf into
+   it), but our fixed interface uses -history for the per-iteration CSV. Before PETSc sees the options we
+   rename it to -cs_history: on the command line in place, in an -options_file through a private copy of the
+   file with the option renamed (removed again at exit). */
+static char renamed_files[8][64];
+static int  nrenamed = 0;
+
+static void RemoveRenamedFiles(void)
+{
+  for (int i = 0; i < nrenamed; i++) remove(renamed_files[i]);
+}
+
+static const char *RenameHistoryInOptionsFile(const char *path)
+{
+  FILE  *in = fopen(path, "r"), *out;
+  char   line[4096];
+  int    found = 0, fd;
+  if (!in) return path; /* PETSc reports the missing file itself */
+  while (fgets(line, sizeof(line), in)) {
+    const char *t = line + strspn(line, " \t");
+    if (!strncmp(t, "-history", 8) && (t[8] == 0 || strchr(" \t\r\n", t[8]))) found = 1;
+  }
+  if (!found || nrenamed == 8) {
+    fclose(in);
+    return path;
+  }
+  snprintf(renamed_files[nrenamed], sizeof(renamed_files[0]), "/tmp/confsurf-options-XXXXXX");
+  fd = mkstemp(renamed_files[nrenamed]);
+  if (fd < 0 || !(out = fdopen(fd, "w"))) {
+    fclose(in);
+    return path;
+  }
+  rewind(in);
+  while (fgets(line, sizeof(line), in)) {
+    char *t = line + strspn(line, " \t");
+    if (!strncmp(t, "-history", 8) && (t[8] == 0 || strchr(" \t\r\n", t[8]))) fprintf(out, "-cs_history%s", t + 8);
+    else fputs(line, out);
+  }
+  fclose(in);
+  fclose(out);
+  if (!nrenamed) atexit(RemoveRenamedFiles);
+  return renamed_files[nrenamed++];
+}
+
+static void RenameHistoryOption(int argc, char **argv)
+{
+  static char cs_history[] = "-cs_history";
+  for (int i = 1; i < argc; i++) {
+    if (!strcmp(argv[i], "-history")) argv[i] = cs_history;
+    else if (!strcmp(argv[i], "-options_file") && i + 1 < argc) argv[i + 1] = (char *)RenameHistoryInOptionsFile(argv[i + 1]);
+  }
+}
+
 int main(int argc, char **argv)
 {
   PetscErrorCode ierr;
   PetscBool      bad = PETSC_FALSE, traceback = PETSC_FALSE;
 
+  RenameHistoryOption(argc, argv);
   PetscCall(SlepcInitialize(&argc, &argv, NULL, help));
   PetscCall(PetscOptionsHasName(NULL, NULL, "-cs_traceback", &traceback));
   if (!traceback) PetscCall(PetscPushErrorHandler(ConciseErrorHandler, NULL));

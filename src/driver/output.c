@@ -12,7 +12,7 @@ PetscErrorCode CSOutputFromOptions(MPI_Comm comm, CSOutput *o)
   PetscCall(PetscOptionsString("-o", "Final mesh (.obj or .ply)", NULL, o->out, o->out, sizeof(o->out), &o->has_out));
   PetscCall(PetscOptionsString("-viewer_dir", "Directory for the ParaView series (series.pvd)", NULL, o->viewer_dir, o->viewer_dir, sizeof(o->viewer_dir), &o->has_viewer));
   PetscCall(PetscOptionsString("-summary", "JSON summary file", NULL, o->summary, o->summary, sizeof(o->summary), &o->has_summary));
-  PetscCall(PetscOptionsString("-history", "Per-iteration CSV history", NULL, o->history, o->history, sizeof(o->history), &o->has_history));
+  PetscCall(PetscOptionsString("-cs_history", "-history FILE.csv: per-iteration CSV history (main renames -history, which PETSc reserves)", NULL, o->history, o->history, sizeof(o->history), &o->has_history));
   PetscCall(PetscOptionsString("-reference", "Mesh with the same connectivity for the quasi-conformal error", NULL, o->reference, o->reference, sizeof(o->reference), &o->has_reference));
   PetscOptionsEnd();
   if (o->has_out) {

@@ -4,7 +4,9 @@
    Notation (paper Fig. 1): interior edge e_ij with faces t_ijl (traversed i -> j) and t_jik (j -> i); the
    diamond is (k, j, l, i) counter-clockwise, a = v_j - v_k, b = v_l - v_j, c = v_i - v_l, d = v_k - v_i and
    A, B, C, D their unit vectors. cos beta = <A,C><B,D> - <A,B><C,D> - <B,C><D,A> = -Re(A B^-1 C D^-1)
-   (Sec. 3.1). Each edge contributes beta to W_i and W_j (beta^i_j = beta^j_i), so W = 2 sum_e beta - 2 pi V.
+   (Sec. 3.1). Each edge contributes beta to W_i and W_j (beta^i_j = beta^j_i), so W = 2 sum_e beta - 2 pi V;
+   W is nevertheless summed vertex by vertex (W_i small near a minimum, no 2 pi V cancellation: |W| = 8e-14
+   instead of 9e-12 on the level-3 icosphere). beta = atan2(|Im Q|, -Re Q) keeps digits near 0 and pi.
 
    Eq. 1 (checked against central differences, see tests/unit/test_bs_energy.c: the printed signs are right):
      -sin(beta) beta_,k = (cos b/|a|^2 - <B,C>/(|a||d|)) a + (<A,C>/(|b||d|) + <C,D>/(|b||a|)) b
@@ -30,6 +32,7 @@ const char *const CSBSBoundaries[] = {"fixed", "free", "CSBSBoundary", "CS_BS_BO
 typedef struct {
   CSBSBoundary bc;
   PetscReal    eps;
+  PetscReal    epsK;     /* diamonds with sin beta below this are left out of K (default eps, see header) */
   PetscBool    freebd;   /* FREE and the mesh has a boundary */
   DM           dmE6;     /* 6 dofs per edge: opposite vertex position per side */
   DM           dmV6;     /* 6 dofs per vertex: previous/next boundary neighbour position (FREE) */
@@ -41,9 +44,11 @@ typedef struct {
   PetscBool   *fixed;    /* nv */
   PetscInt     nfixed;
   PetscReal   *wEdge;    /* ne: multiplicity of beta(e) in W */
-  PetscReal    Wconst;   /* the 2 pi (number of vertices carrying W_i) term */
+  Vec          Wg;       /* dmV1 work vector: per-vertex W_i when the caller does not want them */
   PetscReal   *gkl;      /* 6*ne scratch: weighted gradient rows of l (side 0) and k (side 1) */
-  PetscReal   *Mkl;      /* 8*ne scratch: weighted K rows of l and k */
+  PetscReal   *Mkl;      /* 8*ne scratch: weighted K rows of l and k (zeros for inactive diamonds: K's nonzero
+                            pattern must not depend on which diamonds pass the |sin beta| test, or a later
+                            reassembly would need new nonzeros after the first assembly compressed K) */
   PetscBool   *act;      /* ne scratch */
   PetscBool   *both;     /* ne: both faces of the edge are on this rank (then it is owned here and the whole
                             diamond is added in one block by the edge loop) */
@@ -131,23 +136,6 @@ static void BSAngle(const PetscReal *const P[3], PetscReal eps, PetscReal *theta
 }
 
 /* ---------------------------------------------------------------- setup */
-static PetscErrorCode CreateFieldDM(DM dm, PetscInt depth, PetscInt dof, const char name[], DM *out)
-{
-  PetscSection s;
-  PetscInt     pStart, pEnd, sStart, sEnd;
-  PetscFunctionBeginUser;
-  PetscCall(DMClone(dm, out));
-  PetscCall(PetscObjectSetName((PetscObject)*out, name));
-  PetscCall(DMPlexGetChart(dm, &pStart, &pEnd));
-  PetscCall(DMPlexGetDepthStratum(dm, depth, &sStart, &sEnd));
-  PetscCall(PetscSectionCreate(PetscObjectComm((PetscObject)dm), &s));
-  PetscCall(PetscSectionSetChart(s, pStart, pEnd));
-  for (PetscInt p = sStart; p < sEnd; p++) PetscCall(PetscSectionSetDof(s, p, dof));
-  PetscCall(PetscSectionSetUp(s));
-  PetscCall(DMSetLocalSection(*out, s));
-  PetscCall(PetscSectionDestroy(&s));
-  PetscFunctionReturn(0);
-}
 
 /* Sum a local field over all copies (LocalToGlobal ADD) and give every copy the sum (GlobalToLocal). */
 static PetscErrorCode SumShare(DM dm, Vec l)
@@ -217,8 +205,7 @@ static PetscErrorCode BSSetUp(CSEnergy en)
   c->freebd = (PetscBool)(c->bc == CS_BS_BOUNDARY_FREE && Nsum[2] > 0);
   /* W = sum of W_i over the vertices that carry one: all of them (+ one infinity vertex per boundary loop)
      in FREE mode, the non-boundary ones in FIXED mode */
-  if (c->bc == CS_BS_BOUNDARY_FREE) c->Wconst = 2 * PETSC_PI * (PetscReal)(m->Nv + (Nsum[2] > 0 ? m->topo.boundary_loops : 0));
-  else c->Wconst = 2 * PETSC_PI * (PetscReal)Nsum[1];
+  PetscCall(DMCreateGlobalVector(m->dmV1, &c->Wg));
 
   /* edge multiplicities */
   PetscCall(PetscMalloc1(m->ne, &c->wEdge));
@@ -229,8 +216,8 @@ static PetscErrorCode BSSetUp(CSEnergy en)
   }
 
   /* opposite vertices per edge side: global number, count, fixed flag (positions travel per evaluation) */
-  PetscCall(CreateFieldDM(m->dm, 1, 6, "bs_edge6", &c->dmE6));
-  PetscCall(CreateFieldDM(m->dm, 1, 3, "bs_edge3", &dmE4));
+  PetscCall(CSMeshCreateFieldDM(m->dm, 1, 6, "bs_edge6", &c->dmE6));
+  PetscCall(CSMeshCreateFieldDM(m->dm, 1, 3, "bs_edge3", &dmE4));
   PetscCall(DMGetLocalVector(dmE4, &l));
   PetscCall(VecSet(l, 0));
   PetscCall(VecGetArray(l, &a));
@@ -277,8 +264,8 @@ static PetscErrorCode BSSetUp(CSEnergy en)
 
   /* boundary neighbours (FREE): dof 0 = previous (the edge prev -> v), dof 1 = next (v -> next) */
   if (c->freebd) {
-    PetscCall(CreateFieldDM(m->dm, 0, 6, "bs_vert6", &c->dmV6));
-    PetscCall(CreateFieldDM(m->dm, 0, 4, "bs_vert4", &dmV4));
+    PetscCall(CSMeshCreateFieldDM(m->dm, 0, 6, "bs_vert6", &c->dmV6));
+    PetscCall(CSMeshCreateFieldDM(m->dm, 0, 4, "bs_vert4", &dmV4));
     PetscCall(DMGetLocalVector(dmV4, &l));
     PetscCall(VecSet(l, 0));
     PetscCall(VecGetArray(l, &a));
@@ -367,10 +354,10 @@ static PetscErrorCode BSEvaluate(CSEnergy en, Vec x, PetscReal *Wout, Vec Wv, Ve
 {
   BSCtx             *c = (BSCtx *)en->ctx;
   CSMesh             m = en->mesh;
-  Vec                xl, el, vl = NULL, gl = NULL, wl = NULL;
+  Vec                xl, el, vl = NULL, gl = NULL, wl;
   const PetscReal   *p;
-  PetscScalar       *ea, *va = NULL, *ga = NULL, *wa = NULL;
-  PetscReal          Wl = 0, Wsum;
+  PetscScalar       *ea, *va = NULL, *ga = NULL, *wa;
+  PetscReal          Winf = 0, Wloc = 0, Wsum;
   PetscFunctionBeginUser;
   PetscCall(CSMeshGetLocalPositions(m, x, &xl, &p));
   /* diamonds: opposite positions per edge side */
@@ -410,11 +397,11 @@ static PetscErrorCode BSEvaluate(CSEnergy en, Vec x, PetscReal *Wout, Vec Wv, Ve
     PetscCall(VecSet(gl, 0));
     PetscCall(VecGetArray(gl, &ga));
   }
-  if (Wv) {
-    PetscCall(DMGetLocalVector(m->dmV1, &wl));
-    PetscCall(VecSet(wl, 0));
-    PetscCall(VecGetArray(wl, &wa));
-  }
+  /* W is summed as sum_i W_i (each W_i = sum beta - 2 pi is small near a minimum), not as 2 sum_e beta - 2 pi V,
+     whose cancellation loses ~1e-11 on a few thousand vertices */
+  PetscCall(DMGetLocalVector(m->dmV1, &wl));
+  PetscCall(VecSet(wl, 0));
+  PetscCall(VecGetArray(wl, &wa));
 
   /* interior edges: beta_1 (Sec. 3.1), edge owner adds value and rows i, j */
   for (PetscInt e = 0; e < m->ne; e++) {
@@ -430,15 +417,12 @@ static PetscErrorCode BSEvaluate(CSEnergy en, Vec x, PetscReal *Wout, Vec Wv, Ve
     P[3] = p + 3 * i;
     CSBSDiamond(P, c->eps, &beta, (ga || K) ? M : NULL, &active);
     if (m->edgeOwned[e]) {
-      Wl += w * beta;
-      if (wa) {
-        wa[i] += beta;
-        wa[j] += beta;
-      }
+      wa[i] += beta;
+      wa[j] += beta;
     }
     c->act[e] = active;
-    if (!active || w == 0) continue;
-    if (ga) {
+    if (w == 0) continue;
+    if (ga && active) {
       for (int d = 0; d < 3; d++) {
         PetscReal gr[4] = {0, 0, 0, 0};
         for (int r = 0; r < 4; r++)
@@ -457,6 +441,9 @@ static PetscErrorCode BSEvaluate(CSEnergy en, Vec x, PetscReal *Wout, Vec Wv, Ve
         }
       }
     }
+    if (K && active && PetscSinReal(beta) < c->epsK) /* near-kink diamond: keep its gradient, drop it from K */
+      for (int r = 0; r < 4; r++)
+        for (int q = 0; q < 4; q++) M[r][q] = 0;
     if (K) {
       PetscInt    cols[4] = {c->oppGid[2 * e + 1], c->gid[j], c->oppGid[2 * e], c->gid[i]};
       PetscBool   cfix[4] = {c->oppFixed[2 * e + 1], c->fixed[j], c->oppFixed[2 * e], c->fixed[i]};
@@ -486,8 +473,8 @@ static PetscErrorCode BSEvaluate(CSEnergy en, Vec x, PetscReal *Wout, Vec Wv, Ve
       for (int k = 0; k < 3; k++) {
         PetscInt e = m->faceEdge[3 * f + k], o = m->faceVert[3 * f + k];
         int      s = EdgeSide(m, f, k);
-        if (m->edgeBoundary[e] || c->both[e] || !c->act[e] || c->fixed[o] || c->wEdge[e] == 0) continue;
-        if (ga)
+        if (m->edgeBoundary[e] || c->both[e] || c->fixed[o] || c->wEdge[e] == 0) continue;
+        if (ga && c->act[e])
           for (int d = 0; d < 3; d++) ga[3 * o + d] += c->gkl[6 * e + 3 * s + d];
         if (K) {
           PetscInt    cols[4] = {c->oppGid[2 * e + 1], c->gid[m->edgeVert[2 * e + 1]], c->oppGid[2 * e], c->gid[m->edgeVert[2 * e]]};
@@ -518,14 +505,11 @@ static PetscErrorCode BSEvaluate(CSEnergy en, Vec x, PetscReal *Wout, Vec Wv, Ve
         P[1] = p + 3 * i;
         P[2] = p + 3 * j;
         BSAngle(P, c->eps, &th, M, &active);
-        Wl += 2 * (PETSC_PI - th);
-        if (wa) {
-          wa[i] += PETSC_PI - th;
-          wa[j] += PETSC_PI - th;
-        }
-        if (active) {
+        wa[i] += PETSC_PI - th;
+        wa[j] += PETSC_PI - th;
+        {
           PetscInt idx[3] = {vk, i, j};
-          if (ga)
+          if (ga && active)
             for (int r = 0; r < 3; r++)
               for (int d = 0; d < 3; d++)
                 for (int q = 0; q < 3; q++) ga[3 * idx[r] + d] -= 2 * M[r][q] * P[q][d];
@@ -560,8 +544,7 @@ static PetscErrorCode BSEvaluate(CSEnergy en, Vec x, PetscReal *Wout, Vec Wv, Ve
             ro      = 1;
           }
           BSAngle(Q, c->eps, &th, M, &active);
-          if (!active) continue;
-          if (ga)
+          if (ga && active)
             for (int d = 0; d < 3; d++)
               for (int q = 0; q < 3; q++) ga[3 * other + d] -= 2 * M[ro][q] * Q[q][d];
           if (K) {
@@ -580,10 +563,9 @@ static PetscErrorCode BSEvaluate(CSEnergy en, Vec x, PetscReal *Wout, Vec Wv, Ve
       Q[1] = va + 6 * b;
       Q[2] = va + 6 * b + 3;
       BSAngle(Q, c->eps, &th, M, &active);
-      Wl += 2 * (PETSC_PI - th);
-      if (wa) wa[b] += PETSC_PI - th;
-      if (!active) continue;
-      if (ga)
+      wa[b] += PETSC_PI - th;
+      Winf += PETSC_PI - th; /* W of the vertex at infinity: sum of its beta_3 - 2 pi per loop */
+      if (ga && active)
         for (int d = 0; d < 3; d++)
           for (int q = 0; q < 3; q++) ga[3 * b + d] -= 2 * M[0][q] * Q[q][d];
       if (K) {
@@ -600,29 +582,32 @@ static PetscErrorCode BSEvaluate(CSEnergy en, Vec x, PetscReal *Wout, Vec Wv, Ve
   PetscCall(DMRestoreLocalVector(c->dmE6, &el));
   PetscCall(CSMeshRestoreLocalPositions(m, x, &xl, &p));
 
-  PetscCall(MPIU_Allreduce(&Wl, &Wsum, 1, MPIU_REAL, MPIU_SUM, m->comm));
-  if (Wout) *Wout = Wsum - c->Wconst;
   if (g) {
     PetscCall(VecRestoreArray(gl, &ga));
     PetscCall(VecSet(g, 0));
     PetscCall(DMLocalToGlobal(m->dmV3, gl, ADD_VALUES, g));
     PetscCall(DMRestoreLocalVector(m->dmV3, &gl));
   }
-  if (Wv) {
+  {
     PetscScalar *w;
     PetscInt     n = 0;
+    Vec          Wg = Wv ? Wv : c->Wg;
     PetscCall(VecRestoreArray(wl, &wa));
-    PetscCall(VecSet(Wv, 0));
-    PetscCall(DMLocalToGlobal(m->dmV1, wl, ADD_VALUES, Wv));
+    PetscCall(VecSet(Wg, 0));
+    PetscCall(DMLocalToGlobal(m->dmV1, wl, ADD_VALUES, Wg));
     PetscCall(DMRestoreLocalVector(m->dmV1, &wl));
-    PetscCall(VecGetArray(Wv, &w));
+    PetscCall(VecGetArray(Wg, &w));
     for (PetscInt v = 0; v < m->nv; v++) {
       if (!m->vertOwned[v]) continue;
-      if (c->bc == CS_BS_BOUNDARY_FIXED && m->vertBoundary[v]) w[n] = 0;
+      if (c->bc == CS_BS_BOUNDARY_FIXED && m->vertBoundary[v]) w[n] = 0; /* W_i undefined there (Sec. 3.3) */
       else w[n] -= 2 * PETSC_PI;
+      Wloc += PetscRealPart(w[n]);
       n++;
     }
-    PetscCall(VecRestoreArray(Wv, &w));
+    PetscCall(VecRestoreArray(Wg, &w));
+    Wloc += Winf;
+    PetscCall(MPIU_Allreduce(&Wloc, &Wsum, 1, MPIU_REAL, MPIU_SUM, m->comm));
+    if (Wout) *Wout = Wsum - (c->freebd ? 2 * PETSC_PI * (PetscReal)m->topo.boundary_loops : 0);
   }
   if (K) {
     for (PetscInt v = 0; v < m->nv; v++)
@@ -654,6 +639,7 @@ static PetscErrorCode BSDestroy(CSEnergy e)
   PetscFunctionBeginUser;
   if (c->gid) PetscCall(ISLocalToGlobalMappingRestoreIndices(c->ltog, &c->gid));
   PetscCall(DMDestroy(&c->dmE6));
+  PetscCall(VecDestroy(&c->Wg));
   PetscCall(DMDestroy(&c->dmV6));
   PetscCall(PetscFree2(c->oppGid, c->oppFixed));
   PetscCall(PetscFree(c->bdGid));
@@ -676,6 +662,7 @@ PetscErrorCode CSEnergyCreateWillmoreBS(CSMesh mesh, CSBSBoundary bc, PetscReal 
   PetscCall(PetscNew(&c));
   c->bc          = bc;
   c->eps         = beta_eps;
+  c->epsK        = beta_eps;
   (*e)->ctx      = c;
   (*e)->value    = BSValue;
   (*e)->gradient = BSGradient;
@@ -740,5 +727,13 @@ PetscErrorCode CSEnergyWillmoreBSAddFact(CSMesh mesh, Vec x, CSJSON js)
   PetscCall(CSEnergyDestroy(&e));
   PetscCall(CSJSONAddReal(js, "willmore_bs", W));
   PetscCall(PetscPrintf(mesh->comm, "willmore_bs=%.12g (bobenko-schroeder2005)\n", (double)W));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSEnergyWillmoreBSSetHessianEps(CSEnergy e, PetscReal eps)
+{
+  BSCtx *c = (BSCtx *)e->ctx;
+  PetscFunctionBeginUser;
+  c->epsK = eps;
   PetscFunctionReturn(0);
 }

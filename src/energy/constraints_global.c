@@ -156,7 +156,7 @@ static PetscErrorCode ReadPointsFile(const char option[], const char path[], Pet
     while (*s == ' ' || *s == '\t') s++;
     if (*s == '#' || *s == '\n' || *s == '\r' || *s == 0) continue;
     nr = sscanf(s, "%ld %lf %lf %lf %1s", &idx, &a, &b, &c, extra);
-    if (nr != 4 || !PetscIsNormalReal((PetscReal)a + 1) || !PetscIsNormalReal((PetscReal)b + 1) || !PetscIsNormalReal((PetscReal)c + 1)) {
+    if (nr != 4 || PetscIsInfOrNanReal((PetscReal)a) || PetscIsInfOrNanReal((PetscReal)b) || PetscIsInfOrNanReal((PetscReal)c)) {
       fclose(fp);
       PetscCall(PetscFree(seen));
       SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "%s %s line %" PetscInt_FMT ": expected 'vertex_index x y z' (0-based index and three finite numbers)", option, path, lineno);

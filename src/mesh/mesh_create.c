@@ -23,7 +23,7 @@ PetscErrorCode CSRegisterEvents(void)
 }
 
 /* A clone of the plex with `dof` unknowns on every point of depth `depth` (0 vertices, 1 edges, 2 faces). */
-static PetscErrorCode CreateFieldDM(DM dm, PetscInt depth, PetscInt dof, const char name[], DM *out)
+PetscErrorCode CSMeshCreateFieldDM(DM dm, PetscInt depth, PetscInt dof, const char name[], DM *out)
 {
   PetscSection s;
   PetscInt     pStart, pEnd, sStart, sEnd;
@@ -282,10 +282,10 @@ PetscErrorCode CSMeshCreateFromData(MPI_Comm comm, CSMeshData *md, const CSTopol
   if (dist) PetscCall(DMDestroy(&serial));
   PetscCall(PetscSFDestroy(&sfMig));
 
-  PetscCall(CreateFieldDM(m->dm, 0, 3, "vertex3", &m->dmV3));
-  PetscCall(CreateFieldDM(m->dm, 0, 1, "vertex", &m->dmV1));
-  PetscCall(CreateFieldDM(m->dm, 1, 1, "edge", &m->dmE1));
-  PetscCall(CreateFieldDM(m->dm, 2, 1, "face", &m->dmF1));
+  PetscCall(CSMeshCreateFieldDM(m->dm, 0, 3, "vertex3", &m->dmV3));
+  PetscCall(CSMeshCreateFieldDM(m->dm, 0, 1, "vertex", &m->dmV1));
+  PetscCall(CSMeshCreateFieldDM(m->dm, 1, 1, "edge", &m->dmE1));
+  PetscCall(CSMeshCreateFieldDM(m->dm, 2, 1, "face", &m->dmF1));
   PetscCall(BuildLocalTables(m));
   PetscCall(BuildOwnershipAndBoundary(m));
   PetscCall(PositionsFromCoordinates(m));

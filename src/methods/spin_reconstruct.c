@@ -65,85 +65,27 @@ static PetscErrorCode PoissonRHS(CSSpin s, Vec x, Vec lambda, Vec b)
   PetscFunctionReturn(0);
 }
 
-/* The cotan Laplacian of cs_operators.h (same face kernel as src/operators/laplacian.c), on a matrix with the
-   fast 1-ring preallocation (CSDiracCreateVertexMatrix) instead of DMCreateMatrix, which dominated the run
-   time of the whole spin transformation at 10k vertices. */
-static PetscErrorCode AssembleLaplacian(CSMesh mesh, Vec x, Mat *L)
-{
-  Vec              xl;
-  const PetscReal *p;
-  PetscFunctionBeginUser;
-  if (!*L) {
-    PetscCall(CSDiracCreateVertexMatrix(mesh, mesh->dmV1, 1, L));
-    PetscCall(MatSetOption(*L, MAT_SYMMETRIC, PETSC_TRUE));
-  } else PetscCall(MatZeroEntries(*L));
-  PetscCall(CSMeshGetLocalPositions(mesh, x, &xl, &p));
-  for (PetscInt f = 0; f < mesh->nf; f++) {
-    const PetscInt  *v    = mesh->faceVert + 3 * f;
-    const PetscReal *c[3] = {p + 3 * v[0], p + 3 * v[1], p + 3 * v[2]};
-    PetscReal        cot[3];
-    PetscScalar      K[9] = {0};
-    CSTriangleCotans(c, cot);
-    for (int k = 0; k < 3; k++) {
-      int       i = (k + 1) % 3, j = (k + 2) % 3;
-      PetscReal w = 0.5 * cot[k];
-      K[3 * i + i] += w;
-      K[3 * j + j] += w;
-      K[3 * i + j] -= w;
-      K[3 * j + i] -= w;
-    }
-    PetscCall(MatSetValuesLocal(*L, 3, v, 3, v, K, ADD_VALUES));
-  }
-  PetscCall(CSMeshRestoreLocalPositions(mesh, x, &xl, &p));
-  PetscCall(MatAssemblyBegin(*L, MAT_FINAL_ASSEMBLY));
-  PetscCall(MatAssemblyEnd(*L, MAT_FINAL_ASSEMBLY));
-  PetscFunctionReturn(0);
-}
-
 PetscErrorCode CSSpinReconstruct(CSSpin s, Vec x, Vec lambda, Vec xcenter, Vec xnew)
 {
   CSMesh         mesh = s->mesh;
-  Vec            b, b1, u1, col = NULL;
-  Mat            A;
+  Vec            b, b1, u1;
   PetscMPIInt    rank;
-  PetscReal      pinval[3] = {0, 0, 0};
-  PetscLogDouble t0, t1;
+  PetscInt       row = 0;
+  PetscReal      shift[3];
+  PetscLogDouble t0, t1, c0, c1;
   PetscFunctionBeginUser;
   PetscCall(CSSpinLogPoissonBegin());
   PetscCall(PetscTime(&t0));
+  c0 = CSSpinCPUTime();
   PetscCallMPI(MPI_Comm_rank(mesh->comm, &rank));
   PetscCall(DMCreateGlobalVector(mesh->dmV3, &b));
   PetscCall(PoissonRHS(s, x, lambda, b));
-  PetscCall(AssembleLaplacian(mesh, x, &s->L));
-  if (s->pin) {
-    /* translation fixed by pinning the first global vertex at its position in xcenter */
-    PetscInt           row = 0;
-    Vec                e0;
-    const PetscScalar *xc;
-    PetscCall(MatDuplicate(s->L, MAT_COPY_VALUES, &A));
-    PetscCall(MatSetOption(A, MAT_SYMMETRIC, PETSC_TRUE));
-    PetscCall(MatZeroRowsColumns(A, rank ? 0 : 1, &row, 1.0, NULL, NULL));
-    PetscCall(DMCreateGlobalVector(mesh->dmV1, &e0));
-    PetscCall(VecDuplicate(e0, &col));
-    if (!rank) PetscCall(VecSetValue(e0, 0, 1.0, INSERT_VALUES));
-    PetscCall(VecAssemblyBegin(e0));
-    PetscCall(VecAssemblyEnd(e0));
-    PetscCall(MatMult(s->L, e0, col));
-    PetscCall(VecDestroy(&e0));
-    PetscCall(VecGetArrayRead(xcenter, &xc));
-    if (!rank)
-      for (int d = 0; d < 3; d++) pinval[d] = PetscRealPart(xc[d]);
-    PetscCall(VecRestoreArrayRead(xcenter, &xc));
-    PetscCallMPI(MPI_Bcast(pinval, 3, MPIU_REAL, 0, mesh->comm));
-  } else {
-    MatNullSpace ns;
-    PetscCall(MatNullSpaceCreate(mesh->comm, PETSC_TRUE, 0, NULL, &ns));
-    PetscCall(MatSetNullSpace(s->L, ns));
-    PetscCall(MatSetTransposeNullSpace(s->L, ns));
-    PetscCall(MatNullSpaceDestroy(&ns));
-    PetscCall(PetscObjectReference((PetscObject)s->L));
-    A = s->L;
-  }
+  /* L has the constants in its kernel and b _|_ 1 (every edge adds +-w e~): the system is consistent. Solve it
+     with the first global vertex pinned at 0 (row and column 0 replaced by the identity), which keeps every
+     other equation and makes the matrix SPD for any solver (CG + AMG, or a Cholesky factorisation), then place
+     the translation: vertex mean of xcenter (default) or vertex 0 at its xcenter position (-spin_poisson_pin). */
+  PetscCall(CSOperatorLaplacian(mesh, x, s->L ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX, &s->L));
+  PetscCall(MatZeroRowsColumns(s->L, rank ? 0 : 1, &row, 1.0, NULL, NULL));
   if (!s->kpois) {
     PC pc;
     PetscCall(KSPCreate(mesh->comm, &s->kpois));
@@ -154,7 +96,7 @@ PetscErrorCode CSSpinReconstruct(CSSpin s, Vec x, Vec lambda, Vec xcenter, Vec x
     PetscCall(KSPSetTolerances(s->kpois, 1e-12, 1e-14, PETSC_DEFAULT, 1000));
     PetscCall(KSPSetFromOptions(s->kpois));
   }
-  PetscCall(KSPSetOperators(s->kpois, A, A));
+  PetscCall(KSPSetOperators(s->kpois, s->L, s->L));
   PetscCall(DMCreateGlobalVector(mesh->dmV1, &b1));
   PetscCall(VecDuplicate(b1, &u1));
   s->poisson_its = 0;
@@ -162,12 +104,9 @@ PetscErrorCode CSSpinReconstruct(CSSpin s, Vec x, Vec lambda, Vec xcenter, Vec x
     KSPConvergedReason reason;
     PetscInt           its;
     PetscCall(VecStrideGather(b, d, b1, INSERT_VALUES));
-    if (s->pin) {
-      PetscCall(VecAXPY(b1, -pinval[d], col));
-      if (!rank) PetscCall(VecSetValue(b1, 0, pinval[d], INSERT_VALUES));
-      PetscCall(VecAssemblyBegin(b1));
-      PetscCall(VecAssemblyEnd(b1));
-    }
+    if (!rank) PetscCall(VecSetValue(b1, 0, 0.0, INSERT_VALUES));
+    PetscCall(VecAssemblyBegin(b1));
+    PetscCall(VecAssemblyEnd(b1));
     PetscCall(VecSet(u1, 0));
     PetscCall(KSPSolve(s->kpois, b1, u1));
     PetscCall(KSPGetConvergedReason(s->kpois, &reason));
@@ -176,24 +115,56 @@ PetscErrorCode CSSpinReconstruct(CSSpin s, Vec x, Vec lambda, Vec xcenter, Vec x
     s->poisson_its += its;
     PetscCall(VecStrideScatter(u1, d, xnew, INSERT_VALUES));
   }
-  if (!s->pin) {
-    /* L has the constants in its kernel: put the vertex mean where xcenter has it */
+  if (s->pin) {
+    const PetscScalar *xc;
+    PetscCall(VecGetArrayRead(xcenter, &xc));
+    if (!rank)
+      for (int d = 0; d < 3; d++) shift[d] = PetscRealPart(xc[d]);
+    PetscCall(VecRestoreArrayRead(xcenter, &xc));
+    PetscCallMPI(MPI_Bcast(shift, 3, MPIU_REAL, 0, mesh->comm));
+  } else {
     for (PetscInt d = 0; d < 3; d++) {
       PetscScalar sc, sn;
       PetscCall(VecStrideSum(xcenter, d, &sc));
       PetscCall(VecStrideSum(xnew, d, &sn));
-      PetscCall(VecStrideGather(xnew, d, u1, INSERT_VALUES));
-      PetscCall(VecShift(u1, (sc - sn) / mesh->Nv));
-      PetscCall(VecStrideScatter(u1, d, xnew, INSERT_VALUES));
+      shift[d] = PetscRealPart(sc - sn) / mesh->Nv;
     }
+  }
+  for (PetscInt d = 0; d < 3; d++) {
+    PetscCall(VecStrideGather(xnew, d, u1, INSERT_VALUES));
+    PetscCall(VecShift(u1, shift[d]));
+    PetscCall(VecStrideScatter(u1, d, xnew, INSERT_VALUES));
   }
   PetscCall(VecDestroy(&b));
   PetscCall(VecDestroy(&b1));
   PetscCall(VecDestroy(&u1));
-  PetscCall(VecDestroy(&col));
-  PetscCall(MatDestroy(&A));
   PetscCall(PetscTime(&t1));
+  c1           = CSSpinCPUTime();
   s->t_poisson = t1 - t0;
+  s->c_poisson = c1 - c0;
   PetscCall(CSSpinLogPoissonEnd());
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSSpinRestoreArea(CSSpin s, Vec xref, Vec xnew)
+{
+  PetscReal a0, a1, v, f;
+  Vec       u;
+  PetscFunctionBeginUser;
+  PetscCall(CSGeometryAreaVolume(s->mesh, xref, &a0, &v));
+  PetscCall(CSGeometryAreaVolume(s->mesh, xnew, &a1, &v));
+  PetscCheck(a1 > 0, s->mesh->comm, PETSC_ERR_NOT_CONVERGED, "spin: the new surface has zero area");
+  f = PetscSqrtReal(a0 / a1);
+  PetscCall(DMGetGlobalVector(s->mesh->dmV1, &u));
+  for (PetscInt d = 0; d < 3; d++) {
+    PetscScalar sn;
+    PetscCall(VecStrideSum(xnew, d, &sn));
+    PetscCall(VecStrideGather(xnew, d, u, INSERT_VALUES));
+    PetscCall(VecShift(u, -sn / s->mesh->Nv));
+    PetscCall(VecScale(u, f));
+    PetscCall(VecShift(u, sn / s->mesh->Nv));
+    PetscCall(VecStrideScatter(u, d, xnew, INSERT_VALUES));
+  }
+  PetscCall(DMRestoreGlobalVector(s->mesh->dmV1, &u));
   PetscFunctionReturn(0);
 }

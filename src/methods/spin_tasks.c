@@ -46,8 +46,9 @@ PetscErrorCode CSTaskSpin(MPI_Comm comm)
   PetscCall(CSSpinNormalize(spin, lambda, mu, (PetscBool)(spin->boundary == CS_SPIN_BOUNDARY_NONE)));
   PetscCall(VecDuplicate(mesh->x, &xnew));
   PetscCall(CSSpinReconstruct(spin, mesh->x, lambda, xt ? xt : mesh->x, xnew));
+  if (!xt) PetscCall(CSSpinRestoreArea(spin, mesh->x, xnew));
   PetscCall(PetscPrintf(comm, "spin: gamma=%.10g (%s problem, residual %.2e) eigensolver its=%" PetscInt_FMT " inner its=%" PetscInt_FMT "; poisson its=%" PetscInt_FMT "\n", (double)spin->gamma, spin->generalized ? "generalized Eq. 6" : "standard Eq. 7", (double)spin->residual, spin->eps_its, spin->inner_its, spin->poisson_its));
-  PetscCall(PetscPrintf(comm, "spin: seconds setup=%.4f eigen=%.4f poisson=%.4f\n", spin->t_setup, spin->t_eigen, spin->t_poisson));
+  PetscCall(PetscPrintf(comm, "spin: seconds setup=%.4f eigen=%.4f poisson=%.4f (cpu %.4f %.4f %.4f)\n", spin->t_setup, spin->t_eigen, spin->t_poisson, spin->c_setup, spin->c_eigen, spin->c_poisson));
   PetscCall(CSJSONAddReal(out.json, "eigenvalue", spin->gamma));
   PetscCall(CSJSONAddReal(out.json, "eigen_residual", spin->residual));
   PetscCall(CSJSONAddInt(out.json, "eps_its", spin->eps_its));
@@ -56,6 +57,9 @@ PetscErrorCode CSTaskSpin(MPI_Comm comm)
   PetscCall(CSJSONAddReal(out.json, "seconds_setup", (PetscReal)spin->t_setup));
   PetscCall(CSJSONAddReal(out.json, "seconds_eigen", (PetscReal)spin->t_eigen));
   PetscCall(CSJSONAddReal(out.json, "seconds_poisson", (PetscReal)spin->t_poisson));
+  PetscCall(CSJSONAddReal(out.json, "cpu_seconds_setup", (PetscReal)spin->c_setup));
+  PetscCall(CSJSONAddReal(out.json, "cpu_seconds_eigen", (PetscReal)spin->c_eigen));
+  PetscCall(CSJSONAddReal(out.json, "cpu_seconds_poisson", (PetscReal)spin->c_poisson));
   PetscCall(CSJSONAddString(out.json, "problem", spin->generalized ? "generalized" : "standard"));
   PetscCall(CSJSONAddString(out.json, "dirac_type", spin->shell ? "shell" : "aij"));
   PetscCall(CSJSONAddString(out.json, "boundary", bnames[spin->boundary]));

@@ -12,17 +12,19 @@
    damps the Newton correction of the constraint; a large t_mu makes X df ~ -c (Gauss-Newton on c) while t
    still controls the energy descent.
 
-   Step control: a trial step is accepted when the merit function decreases,
-     CGD/GD: phi(f) = E(f) + <mu+dmu, c(f)> + <nu+dnu, xi(f)> + rho/2 (||c(f)||^2 + sum_j xi_j(f)^2/|B_j|^2),
-       an augmented Lagrangian with the updated multipliers. Along df its slope at 0 is
-       <g + X^T(mu+dmu), df> + rho <c, X df> = -<H df, df>/t - rho |c|^2 + rho <c, I_Q dmu>/t_mu < 0
-       (first row and second row of the CGD system), so a small enough t is always accepted. (An l1
-       exact penalty rho ||c||_1 is not a descent merit here: the regularised second row leaves
-       X df + c = I_Q dmu / t_mu = O(t), which the l1 term sees at first order.)
-     PGD:    phi(f) = E(f) after the projection back onto the constraint set;
-   else t is halved and the step recomputed (each rejection is reported); after an accepted step t grows by
-   -flow_t_grow up to -flow_t_max.
-
+   Step control: a trial step is rejected, t halved and the step recomputed (each rejection is reported),
+   when it makes things worse; after an accepted step t grows by -flow_t_grow up to -flow_t_max.
+     PGD:    worse = E increases (after the projection back onto the constraint set), or the projection fails.
+     CGD/GD: a two-criteria filter on the Lagrangian with the updated multipliers
+               L(f) = E(f) + <mu+dmu, c(f)> + <nu+dnu, xi(f)>   (+ rho/2 |c|^2 with -flow_merit_rho, default 0)
+             and the violation v(f) = max(||c(f)||_inf, max_j |xi_j(f)|):
+             worse = (L increases and (v increases or f was feasible, v(f) <= ctol)) or v exceeds
+                     max(10 v(f), -flow_vmax).
+   Why not a single merit: along the CGD direction dL = -<H df, df>/t < 0 (first row of the system), but
+   the change of v depends on t and t_mu: with an l1 or quadratic penalty of v the penalty's first-order
+   term rho <c, X df> is O(t) of either sign once c != 0, and we saw every t rejected (torus of revolution,
+   bunny). The filter accepts a step that improves either quantity without spoiling the other. Without
+   constraints (GD) it is "E decreases".
    Stopping: el_residual = ||g + X^T mu + B^T nu||_2, the Euclidean norm of the residual 2-form of the
    Euler-Lagrange equations (soliman2021 Eq. 7 with the extra constraints; entries of fixed vertices
    excluded), below -flow_rtol, and the constraint violation max(||C lambda - c0||_inf, max_j |xi_j|)
@@ -38,6 +40,11 @@ typedef struct {
   char                  energy_name[32];
   PetscBool             conformal;
   CSConformalConstraint cc;
+  PetscBool             normals; /* boundary-face normal constraint: its rows follow the edge rows */
+  CSNormalConstraint    nc;
+  Mat                   Xn, Xext, Xc; /* nest [X; DN], its AIJ form, and the Jacobian in use (X or Xext) */
+  IS                    isM[2];       /* edge / normal rows in the multiplier layout */
+  Vec                   cE, cN, iqE, iqN;
   PetscInt              ng, k;
   CSGlobalConstraint    gc[3];
   PetscBool            *fixed; /* local vertices held fixed (Dirichlet), or NULL */
@@ -47,7 +54,7 @@ typedef struct {
   Vec                   x, x0, g, r, c, mu, dmu, df, iq, xt, ct, tmp;
   Vec                  *rows;
   PetscReal            *cx, *cxt, *nu, *dnu, *dnu2, *gw;
-  PetscReal             t, tmu, tmax, grow, rtol, ctol, wmin, rho, *nun;
+  PetscReal             t, tmu, tmax, grow, rtol, ctol, wmin, rho, vmax, *nun;
   Vec                   mun;
   PetscInt              max_it, max_rej, proj_max_it;
   PetscBool             step_control;
@@ -121,7 +128,8 @@ static PetscErrorCode FlowSetUp(MPI_Comm comm, Flow *F, CSFlowKind kind, CSOutpu
   F->proj_max_it = 20;
   F->proj_tmu  = 1e6;
   F->step_control = PETSC_TRUE;
-  F->rho       = 1.0;
+  F->rho       = 0.0;
+  F->vmax      = 1e-2;
   PetscOptionsBegin(comm, NULL, "Constrained Willmore flow (soliman2021)", NULL);
   PetscCall(PetscOptionsReal("-flow_t", "Initial primal step size t", NULL, F->t, &F->t, NULL));
   PetscCall(PetscOptionsReal("-flow_t_mu", "Dual step size t_mu of the multipliers (default 1e3 t)", NULL, F->tmu, &F->tmu, NULL));
@@ -129,7 +137,8 @@ static PetscErrorCode FlowSetUp(MPI_Comm comm, Flow *F, CSFlowKind kind, CSOutpu
   PetscCall(PetscOptionsReal("-flow_t_grow", "Factor on t after an accepted step", NULL, F->grow, &F->grow, NULL));
   PetscCall(PetscOptionsBool("-flow_step_control", "Accept a step only if the merit function decreases (else halve t)", NULL, F->step_control, &F->step_control, NULL));
   PetscCall(PetscOptionsInt("-flow_max_rejections", "Consecutive rejected steps before giving up", NULL, F->max_rej, &F->max_rej, NULL));
-  PetscCall(PetscOptionsReal("-flow_merit_rho", "Weight of the quadratic constraint penalty in the merit function", NULL, F->rho, &F->rho, NULL));
+  PetscCall(PetscOptionsReal("-flow_merit_rho", "Weight of the quadratic constraint penalty in the merit function, relative to |E(input)|", NULL, F->rho, &F->rho, NULL));
+  PetscCall(PetscOptionsReal("-flow_vmax", "Step control: reject steps whose constraint violation exceeds max(10 v, this)", NULL, F->vmax, &F->vmax, NULL));
   PetscCall(PetscOptionsReal("-flow_rtol", "Stop when ||g + X^T mu||_2 is below this", NULL, F->rtol, &F->rtol, NULL));
   PetscCall(PetscOptionsReal("-flow_ctol", "... and the constraint violation (inf-norm) below this", NULL, F->ctol, &F->ctol, NULL));
   PetscCall(PetscOptionsInt("-flow_max_it", "Maximum number of iterations", NULL, F->max_it, &F->max_it, NULL));
@@ -142,7 +151,7 @@ static PetscErrorCode FlowSetUp(MPI_Comm comm, Flow *F, CSFlowKind kind, CSOutpu
   PetscCall(OptionalTarget("-constraint_area", "Total area constraint [target value, default the initial area]", &area_set, &area_target, &area_given, PetscOptionsObject));
   PetscCall(OptionalTarget("-constraint_volume", "Enclosed volume constraint [target value, default the initial volume]", &vol_set, &vol_target, &vol_given, PetscOptionsObject));
   PetscCall(PetscOptionsString("-constraint_points", "File of point constraints: lines 'vertex_index x y z' (0-based)", NULL, points, points, sizeof(points), &has_points));
-  PetscCall(PetscOptionsString("-flow_boundary", "dirichlet|free: boundary vertices fixed, or free (C0 only)", NULL, boundary, boundary, sizeof(boundary), &has_boundary));
+  PetscCall(PetscOptionsString("-flow_boundary", "dirichlet|free|normals: boundary vertices fixed, free (C0 only), or fixed with fixed boundary-face normals (App. D)", NULL, boundary, boundary, sizeof(boundary), &has_boundary));
   PetscCall(PetscOptionsReal("-flow_init_bump", "Test input: radial bump amplitude applied to the initial positions", NULL, bump, &bump, NULL));
   PetscCall(PetscOptionsReal("-flow_init_bump_freq", "Test input: bump frequency k in sin(k x) sin(k y) sin(k z)", NULL, bump_k, &bump_k, NULL));
   PetscCall(PetscOptionsRealArray("-flow_init_stretch", "Test input: stretch factors sx,sy,sz applied after the bump", NULL, stretch, &nstretch, &stretch_set));
@@ -181,9 +190,10 @@ static PetscErrorCode FlowSetUp(MPI_Comm comm, Flow *F, CSFlowKind kind, CSOutpu
       PetscCall(PetscStrcmp(boundary, "dirichlet", &isdir));
       PetscCall(PetscStrcmp(boundary, "free", &isfree));
       PetscCall(PetscStrcmp(boundary, "normals", &isnormal));
-      PetscCheck(!isnormal, comm, PETSC_ERR_SUP, "-flow_boundary normals (the boundary-face normal constraint of soliman2021 App. D) is not implemented yet");
-      PetscCheck(isdir || isfree, comm, PETSC_ERR_ARG_OUTOFRANGE, "-flow_boundary %s: unknown (dirichlet|free)", boundary);
-      dir = isdir;
+      PetscCheck(!isnormal || conformal, comm, PETSC_ERR_ARG_INCOMP, "-flow_boundary normals needs the conformal constraint (cgd or pgd)");
+      PetscCheck(isdir || isfree || isnormal, comm, PETSC_ERR_ARG_OUTOFRANGE, "-flow_boundary %s: unknown (dirichlet|free|normals)", boundary);
+      dir        = (PetscBool)(isdir || isnormal); /* normals = fixed positions and fixed boundary-face normals (Fig. 2) */
+      F->normals = isnormal;
     }
     if (dir) {
       ISLocalToGlobalMapping l2g;
@@ -242,7 +252,23 @@ static PetscErrorCode FlowSetUp(MPI_Comm comm, Flow *F, CSFlowKind kind, CSOutpu
   PetscCall(VecDuplicate(F->x, &F->xt));
   PetscCall(VecDuplicate(F->x, &F->tmp));
   if (conformal) {
-    PetscCall(DMCreateGlobalVector(m->dmE1, &F->c));
+    if (F->normals) {
+      /* multiplier layout: on each rank its owned edges, then 3 rows per local boundary face */
+      PetscInt nE, nN, rs;
+      Vec      v;
+      PetscCall(CSNormalConstraintCreate(m, F->x0, F->fixed, &F->nc));
+      PetscCall(DMCreateGlobalVector(m->dmE1, &F->cE));
+      PetscCall(VecDuplicate(F->cE, &F->iqE));
+      PetscCall(VecDuplicate(F->nc.N0, &F->cN));
+      PetscCall(VecDuplicate(F->nc.N0, &F->iqN));
+      PetscCall(VecGetLocalSize(F->cE, &nE));
+      PetscCall(VecGetLocalSize(F->cN, &nN));
+      PetscCall(VecCreateMPI(comm, nE + nN, PETSC_DETERMINE, &v));
+      PetscCall(VecGetOwnershipRange(v, &rs, NULL));
+      PetscCall(ISCreateStride(comm, nE, rs, 1, &F->isM[0]));
+      PetscCall(ISCreateStride(comm, nN, rs + nE, 1, &F->isM[1]));
+      F->c = v;
+    } else PetscCall(DMCreateGlobalVector(m->dmE1, &F->c));
     PetscCall(VecDuplicate(F->c, &F->mu));
     PetscCall(VecDuplicate(F->c, &F->dmu));
     PetscCall(VecDuplicate(F->c, &F->iq));
@@ -254,6 +280,19 @@ static PetscErrorCode FlowSetUp(MPI_Comm comm, Flow *F, CSFlowKind kind, CSOutpu
   PetscCall(PetscCalloc1(F->k + 1, &F->dnu2));
   if (F->k) PetscCall(VecDuplicateVecs(F->x, F->k, &F->rows));
   PetscCall(CSMetricCreate(m, h2, &F->metric));
+  {
+    /* size independence (see CSMetric): s^2 = area / 4pi; the metric's mass term gets 1/s^4 and the dual
+       step t_mu (given for unit-size meshes) 1/s^2, since X^T I_Q^{-1} X is size-free while H ~ length^-2 */
+    PetscReal A, V, sc, E0;
+    PetscCall(CSGeometryAreaVolume(m, F->x0, &A, &V));
+    sc                    = A / (4 * PETSC_PI);
+    F->metric.mass_weight = 1.0 / (sc * sc);
+    F->tmu /= sc;
+    /* merit weight relative to the size of the energy (a Willmore energy ~ 4pi and a fairing energy
+       eps W differ by orders of magnitude) */
+    PetscCall(CSEnergyValue(F->energy, F->x0, &E0));
+    F->rho *= PetscMax(PetscAbsReal(E0), PETSC_SMALL);
+  }
   PetscCall(CSSaddleCreate(m, conformal, F->k, &F->saddle));
   F->saddle.fixed = F->fixedIS;
   PetscFunctionReturn(0);
@@ -278,6 +317,17 @@ static PetscErrorCode FlowDestroy(Flow *F)
   PetscCall(VecDestroy(&F->xt));
   PetscCall(VecDestroy(&F->tmp));
   PetscCall(VecDestroy(&F->c));
+  if (F->normals) {
+    PetscCall(CSNormalConstraintDestroy(&F->nc));
+    PetscCall(VecDestroy(&F->cE));
+    PetscCall(VecDestroy(&F->cN));
+    PetscCall(VecDestroy(&F->iqE));
+    PetscCall(VecDestroy(&F->iqN));
+    PetscCall(MatDestroy(&F->Xn));
+    PetscCall(MatDestroy(&F->Xext));
+    PetscCall(ISDestroy(&F->isM[0]));
+    PetscCall(ISDestroy(&F->isM[1]));
+  }
   PetscCall(VecDestroy(&F->mu));
   PetscCall(VecDestroy(&F->dmu));
   PetscCall(VecDestroy(&F->iq));
@@ -291,12 +341,74 @@ static PetscErrorCode FlowDestroy(Flow *F)
 
 /* ---------- evaluation ---------- */
 
-/* Constraint values at x (c and cx), with Jacobians (X in F->cc.X, rows) if wantJ. */
+/* Xext = [X; DN] in the multiplier layout (rows of X, then rows of DN, per rank), copied row by row
+   (MatConvert of a MATNEST with MAT_REUSE_MATRIX fails in parallel in PETSc 3.18: "Reuse matrix has
+   changed nonzero structure"). The pattern is fixed, so later calls only refill the values. */
+static PetscErrorCode StackRows(Flow *F)
+{
+  Mat      B[2] = {F->cc.X, F->nc.DN};
+  PetscInt rs, off = 0;
+  PetscFunctionBeginUser;
+  PetscCall(ISStrideGetInfo(F->isM[0], &rs, NULL));
+  if (!F->Xext) {
+    PetscInt n0, n1, nc, Nc, *dnz, *onz, cs, ce;
+    PetscCall(MatGetLocalSize(B[0], &n0, &nc));
+    PetscCall(MatGetLocalSize(B[1], &n1, NULL));
+    PetscCall(MatGetSize(B[0], NULL, &Nc));
+    PetscCall(MatGetOwnershipRangeColumn(B[0], &cs, &ce));
+    PetscCall(PetscCalloc2(n0 + n1, &dnz, n0 + n1, &onz));
+    for (int b = 0, r = 0; b < 2; b++) {
+      PetscInt rstart, rend;
+      PetscCall(MatGetOwnershipRange(B[b], &rstart, &rend));
+      for (PetscInt i = rstart; i < rend; i++, r++) {
+        PetscInt        ncols;
+        const PetscInt *cols;
+        PetscCall(MatGetRow(B[b], i, &ncols, &cols, NULL));
+        for (PetscInt k = 0; k < ncols; k++) {
+          if (cols[k] >= cs && cols[k] < ce) dnz[r]++;
+          else onz[r]++;
+        }
+        PetscCall(MatRestoreRow(B[b], i, &ncols, &cols, NULL));
+      }
+    }
+    PetscCall(MatCreateAIJ(F->comm, n0 + n1, nc, PETSC_DETERMINE, Nc, 0, dnz, 0, onz, &F->Xext));
+    PetscCall(PetscFree2(dnz, onz));
+  } else PetscCall(MatZeroEntries(F->Xext));
+  for (int b = 0; b < 2; b++) {
+    PetscInt rstart, rend;
+    PetscCall(MatGetOwnershipRange(B[b], &rstart, &rend));
+    for (PetscInt i = rstart; i < rend; i++, off++) {
+      PetscInt           ncols, row = rs + off;
+      const PetscInt    *cols;
+      const PetscScalar *vals;
+      PetscCall(MatGetRow(B[b], i, &ncols, &cols, &vals));
+      PetscCall(MatSetValues(F->Xext, 1, &row, ncols, cols, vals, INSERT_VALUES));
+      PetscCall(MatRestoreRow(B[b], i, &ncols, &cols, &vals));
+    }
+  }
+  PetscCall(MatAssemblyBegin(F->Xext, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(F->Xext, MAT_FINAL_ASSEMBLY));
+  PetscFunctionReturn(0);
+}
+
+/* Constraint values at x (c and cx), with Jacobians (X in F->Xc, rows) if wantJ. */
 static PetscErrorCode EvalConstraints(Flow *F, Vec x, Vec c, PetscReal cx[], PetscBool wantJ)
 {
   PetscInt off = 0;
   PetscFunctionBeginUser;
-  if (F->conformal) PetscCall(CSConformalConstraintEvaluate(&F->cc, x, c, wantJ));
+  if (F->conformal && !F->normals) {
+    PetscCall(CSConformalConstraintEvaluate(&F->cc, x, c, wantJ));
+    F->Xc = F->cc.X;
+  } else if (F->normals) {
+    PetscCall(CSConformalConstraintEvaluate(&F->cc, x, F->cE, wantJ));
+    PetscCall(CSNormalConstraintEvaluate(&F->nc, x, F->cN, wantJ));
+    PetscCall(VecISCopy(c, F->isM[0], SCATTER_FORWARD, F->cE));
+    PetscCall(VecISCopy(c, F->isM[1], SCATTER_FORWARD, F->cN));
+    if (wantJ) {
+      PetscCall(StackRows(F));
+      F->Xc = F->Xext;
+    }
+  }
   for (PetscInt j = 0; j < F->ng; j++) {
     PetscCall(CSGlobalConstraintEvaluate(F->gc[j], x, cx + off, wantJ ? F->rows + off : NULL));
     off += F->gc[j]->k;
@@ -317,7 +429,8 @@ static PetscErrorCode Violation(Flow *F, Vec c, const PetscReal cx[], PetscReal 
   PetscFunctionReturn(0);
 }
 
-/* The merit function of CGD/GD step control (see the top of the file), multipliers F->mun and nun. */
+/* The Lagrangian of the CGD/GD step control with multipliers F->mun, nun (plus the optional quadratic
+   penalty -flow_merit_rho, default 0; see the top of the file). */
 static PetscErrorCode Merit(Flow *F, PetscReal E, Vec c, const PetscReal cx[], const PetscReal nun[], PetscReal *phi)
 {
   PetscReal s = E;
@@ -339,7 +452,7 @@ static PetscErrorCode Residual(Flow *F, PetscReal *el)
 {
   PetscFunctionBeginUser;
   PetscCall(VecCopy(F->g, F->r));
-  if (F->conformal) PetscCall(MatMultTransposeAdd(F->cc.X, F->mu, F->r, F->r));
+  if (F->conformal) PetscCall(MatMultTransposeAdd(F->Xc, F->mu, F->r, F->r));
   for (PetscInt j = 0; j < F->k; j++) PetscCall(VecAXPY(F->r, F->nu[j], F->rows[j]));
   PetscCall(ZeroFixed(F, F->r));
   PetscCall(VecNorm(F->r, NORM_2, el));
@@ -362,7 +475,21 @@ static PetscErrorCode GlobalWeights(Flow *F)
 static PetscErrorCode SetOperators(Flow *F, PetscReal t, PetscReal tmu)
 {
   PetscFunctionBeginUser;
-  PetscCall(CSSaddleSetOperators(&F->saddle, F->metric.H, t, F->iq, tmu, F->conformal ? F->cc.X : NULL, F->rows, F->gw));
+  PetscCall(CSSaddleSetOperators(&F->saddle, F->metric.H, t, F->iq, tmu, F->conformal ? F->Xc : NULL, F->rows, F->gw));
+  PetscFunctionReturn(0);
+}
+
+/* The metric of the multipliers at x: I_Q (Eq. 25) on the edge rows, 1/(2A) on normal rows. */
+static PetscErrorCode QuadDiffMetric(Flow *F, Vec x, PetscInt *ng)
+{
+  PetscFunctionBeginUser;
+  if (!F->conformal) PetscFunctionReturn(0);
+  if (F->normals) {
+    PetscCall(CSOperatorQuadDiffMetric(F->mesh, x, F->wmin, F->iqE, ng));
+    PetscCall(CSNormalConstraintMetric(&F->nc, x, F->iqN));
+    PetscCall(VecISCopy(F->iq, F->isM[0], SCATTER_FORWARD, F->iqE));
+    PetscCall(VecISCopy(F->iq, F->isM[1], SCATTER_FORWARD, F->iqN));
+  } else PetscCall(CSOperatorQuadDiffMetric(F->mesh, x, F->wmin, F->iq, ng));
   PetscFunctionReturn(0);
 }
 
@@ -386,6 +513,7 @@ static PetscErrorCode Project(Flow *F, Vec x, PetscBool *ok, PetscInt *kspits)
     }
     if (F->k) PetscCall(GlobalWeights(F));
     PetscCall(CSMetricUpdate(&F->metric, x));
+    PetscCall(QuadDiffMetric(F, x, NULL));
     PetscCall(SetOperators(F, 1.0, F->proj_tmu));
     PetscCall(VecScale(F->ct, -1.0));
     for (PetscInt j = 0; j < F->k; j++) F->cxt[j] = -F->cxt[j];
@@ -444,13 +572,13 @@ PetscErrorCode CSWillmoreFlowRun(MPI_Comm comm, CSOutput *out, CSFlowKind kind)
     PetscCall(CSMetricUpdate(&F.metric, F.x));
     if (F.conformal) {
       PetscInt ng;
-      PetscCall(CSOperatorQuadDiffMetric(F.mesh, F.x, F.wmin, F.iq, &ng));
+      PetscCall(QuadDiffMetric(&F, F.x, &ng));
       nguard = PetscMax(nguard, ng);
     }
     if (F.k) PetscCall(GlobalWeights(&F));
     kspits = 0;
     for (PetscInt rej = 0;; rej++) {
-      PetscReal Et, phi0, phit;
+      PetscReal Et;
       PetscBool accept = PETSC_TRUE;
       PetscInt  its;
       Vec       dmu2, df2;
@@ -479,7 +607,7 @@ PetscErrorCode CSWillmoreFlowRun(MPI_Comm comm, CSOutput *out, CSFlowKind kind)
            -I_Q/pgd_t_mu in the (2,2) block and remove the regularisation error by iterative refinement
            against the unregularised system: only its second row differs, residual -X df (and -B^T df). */
         for (PetscInt ref = 0; ref < 3; ref++) {
-          PetscCall(MatMult(F.cc.X, F.df, F.ct));
+          PetscCall(MatMult(F.Xc, F.df, F.ct));
           PetscCall(VecScale(F.ct, -1.0));
           for (PetscInt j = 0; j < F.k; j++) {
             PetscScalar v;
@@ -507,20 +635,26 @@ PetscErrorCode CSWillmoreFlowRun(MPI_Comm comm, CSOutput *out, CSFlowKind kind)
       }
       if (accept && F.step_control) {
         if (kind == CS_FLOW_PGD) {
-          phi0 = E;
           PetscCall(CSEnergyValue(F.energy, F.xt, &Et));
-          phit = Et;
+          /* a relative slack of 1e-12 lets converged iterates (changes at round-off level) pass */
+          if (!(Et == Et) || Et > E + 1e-12 * PetscAbsReal(E)) accept = PETSC_FALSE;
+          if (!accept) PetscCall(PetscPrintf(comm, "     step rejected: energy %.15g -> %.15g with t = %g; halving t\n", (double)E, (double)Et, (double)F.t));
         } else {
+          PetscReal v0, vt, ca, cb, L0, Lt;
           if (F.conformal) PetscCall(VecWAXPY(F.mun, 1.0, F.dmu, F.mu));
-          for (PetscInt j = 0; j < F.k; j++) F.nun[j] = F.nu[j] + F.dnu[j]; /* nu + dnu */
-          PetscCall(Merit(&F, E, F.c, F.cx, F.nun, &phi0));
+          for (PetscInt j = 0; j < F.k; j++) F.nun[j] = F.nu[j] + F.dnu[j];
+          PetscCall(Merit(&F, E, F.c, F.cx, F.nun, &L0));
+          PetscCall(Violation(&F, F.c, F.cx, &ca, &cb));
+          v0 = PetscMax(ca, cb);
           PetscCall(CSEnergyValue(F.energy, F.xt, &Et));
           PetscCall(EvalConstraints(&F, F.xt, F.ct, F.cxt, PETSC_FALSE));
-          PetscCall(Merit(&F, Et, F.ct, F.cxt, F.nun, &phit));
+          PetscCall(Merit(&F, Et, F.ct, F.cxt, F.nun, &Lt));
+          PetscCall(Violation(&F, F.ct, F.cxt, &ca, &cb));
+          vt = PetscMax(ca, cb);
+          /* the relative slack 1e-12 (and ctol on v) lets converged iterates, changing at round-off level, pass */
+          if (!(Lt == Lt) || !(vt == vt) || (Lt > L0 + 1e-12 * PetscAbsReal(L0) && (vt > v0 + F.ctol || v0 <= F.ctol)) || vt > PetscMax(10 * v0, F.vmax)) accept = PETSC_FALSE;
+          if (!accept) PetscCall(PetscPrintf(comm, "     step rejected: Lagrangian %.15g -> %.15g, violation %.3e -> %.3e with t = %g; halving t\n", (double)L0, (double)Lt, (double)v0, (double)vt, (double)F.t));
         }
-        /* a relative slack of 1e-12 lets converged iterates (changes at round-off level) pass */
-        if (!(phit == phit) || phit > phi0 + 1e-12 * PetscAbsReal(phi0)) accept = PETSC_FALSE;
-        if (!accept) PetscCall(PetscPrintf(comm, "     step rejected: merit %.15g -> %.15g with t = %g; halving t\n", (double)phi0, (double)phit, (double)F.t));
       }
       if (accept) break;
       rejections++;

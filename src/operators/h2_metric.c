@@ -9,7 +9,7 @@ static PetscErrorCode H2ShellMult(Mat A, Vec u, Vec y)
   PetscCall(MatMult(m->Ls, u, m->work));        /* *0^{-1} L u */
   PetscCall(MatMult(m->L3, m->work, y));        /* L *0^{-1} L u */
   PetscCall(VecPointwiseMult(m->work, m->m3, u));
-  PetscCall(VecAXPY(y, 1.0, m->work));          /* + *0 u */
+  PetscCall(VecAXPY(y, m->mass_weight, m->work)); /* + w *0 u */
   PetscFunctionReturn(0);
 }
 
@@ -20,6 +20,7 @@ PetscErrorCode CSMetricCreate(CSMesh mesh, PetscBool h2, CSMetric *m)
   PetscCall(PetscMemzero(m, sizeof(*m)));
   m->mesh = mesh;
   m->h2   = h2;
+  m->mass_weight = 1.0;
   PetscCall(DMCreateGlobalVector(mesh->dmV3, &m->m3));
   PetscCall(VecDuplicate(m->m3, &m->minv3));
   PetscCall(VecDuplicate(m->m3, &m->work));
@@ -64,7 +65,9 @@ PetscErrorCode CSMetricUpdate(CSMetric *m, Vec x)
     else PetscCall(MatCopy(m->L3, m->Ls, SAME_NONZERO_PATTERN));
     PetscCall(MatDiagonalScale(m->Ls, m->minv3, NULL));
     PetscCall(MatMatMult(m->L3, m->Ls, first ? MAT_INITIAL_MATRIX : MAT_REUSE_MATRIX, PETSC_DEFAULT, &m->H));
+    PetscCall(VecScale(m->m3, m->mass_weight));
     PetscCall(MatDiagonalSet(m->H, m->m3, ADD_VALUES));
+    PetscCall(VecScale(m->m3, 1.0 / m->mass_weight));
     PetscCall(MatSetOption(m->H, MAT_SYMMETRIC, PETSC_TRUE));
   } else {
     if (!m->H) {
@@ -74,7 +77,9 @@ PetscErrorCode CSMetricUpdate(CSMetric *m, Vec x)
       PetscCall(MatSetOption(m->H, MAT_SYMMETRIC, PETSC_TRUE));
       PetscCall(MatSetUp(m->H));
     }
+    PetscCall(VecScale(m->m3, m->mass_weight));
     PetscCall(MatDiagonalSet(m->H, m->m3, INSERT_VALUES));
+    PetscCall(VecScale(m->m3, 1.0 / m->mass_weight));
   }
   PetscCall(PetscLogEventEnd(CS_EVENT_Assemble, 0, 0, 0, 0));
   PetscFunctionReturn(0);

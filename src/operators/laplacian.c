@@ -9,7 +9,7 @@ static PetscErrorCode AssembleCotanLaplacian(CSMesh m, Vec x, DM dmX, PetscInt b
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(CS_EVENT_Assemble, 0, 0, 0, 0));
   if (reuse == MAT_INITIAL_MATRIX) {
-    PetscCall(DMCreateMatrix(dmX, A));
+    PetscCall(CSOperatorCreateVertexMatrix(m, dmX, bs, MATAIJ, A));
     PetscCall(MatSetOption(*A, MAT_SYMMETRIC, PETSC_TRUE));
   } else PetscCall(MatZeroEntries(*A));
   PetscCall(CSMeshGetLocalPositions(m, x, &xl, &p));

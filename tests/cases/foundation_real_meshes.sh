@@ -6,11 +6,14 @@ dir="$CS_SHARED/meshes"; [ -f "$dir/README.md" ] || dir=meshes
 python3 - "$dir" "$CS_BIN" "$TMP" "$MPIEXEC" <<'PY'
 import json, os, subprocess, sys
 d, binary, tmp, mpiexec = sys.argv[1:5]
-rows = [l.split('|')[1:-1] for l in open(os.path.join(d, 'README.md')) if l.startswith('| ') and '.obj' in l]
+lines = [l for l in open(os.path.join(d, 'README.md')) if l.startswith('| ')]
+head = [c.strip() for c in lines[0].split('|')[1:-1]]   # columns by name: the two READMEs order them differently
+col = {k: head.index(k) for k in ('file', 'V', 'F', 'genus', 'boundary loops')}
+rows = [l.split('|')[1:-1] for l in lines if '.obj' in l]
 bad = 0; n = 0
 for r in rows:
     r = [c.strip() for c in r]
-    name, V, F, genus, bl = r[0], r[3], r[4], r[6], r[7]
+    name, V, F, genus, bl = (r[col[k]] for k in ('file', 'V', 'F', 'genus', 'boundary loops'))
     path = os.path.join(d, name)
     if genus == '-' or not os.path.exists(path): continue
     out = os.path.join(tmp, name + '.json')

@@ -1,11 +1,10 @@
 # crane2011: rho = 0 gives the identity up to a similarity (q_max - 1 < 1e-8, gamma ~ 0), for the EPS and the
 # inverse-iteration solvers, mean-zero and pinned translation, and with kept boundary tangents on a disk.
 # Q is recomputed by spin_tools.py with a cancellation-free formula (the summary's q_max has a sqrt(eps) ~ 2e-8
-# floor: it takes sqrt(fro^4 - 4 det^2)). Also runs the Dirac unit checks (tests/unit/test_spin_dirac.c).
+# floor: it takes sqrt(fro^4 - 4 det^2)).
 # nprocs: 1 2
 source tests/lib.sh
 P=tests/cases/spin_tools.py
-timeout 60 $MPIEXEC "$CS_TESTS/test_spin_dirac" -gen_level 2
 $MPIEXEC "$CS_BIN" -task info -gen icosphere -gen_level 3 -o "$TMP/in.obj" > /dev/null
 $MPIEXEC "$CS_BIN" -task info -gen disk -gen_rings 8 -o "$TMP/disk.obj" > /dev/null
 identity() { # label mesh options...
@@ -19,6 +18,5 @@ identity() { # label mesh options...
 }
 identity "sphere, EPS" "$TMP/in.obj"
 identity "sphere, inverse iteration, pinned" "$TMP/in.obj" -spin_solver inverse -spin_poisson_pin
-identity "sphere, shell" "$TMP/in.obj" -spin_dirac_type shell
-identity "disk, free boundary" "$TMP/disk.obj"
+identity "disk, default boundary condition (kept tangents)" "$TMP/disk.obj"
 identity "disk, kept boundary tangents" "$TMP/disk.obj" -spin_boundary keep

@@ -5,6 +5,7 @@
   spin_tools.py similarity A.obj B.obj   -> same with the best similarity (rotation, scale, translation)
   spin_tools.py transform A.obj OUT s    -> OUT = s * R A + t (fixed rotation R, translation t)
   spin_tools.py rho_bump A.obj OUT       -> per-vertex file of a smooth bump rho (one value per line)
+  spin_tools.py rho_bump_face A.obj OUT  -> the same bump per face (at the centroids)
   spin_tools.py tangents A.obj OUT a     -> per-vertex target tangents: boundary tangents tilted out of plane by a*sin(2 phi)
   spin_tools.py tangent_error A.obj TAN  -> mean and max angle (deg) between outgoing boundary edges of A and TAN
 """
@@ -103,6 +104,12 @@ elif cmd == 'rho_bump':
     V, F = load(sys.argv[2])
     with open(sys.argv[3], 'w') as f:
         for v in V: f.write('%.17g\n' % (3 * math.exp(-((v[0] - 0.3) ** 2 + (v[1] + 0.2) ** 2 + (v[2] - 0.9) ** 2) / 0.25)))
+elif cmd == 'rho_bump_face':
+    V, F = load(sys.argv[2])
+    with open(sys.argv[3], 'w') as f:
+        for t in F:
+            c = [sum(V[i][k] for i in t) / 3 for k in range(3)]
+            f.write('%.17g\n' % (3 * math.exp(-((c[0] - 0.3) ** 2 + (c[1] + 0.2) ** 2 + (c[2] - 0.9) ** 2) / 0.25)))
 elif cmd == 'tangents':
     V, F = load(sys.argv[2]); a = float(sys.argv[4]); T = boundary_tangents(V, F)
     with open(sys.argv[3], 'w') as f:

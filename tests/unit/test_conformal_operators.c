@@ -256,12 +256,69 @@ static PetscErrorCode RunChecks(MPI_Comm comm, PetscBool torus)
   PetscFunctionReturn(0);
 }
 
+/* DN (boundary-face normals, App. D) against central differences of N on a perturbed cylinder. */
+static PetscErrorCode CheckNormals(MPI_Comm comm)
+{
+  CSMeshData         md;
+  CSTopology         topo;
+  CSMesh             m;
+  CSNormalConstraint nc;
+  PetscMPIInt        rank;
+  Vec                d, xp, cp, cm, Jd;
+  PetscRandom        rnd;
+  PetscReal          err, nrm, h = 1e-6;
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCall(PetscMemzero(&md, sizeof(md)));
+  PetscCall(PetscMemzero(&topo, sizeof(topo)));
+  if (!rank) {
+    PetscCall(CSMeshDataCylinder(1.0, 2.0, 12, 6, &md));
+    for (PetscInt i = 0; i < 3 * md.nv; i++) md.x[i] += 0.01 * PetscSinReal(7.0 * i);
+    PetscCall(CSMeshDataValidate(&md, &topo));
+  }
+  PetscCall(CSMeshCreateFromData(comm, &md, &topo, &m));
+  PetscCall(CSNormalConstraintCreate(m, m->x, NULL, &nc));
+  PetscCall(VecDuplicate(nc.N0, &cp));
+  PetscCall(VecDuplicate(nc.N0, &cm));
+  PetscCall(VecDuplicate(nc.N0, &Jd));
+  PetscCall(VecDuplicate(m->x, &d));
+  PetscCall(VecDuplicate(m->x, &xp));
+  PetscCall(CSNormalConstraintEvaluate(&nc, m->x, cp, PETSC_TRUE));
+  PetscCall(VecNorm(cp, NORM_INFINITY, &err));
+  PetscCall(Check(comm, (PetscBool)(err < 1e-14), "cylinder: N(x) - N0 = 0 at the input", err, 1e-14));
+  PetscCall(PetscRandomCreate(comm, &rnd));
+  PetscCall(PetscRandomSetSeed(rnd, 5));
+  PetscCall(PetscRandomSeed(rnd));
+  PetscCall(VecSetRandom(d, rnd));
+  PetscCall(MatMult(nc.DN, d, Jd));
+  PetscCall(VecWAXPY(xp, h, d, m->x));
+  PetscCall(CSNormalConstraintEvaluate(&nc, xp, cp, PETSC_FALSE));
+  PetscCall(VecWAXPY(xp, -h, d, m->x));
+  PetscCall(CSNormalConstraintEvaluate(&nc, xp, cm, PETSC_FALSE));
+  PetscCall(VecAXPY(cp, -1.0, cm));
+  PetscCall(VecScale(cp, 1.0 / (2 * h)));
+  PetscCall(VecAXPY(cp, -1.0, Jd));
+  PetscCall(VecNorm(cp, NORM_INFINITY, &err));
+  PetscCall(VecNorm(Jd, NORM_INFINITY, &nrm));
+  PetscCall(Check(comm, (PetscBool)(err / nrm < 1e-6), "cylinder: DN d vs central differences of the boundary-face normals (relative)", err / nrm, 1e-6));
+  PetscCall(PetscRandomDestroy(&rnd));
+  PetscCall(VecDestroy(&cp));
+  PetscCall(VecDestroy(&cm));
+  PetscCall(VecDestroy(&Jd));
+  PetscCall(VecDestroy(&d));
+  PetscCall(VecDestroy(&xp));
+  PetscCall(CSNormalConstraintDestroy(&nc));
+  PetscCall(CSMeshDestroy(&m));
+  PetscFunctionReturn(0);
+}
+
 int main(int argc, char **argv)
 {
   PetscCall(PetscInitialize(&argc, &argv, NULL, help));
   PetscCall(CSRegisterEvents());
   PetscCall(RunChecks(PETSC_COMM_WORLD, PETSC_FALSE));
   PetscCall(RunChecks(PETSC_COMM_WORLD, PETSC_TRUE));
+  PetscCall(CheckNormals(PETSC_COMM_WORLD));
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%" PetscInt_FMT " failed\n", nfail));
   PetscCall(PetscFinalize());
   return (int)nfail;

@@ -82,6 +82,53 @@ static PetscErrorCode CheckQuaternions(MPI_Comm comm)
   PetscFunctionReturn(0);
 }
 
+/* crane2013 App. G printed formula X_ij = -e_i e_j/(4A) + (rho_i e_j - rho_j e_i)/6 + A rho_i rho_j/9 against
+   the face kernel A conj(a_i) a_j used by the code (a_j = -e_j/(2A) - rho_j/3). */
+static PetscErrorCode CheckAppendixG(MPI_Comm comm)
+{
+  PetscReal   err = 0;
+  PetscRandom r;
+  PetscFunctionBeginUser;
+  PetscCall(PetscRandomCreate(PETSC_COMM_SELF, &r));
+  PetscCall(PetscRandomSetInterval(r, -1, 1));
+  PetscCall(PetscRandomSetSeed(r, 5));
+  PetscCall(PetscRandomSeed(r));
+  for (int t = 0; t < 20; t++) {
+    PetscReal P[3][3], rho[3], e[3][4], an[3], A;
+    for (int k = 0; k < 3; k++) {
+      for (int d = 0; d < 3; d++) PetscCall(PetscRandomGetValueReal(r, &P[k][d]));
+      PetscCall(PetscRandomGetValueReal(r, &rho[k]));
+    }
+    {
+      const PetscReal *c[3] = {P[0], P[1], P[2]};
+      CSTriangleAreaVector(c, an);
+      A = CSVecNorm(an);
+    }
+    for (int j = 0; j < 3; j++) {
+      e[j][0] = 0;
+      for (int d = 0; d < 3; d++) e[j][d + 1] = P[(j + 2) % 3][d] - P[(j + 1) % 3][d];
+    }
+    for (int i = 0; i < 3; i++)
+      for (int j = 0; j < 3; j++) {
+        PetscReal ai[4], aj[4], x[4], ee[4], g[4];
+        for (int c = 0; c < 4; c++) {
+          ai[c] = -e[i][c] / (2 * A);
+          aj[c] = -e[j][c] / (2 * A);
+        }
+        ai[0] -= rho[i] / 3;
+        aj[0] -= rho[j] / 3;
+        CSQuatConjMul(ai, aj, x);
+        CSQuatMul(e[i], e[j], ee);
+        for (int c = 0; c < 4; c++) g[c] = -ee[c] / (4 * A) + (rho[i] * e[j][c] - rho[j] * e[i][c]) / 6;
+        g[0] += A * rho[i] * rho[j] / 9;
+        for (int c = 0; c < 4; c++) err = PetscMax(err, PetscAbsReal(A * x[c] - g[c]));
+      }
+  }
+  PetscCall(PetscRandomDestroy(&r));
+  PetscCall(Check(comm, "crane2013 App. G closed form == A conj(a_i) a_j", err, 1e-13));
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode RelDiff(Vec a, Vec b, PetscReal *err)
 {
   Vec       d;
@@ -208,6 +255,7 @@ int main(int argc, char **argv)
     if (!has) PetscCall(PetscOptionsSetValue(NULL, "-gen_level", "2"));
   }
   PetscCall(CheckQuaternions(comm));
+  PetscCall(CheckAppendixG(comm));
   PetscCall(CSMeshCreateFromOptions(comm, NULL, &mesh));
   /* a generic (non-round) surface: perturb the positions */
   PetscCall(PetscRandomCreate(comm, &r));

@@ -1,0 +1,76 @@
+#!/usr/bin/env bash
+# Spin transformation benchmark (issue 4): seconds for the eigenpair + reconstruction (operator assembly,
+# smallest eigenpair of Eq. 7, Poisson solve: the summary keys seconds_setup + seconds_eigen + seconds_poisson;
+# mesh I/O and distribution excluded), for a painted bump rho, on
+#   torus 64x64 (4096 vertices), torus 120x120 (14400 vertices), bunny_closed_cgal.obj (37706 vertices, 75408 faces),
+# serial and 2 ranks, with the direct inner solve (default: Krylov-Schur + shift-and-invert, CHOLMOD serial /
+# MUMPS-AMD parallel), one step of inverse iteration with the same factorisation (-spin_solver inverse), and an
+# iterative inner solve (CG + GAMG, -spin_st_ksp_type cg -spin_st_pc_type gamg). Median of N runs (default 5),
+# OMP_NUM_THREADS = OPENBLAS_NUM_THREADS = 1 (2 cores; threads oversubscribe with 2 ranks).
+# Usage: bash runs/bench_spin.sh [repeats]      (table in runs/results/bench_spin.md)
+set -uo pipefail
+cd "$(dirname "$0")/.."
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
+export OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1
+reps=${1:-5}
+mkdir -p runs/results
+out=runs/results/bench_spin.md
+bunny=meshes/bunny_closed_cgal.obj; [ -f "$bunny" ] || bunny=../shared/meshes/bunny_closed_cgal.obj
+declare -A MESH=(
+  [torus4k]="-gen torus -gen_n 64 -gen_m 64 -rho_bump_center 2.41,0,0 -rho_bump_radius 0.6 -rho_bump_height 1.5"
+  [torus14k]="-gen torus -gen_n 120 -gen_m 120 -rho_bump_center 2.41,0,0 -rho_bump_radius 0.6 -rho_bump_height 1.5"
+  [bunny75kF]="-mesh $bunny -rho_bump_center -0.25,0.1,-0.05 -rho_bump_radius 0.12 -rho_bump_height 6"
+)
+declare -A CONF=(
+  [direct]=""
+  [direct+poisson_direct]="PD"
+  [inverse1]="-spin_solver inverse"
+  [iterative]="-spin_st_ksp_type cg -spin_st_pc_type gamg -spin_st_ksp_rtol 1e-10"
+)
+{
+  echo "# bench_spin ($(date -u +%Y-%m-%dT%H:%MZ), $(getconf _NPROCESSORS_ONLN) cores, load $(cut -d' ' -f1-3 /proc/loadavg), median of $reps)"
+  echo
+  echo "Wall seconds (setup = mass + Dirac assembly, eigen = EPS incl. factorisation, poisson = Eq. 8 + solve) and, in"
+  echo "the last column, the CPU seconds of rank 0 for the same three phases (robust when other jobs load the machine)."
+  echo
+  echo "| mesh | vertices | ranks | solver | setup s | eigen s | poisson s | total s (wall) | eps its | inner its | gamma | q_mean | total CPU s |"
+  echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|"
+} > $out
+for m in torus4k torus14k bunny75kF; do
+  for np in 1 2; do
+    for c in direct direct+poisson_direct inverse1 iterative; do
+      rm -f runs/results/spin_bench_tmp.txt
+      opts=${CONF[$c]}
+      if [ "$opts" = PD ]; then
+        opts="-spin_poisson_ksp_type preonly -spin_poisson_pc_type cholesky"
+        [ $np = 1 ] && opts="$opts -spin_poisson_pc_factor_mat_solver_type cholmod" || opts="$opts -spin_poisson_pc_factor_mat_solver_type mumps -spin_poisson_mat_mumps_icntl_7 0"
+      fi
+      if [ $c = iterative ] && [ $m = bunny75kF ]; then
+        echo "| $m | 37706 | $np | $c | not run: > 60 s (at 14k: ~500 inner CG+GAMG iterations in all, 15 CPU s) | | | | | | | | |" >> $out; continue
+      fi
+      for r in $(seq $reps); do
+        if timeout 300 mpirun -n $np bin/confsurf -task spin ${MESH[$m]} $opts -summary runs/results/spin_bench.json > /dev/null 2>&1; then
+          python3 -c "
+import json; s = json.load(open('runs/results/spin_bench.json'))
+print(s['vertices'], s['seconds_setup'], s['seconds_eigen'], s['seconds_poisson'], s['eps_its'], s['inner_its'], s['eigenvalue'], s['q_mean'], s['cpu_seconds_setup'] + s['cpu_seconds_eigen'] + s['cpu_seconds_poisson'])" >> runs/results/spin_bench_tmp.txt
+        else
+          echo "failed" >> runs/results/spin_bench_tmp.txt
+        fi
+      done
+      python3 - runs/results/spin_bench_tmp.txt $m $np $c >> $out <<'PY'
+import sys, statistics
+rows = [l.split() for l in open(sys.argv[1])]
+ok = [list(map(float, r)) for r in rows if r[0] != 'failed']
+m, np, c = sys.argv[2:5]
+if not ok:
+    print(f"| {m} | - | {np} | {c} | failed/timeout | | | | | | | | |"); sys.exit()
+med = lambda k: statistics.median(r[k] for r in ok)
+tot = statistics.median(r[1] + r[2] + r[3] for r in ok)
+print(f"| {m} | {int(ok[0][0])} | {np} | {c} | {med(1):.3f} | {med(2):.3f} | {med(3):.3f} | **{tot:.3f}** | {int(med(4))} | {int(med(5))} | {ok[0][6]:.6g} | {ok[0][7]:.6f} | {med(8):.3f} |")
+PY
+      tail -1 $out
+    done
+  done
+done
+rm -f runs/results/spin_bench_tmp.txt runs/results/spin_bench.json
+echo "wrote $out"

@@ -1,0 +1,49 @@
+/* Preallocated vertex-by-vertex matrices (the 1-ring pattern), for every operator on vertex fields. */
+#include "cs_operators.h"
+
+/* A vertex-by-vertex matrix with bs dofs per vertex on dm (the 1-ring pattern), preallocated from the local
+   edge counts summed over ranks: exact in serial, an over-estimate on partition cuts (an edge seen by two ranks
+   counts twice). DMCreateMatrix's DMPlexPreallocate took ~0.5 s per matrix at 10k vertices; this is ~1 ms. */
+PetscErrorCode CSOperatorCreateVertexMatrix(CSMesh mesh, DM dm, PetscInt bs, MatType type, Mat *A)
+{
+  Vec                    dl, dg;
+  PetscScalar           *d;
+  const PetscScalar     *dga;
+  PetscInt               n, N, *dnnz, *onnz;
+  ISLocalToGlobalMapping ltog;
+  PetscMPIInt            size;
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_size(mesh->comm, &size));
+  PetscCall(DMGetLocalVector(mesh->dmV1, &dl));
+  PetscCall(DMGetGlobalVector(mesh->dmV1, &dg));
+  PetscCall(VecSet(dl, 0));
+  PetscCall(VecGetArray(dl, &d));
+  for (PetscInt e = 0; e < mesh->ne; e++) {
+    d[mesh->edgeVert[2 * e]] += 1;
+    d[mesh->edgeVert[2 * e + 1]] += 1;
+  }
+  PetscCall(VecRestoreArray(dl, &d));
+  PetscCall(VecSet(dg, 0));
+  PetscCall(DMLocalToGlobal(mesh->dmV1, dl, ADD_VALUES, dg));
+  PetscCall(VecGetLocalSize(dg, &n));
+  PetscCall(VecGetSize(dg, &N));
+  PetscCall(PetscMalloc2(n, &dnnz, n, &onnz));
+  PetscCall(VecGetArrayRead(dg, &dga));
+  for (PetscInt i = 0; i < n; i++) {
+    PetscInt deg = (PetscInt)PetscRealPart(dga[i]);
+    dnnz[i]      = PetscMin(deg + 1, n);
+    onnz[i]      = size > 1 ? PetscMin(deg, N - n) : 0;
+  }
+  PetscCall(VecRestoreArrayRead(dg, &dga));
+  PetscCall(DMRestoreGlobalVector(mesh->dmV1, &dg));
+  PetscCall(DMRestoreLocalVector(mesh->dmV1, &dl));
+  PetscCall(MatCreate(mesh->comm, A));
+  PetscCall(MatSetSizes(*A, bs * n, bs * n, bs * N, bs * N));
+  PetscCall(MatSetType(*A, type));
+  PetscCall(MatSetBlockSize(*A, bs));
+  PetscCall(MatXAIJSetPreallocation(*A, bs, dnnz, onnz, NULL, NULL));
+  PetscCall(DMGetLocalToGlobalMapping(dm, &ltog));
+  PetscCall(MatSetLocalToGlobalMapping(*A, ltog, ltog));
+  PetscCall(PetscFree2(dnnz, onnz));
+  PetscFunctionReturn(0);
+}

@@ -1,0 +1,19 @@
+# Every bad combination of the flow options gets a clear error, non-zero exit, no crash or hang (serial and np=2).
+# nprocs: 1 2
+source tests/lib.sh
+F() { timeout 60 $MPIEXEC "$CS_BIN" -task flow "$@"; }
+"$CS_BIN" -task info -gen icosphere -gen_level 2 -o "$TMP/ico2.obj" > /dev/null
+printf '0 0 0 1\n5000 1 2 3\n' > "$TMP/range.txt"
+printf '0 0 0 1\n1 abc 2 3\n' > "$TMP/garbage.txt"
+printf '0 0 0 1\n0 0 0 1\n' > "$TMP/twice.txt"
+EXPECT="-target_mesh.*(face|connectivity|vert)" expect_fail F -gen icosphere -gen_level 3 -target_mesh "$TMP/ico2.obj"
+EXPECT="-constraint_points.*cannot open" expect_fail F -gen icosphere -gen_level 3 -constraint_points "$TMP/nonexistent.txt"
+EXPECT="-constraint_points.*out of range" expect_fail F -gen icosphere -gen_level 3 -constraint_points "$TMP/range.txt"
+EXPECT="-constraint_points.*line 2" expect_fail F -gen icosphere -gen_level 3 -constraint_points "$TMP/garbage.txt"
+EXPECT="constrained twice" expect_fail F -gen icosphere -gen_level 3 -constraint_points "$TMP/twice.txt"
+EXPECT="-flow_boundary.*closed" expect_fail F -gen icosphere -gen_level 2 -flow_boundary dirichlet
+EXPECT="-constraint_volume.*boundary" expect_fail F -gen cylinder -constraint_volume
+EXPECT="-flow_metric" expect_fail F -gen icosphere -gen_level 2 -flow_metric h3
+EXPECT="gd.*conformal" expect_fail F -gen icosphere -gen_level 2 -flow_type gd -flow_conformal
+EXPECT="-flow_boundary normals.*conformal" expect_fail F -gen cylinder -flow_boundary normals -flow_type gd
+EXPECT="-flow_boundary.*unknown" expect_fail F -gen cylinder -flow_boundary neumann

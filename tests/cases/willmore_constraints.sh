@@ -1,0 +1,51 @@
+# Area + volume + conformal constraints (soliman2021 Fig. 3 at a mildly reduced volume), point constraints
+# (Fig. 19) and a prescribed conformal class (Fig. 2): each constraint is met to 1e-10 at convergence.
+# nprocs: 1 2
+source tests/lib.sh
+run() { timeout 120 $MPIEXEC "$CS_BIN" -task flow -flow_max_it 150 "$@"; }
+# (a) area (initial value) + volume 4.0 + conformal
+run -gen icosphere -gen_level 3 -flow_init_bump 0.1 -constraint_area -constraint_volume 4.0 -summary "$TMP/av.json" -history "$TMP/av.csv" > "$TMP/av.log" 2>&1 || { tail "$TMP/av.log"; exit 1; }
+# (b) four point constraints on the unit icosphere, one point moved outwards by 30%
+"$CS_BIN" -task info -gen icosphere -gen_level 3 -o "$TMP/ico.obj" > /dev/null
+python3 - "$TMP/ico.obj" "$TMP/points.txt" <<'PY'
+import sys, math
+V = [[float(t) for t in l.split()[1:4]] for l in open(sys.argv[1]) if l.startswith('v ')]
+idx = [0]
+while len(idx) < 4:
+  idx.append(max(range(len(V)), key=lambda i: min(math.dist(V[i], V[j]) for j in idx)))
+with open(sys.argv[2], 'w') as f:
+  f.write('# vertex_index x y z\n')
+  for k, i in enumerate(idx):
+    s = 1.3 if k == 0 else 1.0
+    f.write('%d %.17g %.17g %.17g\n' % (i, V[i][0] * s, V[i][1] * s, V[i][2] * s))
+PY
+run -gen icosphere -gen_level 3 -constraint_points "$TMP/points.txt" -summary "$TMP/pts.json" -o "$TMP/pts.obj" > "$TMP/pts.log" 2>&1 || { tail "$TMP/pts.log"; exit 1; }
+# (c) prescribed class: the class of a stretched sphere, reached from the round one
+"$CS_BIN" -task flow -gen icosphere -gen_level 3 -flow_init_stretch 1.3,1,1 -flow_max_it 0 -o "$TMP/target.obj" > /dev/null
+run -gen icosphere -gen_level 3 -target_mesh "$TMP/target.obj" -summary "$TMP/cls.json" -history "$TMP/cls.csv" > "$TMP/cls.log" 2>&1 || { tail "$TMP/cls.log"; exit 1; }
+python3 - "$TMP" <<'PY'
+import json, sys, csv
+d = sys.argv[1]
+av = json.load(open(d + '/av.json')); A0 = float(list(csv.DictReader(open(d + '/av.csv')))[0]['area'])
+pts = json.load(open(d + '/pts.json')); cls = json.load(open(d + '/cls.json'))
+c0 = float(list(csv.DictReader(open(d + '/cls.csv')))[0]['conformal_violation'])
+V = [[float(t) for t in l.split()[1:4]] for l in open(d + '/pts.obj') if l.startswith('v ')]
+P = [l.split() for l in open(d + '/points.txt') if not l.startswith('#')]
+perr = max(abs(V[int(p[0])][k] - float(p[k + 1])) for p in P for k in range(3))
+ok = lambda s: s['converged'] in (True, 1, 'true')
+checks = [
+  ("area+volume converged", ok(av), av['iterations']),
+  ("area kept to 1e-10", abs(av['area'] - A0) < 1e-10 * A0, av['area'] - A0),
+  ("volume = 4.0 to 1e-10", abs(av['volume'] - 4.0) < 1e-10 * 4, av['volume'] - 4.0),
+  ("area+volume conformal_violation < 1e-10", av['conformal_violation'] < 1e-10, av['conformal_violation']),
+  ("points converged", ok(pts), pts['iterations']),
+  ("points met to 1e-10 (from the output mesh)", perr < 1e-10, perr),
+  ("points constraint_violation < 1e-10", pts['constraint_violation'] < 1e-10, pts['constraint_violation']),
+  ("target class initially far (|c|inf > 0.1)", c0 > 0.1, c0),
+  ("target class reached to 1e-10", ok(cls) and cls['conformal_violation'] < 1e-10, cls['conformal_violation']),
+]
+bad = 0
+for name, good, v in checks:
+  print(("ok  " if good else "BAD ") + name + ": " + repr(v)); bad += not good
+sys.exit(bad)
+PY
