@@ -49,8 +49,6 @@ PETSC_EXTERN PetscErrorCode CSEnergyWillmoreBSHessian(CSEnergy e, Vec x, PetscRe
    makes K a poor linearisation; this is our option (-bs_hessian_eps), not the paper's. */
 PETSC_EXTERN PetscErrorCode CSEnergyWillmoreBSSetHessianEps(CSEnergy e, PetscReal eps);
 
-/* The summary fact of every task: adds "willmore_bs" (FIXED-mode definition, beta_eps 1e-6) to js. */
-PETSC_EXTERN PetscErrorCode CSEnergyWillmoreBSAddFact(CSMesh mesh, Vec x, CSJSON js);
 
 /* Single-diamond kernel (exposed for the unit tests): P = {k, j, l, i} counter-clockwise around the diamond
    of edge ij (bobenko-schroeder2005 Fig. 1). Returns beta (atan2 of |Im Q|, -Re Q for the quaternion cross

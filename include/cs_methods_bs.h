@@ -27,7 +27,7 @@
    ksp_its,seconds. ParaView (-viewer_dir): per step, vertex field W_i. */
 #ifndef CS_METHODS_BS_H
 #define CS_METHODS_BS_H
-#include "cs_driver.h"
+#include "cs_output.h"
 #include "cs_energy_bs.h"
 
 PETSC_EXTERN PetscErrorCode CSFlowBS(MPI_Comm comm, CSOutput *out);

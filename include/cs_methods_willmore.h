@@ -5,7 +5,7 @@
 #ifndef CS_METHODS_WILLMORE_H
 #define CS_METHODS_WILLMORE_H
 #include "cs_constraints.h"
-#include "cs_driver.h"
+#include "cs_output.h"
 #include <petscksp.h>
 
 PETSC_EXTERN PetscErrorCode CSFlowCGD(MPI_Comm comm, CSOutput *out);

@@ -26,6 +26,7 @@
    travels with it at creation). The free boundary's beta_3 needs both boundary neighbours of a boundary
    vertex: exchanged the same way through a per-vertex field. */
 #include "cs_energy_bs.h"
+#include "cs_quaternion.h"
 
 const char *const CSBSBoundaries[] = {"fixed", "free", "CSBSBoundary", "CS_BS_BOUNDARY_", NULL};
 
@@ -57,15 +58,6 @@ typedef struct {
 } BSCtx;
 
 /* ---------------------------------------------------------------- kernels */
-static inline void QuatMul(const PetscReal p[4], const PetscReal q[4], PetscReal r[4])
-{
-  /* (a, A)(b, B) = (ab - A.B, aB + bA + A x B) */
-  r[0] = p[0] * q[0] - p[1] * q[1] - p[2] * q[2] - p[3] * q[3];
-  r[1] = p[0] * q[1] + q[0] * p[1] + p[2] * q[3] - p[3] * q[2];
-  r[2] = p[0] * q[2] + q[0] * p[2] + p[3] * q[1] - p[1] * q[3];
-  r[3] = p[0] * q[3] + q[0] * p[3] + p[1] * q[2] - p[2] * q[1];
-}
-
 void CSBSDiamond(const PetscReal *const P[4], PetscReal eps, PetscReal *beta, PetscReal M[4][4], PetscBool *active)
 {
   PetscReal E[4][3], U[4][4], len[4], G[4][4], q1[4], q2[4], q[4], cb, sb;
@@ -79,9 +71,9 @@ void CSBSDiamond(const PetscReal *const P[4], PetscReal eps, PetscReal *beta, Pe
     for (int s = 0; s < 4; s++) G[r][s] = U[r][1] * U[s][1] + U[r][2] * U[s][2] + U[r][3] * U[s][3];
   /* Q = A B^-1 C D^-1 = A B C D (X^-1 = -X for unit imaginary X); cos beta = -Re Q, sin beta = |Im Q| >= 0.
      atan2 keeps beta accurate near 0 and pi where acos(cos) loses half the digits. */
-  QuatMul(U[0], U[1], q1);
-  QuatMul(q1, U[2], q2);
-  QuatMul(q2, U[3], q);
+  CSQuatMul(U[0], U[1], q1);
+  CSQuatMul(q1, U[2], q2);
+  CSQuatMul(q2, U[3], q);
   cb    = -q[0];
   sb    = PetscSqrtReal(q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
   *beta = PetscAtan2Real(sb, cb);
@@ -714,19 +706,6 @@ PetscErrorCode CSEnergyWillmoreBSHessian(CSEnergy e, Vec x, PetscReal fixdiag, M
   PetscCall(BSEvaluate(e, x, &Wt, NULL, g, *K, fixdiag));
   if (W) *W = Wt;
   PetscCall(PetscLogEventEnd(CS_EVENT_Assemble, 0, 0, 0, 0));
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSEnergyWillmoreBSAddFact(CSMesh mesh, Vec x, CSJSON js)
-{
-  CSEnergy  e;
-  PetscReal W;
-  PetscFunctionBeginUser;
-  PetscCall(CSEnergyCreateWillmoreBS(mesh, CS_BS_BOUNDARY_FIXED, 1e-6, &e));
-  PetscCall(CSEnergyValue(e, x, &W));
-  PetscCall(CSEnergyDestroy(&e));
-  PetscCall(CSJSONAddReal(js, "willmore_bs", W));
-  PetscCall(PetscPrintf(mesh->comm, "willmore_bs=%.12g (bobenko-schroeder2005)\n", (double)W));
   PetscFunctionReturn(0);
 }
 

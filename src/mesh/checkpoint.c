@@ -27,8 +27,12 @@ PetscErrorCode CSCheckpointWrite(CSMesh m, const char path[], PetscInt it, Petsc
     PetscCall(VecView(nat, v));
   }
   PetscCall(PetscViewerDestroy(&v));
-  if (!rank) PetscCheck(!rename(tmp, path), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "checkpoint: cannot rename %s to %s", tmp, path);
-  PetscCallMPI(MPI_Barrier(m->comm));
+  {
+    int ok = 1; /* rank 0 renames; every rank learns the outcome, so a failure cannot leave the others waiting */
+    if (!rank) ok = !rename(tmp, path);
+    PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, m->comm));
+    PetscCheck(ok, m->comm, PETSC_ERR_FILE_WRITE, "checkpoint: cannot rename %s to %s", tmp, path);
+  }
   PetscFunctionReturn(0);
 }
 

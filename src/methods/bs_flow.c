@@ -35,6 +35,11 @@ typedef struct {
   PetscInt         step;   /* history row counter */
   PetscInt         vevery;
   PetscBool        monotone;
+  /* checkpoint/resume (semi scheme): the loop state restored by -resume */
+  PetscBool        resumed;
+  PetscInt         it0, rej0;
+  PetscLogDouble   tsteps0;
+  const char      *stop;   /* why the run stopped (summary key stop_reason) */
 } BSFlow;
 
 /* x <- x with every fixed vertex set back to x0 (keeps G1 data bit-identical, Sec. 3.3). */
@@ -126,16 +131,36 @@ static PetscErrorCode MumpsDefaults(KSP ksp, const char prefix[])
 }
 
 /* ------------------------------------------------------------------ semi-implicit (Sec. 4) */
+/* The semi scheme's loop state after `it` accepted steps: x, and the scalars [dt, rejected, seconds of the
+   history clock, seconds spent in steps]; everything else (W, grad W, K) is recomputed from x, so a resumed run
+   continues exactly like the uninterrupted one. */
+#define BS_CHECKPOINT_NREAL 4
+static PetscErrorCode Checkpoint(BSFlow *F, Vec x, PetscInt it, PetscBool force, PetscInt rej, PetscLogDouble tsteps)
+{
+  PetscReal      r[BS_CHECKPOINT_NREAL];
+  PetscLogDouble now;
+  PetscFunctionBeginUser;
+  PetscCall(PetscTime(&now));
+  r[0] = F->dt;
+  r[1] = (PetscReal)rej;
+  r[2] = (PetscReal)(now - F->t0);
+  r[3] = (PetscReal)tsteps;
+  PetscCall(CSOutputCheckpoint(F->out, F->mesh, F->x0, it, force, BS_CHECKPOINT_NREAL, r, x, NULL));
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode RunSemi(BSFlow *F, Vec x, PetscInt maxit, PetscReal dtgrow, PetscReal dtmax, PetscInt maxrej, PetscInt *iters, PetscInt *rejected, PetscBool *converged, PetscReal *Wfinal, PetscLogDouble *tsteps)
 {
   CSMesh         m = F->mesh;
   KSP            ksp;
   Vec            g, xnew, b1, z1;
   PetscReal      W, Wnew, shift = 0;
-  PetscInt       it = 0, rej = 0, consecutive = 0;
+  PetscInt       it = F->it0, rej = F->rej0, consecutive = 0;
+  PetscBool      first = PETSC_TRUE;
   PetscLogDouble ta, tb;
   PetscFunctionBeginUser;
   *converged = PETSC_FALSE;
+  F->stop    = "max_it";
   PetscCall(VecDuplicate(x, &g));
   PetscCall(VecDuplicate(x, &xnew));
   PetscCall(DMCreateGlobalVector(m->dmV1, &b1));
@@ -160,8 +185,8 @@ static PetscErrorCode RunSemi(BSFlow *F, Vec x, PetscInt maxit, PetscReal dtgrow
 
   PetscCall(PetscTime(&ta));
   PetscCall(CSEnergyWillmoreBSHessian(F->bs, x, 0, MAT_INITIAL_MATRIX, &F->K, &W, g));
-  PetscCall(Record(F, x, W, F->dt, 0));
-  PetscCall(PetscPrintf(m->comm, "bs semi step %3d  W=%.10e  dt=%.3e\n", 0, (double)W, (double)F->dt));
+  if (!F->resumed) PetscCall(Record(F, x, W, F->dt, 0)); /* a resumed history already has this row */
+  PetscCall(PetscPrintf(m->comm, "bs semi step %3" PetscInt_FMT "  W=%.10e  dt=%.3e%s\n", it, (double)W, (double)F->dt, F->resumed ? "  (resumed)" : ""));
   while (it < maxit) {
     PetscInt           kits = 0;
     PetscBool          ok   = PETSC_TRUE;
@@ -170,7 +195,8 @@ static PetscErrorCode RunSemi(BSFlow *F, Vec x, PetscInt maxit, PetscReal dtgrow
     PetscCall(MatShift(F->K, 1.0 / F->dt - shift));
     shift = 1.0 / F->dt;
     PetscCall(KSPSetOperators(ksp, F->K, F->K));
-    if (!it && !rej) PetscCall(MumpsDefaults(ksp, "bs_"));
+    if (first) PetscCall(MumpsDefaults(ksp, "bs_"));
+    first = PETSC_FALSE;
     for (PetscInt d = 0; d < 3 && ok; d++) {
       PetscInt its;
       PetscCall(VecStrideGather(g, d, b1, INSERT_VALUES));
@@ -195,7 +221,8 @@ static PetscErrorCode RunSemi(BSFlow *F, Vec x, PetscInt maxit, PetscReal dtgrow
       PetscCall(PetscPrintf(m->comm, "bs semi: step rejected (%s), dt %.3e -> %.3e\n", reason < 0 ? KSPConvergedReasons[reason] : "energy increased", (double)F->dt, (double)(F->dt / 4)));
       F->dt /= 4;
       if (++consecutive > maxrej) {
-        PetscCall(PetscPrintf(m->comm, "bs semi: %" PetscInt_FMT " consecutive rejected steps (-bs_max_rejections), stopping\n", consecutive));
+        PetscCall(PetscPrintf(m->comm, "bs semi: %" PetscInt_FMT " consecutive rejected steps (-bs_max_rejections), stopping with the last accepted state (step %" PetscInt_FMT ")\n", consecutive, it));
+        F->stop = "rejections";
         break;
       }
       continue;
@@ -211,13 +238,17 @@ static PetscErrorCode RunSemi(BSFlow *F, Vec x, PetscInt maxit, PetscReal dtgrow
       PetscCall(PetscPrintf(m->comm, "bs semi step %3" PetscInt_FMT "  W=%.10e  dt=%.3e  ksp_its=%" PetscInt_FMT "\n", it, (double)W, (double)F->dt, kits));
       if (W < F->atol || (W <= Wold && Wold - W <= F->rtol * Wold)) {
         *converged = PETSC_TRUE;
+        F->stop    = "converged";
         break;
       }
     }
     F->dt = PetscMin(F->dt * dtgrow, dtmax);
+    PetscCall(PetscTime(&tb));
+    PetscCall(Checkpoint(F, x, it, PETSC_FALSE, rej, F->tsteps0 + tb - ta));
   }
   PetscCall(PetscTime(&tb));
-  *tsteps   = tb - ta;
+  *tsteps = F->tsteps0 + tb - ta;
+  PetscCall(Checkpoint(F, x, it, PETSC_TRUE, rej, *tsteps)); /* the last accepted state, converged or not */
   *iters    = it;
   *rejected = rej;
   *Wfinal   = W;
@@ -494,7 +525,20 @@ PetscErrorCode CSFlowBS(MPI_Comm comm, CSOutput *out)
   F.dtgrow = dtgrow;
   F.dtmax  = dtmax;
   PetscCall(PetscPrintf(comm, "bs flow: scheme %s, boundary %s (%" PetscInt_FMT " fixed vertices), beta_eps %g, dt0 %.3e (mean edge %.3e)\n", BSSchemes[scheme], CSBSBoundaries[bc], F.nfixed, (double)eps, (double)F.dt, (double)h));
-  if (out->has_history) PetscCall(CSHistoryCreate(comm, out->history, "it,willmore_bs,willmore,area,dt,ksp_its,seconds", &F.hist));
+  if (scheme == BS_SCHEME_SEMI) {
+    PetscReal r[BS_CHECKPOINT_NREAL];
+    PetscCall(CSOutputResume(out, mesh, F.x0, &F.it0, BS_CHECKPOINT_NREAL, r, mesh->x, NULL, &F.resumed));
+    if (F.resumed) {
+      PetscLogDouble now;
+      PetscCall(PetscTime(&now));
+      F.dt      = r[0];
+      F.rej0    = (PetscInt)r[1];
+      F.t0      = now - r[2]; /* the history's seconds column continues */
+      F.tsteps0 = r[3];
+      F.step    = F.it0 + 1;  /* history row of the next accepted step (the row of step it0 is in the file) */
+    }
+  } else PetscCheck(!out->has_checkpoint && !out->has_resume, comm, PETSC_ERR_ARG_INCOMP, "-checkpoint/-resume: only -bs_scheme semi writes checkpoints");
+  PetscCall(CSOutputHistoryCreate(out, comm, "it,willmore_bs,willmore,area,dt,ksp_its,seconds", F.it0 + 1, &F.hist));
   if (out->has_viewer) {
     PetscCall(CSViewerCreate(mesh, out->viewer_dir, &F.viewer));
     PetscCall(DMCreateGlobalVector(mesh->dmV1, &F.Wv));
@@ -508,6 +552,7 @@ PetscErrorCode CSFlowBS(MPI_Comm comm, CSOutput *out)
   PetscCall(CSJSONAddReal(out->json, "willmore_bs", Wfinal)); /* the flow's energy (with the infinity terms for -bs_boundary free) */
   PetscCall(CSJSONAddInt(out->json, "iterations", iters));
   PetscCall(CSJSONAddBool(out->json, "converged", converged));
+  PetscCall(CSJSONAddString(out->json, "stop_reason", scheme == BS_SCHEME_SEMI ? F.stop : (converged ? "converged" : "not_converged")));
   PetscCall(CSJSONAddInt(out->json, "rejected", rejected));
   PetscCall(CSJSONAddInt(out->json, "fixed_vertices", F.nfixed));
   PetscCall(CSJSONAddReal(out->json, "dt_final", F.dt));

@@ -226,9 +226,11 @@ PetscErrorCode CSSaddleSolve(CSSaddle *s, Vec rE, Vec rV, const PetscReal rX[], 
   PetscCall(KSolve(s, s->b, s->z, &n));
   if (s->k) {
     /* bordering: z = K^{-1}(r - B zX), (B^T K^{-1} B + G) zX = B^T K^{-1} r - rX */
-    PetscScalar *S, *rhs;
-    PetscCall(PetscMalloc2(s->k * s->k, &S, s->k, &rhs));
+    PetscScalar   *S, *rhs;
+    PetscErrorCode ierr;
+    /* the solves first: a failed one (a rejected step, retried by the flow) then leaves nothing allocated */
     for (PetscInt j = 0; j < s->k; j++) PetscCall(KSolve(s, s->B[j], s->W[j], &n));
+    PetscCall(PetscMalloc2(s->k * s->k, &S, s->k, &rhs));
     for (PetscInt i = 0; i < s->k; i++) {
       PetscScalar v;
       PetscCall(VecDot(s->z, s->B[i], &v));
@@ -238,7 +240,9 @@ PetscErrorCode CSSaddleSolve(CSSaddle *s, Vec rE, Vec rV, const PetscReal rX[], 
         S[i + j * s->k] = v + (i == j ? s->G[i] : 0.0);
       }
     }
-    PetscCall(SmallSolve(s->mesh->comm, s->k, S, rhs));
+    ierr = SmallSolve(s->mesh->comm, s->k, S, rhs);
+    if (ierr) PetscCall(PetscFree2(S, rhs));
+    PetscCall(ierr);
     for (PetscInt j = 0; j < s->k; j++) {
       zX[j] = PetscRealPart(rhs[j]);
       PetscCall(VecAXPY(s->z, -rhs[j], s->W[j]));

@@ -1,7 +1,7 @@
 /* bin/confsurf -task spin (crane2011: paint rho / nearest spin transformation / boundary edit) and
    -task spectrum (the smallest eigenvalues of Eq. 7 with rho = 0, Fig. 8). */
 #include "cs_methods_spin.h"
-#include "cs_driver.h"
+#include "cs_output.h"
 
 /* |lambda| per vertex (dmV1), for the viewer */
 static PetscErrorCode LambdaAbs(CSSpin s, Vec lambda, Vec a)

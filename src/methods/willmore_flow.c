@@ -493,6 +493,26 @@ static PetscErrorCode QuadDiffMetric(Flow *F, Vec x, PetscInt *ng)
   PetscFunctionReturn(0);
 }
 
+/* CSSaddleSolve, with a linear solve that did not converge reported in *ok (and printed) instead of raised:
+   the step control then treats it as a rejected step (t halved, like the semi-implicit BS flow), and a run
+   that keeps failing stops cleanly with its last accepted state. Other errors are raised. */
+static PetscErrorCode TrySolve(Flow *F, Vec rE, Vec rV, const PetscReal rX[], Vec zE, Vec zV, PetscReal zX[], PetscInt *its, PetscBool *ok)
+{
+  PetscErrorCode ierr;
+  char          *msg = NULL;
+  PetscFunctionBeginUser;
+  *its = 0;
+  PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
+  ierr = CSSaddleSolve(&F->saddle, rE, rV, rX, zE, zV, zX, its);
+  PetscCall(PetscPopErrorHandler());
+  *ok = (PetscBool)!ierr;
+  if (!ierr) PetscFunctionReturn(0);
+  PetscCall(PetscErrorMessage(ierr, NULL, &msg));
+  PetscCheck(ierr == PETSC_ERR_NOT_CONVERGED, F->comm, ierr, "%s", msg ? msg : "CSSaddleSolve failed");
+  PetscCall(PetscPrintf(F->comm, "     linear solve failed: %s\n", msg ? msg : "not converged"));
+  PetscFunctionReturn(0);
+}
+
 /* PGD projection onto the constraint set (soliman2021 Sec. 4.1: the explicit step leaves the nonlinear
    constraint manifold): Gauss-Newton steps, each the minimal-H^2-norm correction dx with X dx = -c,
    solved as the saddle system with t = 1 and a huge t_mu (the -I_Q/t_mu block only regularises the
@@ -518,8 +538,10 @@ static PetscErrorCode Project(Flow *F, Vec x, PetscBool *ok, PetscInt *kspits)
     PetscCall(VecScale(F->ct, -1.0));
     for (PetscInt j = 0; j < F->k; j++) F->cxt[j] = -F->cxt[j];
     PetscCall(VecSet(F->tmp, 0));
-    PetscCall(CSSaddleSolve(&F->saddle, F->ct, F->tmp, F->cxt, F->dmu, F->df, F->dnu, &its));
+    PetscCall(TrySolve(F, F->ct, F->tmp, F->cxt, F->dmu, F->df, F->dnu, &its, ok));
     *kspits += its;
+    if (!*ok) PetscFunctionReturn(0);
+    *ok = PETSC_FALSE;
     PetscCall(VecAXPY(x, 1.0, F->df));
   }
   PetscCall(EvalConstraints(F, x, F->ct, F->cxt, PETSC_FALSE));
@@ -528,27 +550,74 @@ static PetscErrorCode Project(Flow *F, Vec x, PetscBool *ok, PetscInt *kspits)
   PetscFunctionReturn(0);
 }
 
+/* Checkpoint scalars: the loop state after `it` accepted steps besides the positions and mu (the edge
+   field): [flow kind, t, t_mu, rejections, KSP its in total, KSP its of the last step, edges with guarded I_Q
+   weight, seconds, nu_1..nu_k]. The rest (g, c, X, metric, residual) is recomputed from x at the top of the
+   loop, so a resumed run continues exactly like the uninterrupted one. */
+#define FLOW_CK_NREAL 8
+typedef struct {
+  PetscInt       rejections, kspits_total, kspits, nguard;
+  PetscLogDouble t0;
+} FlowCounters;
+
+static PetscErrorCode FlowCheckpoint(Flow *F, CSOutput *out, PetscInt it, PetscBool force, const FlowCounters *n, PetscReal ck[])
+{
+  PetscLogDouble now;
+  PetscFunctionBeginUser;
+  PetscCall(PetscTime(&now));
+  ck[0] = (PetscReal)F->kind;
+  ck[1] = F->t;
+  ck[2] = F->tmu;
+  ck[3] = (PetscReal)n->rejections;
+  ck[4] = (PetscReal)n->kspits_total;
+  ck[5] = (PetscReal)n->kspits;
+  ck[6] = (PetscReal)n->nguard;
+  ck[7] = (PetscReal)(now - n->t0);
+  for (PetscInt j = 0; j < F->k; j++) ck[FLOW_CK_NREAL + j] = F->nu[j];
+  PetscCall(CSOutputCheckpoint(out, F->mesh, F->x0, it, force, FLOW_CK_NREAL + F->k, ck, F->x, F->conformal ? F->mu : NULL));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode CSWillmoreFlowRun(MPI_Comm comm, CSOutput *out, CSFlowKind kind)
 {
   Flow           F;
   CSHistory      hist = NULL;
-  PetscLogDouble t0, tnow;
-  PetscReal      E = 0, el = 0, conf = 0, glob = 0, A, V;
-  PetscInt       it, kspits = 0, kspits_total = 0, rejections = 0, nguard = 0;
-  PetscBool      converged = PETSC_FALSE;
-  const char    *names[] = {"cgd", "pgd", "gd"};
+  PetscLogDouble tnow;
+  PetscReal      E = 0, el = 0, conf = 0, glob = 0, A, V, *ck;
+  PetscInt       it, it0 = 0;
+  FlowCounters   n = {0, 0, 0, 0, 0};
+  PetscBool      converged = PETSC_FALSE, resumed, stop = PETSC_FALSE;
+  const char    *names[] = {"cgd", "pgd", "gd"}, *stop_reason = "max_it";
   PetscFunctionBeginUser;
-  PetscCall(PetscTime(&t0));
+  PetscCall(PetscTime(&n.t0));
   PetscCall(FlowSetUp(comm, &F, kind, out));
-  if (out->has_history) PetscCall(CSHistoryCreate(comm, out->history, "it,energy,area,volume,conformal_violation,constraint_violation,el_residual,t,ksp_its,rejections,seconds", &hist));
+  /* -resume: positions, mu and the loop state; x0 (input, conformal target, q_mean) stays the input */
+  PetscCheck(!F.normals || (!out->has_checkpoint && !out->has_resume), comm, PETSC_ERR_SUP, "-checkpoint/-resume with -flow_boundary normals: the multipliers of the normal constraint are not stored in checkpoints");
+  PetscCall(PetscMalloc1(FLOW_CK_NREAL + F.k, &ck));
+  PetscCall(CSOutputResume(out, F.mesh, F.x0, &it0, FLOW_CK_NREAL + F.k, ck, F.x, F.conformal ? F.mu : NULL, &resumed));
+  if (resumed) {
+    PetscBool same = (PetscBool)(ck[0] == (PetscReal)kind);
+    if (!same) PetscCall(PetscFree(ck));
+    PetscCheck(same, comm, PETSC_ERR_ARG_INCOMP, "-resume %s: written by another -flow_type (this run is %s)", out->resume, names[kind]);
+    F.t            = ck[1];
+    F.tmu          = ck[2];
+    n.rejections   = (PetscInt)ck[3];
+    n.kspits_total = (PetscInt)ck[4];
+    n.kspits       = (PetscInt)ck[5];
+    n.nguard       = (PetscInt)ck[6];
+    n.t0          -= ck[7]; /* the seconds column of the history continues */
+    for (PetscInt j = 0; j < F.k; j++) F.nu[j] = ck[FLOW_CK_NREAL + j];
+  }
+  /* a resumed run writes the row of iteration it0 again (from the same state) */
+  PetscCall(CSOutputHistoryCreate(out, comm, "it,energy,area,volume,conformal_violation,constraint_violation,el_residual,t,ksp_its,rejections,seconds", it0, &hist));
   PetscCall(PetscPrintf(comm, "flow %s: mesh %s V=%" PetscInt_FMT " E=%" PetscInt_FMT " F=%" PetscInt_FMT ", energy %s, metric %s, conformal %s, %" PetscInt_FMT " global constraint rows%s, t=%g t_mu=%g\n", names[kind], F.mesh->name, F.mesh->Nv, F.mesh->Ne, F.mesh->Nf, F.energy_name, F.metric.h2 ? "h2" : "l2", F.conformal ? "on" : "off", F.k, F.fixedIS ? ", Dirichlet boundary" : "", (double)F.t, (double)F.tmu));
 
-  if (kind == CS_FLOW_PGD) { /* PGD starts on the constraint set */
+  if (kind == CS_FLOW_PGD && !resumed) { /* PGD starts on the constraint set (a checkpoint is on it already) */
     PetscBool ok;
-    PetscCall(Project(&F, F.x, &ok, &kspits_total));
+    PetscCall(Project(&F, F.x, &ok, &n.kspits_total));
     PetscCheck(ok, comm, PETSC_ERR_NOT_CONVERGED, "pgd: the initial projection onto the constraint set did not converge");
   }
-  for (it = 0;; it++) {
+  for (it = it0;; it++) {
     PetscCall(CSEnergyGradient(F.energy, F.x, &E, F.g));
     PetscCall(ZeroFixed(&F, F.g));
     PetscCall(EvalConstraints(&F, F.x, F.c, F.cx, PETSC_TRUE));
@@ -556,14 +625,15 @@ PetscErrorCode CSWillmoreFlowRun(MPI_Comm comm, CSOutput *out, CSFlowKind kind)
     PetscCall(Violation(&F, F.c, F.cx, &conf, &glob));
     PetscCall(CSGeometryAreaVolume(F.mesh, F.x, &A, &V));
     PetscCall(PetscTime(&tnow));
-    PetscCall(PetscPrintf(comm, "%4" PetscInt_FMT " E %.12g area %.8g vol %.8g |c|inf %.3e |xi| %.3e el %.3e t %.3g ksp %" PetscInt_FMT "\n", it, (double)E, (double)A, (double)V, (double)conf, (double)glob, (double)el, (double)F.t, kspits));
+    PetscCall(PetscPrintf(comm, "%4" PetscInt_FMT " E %.12g area %.8g vol %.8g |c|inf %.3e |xi| %.3e el %.3e t %.3g ksp %" PetscInt_FMT "\n", it, (double)E, (double)A, (double)V, (double)conf, (double)glob, (double)el, (double)F.t, n.kspits));
     if (hist) {
-      PetscReal row[11] = {(PetscReal)it, E, A, V, conf, glob, el, F.t, (PetscReal)kspits, (PetscReal)rejections, tnow - t0};
+      PetscReal row[11] = {(PetscReal)it, E, A, V, conf, glob, el, F.t, (PetscReal)n.kspits, (PetscReal)n.rejections, tnow - n.t0};
       PetscCall(CSHistoryAppend(hist, 11, row));
     }
     if (!(E == E) || !(el == el)) SETERRQ(comm, PETSC_ERR_FP, "flow: the energy or the residual is not a number at iteration %" PetscInt_FMT " (degenerate triangles?); try a smaller -flow_t", it);
     if (el < F.rtol && PetscMax(conf, glob) < F.ctol) {
-      converged = PETSC_TRUE;
+      converged   = PETSC_TRUE;
+      stop_reason = "converged";
       break;
     }
     if (it >= F.max_it) break;
@@ -573,17 +643,23 @@ PetscErrorCode CSWillmoreFlowRun(MPI_Comm comm, CSOutput *out, CSFlowKind kind)
     if (F.conformal) {
       PetscInt ng;
       PetscCall(QuadDiffMetric(&F, F.x, &ng));
-      nguard = PetscMax(nguard, ng);
+      n.nguard = PetscMax(n.nguard, ng);
     }
     if (F.k) PetscCall(GlobalWeights(&F));
-    kspits = 0;
+    n.kspits = 0;
     for (PetscInt rej = 0;; rej++) {
       PetscReal Et;
       PetscBool accept = PETSC_TRUE;
       PetscInt  its;
       Vec       dmu2, df2;
 
-      PetscCheck(rej <= F.max_rej, comm, PETSC_ERR_NOT_CONVERGED, "flow: %" PetscInt_FMT " consecutive steps rejected at iteration %" PetscInt_FMT " (t = %g): the merit function does not decrease", rej - 1, it, (double)F.t);
+      if (rej > F.max_rej) {
+        /* stop cleanly: F.x is the last accepted state, and E, el, c above belong to it */
+        PetscCall(PetscPrintf(comm, "flow: %" PetscInt_FMT " consecutive steps rejected at iteration %" PetscInt_FMT " (t = %g, -flow_max_rejections): stopping with the last accepted state\n", rej, it, (double)F.t));
+        stop        = PETSC_TRUE;
+        stop_reason = "rejections";
+        break;
+      }
       PetscCall(SetOperators(&F, F.t, kind == CS_FLOW_PGD ? F.proj_tmu : F.tmu));
       /* right-hand side (Algorithm 1 line 11): [-c; -g - X^T mu - B^T nu; -xi] for CGD/GD, [0; -g; 0] for PGD */
       if (kind == CS_FLOW_PGD) {
@@ -600,13 +676,14 @@ PetscErrorCode CSWillmoreFlowRun(MPI_Comm comm, CSOutput *out, CSFlowKind kind)
         PetscCall(VecScale(F.tmp, -1.0));
         for (PetscInt j = 0; j < F.k; j++) F.cxt[j] = -F.cx[j];
       }
-      PetscCall(CSSaddleSolve(&F.saddle, F.ct, F.tmp, F.cxt, F.dmu, F.df, F.dnu, &its));
-      kspits += its;
-      if (kind == CS_FLOW_PGD) {
+      PetscCall(TrySolve(&F, F.ct, F.tmp, F.cxt, F.dmu, F.df, F.dnu, &its, &accept));
+      n.kspits += its;
+      if (!accept) PetscCall(PetscPrintf(comm, "     step rejected: linear solve failed with t = %g; halving t\n", (double)F.t));
+      if (accept && kind == CS_FLOW_PGD) {
         /* The PGD matrix [[H/t, X^T], [X, 0]] is singular (dependent rows of X, PETSC-NOTES); we solve with
            -I_Q/pgd_t_mu in the (2,2) block and remove the regularisation error by iterative refinement
            against the unregularised system: only its second row differs, residual -X df (and -B^T df). */
-        for (PetscInt ref = 0; ref < 3; ref++) {
+        for (PetscInt ref = 0; ref < 3 && accept; ref++) {
           PetscCall(MatMult(F.Xc, F.df, F.ct));
           PetscCall(VecScale(F.ct, -1.0));
           for (PetscInt j = 0; j < F.k; j++) {
@@ -617,21 +694,31 @@ PetscErrorCode CSWillmoreFlowRun(MPI_Comm comm, CSOutput *out, CSFlowKind kind)
           PetscCall(VecSet(F.tmp, 0));
           PetscCall(VecDuplicate(F.dmu, &dmu2));
           PetscCall(VecDuplicate(F.df, &df2));
-          PetscCall(CSSaddleSolve(&F.saddle, F.ct, F.tmp, F.cxt, dmu2, df2, F.dnu2, &its));
-          kspits += its;
-          PetscCall(VecAXPY(F.dmu, 1.0, dmu2));
-          PetscCall(VecAXPY(F.df, 1.0, df2));
-          for (PetscInt j = 0; j < F.k; j++) F.dnu[j] += F.dnu2[j];
+          PetscCall(TrySolve(&F, F.ct, F.tmp, F.cxt, dmu2, df2, F.dnu2, &its, &accept));
+          n.kspits += its;
+          if (!accept) PetscCall(PetscPrintf(comm, "     step rejected: linear solve failed with t = %g; halving t\n", (double)F.t));
+          else {
+            PetscCall(VecAXPY(F.dmu, 1.0, dmu2));
+            PetscCall(VecAXPY(F.df, 1.0, df2));
+            for (PetscInt j = 0; j < F.k; j++) F.dnu[j] += F.dnu2[j];
+          }
           PetscCall(VecDestroy(&dmu2));
           PetscCall(VecDestroy(&df2));
         }
       }
       /* trial point */
-      PetscCall(VecWAXPY(F.xt, 1.0, F.df, F.x));
-      if (kind == CS_FLOW_PGD) {
+      if (accept) PetscCall(VecWAXPY(F.xt, 1.0, F.df, F.x));
+      if (accept && kind == CS_FLOW_PGD) {
         PetscBool ok;
-        PetscCall(Project(&F, F.xt, &ok, &kspits));
+        PetscCall(Project(&F, F.xt, &ok, &n.kspits));
         if (!ok) accept = PETSC_FALSE;
+        if (!ok) PetscCall(PetscPrintf(comm, "     step rejected: the projection onto the constraint set failed with t = %g; halving t\n", (double)F.t));
+      }
+      if (accept && !F.step_control) {
+        /* even without step control a non-finite state is never accepted: the last good state must survive */
+        PetscCall(CSEnergyValue(F.energy, F.xt, &Et));
+        if (PetscIsInfOrNanReal(Et)) accept = PETSC_FALSE;
+        if (!accept) PetscCall(PetscPrintf(comm, "     step rejected: the energy is not finite with t = %g; halving t\n", (double)F.t));
       }
       if (accept && F.step_control) {
         if (kind == CS_FLOW_PGD) {
@@ -657,10 +744,11 @@ PetscErrorCode CSWillmoreFlowRun(MPI_Comm comm, CSOutput *out, CSFlowKind kind)
         }
       }
       if (accept) break;
-      rejections++;
+      n.rejections++;
       F.t *= 0.5;
       if (kind != CS_FLOW_PGD) F.tmu *= 0.5; /* keep t_mu / t */
     }
+    if (stop) break;
     /* accept */
     PetscCall(VecCopy(F.xt, F.x));
     if (kind == CS_FLOW_PGD) {
@@ -671,26 +759,30 @@ PetscErrorCode CSWillmoreFlowRun(MPI_Comm comm, CSOutput *out, CSFlowKind kind)
       if (F.conformal) PetscCall(VecAXPY(F.mu, 1.0, F.dmu));
       for (PetscInt j = 0; j < F.k; j++) F.nu[j] += F.dnu[j];
     }
-    kspits_total += kspits;
+    n.kspits_total += n.kspits;
     if (F.t * F.grow <= F.tmax) {
       F.t *= F.grow;
       if (kind != CS_FLOW_PGD) F.tmu *= F.grow;
     }
+    PetscCall(FlowCheckpoint(&F, out, it + 1, PETSC_FALSE, &n, ck)); /* it + 1 accepted steps */
   }
+  PetscCall(FlowCheckpoint(&F, out, it, PETSC_TRUE, &n, ck)); /* the last accepted state, converged or not */
+  PetscCall(PetscFree(ck));
   PetscCall(PetscTime(&tnow));
-  PetscCall(PetscPrintf(comm, "flow %s: %s after %" PetscInt_FMT " iterations (%" PetscInt_FMT " rejected steps, %" PetscInt_FMT " KSP iterations, %" PetscInt_FMT " edges with guarded I_Q weight), %.3f s\n", names[kind], converged ? "converged" : "NOT converged", it, rejections, kspits_total, nguard, tnow - t0));
+  PetscCall(PetscPrintf(comm, "flow %s: %s after %" PetscInt_FMT " iterations (%" PetscInt_FMT " rejected steps, %" PetscInt_FMT " KSP iterations, %" PetscInt_FMT " edges with guarded I_Q weight), %.3f s\n", names[kind], converged ? "converged" : "NOT converged", it, n.rejections, n.kspits_total, n.nguard, tnow - n.t0));
   PetscCall(CSJSONAddString(out->json, "flow_type", names[kind]));
   PetscCall(CSJSONAddString(out->json, "energy_name", F.energy_name));
   PetscCall(CSJSONAddInt(out->json, "iterations", it));
   PetscCall(CSJSONAddBool(out->json, "converged", converged));
+  PetscCall(CSJSONAddString(out->json, "stop_reason", stop_reason));
   PetscCall(CSJSONAddReal(out->json, "energy", E));
   PetscCall(CSJSONAddReal(out->json, "conformal_violation", conf));
   PetscCall(CSJSONAddReal(out->json, "constraint_violation", glob));
   PetscCall(CSJSONAddReal(out->json, "el_residual", el));
-  PetscCall(CSJSONAddInt(out->json, "rejections", rejections));
-  PetscCall(CSJSONAddInt(out->json, "ksp_iterations", kspits_total));
+  PetscCall(CSJSONAddInt(out->json, "rejections", n.rejections));
+  PetscCall(CSJSONAddInt(out->json, "ksp_iterations", n.kspits_total));
   PetscCall(CSJSONAddReal(out->json, "t_final", F.t));
-  PetscCall(CSJSONAddReal(out->json, "seconds_per_iteration", it ? (tnow - t0) / it : 0));
+  PetscCall(CSJSONAddReal(out->json, "seconds_per_iteration", it ? (tnow - n.t0) / it : 0));
   if (F.k) PetscCall(CSJSONAddRealArray(out->json, "constraint_values", F.k, F.cx));
   if (out->has_viewer) {
     CSViewer v;

@@ -1,0 +1,41 @@
+/* Run output shared by every task and method: the fixed output options, the facts every summary carries,
+   history and checkpoints. Sits between the energies and the methods, so methods report without knowing the
+   driver. */
+#ifndef CS_OUTPUT_H
+#define CS_OUTPUT_H
+#include "cs_energy.h"
+#include "cs_util.h"
+
+/* The fixed output interface of every task (DEVELOPERS.md): -o, -viewer_dir, -summary, -history, -reference,
+   and for iterative tasks -checkpoint, -checkpoint_every, -resume. */
+typedef struct {
+  char      out[PETSC_MAX_PATH_LEN], viewer_dir[PETSC_MAX_PATH_LEN], summary[PETSC_MAX_PATH_LEN], history[PETSC_MAX_PATH_LEN], reference[PETSC_MAX_PATH_LEN];
+  PetscBool has_out, has_viewer, has_summary, has_history, has_reference;
+  char      checkpoint[PETSC_MAX_PATH_LEN], resume[PETSC_MAX_PATH_LEN];
+  PetscBool has_checkpoint, has_resume;
+  PetscInt  checkpoint_every;
+  PetscBool resumed;          /* CSOutputResume restored a state: CSOutputHistoryCreate continues the history */
+  PetscBool checkpoint_used;  /* the task called CSOutputResume (it supports -checkpoint/-resume) */
+  PetscLogDouble t0;
+  CSJSON    json;
+} CSOutput;
+
+PETSC_EXTERN PetscErrorCode CSOutputFromOptions(MPI_Comm comm, CSOutput *o);
+/* The keys every task reports: counts, topology, area, volume, willmore, (q_mean, q_max against
+   -reference or the given xref), then writes -o and -summary (adding seconds). */
+PETSC_EXTERN PetscErrorCode CSOutputAddMeshFacts(CSOutput *o, CSMesh mesh, Vec x, Vec xref);
+PETSC_EXTERN PetscErrorCode CSOutputFinish(CSOutput *o, CSMesh mesh, Vec x);
+PETSC_EXTERN PetscErrorCode CSOutputDestroy(CSOutput *o);
+
+/* Checkpoints of iterative tasks (CSCheckpointWrite/Read: natural order, any number of ranks). The task's loop
+   state is it, nreal scalars, the positions x and optionally one per-edge field (global dmE1 Vec or NULL); x0
+   (the input positions, or NULL) is fingerprinted so that a resume with another input is refused.
+   CSOutputResume: with -resume, overwrites it, reals, x, edgeField and sets *resumed; else a no-op.
+   CSOutputCheckpoint: with -checkpoint, writes when force or it is a multiple of -checkpoint_every.
+   CSOutputHistoryCreate: -history (NULL without it); after a resume, the rows of the interrupted run with
+   first column below next are kept, so the file continues as one run. */
+PETSC_EXTERN PetscErrorCode CSOutputResume(CSOutput *o, CSMesh mesh, Vec x0, PetscInt *it, PetscInt nreal, PetscReal reals[], Vec x, Vec edgeField, PetscBool *resumed);
+PETSC_EXTERN PetscErrorCode CSOutputCheckpoint(CSOutput *o, CSMesh mesh, Vec x0, PetscInt it, PetscBool force, PetscInt nreal, const PetscReal reals[], Vec x, Vec edgeField);
+PETSC_EXTERN PetscErrorCode CSOutputHistoryCreate(CSOutput *o, MPI_Comm comm, const char header[], PetscInt next, CSHistory *h);
+
+#endif

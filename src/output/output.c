@@ -1,0 +1,224 @@
+/* Output options shared by every task, and the facts every summary carries. */
+#include "cs_output.h"
+#include "cs_geometry.h"
+#include "cs_energy_bs.h"
+
+static PetscErrorCode CheckWritable(const char path[])
+{
+  char  tmp[PETSC_MAX_PATH_LEN];
+  FILE *fp;
+  PetscFunctionBeginUser;
+  PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", path)); /* the name CSCheckpointWrite writes first */
+  fp = fopen(tmp, "w");
+  PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-checkpoint %s: cannot write %s", path, tmp);
+  fclose(fp);
+  remove(tmp);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSOutputFromOptions(MPI_Comm comm, CSOutput *o)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscMemzero(o, sizeof(*o)));
+  PetscCall(PetscTime(&o->t0));
+  PetscOptionsBegin(comm, NULL, "confsurf output", NULL);
+  PetscCall(PetscOptionsString("-o", "Final mesh (.obj or .ply)", NULL, o->out, o->out, sizeof(o->out), &o->has_out));
+  PetscCall(PetscOptionsString("-viewer_dir", "Directory for the ParaView series (series.pvd)", NULL, o->viewer_dir, o->viewer_dir, sizeof(o->viewer_dir), &o->has_viewer));
+  PetscCall(PetscOptionsString("-summary", "JSON summary file", NULL, o->summary, o->summary, sizeof(o->summary), &o->has_summary));
+  PetscCall(PetscOptionsString("-cs_history", "-history FILE.csv: per-iteration CSV history (main renames -history, which PETSc reserves)", NULL, o->history, o->history, sizeof(o->history), &o->has_history));
+  PetscCall(PetscOptionsString("-reference", "Mesh with the same connectivity for the quasi-conformal error", NULL, o->reference, o->reference, sizeof(o->reference), &o->has_reference));
+  o->checkpoint_every = 10;
+  PetscCall(PetscOptionsString("-checkpoint", "Iterative tasks: write a checkpoint (positions and loop state) to this file", NULL, o->checkpoint, o->checkpoint, sizeof(o->checkpoint), &o->has_checkpoint));
+  PetscCall(PetscOptionsInt("-checkpoint_every", "Write the checkpoint every this many accepted iterations (and always at the end)", NULL, o->checkpoint_every, &o->checkpoint_every, NULL));
+  PetscCall(PetscOptionsString("-resume", "Iterative tasks: start from this checkpoint (the mesh still comes from -mesh/-gen, for the connectivity)", NULL, o->resume, o->resume, sizeof(o->resume), &o->has_resume));
+  PetscOptionsEnd();
+  PetscCheck(o->checkpoint_every >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-checkpoint_every %" PetscInt_FMT ": must be >= 1", o->checkpoint_every);
+  /* fail now rather than after hours of iterations (and on every rank: the checkpoint is written by rank 0) */
+  if (o->has_checkpoint) CSRootCall(comm, CheckWritable(o->checkpoint));
+  if (o->has_out) {
+    char ext[16];
+    PetscCall(CSPathExtension(o->out, ext, sizeof(ext)));
+    PetscCheck(!strcmp(ext, "obj") || !strcmp(ext, "ply"), comm, PETSC_ERR_ARG_WRONG, "-o %s: the final mesh is written as .obj or .ply", o->out);
+  }
+  PetscCall(CSJSONCreate(comm, &o->json));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSOutputAddMeshFacts(CSOutput *o, CSMesh mesh, Vec x, Vec xref)
+{
+  PetscReal area, volume, W;
+  CSEnergy  will;
+  PetscFunctionBeginUser;
+  PetscCall(CSGeometryAreaVolume(mesh, x, &area, &volume));
+  PetscCall(CSEnergyCreateWillmore(mesh, &will));
+  PetscCall(CSEnergyValue(will, x, &W));
+  PetscCall(CSEnergyDestroy(&will));
+  PetscCall(CSJSONAddString(o->json, "mesh", mesh->name));
+  PetscCall(CSJSONAddInt(o->json, "vertices", mesh->Nv));
+  PetscCall(CSJSONAddInt(o->json, "edges", mesh->Ne));
+  PetscCall(CSJSONAddInt(o->json, "faces", mesh->Nf));
+  PetscCall(CSJSONAddInt(o->json, "genus", mesh->topo.genus));
+  PetscCall(CSJSONAddInt(o->json, "boundary_loops", mesh->topo.boundary_loops));
+  PetscCall(CSJSONAddInt(o->json, "components", mesh->topo.components));
+  PetscCall(CSJSONAddInt(o->json, "euler_characteristic", mesh->Nv - mesh->Ne + mesh->Nf));
+  PetscCall(CSJSONAddReal(o->json, "area", area));
+  PetscCall(CSJSONAddReal(o->json, "volume", volume));
+  PetscCall(CSJSONAddReal(o->json, "willmore", W));
+  PetscCall(PetscPrintf(mesh->comm, "mesh %s: V=%" PetscInt_FMT " E=%" PetscInt_FMT " F=%" PetscInt_FMT " genus=%" PetscInt_FMT " boundary_loops=%" PetscInt_FMT " components=%" PetscInt_FMT "\n", mesh->name, mesh->Nv, mesh->Ne, mesh->Nf, mesh->topo.genus, mesh->topo.boundary_loops, mesh->topo.components));
+  PetscCall(PetscPrintf(mesh->comm, "area=%.12g volume=%.12g willmore=%.12g (4pi=%.12g)\n", (double)area, (double)volume, (double)W, (double)(4 * PETSC_PI)));
+  { /* the circle-angle energy of bobenko-schroeder2005 (boundary vertices excluded, as with -bs_boundary fixed) */
+    CSEnergy  bs;
+    PetscReal Wbs;
+    PetscCall(CSEnergyCreateWillmoreBS(mesh, CS_BS_BOUNDARY_FIXED, 1e-6, &bs));
+    PetscCall(CSEnergyValue(bs, x, &Wbs));
+    PetscCall(CSEnergyDestroy(&bs));
+    PetscCall(CSJSONAddReal(o->json, "willmore_bs", Wbs));
+    PetscCall(PetscPrintf(mesh->comm, "willmore_bs=%.12g (bobenko-schroeder2005)\n", (double)Wbs));
+  }
+  if (xref || o->has_reference) {
+    Vec       r = xref;
+    PetscReal qmean, qmax;
+    if (!r) PetscCall(CSMeshLoadCompatiblePositions(mesh, "-reference", o->reference, &r));
+    PetscCall(CSGeometryQuasiConformal(mesh, r, x, NULL, &qmean, &qmax));
+    PetscCall(CSJSONAddReal(o->json, "q_mean", qmean));
+    PetscCall(CSJSONAddReal(o->json, "q_max", qmax));
+    PetscCall(PetscPrintf(mesh->comm, "quasi-conformal error: q_mean=%.12g q_max=%.12g\n", (double)qmean, (double)qmax));
+    if (!xref) PetscCall(VecDestroy(&r));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSOutputFinish(CSOutput *o, CSMesh mesh, Vec x)
+{
+  PetscLogDouble t1;
+  PetscFunctionBeginUser;
+  PetscCall(PetscTime(&t1));
+  PetscCall(CSJSONAddReal(o->json, "seconds", (PetscReal)(t1 - o->t0)));
+  {
+    PetscMPIInt size;
+    PetscCallMPI(MPI_Comm_size(mesh->comm, &size));
+    PetscCall(CSJSONAddInt(o->json, "ranks", (PetscInt)size));
+  }
+  if ((o->has_checkpoint || o->has_resume) && !o->checkpoint_used) PetscCall(PetscPrintf(mesh->comm, "WARNING: -checkpoint/-resume ignored: this task does not use checkpoints\n"));
+  if (o->has_out) {
+    PetscCall(CSMeshWrite(mesh, x, o->out));
+    PetscCall(PetscPrintf(mesh->comm, "wrote mesh %s\n", o->out));
+  }
+  if (o->has_summary) {
+    PetscCall(CSJSONWrite(o->json, o->summary));
+    PetscCall(PetscPrintf(mesh->comm, "wrote summary %s\n", o->summary));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSOutputDestroy(CSOutput *o)
+{
+  PetscFunctionBeginUser;
+  PetscCall(CSJSONDestroy(&o->json));
+  PetscFunctionReturn(0);
+}
+
+/* Two numbers that identify the input positions x0 on any number of ranks (up to round-off). */
+static PetscErrorCode Fingerprint(Vec x0, PetscReal fp[2])
+{
+  PetscScalar sum;
+  PetscFunctionBeginUser;
+  fp[0] = fp[1] = 0;
+  if (!x0) PetscFunctionReturn(0);
+  PetscCall(VecNorm(x0, NORM_2, &fp[0]));
+  PetscCall(VecSum(x0, &sum));
+  fp[1] = PetscRealPart(sum);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSOutputResume(CSOutput *o, CSMesh mesh, Vec x0, PetscInt *it, PetscInt nreal, PetscReal reals[], Vec x, Vec edgeField, PetscBool *resumed)
+{
+  PetscReal     *buf, fp[2];
+  PetscBool      same = PETSC_TRUE;
+  PetscErrorCode ierr;
+  PetscFunctionBeginUser;
+  o->checkpoint_used = PETSC_TRUE;
+  *resumed           = PETSC_FALSE;
+  if (!o->has_resume) PetscFunctionReturn(0);
+  /* the fingerprint of the input goes first: [fp0, fp1, task scalars] */
+  PetscCall(PetscMalloc1(nreal + 2, &buf));
+  ierr = CSCheckpointRead(mesh, o->resume, it, nreal + 2, buf, x, edgeField);
+  if (ierr) PetscCall(PetscFree(buf)); /* no leak on the error path */
+  PetscCall(ierr);
+  PetscCall(Fingerprint(x0, fp));
+  for (int i = 0; i < 2; i++) same = (PetscBool)(same && PetscAbsReal(buf[i] - fp[i]) <= 1e-10 * PetscMax(1.0, PetscAbsReal(fp[i])));
+  if (same) PetscCall(PetscArraycpy(reals, buf + 2, nreal));
+  PetscCall(PetscFree(buf));
+  PetscCheck(same, mesh->comm, PETSC_ERR_ARG_INCOMP, "-resume %s: the checkpoint was written by a run from other input positions (another -mesh/-gen, or options that change the input such as -flow_init_*)", o->resume);
+  o->resumed = PETSC_TRUE;
+  *resumed   = PETSC_TRUE;
+  PetscCall(PetscPrintf(mesh->comm, "resumed from checkpoint %s at iteration %" PetscInt_FMT "\n", o->resume, *it));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSOutputCheckpoint(CSOutput *o, CSMesh mesh, Vec x0, PetscInt it, PetscBool force, PetscInt nreal, const PetscReal reals[], Vec x, Vec edgeField)
+{
+  PetscReal *buf;
+  PetscFunctionBeginUser;
+  o->checkpoint_used = PETSC_TRUE;
+  if (!o->has_checkpoint || (!force && it % o->checkpoint_every)) PetscFunctionReturn(0);
+  PetscCall(PetscMalloc1(nreal + 2, &buf));
+  PetscCall(Fingerprint(x0, buf));
+  PetscCall(PetscArraycpy(buf + 2, reals, nreal));
+  PetscCall(CSCheckpointWrite(mesh, o->checkpoint, it, nreal + 2, buf, x, edgeField));
+  PetscCall(PetscFree(buf));
+  PetscCall(PetscPrintf(mesh->comm, "wrote checkpoint %s at iteration %" PetscInt_FMT "\n", o->checkpoint, it));
+  PetscFunctionReturn(0);
+}
+
+/* Rank 0: the rows of the existing history file (same header) whose first column is below next. */
+static PetscErrorCode ReadHistoryRows(const char path[], const char header[], PetscInt ncol, PetscInt next, PetscInt *nrows, PetscReal **rows)
+{
+  FILE    *fp = fopen(path, "r");
+  char     line[4096];
+  PetscInt cap = 0;
+  PetscFunctionBeginUser;
+  *nrows = 0;
+  *rows  = NULL;
+  if (!fp) PetscFunctionReturn(0);
+  if (!fgets(line, sizeof(line), fp) || strncmp(line, header, strlen(header)) || (line[strlen(header)] != '\n' && line[strlen(header)] != 0)) {
+    fclose(fp); /* another task's history: start afresh */
+    PetscFunctionReturn(0);
+  }
+  while (fgets(line, sizeof(line), fp)) {
+    char     *p = line, *end;
+    PetscReal v[64];
+    PetscInt  n = 0;
+    for (; n < ncol && n < 64; n++, p = end + (*end == ',')) {
+      v[n] = (PetscReal)strtod(p, &end);
+      if (end == p) break;
+    }
+    if (n != ncol || v[0] >= (PetscReal)next) continue; /* not a row, or recomputed by the resumed run */
+    if (*nrows == cap) {
+      cap = 2 * cap + 64;
+      PetscCall(PetscRealloc(sizeof(PetscReal) * cap * ncol, rows));
+    }
+    PetscCall(PetscArraycpy(*rows + *nrows * ncol, v, ncol));
+    (*nrows)++;
+  }
+  fclose(fp);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSOutputHistoryCreate(CSOutput *o, MPI_Comm comm, const char header[], PetscInt next, CSHistory *h)
+{
+  PetscInt    ncol = 1, nrows = 0;
+  PetscReal  *rows = NULL;
+  PetscMPIInt rank;
+  PetscFunctionBeginUser;
+  *h = NULL;
+  if (!o->has_history) PetscFunctionReturn(0);
+  for (const char *c = header; *c; c++) ncol += (*c == ',');
+  PetscCheck(ncol <= 64, comm, PETSC_ERR_SUP, "history with %" PetscInt_FMT " columns: at most 64", ncol);
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (o->resumed && !rank) PetscCall(ReadHistoryRows(o->history, header, ncol, next, &nrows, &rows));
+  PetscCall(CSHistoryCreate(comm, o->history, header, h));
+  for (PetscInt i = 0; i < nrows; i++) PetscCall(CSHistoryAppend(*h, ncol, rows + i * ncol));
+  PetscCall(PetscFree(rows));
+  PetscFunctionReturn(0);
+}
