@@ -65,7 +65,7 @@ bench: all
 clean:
 	rm -rf build bin
 
--include $(LIB_OBJ:.o=.d) $(DRV_OBJ:.o=.d)
+-include $(LIB_OBJ:.o=.d) $(DRV_OBJ:.o=.d) $(TESTS:=.d) $(BENCHES:=.d)
 endif
 
 .PHONY: $(GOALS)

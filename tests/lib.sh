@@ -15,9 +15,10 @@ PY
 expect_fail() {
   local out rc=0
   out=$("$@" 2>&1) || rc=$?
-  echo "$out" | grep -v -e "^---" -e "mpirun\|Primary job\|non-zero exit\|Process name\|Exit code\|terminated\|^ *$"
+  echo "$out" | grep -v -e "^---" -e "mpirun\|Primary job\|non-zero exit\|Process name\|Exit code\|terminated\|^ *$"  || true
   if [ "$rc" = 0 ]; then echo "BAD: exit 0 for: $*"; return 1; fi
-  if [ -n "${EXPECT:-}" ] && ! echo "$out" | grep -qiE -- "$EXPECT"; then echo "BAD: message does not match /$EXPECT/"; return 1; fi
-  if echo "$out" | grep -qE "Segmentation|signal [0-9]+|Caught signal"; then echo "BAD: crashed"; return 1; fi
+  # here-strings, not pipes: with pipefail, grep -q closing the pipe early can fail the echo (SIGPIPE)
+  if [ -n "${EXPECT:-}" ] && ! grep -qiE -- "$EXPECT" <<< "$out"; then echo "BAD: message does not match /$EXPECT/"; return 1; fi
+  if grep -qE "Segmentation|signal [0-9]+|Caught signal" <<< "$out"; then echo "BAD: crashed"; return 1; fi
   echo "ok: failed cleanly (exit $rc)"
 }

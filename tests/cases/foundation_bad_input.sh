@@ -40,5 +40,5 @@ EXPECT="-mesh|-gen" expect_fail $MPIEXEC "$CS_BIN" -task info
 EXPECT="-reference" expect_fail $MPIEXEC "$CS_BIN" -gen icosphere -gen_level 1 -reference tests/data/tetra.obj
 # an accepted oddity: unreferenced vertices are dropped with a warning
 out=$($MPIEXEC "$CS_BIN" -mesh tests/data/unreferenced_vertex.obj 2>&1)
-echo "$out" | grep -qi "warning.*unreferenced" || { echo "$out"; echo "BAD: no warning for an unreferenced vertex"; exit 1; }
+grep -qi "warning.*unreferenced" <<< "$out" || { echo "$out"; echo "BAD: no warning for an unreferenced vertex"; exit 1; }
 echo "ok  unreferenced vertex dropped with a warning"

@@ -3,34 +3,21 @@
    gradient against finite differences (closed and free boundary), grad W = K x, and the fixed set.
    Prints a line per check; exit status = number of failures. Runs serial and under mpirun. */
 #include "cs_energy_bs.h"
-
-static int fails = 0;
-
-static PetscErrorCode Check(MPI_Comm comm, PetscBool ok, const char what[], PetscReal val, PetscReal tol)
-{
-  PetscFunctionBeginUser;
-  PetscCall(PetscPrintf(comm, "%s %-58s %.3e (tol %.1e)\n", ok ? "ok  " : "BAD ", what, (double)val, (double)tol));
-  if (!ok) fails++;
-  PetscFunctionReturn(0);
-}
+#include "cs_test.h"
 
 /* kind 0: icosphere (projected), 1: disk, 2: linearly subdivided icosahedron */
 static PetscErrorCode MakeMesh(MPI_Comm comm, int kind, PetscInt level, CSMesh *mesh)
 {
   CSMeshData  md;
-  CSTopology  topo;
   PetscMPIInt rank;
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   PetscCall(PetscMemzero(&md, sizeof(md)));
-  PetscCall(PetscMemzero(&topo, sizeof(topo)));
   if (!rank) {
     if (kind == 1) PetscCall(CSMeshDataDisk(1.0, level, &md));
     else PetscCall(CSMeshDataIcosphere(level, 1.0, kind == 0 ? PETSC_TRUE : PETSC_FALSE, &md));
-    PetscCall(CSMeshDataValidate(&md, &topo));
   }
-  PetscCall(CSMeshCreateFromData(comm, &md, &topo, mesh));
-  PetscCall(CSMeshDataDestroy(&md));
+  PetscCall(CSTestDistribute(comm, &md, 0, 0, mesh));
   PetscFunctionReturn(0);
 }
 
@@ -100,8 +87,8 @@ static PetscErrorCode CheckDiamond(MPI_Comm comm)
     }
   }
   PetscCall(PetscRandomDestroy(&r));
-  PetscCall(Check(comm, (PetscBool)(worst < 1e-6), "diamond: Eq. 1 gradient vs central differences (rel)", worst, 1e-6));
-  PetscCall(Check(comm, (PetscBool)(worstsym < 1e-12), "diamond: beta invariant under rotation/reflection", worstsym, 1e-12));
+  PetscCall(CSTestCheck(comm, (PetscBool)(worst < 1e-6), "diamond: Eq. 1 gradient vs central differences (rel)", worst, 1e-6));
+  PetscCall(CSTestCheck(comm, (PetscBool)(worstsym < 1e-12), "diamond: beta invariant under rotation/reflection", worstsym, 1e-12));
   PetscFunctionReturn(0);
 }
 
@@ -197,50 +184,50 @@ int main(int argc, char **argv)
   PetscCall(DMCreateGlobalVector(sph->dmV1, &Wv));
   PetscCall(CSEnergyWillmoreBSVertex(e, sph->x, Wv, &W));
   PetscCall(VecNorm(Wv, NORM_INFINITY, &mn));
-  PetscCall(Check(comm, (PetscBool)(PetscAbsReal(W) < 1e-10), "icosphere level 3: |W|", PetscAbsReal(W), 1e-10));
-  PetscCall(Check(comm, (PetscBool)(mn < 1e-10), "icosphere level 3: max |W_i|", mn, 1e-10));
+  PetscCall(CSTestCheck(comm, (PetscBool)(PetscAbsReal(W) < 1e-10), "icosphere level 3: |W|", PetscAbsReal(W), 1e-10));
+  PetscCall(CSTestCheck(comm, (PetscBool)(mn < 1e-10), "icosphere level 3: max |W_i|", mn, 1e-10));
   PetscCall(CSEnergyValue(e, sph->x, &W2));
-  PetscCall(Check(comm, (PetscBool)(PetscAbsReal(W - W2) < 1e-12), "value path = per-vertex path", PetscAbsReal(W - W2), 1e-12));
+  PetscCall(CSTestCheck(comm, (PetscBool)(PetscAbsReal(W - W2) < 1e-12), "value path = per-vertex path", PetscAbsReal(W - W2), 1e-12));
   {
     PetscReal s;
     PetscCall(VecSum(Wv, &s));
-    PetscCall(Check(comm, (PetscBool)(PetscAbsReal(s - W) < 1e-10), "sum of W_i = W (sphere)", PetscAbsReal(s - W), 1e-10));
+    PetscCall(CSTestCheck(comm, (PetscBool)(PetscAbsReal(s - W) < 1e-10), "sum of W_i = W (sphere)", PetscAbsReal(s - W), 1e-10));
   }
   /* noisy sphere: W > 0, every W_i >= 0, Moebius invariance, gradient, K x = g */
   PetscCall(AddNoise(sph, 0.02, 11));
   PetscCall(CSEnergyWillmoreBSVertex(e, sph->x, Wv, &W));
   PetscCall(MinOf(Wv, &mn));
-  PetscCall(Check(comm, (PetscBool)(W > 1e-3), "noisy icosphere: W > 0", W, 1e-3));
-  PetscCall(Check(comm, (PetscBool)(mn >= -1e-12), "noisy icosphere: min W_i >= 0", mn, -1e-12));
+  PetscCall(CSTestCheck(comm, (PetscBool)(W > 1e-3), "noisy icosphere: W > 0", W, 1e-3));
+  PetscCall(CSTestCheck(comm, (PetscBool)(mn >= -1e-12), "noisy icosphere: min W_i >= 0", mn, -1e-12));
   {
     PetscReal s;
     PetscCall(VecSum(Wv, &s));
-    PetscCall(Check(comm, (PetscBool)(PetscAbsReal(s - W) < 1e-10 * W), "sum of W_i = W (noisy)", PetscAbsReal(s - W), 1e-10 * W));
+    PetscCall(CSTestCheck(comm, (PetscBool)(PetscAbsReal(s - W) < 1e-10 * W), "sum of W_i = W (noisy)", PetscAbsReal(s - W), 1e-10 * W));
   }
   PetscCall(VecDuplicate(sph->x, &y));
   {
     const PetscReal c1[3] = {0.3, -0.2, 0.1}, c2[3] = {2.5, 0.4, -1.0};
     PetscCall(InvertScale(sph->x, c1, 1.3, 1.0, y));
     PetscCall(CSEnergyValue(e, y, &W2));
-    PetscCall(Check(comm, (PetscBool)(PetscAbsReal(W2 - W) < 1e-10 * W), "Moebius: inversion, center inside (rel)", PetscAbsReal(W2 - W) / W, 1e-10));
+    PetscCall(CSTestCheck(comm, (PetscBool)(PetscAbsReal(W2 - W) < 1e-10 * W), "Moebius: inversion, center inside (rel)", PetscAbsReal(W2 - W) / W, 1e-10));
     PetscCall(InvertScale(sph->x, c2, 0.7, 1.0, y));
     PetscCall(CSEnergyValue(e, y, &W2));
-    PetscCall(Check(comm, (PetscBool)(PetscAbsReal(W2 - W) < 1e-10 * W), "Moebius: inversion, center outside (rel)", PetscAbsReal(W2 - W) / W, 1e-10));
+    PetscCall(CSTestCheck(comm, (PetscBool)(PetscAbsReal(W2 - W) < 1e-10 * W), "Moebius: inversion, center outside (rel)", PetscAbsReal(W2 - W) / W, 1e-10));
     PetscCall(VecCopy(sph->x, y));
     PetscCall(VecScale(y, 37.5));
     PetscCall(CSEnergyValue(e, y, &W2));
-    PetscCall(Check(comm, (PetscBool)(PetscAbsReal(W2 - W) < 1e-10 * W), "Moebius: scaling by 37.5 (rel)", PetscAbsReal(W2 - W) / W, 1e-10));
+    PetscCall(CSTestCheck(comm, (PetscBool)(PetscAbsReal(W2 - W) < 1e-10 * W), "Moebius: scaling by 37.5 (rel)", PetscAbsReal(W2 - W) / W, 1e-10));
     PetscCall(InvertScale(sph->x, c2, 0.7, 1e-3, y));
     PetscCall(CSEnergyValue(e, y, &W2));
-    PetscCall(Check(comm, (PetscBool)(PetscAbsReal(W2 - W) < 1e-10 * W), "Moebius: inversion then scaling by 1e-3 (rel)", PetscAbsReal(W2 - W) / W, 1e-10));
+    PetscCall(CSTestCheck(comm, (PetscBool)(PetscAbsReal(W2 - W) < 1e-10 * W), "Moebius: inversion then scaling by 1e-3 (rel)", PetscAbsReal(W2 - W) / W, 1e-10));
   }
   PetscCall(CSEnergyCheckGradient(e, sph->x, 1e-6, 6, &rel));
-  PetscCall(Check(comm, (PetscBool)(rel < 1e-6), "noisy icosphere: gradient vs central FD (rel)", rel, 1e-6));
+  PetscCall(CSTestCheck(comm, (PetscBool)(rel < 1e-6), "noisy icosphere: gradient vs central FD (rel)", rel, 1e-6));
   {
     PetscReal asym;
     PetscCall(CheckKx(e, sph->x, &rel, &asym));
-    PetscCall(Check(comm, (PetscBool)(rel < 1e-12), "noisy icosphere: K x = grad W (rel)", rel, 1e-12));
-    PetscCall(Check(comm, (PetscBool)(asym < 1e-12), "noisy icosphere: K symmetric |K-K^T|/|K|", asym, 1e-12));
+    PetscCall(CSTestCheck(comm, (PetscBool)(rel < 1e-12), "noisy icosphere: K x = grad W (rel)", rel, 1e-12));
+    PetscCall(CSTestCheck(comm, (PetscBool)(asym < 1e-12), "noisy icosphere: K symmetric |K-K^T|/|K|", asym, 1e-12));
   }
   PetscCall(VecDestroy(&y));
   PetscCall(VecDestroy(&Wv));
@@ -257,7 +244,7 @@ int main(int argc, char **argv)
     PetscCall(CSEnergyGradient(e, ico->x, &W, g));
     PetscCall(VecNorm(g, NORM_2, &gn));
     PetscCall(PetscSNPrintf(buf, sizeof(buf), "flat icosahedron level 2: W > 0 (W=%.6g), |g| finite", (double)W));
-    PetscCall(Check(comm, (PetscBool)(W > 1 && !PetscIsInfOrNanReal(gn)), buf, gn, 0));
+    PetscCall(CSTestCheck(comm, (PetscBool)(W > 1 && !PetscIsInfOrNanReal(gn)), buf, gn, 0));
     PetscCall(VecDestroy(&g));
   }
   PetscCall(CSEnergyDestroy(&e));
@@ -280,14 +267,14 @@ int main(int argc, char **argv)
     PetscCall(AddNoise(disk, 0.01, 5));
     PetscCall(CSEnergyCreateWillmoreBS(disk, CS_BS_BOUNDARY_FREE, 1e-6, &e));
     PetscCall(CSEnergyValue(e, disk->x, &W));
-    PetscCall(Check(comm, (PetscBool)(W > 0), "noisy cap, free boundary: W > 0", W, 0));
+    PetscCall(CSTestCheck(comm, (PetscBool)(W > 0), "noisy cap, free boundary: W > 0", W, 0));
     PetscCall(CSEnergyCheckGradient(e, disk->x, 1e-6, 6, &rel));
-    PetscCall(Check(comm, (PetscBool)(rel < 1e-6), "noisy cap, free boundary: gradient vs FD (rel)", rel, 1e-6));
+    PetscCall(CSTestCheck(comm, (PetscBool)(rel < 1e-6), "noisy cap, free boundary: gradient vs FD (rel)", rel, 1e-6));
     {
       PetscReal asym;
       PetscCall(CheckKx(e, disk->x, &rel, &asym));
-      PetscCall(Check(comm, (PetscBool)(rel < 1e-12), "noisy cap, free boundary: K x = grad W (rel)", rel, 1e-12));
-      PetscCall(Check(comm, (PetscBool)(asym < 1e-12), "noisy cap, free boundary: K symmetric", asym, 1e-12));
+      PetscCall(CSTestCheck(comm, (PetscBool)(rel < 1e-12), "noisy cap, free boundary: K x = grad W (rel)", rel, 1e-12));
+      PetscCall(CSTestCheck(comm, (PetscBool)(asym < 1e-12), "noisy cap, free boundary: K symmetric", asym, 1e-12));
     }
     PetscCall(VecDuplicate(disk->x, &y));
     /* The vertex at infinity is fixed by similarities only: the free-boundary energy is invariant under
@@ -296,7 +283,7 @@ int main(int argc, char **argv)
     PetscCall(VecScale(y, 3.0));
     PetscCall(VecShift(y, 0.25));
     PetscCall(CSEnergyValue(e, y, &W2));
-    PetscCall(Check(comm, (PetscBool)(PetscAbsReal(W2 - W) < 1e-10 * W), "noisy cap, free: invariant under scaling+translation (rel)", PetscAbsReal(W2 - W) / W, 1e-10));
+    PetscCall(CSTestCheck(comm, (PetscBool)(PetscAbsReal(W2 - W) < 1e-10 * W), "noisy cap, free: invariant under scaling+translation (rel)", PetscAbsReal(W2 - W) / W, 1e-10));
     PetscCall(VecDestroy(&y));
     PetscCall(CSEnergyDestroy(&e));
     PetscCall(CSEnergyCreateWillmoreBS(disk, CS_BS_BOUNDARY_FIXED, 1e-6, &e));
@@ -328,12 +315,12 @@ int main(int argc, char **argv)
     PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &gmax, 1, MPIU_REAL, MPIU_MAX, comm));
     PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &gfree, 1, MPIU_REAL, MPIU_MAX, comm));
     PetscCall(PetscSNPrintf(buf, sizeof(buf), "disk fixed boundary (%" PetscInt_FMT " fixed of %" PetscInt_FMT "): grad = 0 on fixed", nfixed, disk->Nv));
-    PetscCall(Check(comm, (PetscBool)(gmax == 0 && gfree > 0 && nfixed > 0 && nfixed < disk->Nv), buf, gmax, 0));
+    PetscCall(CSTestCheck(comm, (PetscBool)(gmax == 0 && gfree > 0 && nfixed > 0 && nfixed < disk->Nv), buf, gmax, 0));
     PetscCall(VecDestroy(&g));
     PetscCall(CSEnergyDestroy(&e));
   }
   PetscCall(CSMeshDestroy(&disk));
-  PetscCall(PetscPrintf(comm, "%d failure(s)\n", fails));
+  PetscCall(PetscPrintf(comm, "%" PetscInt_FMT " failure(s)\n", cs_test_failures));
   PetscCall(PetscFinalize());
-  return fails;
+  return (int)cs_test_failures;
 }

@@ -7,43 +7,20 @@ static const char help[] = "Checks of the conformal-constraint operators of soli
 
 #include "cs_constraints.h"
 #include "cs_util.h"
-
-static PetscInt nfail = 0;
-
-static PetscErrorCode Check(MPI_Comm comm, PetscBool ok, const char what[], PetscReal value, PetscReal bound)
-{
-  PetscFunctionBeginUser;
-  PetscCall(PetscPrintf(comm, "%s %s: %.3e (bound %.1e)\n", ok ? "ok  " : "FAIL", what, (double)value, (double)bound));
-  if (!ok) nfail++;
-  PetscFunctionReturn(0);
-}
+#include "cs_test.h"
 
 static PetscErrorCode MakeMesh(MPI_Comm comm, PetscBool torus, PetscReal amp, CSMesh *mesh)
 {
   CSMeshData  md;
-  CSTopology  topo;
   PetscMPIInt rank;
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   PetscCall(PetscMemzero(&md, sizeof(md)));
-  PetscCall(PetscMemzero(&topo, sizeof(topo)));
   if (!rank) {
-    PetscRandom r;
     if (torus) PetscCall(CSMeshDataTorus(3, 1, 16, 8, &md));
     else PetscCall(CSMeshDataIcosphere(2, 1.0, PETSC_TRUE, &md));
-    PetscCall(PetscRandomCreate(PETSC_COMM_SELF, &r));
-    PetscCall(PetscRandomSetInterval(r, -amp, amp));
-    PetscCall(PetscRandomSetSeed(r, 11));
-    PetscCall(PetscRandomSeed(r));
-    for (PetscInt i = 0; i < 3 * md.nv; i++) {
-      PetscReal d;
-      PetscCall(PetscRandomGetValueReal(r, &d));
-      md.x[i] += d;
-    }
-    PetscCall(PetscRandomDestroy(&r));
-    PetscCall(CSMeshDataValidate(&md, &topo));
   }
-  PetscCall(CSMeshCreateFromData(comm, &md, &topo, mesh));
+  PetscCall(CSTestDistribute(comm, &md, amp, 11, mesh));
   PetscFunctionReturn(0);
 }
 
@@ -102,7 +79,7 @@ static PetscErrorCode RunChecks(MPI_Comm comm, PetscBool torus)
   PetscCall(CSConformalConstraintEvaluate(&cc, x, cp, PETSC_TRUE));
   PetscCall(VecNorm(cp, NORM_INFINITY, &err));
   PetscCall(PetscSNPrintf(what, sizeof(what), "%s: C lambda(x) - c0 = 0 at the target", label));
-  PetscCall(Check(comm, (PetscBool)(err < 1e-13), what, err, 1e-13));
+  PetscCall(CSTestCheck(comm, (PetscBool)(err < 1e-13), what, err, 1e-13));
   PetscCall(VecSetRandom(d, rnd));
   PetscCall(MatMult(cc.X, d, Xd));
   {
@@ -119,7 +96,7 @@ static PetscErrorCode RunChecks(MPI_Comm comm, PetscBool torus)
     PetscCall(VecNorm(fd, NORM_INFINITY, &err));
     PetscCall(VecNorm(Xd, NORM_INFINITY, &nrm));
     PetscCall(PetscSNPrintf(what, sizeof(what), "%s: X d vs central differences of C lambda (relative)", label));
-    PetscCall(Check(comm, (PetscBool)(err / nrm < 1e-6), what, err / nrm, 1e-6));
+    PetscCall(CSTestCheck(comm, (PetscBool)(err / nrm < 1e-6), what, err / nrm, 1e-6));
     PetscCall(MatDestroy(&Xs));
   }
   /* X f = 0, X t = 0, X (w x f) = 0 */
@@ -129,7 +106,7 @@ static PetscErrorCode RunChecks(MPI_Comm comm, PetscBool torus)
     PetscCall(MatMult(cc.X, v, Xd));
     PetscCall(VecNorm(Xd, NORM_INFINITY, &err));
     PetscCall(PetscSNPrintf(what, sizeof(what), "%s: X applied to a %s", label, nm[k]));
-    PetscCall(Check(comm, (PetscBool)(err < 1e-11), what, err, 1e-11));
+    PetscCall(CSTestCheck(comm, (PetscBool)(err < 1e-11), what, err, 1e-11));
   }
   /* C A u = 0 for random vertex scale factors u (Eq. 4: im A = ker C) */
   {
@@ -152,7 +129,7 @@ static PetscErrorCode RunChecks(MPI_Comm comm, PetscBool torus)
     PetscCall(MatMult(cc.C, Au, y));
     PetscCall(VecNorm(y, NORM_INFINITY, &err));
     PetscCall(PetscSNPrintf(what, sizeof(what), "%s: C A u = 0 for random u (scale invariance of cross ratios)", label));
-    PetscCall(Check(comm, (PetscBool)(err < 1e-13), what, err, 1e-13));
+    PetscCall(CSTestCheck(comm, (PetscBool)(err < 1e-13), what, err, 1e-13));
   }
   /* vertex-star sums of C lambda vanish for any lambda: rows of C (and X) are dependent */
   {
@@ -181,7 +158,7 @@ static PetscErrorCode RunChecks(MPI_Comm comm, PetscBool torus)
     PetscCall(VecNorm(s, NORM_INFINITY, &err));
     PetscCall(VecNorm(y, NORM_INFINITY, &nrm));
     PetscCall(PetscSNPrintf(what, sizeof(what), "%s: vertex-star sums of C lambda (random lambda, |C lambda| = %.2g)", label, (double)nrm));
-    PetscCall(Check(comm, (PetscBool)(err < 1e-12 && nrm > 0.1), what, err, 1e-12));
+    PetscCall(CSTestCheck(comm, (PetscBool)(err < 1e-12 && nrm > 0.1), what, err, 1e-12));
     PetscCall(VecDestroy(&s));
     PetscCall(DMRestoreLocalVector(m->dmV1, &sl));
     PetscCall(DMRestoreLocalVector(m->dmE1, &yl));
@@ -202,16 +179,16 @@ static PetscErrorCode RunChecks(MPI_Comm comm, PetscBool torus)
     PetscCall(VecNorm(h2, NORM_INFINITY, &err));
     PetscCall(VecNorm(h1, NORM_INFINITY, &nrm));
     PetscCall(PetscSNPrintf(what, sizeof(what), "%s: H^2 shell vs assembled *0 + L *0^-1 L (relative)", label));
-    PetscCall(Check(comm, (PetscBool)(err / nrm < 1e-12), what, err / nrm, 1e-12));
+    PetscCall(CSTestCheck(comm, (PetscBool)(err / nrm < 1e-12), what, err / nrm, 1e-12));
     PetscCall(VecDot(h1, d, &q));
     PetscCall(PetscSNPrintf(what, sizeof(what), "%s: <H d, d> > 0", label));
-    PetscCall(Check(comm, (PetscBool)(PetscRealPart(q) > 0), what, PetscRealPart(q), 0));
+    PetscCall(CSTestCheck(comm, (PetscBool)(PetscRealPart(q) > 0), what, PetscRealPart(q), 0));
     PetscCall(VecSet(d, 1.0));
     PetscCall(MatMult(H.H, d, h1));
     PetscCall(VecAXPY(h1, -1.0, H.m3));
     PetscCall(VecNorm(h1, NORM_INFINITY, &err));
     PetscCall(PetscSNPrintf(what, sizeof(what), "%s: H 1 = *0 1", label));
-    PetscCall(Check(comm, (PetscBool)(err < 1e-12), what, err, 1e-12));
+    PetscCall(CSTestCheck(comm, (PetscBool)(err < 1e-12), what, err, 1e-12));
     PetscCall(VecDestroy(&h1));
     PetscCall(VecDestroy(&h2));
     PetscCall(CSMetricDestroy(&H));
@@ -222,7 +199,7 @@ static PetscErrorCode RunChecks(MPI_Comm comm, PetscBool torus)
     PetscCall(CSOperatorQuadDiffMetric(m, x, 1e-2, iq, &ng));
     PetscCall(VecMin(iq, NULL, &mn));
     PetscCall(PetscSNPrintf(what, sizeof(what), "%s: min I_Q > 0 (%" PetscInt_FMT " guarded edges)", label, ng));
-    PetscCall(Check(comm, (PetscBool)(mn > 0), what, mn, 0));
+    PetscCall(CSTestCheck(comm, (PetscBool)(mn > 0), what, mn, 0));
   }
   /* fairing gradient (Eq. 21) against finite differences */
   {
@@ -234,7 +211,7 @@ static PetscErrorCode RunChecks(MPI_Comm comm, PetscBool torus)
     PetscCall(CSEnergyCreateFairing(m, x0, 0.1, &e));
     PetscCall(CSEnergyCheckGradient(e, x, 1e-6, 3, &err));
     PetscCall(PetscSNPrintf(what, sizeof(what), "%s: FD gradient of the fairing energy", label));
-    PetscCall(Check(comm, (PetscBool)(err < 1e-6), what, err, 1e-6));
+    PetscCall(CSTestCheck(comm, (PetscBool)(err < 1e-6), what, err, 1e-6));
     PetscCall(CSEnergyDestroy(&e));
     PetscCall(VecDestroy(&x0));
   }
@@ -285,7 +262,7 @@ static PetscErrorCode CheckNormals(MPI_Comm comm)
   PetscCall(VecDuplicate(m->x, &xp));
   PetscCall(CSNormalConstraintEvaluate(&nc, m->x, cp, PETSC_TRUE));
   PetscCall(VecNorm(cp, NORM_INFINITY, &err));
-  PetscCall(Check(comm, (PetscBool)(err < 1e-14), "cylinder: N(x) - N0 = 0 at the input", err, 1e-14));
+  PetscCall(CSTestCheck(comm, (PetscBool)(err < 1e-14), "cylinder: N(x) - N0 = 0 at the input", err, 1e-14));
   PetscCall(PetscRandomCreate(comm, &rnd));
   PetscCall(PetscRandomSetSeed(rnd, 5));
   PetscCall(PetscRandomSeed(rnd));
@@ -300,7 +277,7 @@ static PetscErrorCode CheckNormals(MPI_Comm comm)
   PetscCall(VecAXPY(cp, -1.0, Jd));
   PetscCall(VecNorm(cp, NORM_INFINITY, &err));
   PetscCall(VecNorm(Jd, NORM_INFINITY, &nrm));
-  PetscCall(Check(comm, (PetscBool)(err / nrm < 1e-6), "cylinder: DN d vs central differences of the boundary-face normals (relative)", err / nrm, 1e-6));
+  PetscCall(CSTestCheck(comm, (PetscBool)(err / nrm < 1e-6), "cylinder: DN d vs central differences of the boundary-face normals (relative)", err / nrm, 1e-6));
   PetscCall(PetscRandomDestroy(&rnd));
   PetscCall(VecDestroy(&cp));
   PetscCall(VecDestroy(&cm));
@@ -319,7 +296,7 @@ int main(int argc, char **argv)
   PetscCall(RunChecks(PETSC_COMM_WORLD, PETSC_FALSE));
   PetscCall(RunChecks(PETSC_COMM_WORLD, PETSC_TRUE));
   PetscCall(CheckNormals(PETSC_COMM_WORLD));
-  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%" PetscInt_FMT " failed\n", nfail));
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%" PetscInt_FMT " failed\n", cs_test_failures));
   PetscCall(PetscFinalize());
-  return (int)nfail;
+  return (int)cs_test_failures;
 }

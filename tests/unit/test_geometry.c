@@ -4,48 +4,18 @@ static const char help[] = "Checks of the foundation layer: energy gradients aga
 
 #include "cs_energy.h"
 #include "cs_util.h"
+#include "cs_test.h"
 #include <petscksp.h>
-
-static PetscInt nfail = 0;
-
-static PetscErrorCode Check(MPI_Comm comm, PetscBool ok, const char what[], PetscReal value, PetscReal bound)
-{
-  PetscFunctionBeginUser;
-  PetscCall(PetscPrintf(comm, "%s %s: %.3e (bound %.1e)\n", ok ? "ok  " : "FAIL", what, (double)value, (double)bound));
-  if (!ok) nfail++;
-  PetscFunctionReturn(0);
-}
-
-/* Random perturbation of the serial data on rank 0 (fixed seed), so every process count sees the same mesh. */
-static PetscErrorCode Perturb(CSMeshData *md, PetscReal amp)
-{
-  PetscRandom r;
-  PetscFunctionBeginUser;
-  if (!md->nv || amp <= 0) PetscFunctionReturn(0);
-  PetscCall(PetscRandomCreate(PETSC_COMM_SELF, &r));
-  PetscCall(PetscRandomSetInterval(r, -amp, amp));
-  PetscCall(PetscRandomSetSeed(r, 7));
-  PetscCall(PetscRandomSeed(r));
-  for (PetscInt i = 0; i < 3 * md->nv; i++) {
-    PetscReal d;
-    PetscCall(PetscRandomGetValueReal(r, &d));
-    md->x[i] += d;
-  }
-  PetscCall(PetscRandomDestroy(&r));
-  PetscFunctionReturn(0);
-}
 
 typedef enum { GEN_ICOSPHERE, GEN_TORUS, GEN_CYLINDER, GEN_DISK } Gen;
 
 static PetscErrorCode MakeMesh(MPI_Comm comm, Gen g, PetscInt a, PetscInt b, PetscReal R, PetscReal r, PetscReal amp, CSMesh *mesh)
 {
   CSMeshData  md;
-  CSTopology  topo;
   PetscMPIInt rank;
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   PetscCall(PetscMemzero(&md, sizeof(md)));
-  PetscCall(PetscMemzero(&topo, sizeof(topo)));
   if (!rank) {
     switch (g) {
     case GEN_ICOSPHERE:
@@ -61,10 +31,8 @@ static PetscErrorCode MakeMesh(MPI_Comm comm, Gen g, PetscInt a, PetscInt b, Pet
       PetscCall(CSMeshDataDisk(1.0, a, &md));
       break;
     }
-    PetscCall(Perturb(&md, amp));
-    PetscCall(CSMeshDataValidate(&md, &topo));
   }
-  PetscCall(CSMeshCreateFromData(comm, &md, &topo, mesh));
+  PetscCall(CSTestDistribute(comm, &md, amp, 7, mesh));
   PetscFunctionReturn(0);
 }
 
@@ -80,7 +48,7 @@ static PetscErrorCode CheckGradients(MPI_Comm comm, CSMesh mesh, const char labe
     PetscCall(create[k](mesh, &e));
     PetscCall(CSEnergyCheckGradient(e, mesh->x, 1e-6, 4, &err));
     PetscCall(PetscSNPrintf(what, sizeof(what), "FD gradient of %s on %s", e->name, label));
-    PetscCall(Check(comm, (PetscBool)(err <= 1e-6), what, err, 1e-6));
+    PetscCall(CSTestCheck(comm, (PetscBool)(err <= 1e-6), what, err, 1e-6));
     PetscCall(CSEnergyDestroy(&e));
   }
   PetscFunctionReturn(0);
@@ -115,7 +83,7 @@ static PetscErrorCode CheckInvariance(MPI_Comm comm, CSMesh mesh)
   PetscCall(VecRestoreArray(y, &ya));
   PetscCall(VecRestoreArrayRead(mesh->x, &xa));
   PetscCall(CSEnergyValue(e, y, &W1));
-  PetscCall(Check(comm, (PetscBool)(PetscAbsReal(W1 - W0) <= 1e-12 * W0), "W invariant under rotation+scale+translation (rel. diff)", PetscAbsReal(W1 - W0) / W0, 1e-12));
+  PetscCall(CSTestCheck(comm, (PetscBool)(PetscAbsReal(W1 - W0) <= 1e-12 * W0), "W invariant under rotation+scale+translation (rel. diff)", PetscAbsReal(W1 - W0) / W0, 1e-12));
   PetscCall(VecDestroy(&y));
   PetscCall(CSEnergyDestroy(&e));
   PetscFunctionReturn(0);
@@ -138,10 +106,10 @@ static PetscErrorCode CheckLaplacian(MPI_Comm comm, CSMesh mesh, const char labe
   PetscCall(MatMult(L, one, y));
   PetscCall(VecNorm(y, NORM_INFINITY, &nrm));
   PetscCall(PetscSNPrintf(what, sizeof(what), "|L 1|_inf on %s", label));
-  PetscCall(Check(comm, (PetscBool)(nrm <= 1e-12), what, nrm, 1e-12));
+  PetscCall(CSTestCheck(comm, (PetscBool)(nrm <= 1e-12), what, nrm, 1e-12));
   PetscCall(MatIsSymmetric(L, 1e-14, &sym));
   PetscCall(PetscSNPrintf(what, sizeof(what), "L symmetric on %s", label));
-  PetscCall(Check(comm, sym, what, sym ? 0 : 1, 0));
+  PetscCall(CSTestCheck(comm, sym, what, sym ? 0 : 1, 0));
   PetscCall(PetscRandomCreate(comm, &rnd));
   PetscCall(PetscRandomSetFromOptions(rnd));
   for (int k = 0; k < 10; k++) {
@@ -153,7 +121,7 @@ static PetscErrorCode CheckLaplacian(MPI_Comm comm, CSMesh mesh, const char labe
     minq = PetscMin(minq, PetscRealPart(q / uu));
   }
   PetscCall(PetscSNPrintf(what, sizeof(what), "min u^T L u / u^T u >= 0 (random u) on %s", label));
-  PetscCall(Check(comm, (PetscBool)(minq >= 0), what, minq, 0));
+  PetscCall(CSTestCheck(comm, (PetscBool)(minq >= 0), what, minq, 0));
   PetscCall(CSOperatorLaplacian3(mesh, mesh->x, MAT_INITIAL_MATRIX, &L3));
   PetscCall(MatCreateVecs(L3, &f3, &y3));
   PetscCall(VecCopy(mesh->x, f3));
@@ -162,7 +130,7 @@ static PetscErrorCode CheckLaplacian(MPI_Comm comm, CSMesh mesh, const char labe
   half *= 0.5;
   PetscCall(CSGeometryAreaVolume(mesh, mesh->x, &area, NULL));
   PetscCall(PetscSNPrintf(what, sizeof(what), "1/2 <Lf,f> = area on %s (rel. diff)", label));
-  PetscCall(Check(comm, (PetscBool)(PetscAbsReal(PetscRealPart(half) - area) <= 1e-12 * area), what, PetscAbsReal(PetscRealPart(half) - area) / area, 1e-12));
+  PetscCall(CSTestCheck(comm, (PetscBool)(PetscAbsReal(PetscRealPart(half) - area) <= 1e-12 * area), what, PetscAbsReal(PetscRealPart(half) - area) / area, 1e-12));
   PetscCall(PetscRandomDestroy(&rnd));
   PetscCall(VecDestroy(&one));
   PetscCall(VecDestroy(&y));
@@ -201,9 +169,9 @@ static PetscErrorCode CheckSequence(MPI_Comm comm, Gen g, const char label[], Pe
   }
   rich = W + (W - Wprev) / 3;
   PetscCall(PetscSNPrintf(what, sizeof(what), "%s: error falls monotonically at 2nd order (last ratio)", label));
-  PetscCall(Check(comm, (PetscBool)(mono && ratio > 3.5 && ratio < 4.5), what, ratio, 4));
+  PetscCall(CSTestCheck(comm, (PetscBool)(mono && ratio > 3.5 && ratio < 4.5), what, ratio, 4));
   PetscCall(PetscSNPrintf(what, sizeof(what), "%s: Richardson-extrapolated W matches exact (rel. error)", label));
-  PetscCall(Check(comm, (PetscBool)(PetscAbsReal(rich - exact) <= tol * exact), what, PetscAbsReal(rich - exact) / exact, tol));
+  PetscCall(CSTestCheck(comm, (PetscBool)(PetscAbsReal(rich - exact) <= tol * exact), what, PetscAbsReal(rich - exact) / exact, tol));
   PetscFunctionReturn(0);
 }
 
@@ -234,7 +202,7 @@ int main(int argc, char **argv)
 
   PetscCall(CheckSequence(comm, GEN_ICOSPHERE, "unit icosphere -> 4pi", 4 * PETSC_PI, 1e-5));
   PetscCall(CheckSequence(comm, GEN_TORUS, "torus R=sqrt2 r=1 -> 2pi^2", 2 * PETSC_PI * PETSC_PI, 1e-4));
-  PetscCall(PetscPrintf(comm, "%" PetscInt_FMT " failed\n", nfail));
+  PetscCall(PetscPrintf(comm, "%" PetscInt_FMT " failed\n", cs_test_failures));
   PetscCall(PetscFinalize());
-  return (int)nfail;
+  return (int)cs_test_failures;
 }

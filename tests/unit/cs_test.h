@@ -1,0 +1,48 @@
+/* Shared by the unit programs (header only: each program is one translation unit): one line per check with a
+   failure count for the exit status, and a distributed mesh made from data generated on rank 0. */
+#ifndef CS_TEST_H
+#define CS_TEST_H
+#include "cs_mesh.h"
+
+static PetscInt cs_test_failures = 0;
+
+static PetscErrorCode CSTestCheck(MPI_Comm comm, PetscBool ok, const char what[], PetscReal value, PetscReal bound)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscPrintf(comm, "%s %s: %.3e (bound %.1e)\n", ok ? "ok  " : "FAIL", what, (double)value, (double)bound));
+  if (!ok) cs_test_failures++;
+  PetscFunctionReturn(0);
+}
+
+/* md was generated on rank 0 (empty elsewhere). amp > 0 adds uniform noise in [-amp, amp] from a seeded
+   PetscRandom on rank 0, in file order, so every process count sees the same mesh. Then validate and
+   distribute; md is consumed. */
+static PetscErrorCode CSTestDistribute(MPI_Comm comm, CSMeshData *md, PetscReal amp, unsigned long seed, CSMesh *mesh)
+{
+  CSTopology  topo;
+  PetscMPIInt rank;
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCall(PetscMemzero(&topo, sizeof(topo)));
+  if (!rank) {
+    if (amp > 0) {
+      PetscRandom r;
+      PetscCall(PetscRandomCreate(PETSC_COMM_SELF, &r));
+      PetscCall(PetscRandomSetInterval(r, -amp, amp));
+      PetscCall(PetscRandomSetSeed(r, seed));
+      PetscCall(PetscRandomSeed(r));
+      for (PetscInt i = 0; i < 3 * md->nv; i++) {
+        PetscReal d;
+        PetscCall(PetscRandomGetValueReal(r, &d));
+        md->x[i] += d;
+      }
+      PetscCall(PetscRandomDestroy(&r));
+    }
+    PetscCall(CSMeshDataValidate(md, &topo));
+  }
+  PetscCall(CSMeshCreateFromData(comm, md, &topo, mesh));
+  PetscCall(CSMeshDataDestroy(md));
+  PetscFunctionReturn(0);
+}
+
+#endif
