@@ -35,9 +35,9 @@ static PetscErrorCode CheckUnusedOptions(MPI_Comm comm, PetscBool *bad)
     PetscInt n;
     char   **names, **values;
     PetscCall(PetscOptionsLeftGet(NULL, &n, &names, &values));
-    for (PetscInt i = 0; i < n; i++) PetscCall(PetscPrintf(comm, "Error: unknown or unused option -%s%s%s\n", names[i], values[i] ? " " : "", values[i] ? values[i] : ""));
+    for (PetscInt i = 0; i < n; i++) PetscCall(PetscFPrintf(comm, PETSC_STDERR, "Error: unknown or unused option -%s%s%s\n", names[i], values[i] ? " " : "", values[i] ? values[i] : ""));
     PetscCall(PetscOptionsLeftRestore(NULL, &n, &names, &values));
-    PetscCall(PetscPrintf(comm, "Error: %" PetscInt_FMT " option(s) were not used (misspelled, or not valid for this task; see -help)\n", N));
+    PetscCall(PetscFPrintf(comm, PETSC_STDERR, "Error: %" PetscInt_FMT " option(s) were not used (misspelled, or not valid for this task; see -help)\n", N));
   }
   PetscFunctionReturn(0);
 }
