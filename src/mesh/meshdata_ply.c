@@ -1,0 +1,414 @@
+/* PLY: ascii or binary_little_endian. The header describes every element; the vertex element's x y z and the
+   face element's vertex_indices (or vertex_index) list are kept, every other property and element is read
+   and skipped according to its declared type. */
+#include "meshdata_reader.h"
+#include <errno.h>
+#include <stdarg.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+typedef enum {
+  PLY_NONE,
+  PLY_INT8,
+  PLY_UINT8,
+  PLY_INT16,
+  PLY_UINT16,
+  PLY_INT32,
+  PLY_UINT32,
+  PLY_FLOAT32,
+  PLY_FLOAT64
+} PlyType;
+
+static const struct {
+  const char *name;
+  PlyType     type;
+} PlyTypeNames[] = {
+  {"char",    PLY_INT8   },
+  {"int8",    PLY_INT8   },
+  {"uchar",   PLY_UINT8  },
+  {"uint8",   PLY_UINT8  },
+  {"short",   PLY_INT16  },
+  {"int16",   PLY_INT16  },
+  {"ushort",  PLY_UINT16 },
+  {"uint16",  PLY_UINT16 },
+  {"int",     PLY_INT32  },
+  {"int32",   PLY_INT32  },
+  {"uint",    PLY_UINT32 },
+  {"uint32",  PLY_UINT32 },
+  {"float",   PLY_FLOAT32},
+  {"float32", PLY_FLOAT32},
+  {"double",  PLY_FLOAT64},
+  {"float64", PLY_FLOAT64}
+};
+static const int PlyTypeSize[] = {0, 1, 1, 2, 2, 4, 4, 4, 8};
+
+#define PLY_MAX_ELEMS 16
+#define PLY_MAX_PROPS 64
+
+typedef struct {
+  char    name[64];
+  PlyType type, count_type; /* count_type != PLY_NONE: a list */
+  int     role;             /* 0,1,2 = x,y,z of the vertex element; 3 = face vertex list; -1 skipped */
+} PlyProp;
+
+typedef struct {
+  char     name[64];
+  PetscInt count, nprops;
+  PlyProp  props[PLY_MAX_PROPS];
+} PlyElem;
+
+typedef struct {
+  PetscInt  nelem;
+  PlyElem   elem[PLY_MAX_ELEMS];
+  PetscBool binary, has_format;
+} PlyHeader;
+
+/* Where the data is read from: binary bytes or ascii tokens, and the current element for messages. */
+typedef struct {
+  Reader              *r;
+  PetscBool            binary;
+  const unsigned char *p, *end; /* binary */
+  Lines                L;       /* ascii: L.p is the cursor, L.line the current line */
+  const char          *ename;
+  PetscInt             k, count; /* current entry of the element and the number announced */
+} PlySource;
+
+static PlyType PlyTypeFromName(const char *s, int len)
+{
+  for (size_t i = 0; i < sizeof(PlyTypeNames) / sizeof(PlyTypeNames[0]); i++)
+    if ((int)strlen(PlyTypeNames[i].name) == len && !strncmp(PlyTypeNames[i].name, s, (size_t)len)) return PlyTypeNames[i].type;
+  return PLY_NONE;
+}
+
+static PetscBool PlyIsInteger(PlyType t)
+{
+  return (PetscBool)(t != PLY_NONE && t != PLY_FLOAT32 && t != PLY_FLOAT64);
+}
+
+/* "where" prefix of a data error: file:line for ascii, file: element k (name) for binary */
+static void PlyWhere(const PlySource *src, char *where, size_t len)
+{
+  if (src->binary) snprintf(where, len, "%s: element %" PetscInt_FMT " (%s) :", src->r->path, src->k, src->ename);
+  else snprintf(where, len, "%s:%" PetscInt_FMT ":", src->r->path, src->L.line);
+}
+
+static void PlyFail(PlySource *src, const char fmt[], ...)
+{
+  char    where[PETSC_MAX_PATH_LEN + 96], reason[512];
+  va_list ap;
+  va_start(ap, fmt);
+  vsnprintf(reason, sizeof(reason), fmt, ap);
+  va_end(ap);
+  PlyWhere(src, where, sizeof(where));
+  CSReaderFail(src->r, "%s %s", where, reason);
+}
+
+static uint64_t LoadLE(const unsigned char *p, int n)
+{
+  uint64_t u = 0;
+  for (int i = n - 1; i >= 0; i--) u = (u << 8) | p[i];
+  return u;
+}
+
+/* One value of type t as a double and (integer types) as a long long. Returns 0, or 1 after recording an
+   error (truncated data or a garbage token). */
+static int PlyRead(PlySource *src, PlyType t, double *dv, long long *iv)
+{
+  if (src->binary) {
+    int      n = PlyTypeSize[t];
+    uint64_t u;
+    if (src->end - src->p < n) {
+      PlyFail(src, "truncated: the data ends before the %" PetscInt_FMT " %s elements the header announces", src->count, src->ename);
+      return 1;
+    }
+    u = LoadLE(src->p, n);
+    src->p += n;
+    switch (t) {
+    case PLY_INT8: *iv = (int8_t)u; break;
+    case PLY_UINT8: *iv = (uint8_t)u; break;
+    case PLY_INT16: *iv = (int16_t)u; break;
+    case PLY_UINT16: *iv = (uint16_t)u; break;
+    case PLY_INT32: *iv = (int32_t)u; break;
+    case PLY_UINT32: *iv = (uint32_t)u; break;
+    case PLY_FLOAT32: {
+      uint32_t w = (uint32_t)u;
+      float    fl;
+      memcpy(&fl, &w, sizeof(fl));
+      *dv = fl;
+      return 0;
+    }
+    case PLY_FLOAT64: memcpy(dv, &u, sizeof(*dv)); return 0;
+    default: break;
+    }
+    *dv = (double)*iv;
+    return 0;
+  } else {
+    char *s = src->L.p, *e;
+    /* skip blanks and newlines, counting lines */
+    while (s < src->L.end && isspace((unsigned char)*s)) {
+      if (*s == '\n') src->L.line++;
+      s++;
+    }
+    if (s >= src->L.end || !*s) {
+      src->L.p = s;
+      PlyFail(src, "truncated: the data ends before the %" PetscInt_FMT " %s elements the header announces", src->count, src->ename);
+      return 1;
+    }
+    errno = 0;
+    if (PlyIsInteger(t)) {
+      *iv = strtoll(s, &e, 10);
+      *dv = (double)*iv;
+    } else {
+      *dv = strtod(s, &e);
+      *iv = 0;
+    }
+    if (e == s || (PlyIsInteger(t) && errno == ERANGE) || !CSReaderIsTokenEnd(*e)) {
+      char tok[40];
+      src->L.p = s;
+      PlyFail(src, "garbage '%s' where a number was expected", CSReaderTokenText(s, tok));
+      return 1;
+    }
+    src->L.p = e;
+    return 0;
+  }
+}
+
+static PetscBool BufferIsBlank(const Reader *r)
+{
+  for (size_t i = 0; i < r->len; i++)
+    if (!isspace((unsigned char)r->buf[i])) return PETSC_FALSE;
+  return PETSC_TRUE;
+}
+
+static PetscErrorCode PlyParseHeader(Reader *r, PlyHeader *h, Lines *L, char **data)
+{
+  char    *s;
+  PlyElem *cur = NULL;
+
+  PetscFunctionBeginUser;
+  *data = NULL;
+  s     = CSReaderNextLine(L);
+  if (!s || strncmp(CSReaderSkipBlank(s), "ply", 3) || !CSReaderIsTokenEnd(CSReaderSkipBlank(s)[3])) {
+    CSReaderFail(r, "%s:1: %s", r->path, BufferIsBlank(r) ? "empty file" : "not a PLY file (the first line is not 'ply')");
+    PetscFunctionReturn(0);
+  }
+  while ((s = CSReaderNextLine(L))) {
+    char *kw = CSReaderSkipBlank(s), *a, *b, *c;
+    int   kl = CSReaderTokenLen(kw), al, bl, cl;
+    char  where[PETSC_MAX_PATH_LEN + 32], tok[40];
+    snprintf(where, sizeof(where), "%s:%" PetscInt_FMT ":", r->path, L->line);
+    a  = CSReaderSkipBlank(CSReaderSkipToken(kw));
+    al = CSReaderTokenLen(a);
+    b  = CSReaderSkipBlank(CSReaderSkipToken(a));
+    bl = CSReaderTokenLen(b);
+    c  = CSReaderSkipBlank(CSReaderSkipToken(b));
+    cl = CSReaderTokenLen(c);
+    if (!kl || (kl == 7 && !strncmp(kw, "comment", 7)) || (kl == 8 && !strncmp(kw, "obj_info", 8))) continue;
+    if (kl == 10 && !strncmp(kw, "end_header", 10)) {
+      *data = L->p;
+      break;
+    }
+    if (kl == 6 && !strncmp(kw, "format", 6)) {
+      h->has_format = PETSC_TRUE;
+      if (al == 5 && !strncmp(a, "ascii", 5)) h->binary = PETSC_FALSE;
+      else if (al == 20 && !strncmp(a, "binary_little_endian", 20)) h->binary = PETSC_TRUE;
+      else {
+        CSReaderFail(r, "%s unsupported PLY format '%s' (only ascii and binary_little_endian are read)", where, CSReaderTokenText(a, tok));
+        PetscFunctionReturn(0);
+      }
+    } else if (kl == 7 && !strncmp(kw, "element", 7)) {
+      long long n;
+      char     *t = b;
+      if (h->nelem == PLY_MAX_ELEMS) {
+        CSReaderFail(r, "%s more than %d elements", where, PLY_MAX_ELEMS);
+        PetscFunctionReturn(0);
+      }
+      if (!al || CSReaderParseInt(&t, &n, NULL) || n < 0 || n > PETSC_MAX_INT / 3 || *CSReaderSkipBlank(t)) {
+        CSReaderFail(r, "%s malformed element line (expected 'element NAME COUNT')", where);
+        PetscFunctionReturn(0);
+      }
+      cur = &h->elem[h->nelem++];
+      snprintf(cur->name, sizeof(cur->name), "%.*s", al, a);
+      cur->count  = (PetscInt)n;
+      cur->nprops = 0;
+    } else if (kl == 8 && !strncmp(kw, "property", 8)) {
+      PlyProp *p;
+      if (!cur) {
+        CSReaderFail(r, "%s property before any element", where);
+        PetscFunctionReturn(0);
+      }
+      if (cur->nprops == PLY_MAX_PROPS) {
+        CSReaderFail(r, "%s more than %d properties in element %s", where, PLY_MAX_PROPS, cur->name);
+        PetscFunctionReturn(0);
+      }
+      p             = &cur->props[cur->nprops++];
+      p->count_type = PLY_NONE;
+      p->role       = -1;
+      if (al == 4 && !strncmp(a, "list", 4)) {
+        char *d  = CSReaderSkipBlank(CSReaderSkipToken(c));
+        int   dl = CSReaderTokenLen(d);
+        p->count_type = PlyTypeFromName(b, bl);
+        p->type       = PlyTypeFromName(c, cl);
+        if (!PlyIsInteger(p->count_type) || p->type == PLY_NONE || !dl) {
+          CSReaderFail(r, "%s malformed list property (expected 'property list COUNTTYPE ITEMTYPE NAME' with an integer COUNTTYPE)", where);
+          PetscFunctionReturn(0);
+        }
+        snprintf(p->name, sizeof(p->name), "%.*s", dl, d);
+      } else {
+        p->type = PlyTypeFromName(a, al);
+        if (p->type == PLY_NONE || !bl) {
+          CSReaderFail(r, "%s malformed property (unknown type '%s')", where, CSReaderTokenText(a, tok));
+          PetscFunctionReturn(0);
+        }
+        snprintf(p->name, sizeof(p->name), "%.*s", bl, b);
+      }
+    } else {
+      CSReaderFail(r, "%s unknown PLY header line '%s'", where, CSReaderTokenText(kw, tok));
+      PetscFunctionReturn(0);
+    }
+  }
+  if (!*data) CSReaderFail(r, "%s:%" PetscInt_FMT ": truncated header (no end_header)", r->path, L->line);
+  else if (!h->has_format) CSReaderFail(r, "%s:%" PetscInt_FMT ": no format line in the header", r->path, L->line);
+  PetscFunctionReturn(0);
+}
+
+/* Marks the properties kept (roles) and checks the header has what a triangle mesh needs. */
+static void PlyAssignRoles(Reader *r, PlyHeader *h, PetscInt line, PlyElem **ev, PlyElem **ef)
+{
+  *ev = *ef = NULL;
+  for (PetscInt e = 0; e < h->nelem; e++) {
+    PlyElem *el = &h->elem[e];
+    if (!*ev && !strcmp(el->name, "vertex")) {
+      int found[3] = {0, 0, 0};
+      *ev          = el;
+      for (PetscInt q = 0; q < el->nprops; q++) {
+        PlyProp *p = &el->props[q];
+        for (int d = 0; d < 3; d++)
+          if (p->count_type == PLY_NONE && !found[d] && p->name[0] == "xyz"[d] && !p->name[1]) {
+            p->role  = d;
+            found[d] = 1;
+          }
+      }
+      if (!found[0] || !found[1] || !found[2]) CSReaderFail(r, "%s:%" PetscInt_FMT ": the vertex element lacks a scalar x, y or z property", r->path, line);
+    } else if (!*ef && !strcmp(el->name, "face")) {
+      *ef = el;
+      for (PetscInt q = 0; q < el->nprops; q++) {
+        PlyProp *p = &el->props[q];
+        if (p->count_type != PLY_NONE && (!strcmp(p->name, "vertex_indices") || !strcmp(p->name, "vertex_index"))) {
+          if (!PlyIsInteger(p->type)) CSReaderFail(r, "%s:%" PetscInt_FMT ": the face list %s has a non-integer item type", r->path, line, p->name);
+          p->role = 3;
+          break;
+        }
+      }
+      if (!r->msg[0]) {
+        PetscBool ok = PETSC_FALSE;
+        for (PetscInt q = 0; q < el->nprops; q++) ok = (PetscBool)(ok || el->props[q].role == 3);
+        if (!ok) CSReaderFail(r, "%s:%" PetscInt_FMT ": the face element has no vertex_indices list", r->path, line);
+      }
+    }
+  }
+  if (!*ev) CSReaderFail(r, "%s:%" PetscInt_FMT ": no vertex element", r->path, line);
+  else if (!*ef) CSReaderFail(r, "%s:%" PetscInt_FMT ": no face element", r->path, line);
+  else if (!(*ef)->count) CSReaderFail(r, "%s:%" PetscInt_FMT ": no faces (the header says 0)", r->path, line);
+}
+
+PetscErrorCode CSMeshDataReadPLY(Reader *r)
+{
+  Lines     L = {r->buf, r->buf + r->len, 0};
+  PlyHeader *h;
+  PlyElem   *ev = NULL, *ef = NULL;
+  PlySource  src;
+  char      *data;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscCalloc1(1, &h));
+  PetscCall(PlyParseHeader(r, h, &L, &data));
+  if (!r->msg[0]) PlyAssignRoles(r, h, L.line, &ev, &ef);
+  if (r->msg[0]) {
+    PetscCall(PetscFree(h));
+    PetscFunctionReturn(0);
+  }
+  r->nv = ev->count;
+  r->nf = ef->count;
+  PetscCall(PetscMalloc1(3 * r->nv, &r->x));
+  PetscCall(PetscMalloc1(3 * r->nf, &r->f));
+  PetscCall(PetscMemzero(&src, sizeof(src)));
+  src.r      = r;
+  src.binary = h->binary;
+  src.p      = (const unsigned char *)data;
+  src.end    = (const unsigned char *)(r->buf + r->len);
+  src.L      = L;
+  src.L.line = L.line + 1; /* the data starts on the line after end_header */
+  for (PetscInt e = 0; e < h->nelem && !r->msg[0]; e++) {
+    PlyElem *el = &h->elem[e];
+    src.ename   = el->name;
+    src.count   = el->count;
+    for (PetscInt k = 0; k < el->count && !r->msg[0]; k++) {
+      src.k = k;
+      for (PetscInt q = 0; q < el->nprops && !r->msg[0]; q++) {
+        const PlyProp *p = &el->props[q];
+        double         dv;
+        long long      iv, n;
+        if (p->count_type == PLY_NONE) {
+          if (PlyRead(&src, p->type, &dv, &iv)) break;
+          if (el == ev && p->role >= 0) {
+            if (PetscIsInfOrNanReal((PetscReal)dv)) PlyFail(&src, "non-finite coordinate (%s)", PetscIsNanReal((PetscReal)dv) ? "NaN" : "Inf");
+            else r->x[3 * k + p->role] = (PetscReal)dv;
+          }
+          continue;
+        }
+        if (PlyRead(&src, p->count_type, &dv, &n)) break;
+        if (n < 0) {
+          PlyFail(&src, "negative length of the list %s", p->name);
+          break;
+        }
+        if (el == ef && p->role == 3 && n != 3) {
+          PlyFail(&src, "face with %lld vertices (only triangles are supported)", n);
+          break;
+        }
+        for (long long i = 0; i < n && !r->msg[0]; i++) {
+          if (PlyRead(&src, p->type, &dv, &iv)) break;
+          if (el == ef && p->role == 3) {
+            if (iv < 0 || iv >= r->nv) PlyFail(&src, "vertex index %lld out of range [0, %" PetscInt_FMT ")", iv, r->nv);
+            else r->f[3 * k + i] = (PetscInt)iv;
+          }
+        }
+      }
+    }
+  }
+  PetscCall(PetscFree(h));
+  PetscFunctionReturn(0);
+}
+
+static void StoreLE(unsigned char *p, uint64_t u, int n)
+{
+  for (int i = 0; i < n; i++, u >>= 8) p[i] = (unsigned char)(u & 0xff);
+}
+
+/* binary_little_endian, double x y z, list uchar int vertex_indices: exact and compact */
+PetscErrorCode CSMeshDataWritePLY(FILE *fp, const CSMeshData *md, PetscBool *ok)
+{
+  unsigned char *b, *p;
+  size_t         n = (size_t)md->nv * 24 + (size_t)md->nf * 13;
+
+  PetscFunctionBeginUser;
+  fprintf(fp, "ply\nformat binary_little_endian 1.0\ncomment %s (written by confsurf)\n", md->name);
+  fprintf(fp, "element vertex %" PetscInt_FMT "\nproperty double x\nproperty double y\nproperty double z\n", md->nv);
+  fprintf(fp, "element face %" PetscInt_FMT "\nproperty list uchar int vertex_indices\nend_header\n", md->nf);
+  PetscCall(PetscMalloc1(n, &b));
+  p = b;
+  for (PetscInt i = 0; i < 3 * md->nv; i++, p += 8) {
+    double   d = (double)md->x[i];
+    uint64_t u;
+    memcpy(&u, &d, sizeof(u));
+    StoreLE(p, u, 8);
+  }
+  for (PetscInt i = 0; i < md->nf; i++) {
+    *p++ = 3;
+    for (int k = 0; k < 3; k++, p += 4) StoreLE(p, (uint64_t)(uint32_t)(int32_t)md->f[3 * i + k], 4);
+  }
+  *ok = (PetscBool)(fwrite(b, 1, n, fp) == n);
+  PetscCall(PetscFree(b));
+  PetscFunctionReturn(0);
+}
