@@ -8,30 +8,17 @@ $MPIEXEC "$CS_BIN" -task flow -flow_type bs -mesh tests/data/bs_cap_flat.obj -bs
 $MPIEXEC "$CS_BIN" -task flow -flow_type bs -mesh tests/data/bs_cap_noisy.obj -bs_boundary free -bs_max_it 25 -summary "$TMP/free.json" -history "$TMP/free.csv" -o "$TMP/free.obj" | tail -2
 python3 - "$TMP" <<'PY'
 import json, sys, math
+sys.path.insert(0, "tests/data")
+from bs_make_meshes import read_obj as obj, boundary_and_ring  # the generator's own definitions
 d = sys.argv[1]
 bad = 0
 def chk(ok, msg):
     global bad
     print(("ok  " if ok else "BAD ") + msg)
     bad += 0 if ok else 1
-def obj(p):
-    V, F = [], []
-    for l in open(p):
-        t = l.split()
-        if t and t[0] == "v": V.append(tuple(float(x) for x in t[1:4]))
-        if t and t[0] == "f": F.append([int(x) - 1 for x in t[1:4]])
-    return V, F
 V0, F = obj("tests/data/bs_cap_flat.obj")
 V1, _ = obj(d + "/fix.obj")
-cnt = {}
-for f in F:
-    for a in range(3):
-        e = tuple(sorted((f[a], f[(a + 1) % 3])))
-        cnt[e] = cnt.get(e, 0) + 1
-bd = {i for e, c in cnt.items() if c == 1 for i in e}
-ring = set(bd)
-for e in cnt:
-    if e[0] in bd or e[1] in bd: ring.update(e)
+_, ring = boundary_and_ring(V0, F)
 s = json.load(open(d + "/fix.json"))
 chk(s["fixed_vertices"] == len(ring), "fixed: %d fixed vertices = boundary + one-ring %d" % (s["fixed_vertices"], len(ring)))
 chk(all(V0[i] == V1[i] for i in ring), "fixed: boundary and one-ring bit-identical")
