@@ -9,6 +9,7 @@
 #include <slepceps.h>
 #include <time.h>
 #include "cs_operators_dirac.h"
+#include "cs_cholmod.h"
 
 /* CPU seconds of this process, all threads (PetscGetCPUTime has a coarse resolution here) */
 static inline PetscLogDouble CSSpinCPUTime(void)
@@ -35,6 +36,10 @@ struct _p_CSSpin {
   PetscBool      generalized; /* Eq. 6 instead of Eq. 7 */
   PetscBool      shell;       /* matrix-free Dirac operator */
   PetscBool      inverse;     /* inverse iteration instead of EPS */
+  PetscBool      scalar_pc;   /* EPS with STPRECOND and the scalar Laplacian preconditioner (spin_precond.c) */
+  PetscBool      solver_set;  /* -spin_solver given */
+  PetscBool      complex_chol; /* factor K - sigma in complex form (serial, standard problem, no boundary map) */
+  char           complex_ordering[16]; /* its CHOLMOD ordering */
   PetscInt       inverse_its;
   PetscBool      keep_factor; /* inverse iteration: keep the numeric factorisation across solves */
   PetscBool      pin;         /* Poisson: pin one vertex instead of mean-zero */
@@ -54,6 +59,11 @@ struct _p_CSSpin {
   Mat       Kinv;    /* K - sigma I for the inverse iteration */
   KSP       kpois;
   Mat       L;
+  CSCholmod cf;      /* K - sigma in complex form (cholmod_factor.c), when complex_chol */
+  Mat       Ls;      /* L + c M (dmV1), the scalar preconditioner of spin_precond.c */
+  KSP       klap;    /* its solver, prefix spin_lap_ */
+  PetscInt  lap_its;
+  PetscReal lap_shift; /* c in units of 4 pi / area */
   Vec       start;   /* initial vector of the eigensolver (reduced space), kept between solves */
 
   char    *mumps_option[2]; /* option names set by default (cleared again at destroy) */
@@ -67,6 +77,10 @@ struct _p_CSSpin {
   PetscLogDouble c_setup, c_eigen, c_poisson;       /* CPU time of this process (rank 0): robust to a loaded machine */
 };
 
+/* Sets pc to the scalar preconditioner V^-1 ((L + c M)^-1 (x) I_4) V^-1 of K (spin_precond.c). */
+PETSC_EXTERN PetscErrorCode CSSpinSetUpScalarPC(CSSpin spin, Vec x, CSRhoLocation loc, Vec rho, PC pc);
+/* If pc is a MUMPS factorisation without a user ordering, choose AMD (cleared again at CSSpinDestroy). */
+PETSC_EXTERN PetscErrorCode CSSpinMumpsDefaultOrdering(CSSpin spin, PC pc);
 PETSC_EXTERN PetscErrorCode CSSpinCreate(CSMesh mesh, CSSpin *spin);
 PETSC_EXTERN PetscErrorCode CSSpinSetFromOptions(CSSpin spin);
 /* Boundary tangents (Sec. 5.7): Ttarget is a dmV3 global vector (read on boundary vertices), NULL for "keep". */

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs what confsurf needs on a fresh Debian machine (we run as root; sudo is used when we are not).
 set -euo pipefail
-pkgs="petsc-dev slepc-dev openmpi-bin libopenblas0 pkg-config python3 make bc valgrind"
+pkgs="petsc-dev slepc-dev libsuitesparse-dev openmpi-bin libopenblas0 pkg-config python3 make bc valgrind"  # libsuitesparse-dev: CHOLMOD headers (a dependency of petsc-dev anyway)
 missing=""
 for p in $pkgs; do dpkg -s "$p" >/dev/null 2>&1 || missing="$missing $p"; done
 if [ -z "$missing" ]; then exit 0; fi

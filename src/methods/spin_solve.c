@@ -23,6 +23,10 @@ PetscErrorCode CSSpinCreate(CSMesh mesh, CSSpin *spin)
   s->mesh        = mesh;
   s->inverse_its = 1;
   s->target      = 1e-2;
+  s->scalar_pc    = PETSC_FALSE;
+  s->lap_shift    = 1;
+  s->complex_chol = PETSC_TRUE;
+  PetscCall(PetscStrncpy(s->complex_ordering, "amd", sizeof(s->complex_ordering)));
   PetscCall(CSDiracCreateDM(mesh, NULL, &s->dm));
   *spin = s;
   PetscFunctionReturn(0);
@@ -30,9 +34,11 @@ PetscErrorCode CSSpinCreate(CSMesh mesh, CSSpin *spin)
 
 PetscErrorCode CSSpinSetFromOptions(CSSpin s)
 {
-  const char *problems[] = {"standard", "generalized"}, *types[] = {"aij", "shell"}, *solvers[] = {"eps", "inverse"};
+  const char *problems[] = {"standard", "generalized"}, *types[] = {"aij", "shell"}, *solvers[] = {"precond", "sinvert", "inverse"};
   const char *bnames[] = {"none", "keep", "file", "target"};
-  PetscInt    ip = s->generalized, it = s->shell, is = s->inverse, ib = (PetscInt)s->boundary;
+  PetscInt    ip = s->generalized, it = s->shell, is = s->inverse ? 2 : (s->scalar_pc ? 0 : 1), ib = (PetscInt)s->boundary;
+  PetscBool   solver_set;
+  PetscMPIInt size;
   /* crane2011 Sec. 4.3: with a boundary, (D - rho) lambda = 0 needs boundary conditions; with a free boundary
      the kernel of D holds every discrete conformal-affine map (rho = 0 is then not the identity). So an open
      mesh keeps its boundary tangents unless told otherwise. */
@@ -41,17 +47,30 @@ PetscErrorCode CSSpinSetFromOptions(CSSpin s)
   PetscOptionsBegin(s->mesh->comm, NULL, "Spin transformations (crane2011)", NULL);
   PetscCall(PetscOptionsEList("-spin_problem", "Eigenvalue problem: standard (Eq. 7) or generalized (Eq. 6)", NULL, problems, 2, problems[ip], &ip, NULL));
   PetscCall(PetscOptionsEList("-spin_dirac_type", "Dirac operator: assembled AIJ (block size 4) or matrix-free shell", NULL, types, 2, types[it], &it, NULL));
-  PetscCall(PetscOptionsEList("-spin_solver", "Smallest eigenpair by SLEPc EPS or by inverse iteration", NULL, solvers, 2, solvers[is], &is, NULL));
+  PetscCall(PetscOptionsEList("-spin_solver", "Smallest eigenpair: EPS preconditioned by the scalar Laplacian (LOBPCG), EPS with shift-and-invert (a 4V x 4V factorisation), or inverse iteration", NULL, solvers, 3, solvers[is], &is, &solver_set));
   PetscCall(PetscOptionsInt("-spin_inverse_its", "Inverse iteration steps", NULL, s->inverse_its, &s->inverse_its, NULL));
   PetscCall(PetscOptionsBool("-spin_inverse_keep_factor", "Inverse iteration: keep the first factorisation as preconditioner for later solves", NULL, s->keep_factor, &s->keep_factor, NULL));
   PetscCall(PetscOptionsReal("-spin_shift", "Shift toward 0 (negative target), in units of the unit sphere's spectrum", NULL, s->target, &s->target, &s->target_set));
+  PetscCall(PetscOptionsBool("-spin_complex_cholesky", "Serial shift-and-invert and inverse iteration: factor K - sigma as a complex Hermitian 2V x 2V matrix with CHOLMOD (half the flops of the real 4V x 4V one); 0 for the real factorisation and any -spin_st_pc_*/-spin_inverse_pc_* choice", NULL, s->complex_chol, &s->complex_chol, NULL));
+  PetscCall(PetscOptionsString("-spin_complex_cholesky_ordering", "Its CHOLMOD ordering: amd, metis, nesdis, auto", NULL, s->complex_ordering, s->complex_ordering, sizeof(s->complex_ordering), NULL));
+  PetscCall(PetscOptionsReal("-spin_lap_shift", "-spin_solver precond: the mass shift c of L + c M, in units of 4 pi / area", NULL, s->lap_shift, &s->lap_shift, NULL));
   PetscCall(PetscOptionsBool("-spin_poisson_pin", "Fix the translation by pinning the first vertex instead of matching the mean", NULL, s->pin, &s->pin, NULL));
   PetscCall(PetscOptionsEList("-spin_boundary", "Boundary condition (Sec. 5.7): none (free), keep tangents, tangents from -spin_boundary_file, or from -target_mesh", NULL, bnames, 4, bnames[ib], &ib, NULL));
   PetscOptionsEnd();
   s->generalized = (PetscBool)(ip == 1);
   s->shell       = (PetscBool)(it == 1);
-  s->inverse     = (PetscBool)(is == 1);
+  s->inverse     = (PetscBool)(is == 2);
   s->boundary    = (CSSpinBoundary)ib;
+  /* the scalar preconditioner (spin_precond.c) is made for the standard problem on the full space: elsewhere
+     the default stays shift-and-invert */
+  s->scalar_pc  = (PetscBool)(is == 0);
+  s->solver_set = solver_set;
+  /* the complex form needs quaternionic blocks (not the reduced boundary space, not Eq. 6's non-Hermitian
+     pencil), an assembled matrix and one rank */
+  PetscCallMPI(MPI_Comm_size(s->mesh->comm, &size));
+  if (size > 1 || s->generalized || s->boundary != CS_SPIN_BOUNDARY_NONE || s->shell || s->scalar_pc) s->complex_chol = PETSC_FALSE;
+  PetscCheck(!(s->scalar_pc && s->generalized), s->mesh->comm, PETSC_ERR_SUP, "-spin_solver precond supports only -spin_problem standard");
+  PetscCheck(!(s->scalar_pc && s->boundary != CS_SPIN_BOUNDARY_NONE), s->mesh->comm, PETSC_ERR_SUP, "-spin_solver precond does not support -spin_boundary (use -spin_solver sinvert)");
   PetscCheck(s->inverse_its >= 1, s->mesh->comm, PETSC_ERR_ARG_OUTOFRANGE, "-spin_inverse_its %" PetscInt_FMT ": need at least 1", s->inverse_its);
   PetscCheck(s->target > 0, s->mesh->comm, PETSC_ERR_ARG_OUTOFRANGE, "-spin_shift %g: must be positive (the target is -shift)", (double)s->target);
   PetscCheck(!(s->shell && s->generalized), s->mesh->comm, PETSC_ERR_SUP, "-spin_dirac_type shell supports only -spin_problem standard");
@@ -290,7 +309,7 @@ static PetscErrorCode SetDefaultFactor(CSSpin s, PC pc, PetscBool lu)
 }
 
 /* After SetFromOptions: if the factorisation is MUMPS and the user did not choose an ordering, use AMD. */
-static PetscErrorCode MumpsDefaultOrdering(CSSpin s, PC pc)
+PetscErrorCode CSSpinMumpsDefaultOrdering(CSSpin s, PC pc)
 {
   PetscBool   isfactor, has;
   MatSolverType st = NULL;
@@ -313,7 +332,30 @@ static PetscErrorCode MumpsDefaultOrdering(CSSpin s, PC pc)
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode SetupEPS(CSSpin s, PetscInt nev)
+static PetscErrorCode ComplexFactorApply(PC pc, Vec x, Vec y)
+{
+  CSSpin s;
+  PetscFunctionBeginUser;
+  PetscCall(PCShellGetContext(pc, &s));
+  PetscCall(CSCholmodSolve(s->cf, x, y));
+  PetscFunctionReturn(0);
+}
+
+/* pc applies (K - sigma)^{-1} through the complex factorisation (factored in SetupEPS / InverseIteration) */
+static PetscErrorCode ComplexFactorPC(CSSpin s, PC pc)
+{
+  PetscFunctionBeginUser;
+  if (!s->cf) PetscCall(CSCholmodCreate(s->complex_ordering, &s->cf));
+  PetscCall(PCSetType(pc, PCSHELL));
+  PetscCall(PCShellSetContext(pc, s));
+  PetscCall(PCShellSetApply(pc, ComplexFactorApply));
+  PetscCall(PCShellSetName(pc, "confsurf: CHOLMOD Cholesky of K - sigma in complex form"));
+  PetscFunctionReturn(0);
+}
+
+/* precond: Generalised Davidson (any -spin_eps_type that works with STPRECOND, e.g. lobpcg) with the scalar preconditioner of
+   spin_precond.c; else Krylov-Schur with shift-and-invert toward sigma and a factorisation of K - sigma. */
+static PetscErrorCode SetupEPS(CSSpin s, Vec x, CSRhoLocation loc, Vec rho, PetscInt nev, PetscBool precond)
 {
   ST        st;
   KSP       ksp;
@@ -325,32 +367,58 @@ static PetscErrorCode SetupEPS(CSSpin s, PetscInt nev)
     PetscCall(EPSCreate(s->mesh->comm, &s->eps));
     PetscCall(EPSSetOptionsPrefix(s->eps, "spin_"));
     PetscCall(EPSGetST(s->eps, &st));
-    PetscCall(STSetType(st, STSINVERT));
     PetscCall(STGetKSP(st, &ksp));
     PetscCall(KSPGetPC(ksp, &pc));
-    if (s->shell) {
-      /* the shell cannot be factored: Krylov inner solve preconditioned by the factored assembled copy */
-      PetscCall(STSetMatMode(st, ST_MATMODE_SHELL));
-      PetscCall(KSPSetType(ksp, KSPGMRES));
-      PetscCall(KSPSetTolerances(ksp, 1e-12, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
-    } else PetscCall(KSPSetType(ksp, KSPPREONLY));
-    PetscCall(SetDefaultFactor(s, pc, s->generalized));
+    if (precond) {
+      /* Generalised Davidson: 46 iterations at 4k vertices against LOBPCG's 61 with block size 4 or 54 with
+         block size 1, and the cheapest per iteration (runs/bench_spin.sh) */
+      PetscCall(EPSSetType(s->eps, EPSGD));
+      PetscCall(STSetType(st, STPRECOND));
+      PetscCall(KSPSetType(ksp, KSPPREONLY));
+      PetscCall(EPSSetWhichEigenpairs(s->eps, EPS_SMALLEST_REAL));
+    } else {
+      PetscCall(STSetType(st, STSINVERT));
+      if (s->complex_chol) {
+        /* the ST's solve is ours (cholmod_factor.c): no shifted copy of K is formed */
+        PetscCall(STSetMatMode(st, ST_MATMODE_SHELL));
+        PetscCall(KSPSetType(ksp, KSPPREONLY));
+        PetscCall(ComplexFactorPC(s, pc));
+      } else if (s->shell) {
+        /* the shell cannot be factored: Krylov inner solve preconditioned by the factored assembled copy */
+        PetscCall(STSetMatMode(st, ST_MATMODE_SHELL));
+        PetscCall(KSPSetType(ksp, KSPGMRES));
+        PetscCall(KSPSetTolerances(ksp, 1e-12, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
+      } else PetscCall(KSPSetType(ksp, KSPPREONLY));
+      if (!s->complex_chol) PetscCall(SetDefaultFactor(s, pc, s->generalized));
+      PetscCall(EPSSetWhichEigenpairs(s->eps, EPS_TARGET_MAGNITUDE));
+      PetscCall(EPSSetTarget(s->eps, sigma));
+      /* nev = 1: 6 basis vectors (6 shifted solves, converged without restart on the meshes of
+         runs/bench_spin.sh; 8 solves with 8, SLEPc's default is 16) */
+      PetscCall(EPSSetDimensions(s->eps, nev, nev == 1 ? 6 : PETSC_DEFAULT, PETSC_DEFAULT));
+    }
+    if (precond) PetscCall(EPSSetDimensions(s->eps, nev, PETSC_DEFAULT, PETSC_DEFAULT));
     PetscCall(EPSSetProblemType(s->eps, s->generalized ? EPS_GNHEP : EPS_HEP));
-    PetscCall(EPSSetWhichEigenpairs(s->eps, EPS_TARGET_MAGNITUDE));
-    PetscCall(EPSSetTarget(s->eps, sigma));
-    /* nev = 1: 8 basis vectors (8 shifted solves, one restart at most on the bunny) instead of SLEPc's 16;
-       measured in runs/bench_spin.sh */
-    PetscCall(EPSSetDimensions(s->eps, nev, nev == 1 ? 8 : PETSC_DEFAULT, PETSC_DEFAULT));
     PetscCall(EPSSetTolerances(s->eps, 1e-10, PETSC_DEFAULT));
     PetscCall(EPSSetOperators(s->eps, s->K, s->generalized ? s->Y : NULL));
+    if (precond) PetscCall(CSSpinSetUpScalarPC(s, x, loc, rho, pc));
     PetscCall(EPSSetFromOptions(s->eps));
     PetscCall(KSPGetPC(ksp, &pc));
-    PetscCall(MumpsDefaultOrdering(s, pc));
+    PetscCall(CSSpinMumpsDefaultOrdering(s, pc));
   } else {
     PetscCall(EPSSetOperators(s->eps, s->K, s->generalized ? s->Y : NULL));
     PetscCall(EPSGetST(s->eps, &st));
+    if (precond) {
+      PetscCall(STGetKSP(st, &ksp));
+      PetscCall(KSPGetPC(ksp, &pc));
+      PetscCall(CSSpinSetUpScalarPC(s, x, loc, rho, pc));
+    }
   }
-  if (s->shell) {
+  if (s->complex_chol && !precond) {
+    PetscReal tgt;
+    PetscCall(EPSGetTarget(s->eps, &tgt));
+    PetscCall(CSCholmodSetUpQuaternion(s->cf, s->K, tgt));
+  }
+  if (s->shell && !precond) {
     Mat       Pm;
     PetscReal tgt;
     PetscCall(EPSGetTarget(s->eps, &tgt));
@@ -395,11 +463,14 @@ static PetscErrorCode InverseIteration(CSSpin s, Vec xr, PetscReal *kr)
     PetscCall(KSPSetType(s->kinv, s->keep_factor ? KSPGMRES : KSPPREONLY));
     PetscCall(KSPSetTolerances(s->kinv, 1e-12, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
     PetscCall(KSPGetPC(s->kinv, &pc));
-    PetscCall(SetDefaultFactor(s, pc, PETSC_FALSE));
+    if (s->complex_chol) PetscCall(ComplexFactorPC(s, pc));
+    else PetscCall(SetDefaultFactor(s, pc, PETSC_FALSE));
     PetscCall(KSPSetFromOptions(s->kinv));
-    PetscCall(MumpsDefaultOrdering(s, pc));
+    PetscCall(CSSpinMumpsDefaultOrdering(s, pc));
     PetscCall(MatDuplicate(s->K, MAT_COPY_VALUES, &s->Kinv));
+    if (s->complex_chol) PetscCall(CSCholmodSetUpQuaternion(s->cf, s->K, sigma));
   } else {
+    if (s->complex_chol && !s->keep_factor) PetscCall(CSCholmodSetUpQuaternion(s->cf, s->K, sigma));
     PetscCall(MatCopy(s->K, s->Kinv, SAME_NONZERO_PATTERN));
     /* crane2013 Sec. 6.4.2: consecutive problems are close, so the old factorisation preconditions the new one */
     if (s->keep_factor) PetscCall(KSPSetReusePreconditioner(s->kinv, PETSC_TRUE));
@@ -495,8 +566,9 @@ PetscErrorCode CSSpinSolveEigen(CSSpin s, Vec x, CSRhoLocation loc, Vec rho, Vec
     PetscInt    nconv;
     ST          st;
     KSP         ksp;
-    PetscCall(SetupEPS(s, 1));
+    PetscCall(SetupEPS(s, x, loc, rho, 1, s->scalar_pc));
     PetscCall(EPSSetInitialSpace(s->eps, 1, &s->start));
+    s->lap_its = 0;
     PetscCall(EPSSolve(s->eps));
     PetscCall(CheckEPSConverged(s, 1, &nconv));
     PetscCall(EPSGetEigenpair(s->eps, 0, &kr, &ki, xr, NULL));
@@ -504,6 +576,7 @@ PetscErrorCode CSSpinSolveEigen(CSSpin s, Vec x, CSRhoLocation loc, Vec rho, Vec
     PetscCall(EPSGetST(s->eps, &st));
     PetscCall(STGetKSP(st, &ksp));
     PetscCall(KSPGetTotalIterations(ksp, &s->inner_its));
+    if (s->scalar_pc) s->inner_its = s->lap_its; /* scalar preconditioner solves (4 per application) */
   }
   PetscCall(Residual(s, xr, kr, &s->residual));
   PetscCall(VecCopy(xr, s->start)); /* the next solve (a flow step) starts here */
@@ -537,7 +610,7 @@ PetscErrorCode CSSpinSpectrum(CSSpin s, Vec x, CSRhoLocation loc, Vec rho, Petsc
   PetscCall(BuildOperators(s, x, loc, rho));
   /* Krylov methods can miss copies of a multiple eigenvalue at the end of the wanted range (every eigenvalue
      is at least 4-fold here): ask for a margin more and keep the nev smallest */
-  PetscCall(SetupEPS(s, PetscMin(nev + PetscMax(8, nev / 4), 4 * s->mesh->Nv - 1)));
+  PetscCall(SetupEPS(s, x, loc, rho, PetscMin(nev + PetscMax(8, nev / 4), 4 * s->mesh->Nv - 1), (PetscBool)(s->scalar_pc && s->solver_set)));
   PetscCall(EPSSolve(s->eps));
   PetscCall(CheckEPSConverged(s, nev, &nconv));
   PetscCall(PetscMalloc1(nconv, &all));
@@ -619,6 +692,9 @@ PetscErrorCode CSSpinDestroy(CSSpin *spin)
   }
   PetscCall(EPSDestroy(&s->eps));
   PetscCall(KSPDestroy(&s->kinv));
+  PetscCall(KSPDestroy(&s->klap));
+  PetscCall(CSCholmodDestroy(&s->cf));
+  PetscCall(MatDestroy(&s->Ls));
   PetscCall(KSPDestroy(&s->kpois));
   PetscCall(MatDestroy(&s->Kinv));
   PetscCall(MatDestroy(&s->L));

@@ -3,7 +3,7 @@
    Y = B^T M_F A, constants in the kernel of X for rho = 0. Exit status = number of failures.
    Run: build/tests/test_spin_dirac [-gen_level 2]   (also under mpirun -n 2) */
 #include <slepcsys.h>
-#include "cs_operators_dirac.h"
+#include "cs_methods_spin.h"
 
 static PetscInt nfail = 0;
 
@@ -201,6 +201,24 @@ static PetscErrorCode CheckOperators(CSMesh mesh, Vec x, CSRhoLocation loc, Vec 
   PetscCall(RelDiff(y1, y3, &err));
   PetscCall(PetscSNPrintf(what, sizeof(what), "%s: Y u == B^T M_F A u", label));
   PetscCall(Check(mesh->comm, what, err, 1e-12));
+  /* the complex form of cholmod_factor.c (serial): (X - sigma) y = u to round-off, sigma < 0 */
+  {
+    PetscMPIInt size;
+    PetscCallMPI(MPI_Comm_size(mesh->comm, &size));
+    if (size == 1) {
+      CSCholmod           cf;
+      PetscReal           sigma = -0.5;
+      PetscCall(CSCholmodCreate("amd", &cf));
+      PetscCall(CSCholmodSetUpQuaternion(cf, X, sigma));
+      PetscCall(CSCholmodSolve(cf, u, y1));
+      PetscCall(MatMult(X, y1, y2));
+      PetscCall(VecAXPY(y2, -sigma, y1));
+      PetscCall(RelDiff(u, y2, &err));
+      PetscCall(PetscSNPrintf(what, sizeof(what), "%s: complex-form Cholesky solve, (X - sigma) y == u", label));
+      PetscCall(Check(mesh->comm, what, err, 1e-12));
+      PetscCall(CSCholmodDestroy(&cf));
+    }
+  }
   /* kernel: for rho = 0 every constant quaternion field is in ker D and ker X */
   if (!rho) {
     PetscScalar *ua;
