@@ -41,7 +41,7 @@ typedef struct {
   PetscInt  npreset;
 } CSSaddle;
 
-PETSC_EXTERN PetscErrorCode CSSaddleCreate(CSMesh mesh, PetscBool edges, PetscInt k, CSSaddle *s);
+PETSC_EXTERN PetscErrorCode CSSaddleCreate(CSMesh mesh, PetscBool edges, PetscBool h2, PetscInt k, CSSaddle *s);
 /* H (3V x 3V) scaled by 1/t; iq, tmu, X ignored without the edge block; rows/g only if k > 0. */
 PETSC_EXTERN PetscErrorCode CSSaddleSetOperators(CSSaddle *s, Mat H, PetscReal t, Vec iq, PetscReal tmu, Mat X, Vec rows[], const PetscReal g[]);
 /* rE/zE may be NULL without the edge block; rX/zX without k. *its = KSP iterations (sum over the k+1

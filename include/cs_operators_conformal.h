@@ -46,4 +46,13 @@ PETSC_EXTERN PetscErrorCode CSMetricCreate(CSMesh mesh, PetscBool h2, CSMetric *
 PETSC_EXTERN PetscErrorCode CSMetricUpdate(CSMetric *m, Vec x);
 PETSC_EXTERN PetscErrorCode CSMetricDestroy(CSMetric *m);
 
+/* PC type "csh2" (h2_pc.c): P^{-1} = (s *0 + L)^{-1} *0 (s *0 + L)^{-1}, s = sqrt(mass_weight), a spectrally
+   equivalent (condition <= 2) preconditioner of the H^2 metric made of shifted-Laplacian solves. Register once
+   (CSMetricCreate does); compose the metric on an operator op = scale * I_H2 (identity-like rows `fixed`, or
+   NULL) so that -<prefix>pc_type csh2 can find it. */
+PETSC_EXTERN PetscErrorCode CSH2PCRegister(void);
+PETSC_EXTERN PetscErrorCode CSH2PCCompose(Mat op, CSMetric *metric, PetscReal scale, IS fixed);
+/* the same metric as composed on src, for op = scale * src (no-op if src has none) */
+PETSC_EXTERN PetscErrorCode CSH2PCComposeFrom(Mat src, Mat op, PetscReal scale, IS fixed);
+
 #endif

@@ -293,7 +293,7 @@ static PetscErrorCode FlowSetUp(MPI_Comm comm, Flow *F, CSFlowKind kind, CSOutpu
     PetscCall(CSEnergyValue(F->energy, F->x0, &E0));
     F->rho *= PetscMax(PetscAbsReal(E0), PETSC_SMALL);
   }
-  PetscCall(CSSaddleCreate(m, conformal, F->k, &F->saddle));
+  PetscCall(CSSaddleCreate(m, conformal, h2, F->k, &F->saddle));
   F->saddle.fixed = F->fixedIS;
   PetscFunctionReturn(0);
 }

@@ -17,6 +17,7 @@ PetscErrorCode CSMetricCreate(CSMesh mesh, PetscBool h2, CSMetric *m)
 {
   PetscInt n, N;
   PetscFunctionBeginUser;
+  PetscCall(CSH2PCRegister());
   PetscCall(PetscMemzero(m, sizeof(*m)));
   m->mesh = mesh;
   m->h2   = h2;
@@ -69,6 +70,7 @@ PetscErrorCode CSMetricUpdate(CSMetric *m, Vec x)
     PetscCall(MatDiagonalSet(m->H, m->m3, ADD_VALUES));
     PetscCall(VecScale(m->m3, 1.0 / m->mass_weight));
     PetscCall(MatSetOption(m->H, MAT_SYMMETRIC, PETSC_TRUE));
+    if (first) PetscCall(CSH2PCCompose(m->H, m, 1.0, NULL));
   } else {
     if (!m->H) {
       PetscInt N;
