@@ -28,6 +28,8 @@ typedef struct {
   PetscBool edges;      /* conformal block present */
   PetscBool monolithic; /* -flow_saddle_mat aij */
   Mat       A00, Xt, H11, K, Kaij;
+  Mat       XtD, XtDX, S; /* the exact Schur complement S = H/t + X^T (t_mu I_Q^{-1}) X, assembled with a fixed
+                             pattern (for -flow_pc_fieldsplit_schur_precondition user) */
   IS        is[2];
   Vec       b, z;
   IS        fixed;      /* Dirichlet dofs of H (identity rows/cols), may be NULL */
