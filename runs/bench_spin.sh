@@ -7,6 +7,7 @@
 #   default   Krylov-Schur + shift-and-invert; serially the factorisation of K - sigma in complex form with CHOLMOD
 #             (src/operators/cholmod_factor.c) and a CHOLMOD Poisson solve; in parallel MUMPS-AMD on the real 4V x 4V
 #             matrix and CG + GAMG for the Poisson problem
+#   default_2threads  the same serial run with 2 BLAS/OpenMP threads (CHOLMOD's supernodal BLAS; one process)
 #   real4V    the same with the real 4V x 4V CHOLMOD factorisation (-spin_complex_cholesky 0; the previous default)
 #   inverse1  one step of inverse iteration with the same factorisation (-spin_solver inverse)
 #   precond   iterative: LOBPCG preconditioned by the scalar Laplacian L + cM per quaternion component
@@ -29,6 +30,7 @@ declare -A MESH=(
 )
 declare -A CONF=(
   [default]=""
+  [default_2threads]=""
   [real4V]="-spin_complex_cholesky 0"
   [inverse1]="-spin_solver inverse"
   [precond]="-spin_solver precond"
@@ -44,12 +46,14 @@ declare -A CONF=(
 } > $out
 for m in torus4k torus14k bunny75kF; do
   for np in 1 2; do
-    for c in default real4V inverse1 precond; do
+    for c in default default_2threads real4V inverse1 precond; do
       rm -f runs/results/spin_bench_tmp.txt
       opts=${CONF[$c]}
       if [ $c = real4V ] && [ $np = 2 ]; then continue; fi   # the complex form is serial: same as default
+      if [ $c = default_2threads ] && [ $np = 2 ]; then continue; fi
+      th=1; [ $c = default_2threads ] && th=2
       for r in $(seq $reps); do
-        if timeout 300 mpirun -n $np bin/confsurf -task spin ${MESH[$m]} $opts -summary runs/results/spin_bench.json > /dev/null 2>&1; then
+        if OMP_NUM_THREADS=$th OPENBLAS_NUM_THREADS=$th timeout 300 mpirun -x OMP_NUM_THREADS -x OPENBLAS_NUM_THREADS -n $np bin/confsurf -task spin ${MESH[$m]} $opts -summary runs/results/spin_bench.json > /dev/null 2>&1; then
           python3 -c "
 import json; s = json.load(open('runs/results/spin_bench.json'))
 print(s['vertices'], s['seconds_setup'], s['seconds_eigen'], s['seconds_poisson'], s['eps_its'], s['inner_its'], s['eigenvalue'], s['q_mean'], s['cpu_seconds_setup'] + s['cpu_seconds_eigen'] + s['cpu_seconds_poisson'])" >> runs/results/spin_bench_tmp.txt
