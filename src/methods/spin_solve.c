@@ -37,7 +37,7 @@ PetscErrorCode CSSpinSetFromOptions(CSSpin s)
   const char *problems[] = {"standard", "generalized"}, *types[] = {"aij", "shell"}, *solvers[] = {"precond", "sinvert", "inverse"};
   const char *bnames[] = {"none", "keep", "file", "target"};
   PetscInt    ip = s->generalized, it = s->shell, is = s->inverse ? 2 : (s->scalar_pc ? 0 : 1), ib = (PetscInt)s->boundary;
-  PetscBool   solver_set;
+  PetscBool   solver_set, complex_set;
   PetscMPIInt size;
   /* crane2011 Sec. 4.3: with a boundary, (D - rho) lambda = 0 needs boundary conditions; with a free boundary
      the kernel of D holds every discrete conformal-affine map (rho = 0 is then not the identity). So an open
@@ -51,7 +51,7 @@ PetscErrorCode CSSpinSetFromOptions(CSSpin s)
   PetscCall(PetscOptionsInt("-spin_inverse_its", "Inverse iteration steps", NULL, s->inverse_its, &s->inverse_its, NULL));
   PetscCall(PetscOptionsBool("-spin_inverse_keep_factor", "Inverse iteration: keep the first factorisation as preconditioner for later solves", NULL, s->keep_factor, &s->keep_factor, NULL));
   PetscCall(PetscOptionsReal("-spin_shift", "Shift toward 0 (negative target), in units of the unit sphere's spectrum", NULL, s->target, &s->target, &s->target_set));
-  PetscCall(PetscOptionsBool("-spin_complex_cholesky", "Serial shift-and-invert and inverse iteration: factor K - sigma as a complex Hermitian 2V x 2V matrix with CHOLMOD (half the flops of the real 4V x 4V one); 0 for the real factorisation and any -spin_st_pc_*/-spin_inverse_pc_* choice", NULL, s->complex_chol, &s->complex_chol, NULL));
+  PetscCall(PetscOptionsBool("-spin_complex_cholesky", "Serial shift-and-invert and inverse iteration: factor K - sigma as a complex Hermitian 2V x 2V matrix with CHOLMOD (half the flops of the real 4V x 4V one); 0 for the real factorisation and any -spin_st_pc_*/-spin_inverse_pc_* choice", NULL, s->complex_chol, &s->complex_chol, &complex_set));
   PetscCall(PetscOptionsString("-spin_complex_cholesky_ordering", "Its CHOLMOD ordering: amd, metis, nesdis, auto", NULL, s->complex_ordering, s->complex_ordering, sizeof(s->complex_ordering), NULL));
   PetscCall(PetscOptionsReal("-spin_lap_shift", "-spin_solver precond: the mass shift c of L + c M, in units of 4 pi / area", NULL, s->lap_shift, &s->lap_shift, NULL));
   PetscCall(PetscOptionsBool("-spin_poisson_pin", "Fix the translation by pinning the first vertex instead of matching the mean", NULL, s->pin, &s->pin, NULL));
@@ -69,6 +69,15 @@ PetscErrorCode CSSpinSetFromOptions(CSSpin s)
      pencil), an assembled matrix and one rank */
   PetscCallMPI(MPI_Comm_size(s->mesh->comm, &size));
   if (size > 1 || s->generalized || s->boundary != CS_SPIN_BOUNDARY_NONE || s->shell || s->scalar_pc) s->complex_chol = PETSC_FALSE;
+  if (s->complex_chol && !complex_set) {
+    /* a user's choice of the inner solver means the real matrix: the complex form replaces that solver */
+    PetscBool a, b, c, d;
+    PetscCall(PetscOptionsHasName(NULL, NULL, "-spin_st_pc_type", &a));
+    PetscCall(PetscOptionsHasName(NULL, NULL, "-spin_st_ksp_type", &b));
+    PetscCall(PetscOptionsHasName(NULL, NULL, "-spin_inverse_pc_type", &c));
+    PetscCall(PetscOptionsHasName(NULL, NULL, "-spin_inverse_ksp_type", &d));
+    if (a || b || c || d) s->complex_chol = PETSC_FALSE;
+  }
   PetscCheck(!(s->scalar_pc && s->generalized), s->mesh->comm, PETSC_ERR_SUP, "-spin_solver precond supports only -spin_problem standard");
   PetscCheck(!(s->scalar_pc && s->boundary != CS_SPIN_BOUNDARY_NONE), s->mesh->comm, PETSC_ERR_SUP, "-spin_solver precond does not support -spin_boundary (use -spin_solver sinvert)");
   PetscCheck(s->inverse_its >= 1, s->mesh->comm, PETSC_ERR_ARG_OUTOFRANGE, "-spin_inverse_its %" PetscInt_FMT ": need at least 1", s->inverse_its);
