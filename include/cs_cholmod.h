@@ -1,10 +1,10 @@
 /* Cholesky factorisation of a quaternionic Hermitian K - sigma (real AIJ with 4x4 blocks of left
    multiplication, crane2011 Sec. 5.1) in its complex form with CHOLMOD (SuiteSparse) called directly: half the
    flops of the real 4V x 4V factorisation (see cholmod_factor.c); PETSc's real build cannot express it.
-   Serial only (one process); the symbolic analysis is kept while the size stays. */
+   Serial only (one process); the symbolic analysis is kept while the pattern stays. */
 #ifndef CS_CHOLMOD_H
 #define CS_CHOLMOD_H
-#include <petscmat.h>
+#include <petscksp.h>
 
 typedef struct _p_CSCholmod *CSCholmod;
 /* ordering: "amd", "metis", "nesdis" or "auto" (CHOLMOD's own choice among several) */
@@ -14,4 +14,7 @@ PETSC_EXTERN PetscErrorCode CSCholmodSetUpQuaternion(CSCholmod f, Mat K, PetscRe
 /* y = (K - sigma)^{-1} x for real 4V vectors */
 PETSC_EXTERN PetscErrorCode CSCholmodSolve(CSCholmod f, Vec x, Vec y);
 PETSC_EXTERN PetscErrorCode CSCholmodDestroy(CSCholmod *f);
+
+/* The project's default sparse Cholesky for an SPD operator: CHOLMOD on one rank, MUMPS on several. */
+PETSC_EXTERN PetscErrorCode CSSetDefaultCholesky(PC pc);
 #endif

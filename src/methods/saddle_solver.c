@@ -5,10 +5,10 @@
    S = H/t + t_mu X^T I_Q^{-1} X is sparse, SPD and exact. We assemble S ourselves with a pattern fixed over the
    run and hand it to the fieldsplit as the `user` Schur preconditioner (`selfp` forms the same matrix, but
    with a new nonzero pattern every step, which forces a new symbolic factorisation: 0.5 s per step with
-   CHOLMOD at 20k faces); S is factored by CHOLMOD serially (which may choose METIS; 1.8x faster than
-   MUMPS-AMD at 20k faces) and by MUMPS with the PORD ordering in parallel; the outer iteration then converges in 1-2 steps. The
-   default is inserted as a preset when -flow_pc_type is not given; any single preset option can be overridden
-   on the command line (e.g. -flow_pc_fieldsplit_schur_precondition selfp). */
+   CHOLMOD at 20k faces); S is factored by CHOLMOD serially (1.8x faster than MUMPS-AMD at 20k faces) and by
+   MUMPS with the PORD ordering in parallel; the outer iteration then converges in 1-2 steps. The default is
+   inserted as a preset when -flow_pc_type is not given; any single preset option can be overridden on the
+   command line (e.g. -flow_pc_fieldsplit_schur_precondition selfp). */
 #include "cs_methods_willmore.h"
 
 static const char *PresetSchur[][2] = {
@@ -27,8 +27,8 @@ static const char *PresetSchur[][2] = {
                                                   82k faces, on 2 ranks; its slow analysis is paid once per run */
 };
 /* Without multipliers, H^2: the metric alone, CG preconditioned by the factored H^2 preconditioner (PC type
-   csh2, h2_pc.c: two shifted-Laplacian Cholesky solves per iteration, 6 CG iterations per step at levels 5
-   and 6) -- 1.20 -> 0.35 s per GD step at level 5, 8.9 -> 1.5 s at level 6, against CG + a MUMPS Cholesky
+   csh2, h2_pc.c: two shifted-Laplacian Cholesky solves per iteration, 10 CG iterations per step at levels 3
+   and 5, test willmore_h2pc) -- 1.20 -> 0.35 s per GD step at level 5, 8.9 -> 1.5 s at level 6, against CG + a MUMPS Cholesky
    factorisation of the two-ring metric itself (-flow_pc_type cholesky -flow_pc_factor_mat_solver_type mumps). */
 static const char *PresetMetric[][2] = {
   {"-flow_ksp_type", "cg"},

@@ -18,25 +18,22 @@ static PetscErrorCode AssembleScalarOperator(CSSpin s, Vec x, CSRhoLocation loc,
 {
   CSMesh    mesh = s->mesh;
   Vec       d;
-  PetscReal area, c = s->lap_shift;
+  PetscReal area, shift;
   PetscFunctionBeginUser;
   PetscCall(CSOperatorLaplacian(mesh, x, s->Ls ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX, &s->Ls));
   PetscCall(VecSum(s->mass, &area));
+  shift = s->lap_shift * 4 * PETSC_PI / area;
   PetscCall(DMGetGlobalVector(mesh->dmV1, &d));
-  if (rho && loc == CS_RHO_VERTEX) {
-    PetscCall(VecPointwiseMult(d, rho, rho));
-    PetscCall(VecShift(d, c * 4 * PETSC_PI / area));
-  } else if (rho) { /* per face: sum_f A_f rho_f^2 / 3 over the faces of i, divided by M_i */
+  if (rho && loc == CS_RHO_VERTEX) PetscCall(VecPointwiseMult(d, rho, rho));
+  else if (rho && loc == CS_RHO_FACE) { /* sum_f A_f rho_f^2 / 3 over the faces of i, divided by M_i */
     Vec                dl, xl, rl;
     const PetscReal   *p;
     const PetscScalar *r;
     PetscScalar       *a;
     PetscCall(DMGetLocalVector(mesh->dmV1, &dl));
-    PetscCall(DMGetLocalVector(mesh->dmF1, &rl));
-    PetscCall(DMGlobalToLocal(mesh->dmF1, rho, INSERT_VALUES, rl));
     PetscCall(VecSet(dl, 0));
     PetscCall(CSMeshGetLocalPositions(mesh, x, &xl, &p));
-    PetscCall(VecGetArrayRead(rl, &r));
+    PetscCall(CSDiracGetRho(mesh, loc, rho, &rl, &r));
     PetscCall(VecGetArray(dl, &a));
     for (PetscInt f = 0; f < mesh->nf; f++) {
       const PetscInt  *v    = mesh->faceVert + 3 * f;
@@ -47,15 +44,14 @@ static PetscErrorCode AssembleScalarOperator(CSSpin s, Vec x, CSRhoLocation loc,
       for (int k = 0; k < 3; k++) a[v[k]] += w;
     }
     PetscCall(VecRestoreArray(dl, &a));
-    PetscCall(VecRestoreArrayRead(rl, &r));
+    PetscCall(CSDiracRestoreRho(mesh, loc, rho, &rl, &r));
     PetscCall(CSMeshRestoreLocalPositions(mesh, x, &xl, &p));
     PetscCall(VecSet(d, 0));
     PetscCall(DMLocalToGlobal(mesh->dmV1, dl, ADD_VALUES, d));
-    PetscCall(DMRestoreLocalVector(mesh->dmF1, &rl));
     PetscCall(DMRestoreLocalVector(mesh->dmV1, &dl));
     PetscCall(VecPointwiseDivide(d, d, s->mass));
-    PetscCall(VecShift(d, c * 4 * PETSC_PI / area));
-  } else PetscCall(VecSet(d, c * 4 * PETSC_PI / area));
+  } else PetscCall(VecSet(d, 0));
+  PetscCall(VecShift(d, shift));
   PetscCall(VecPointwiseMult(d, d, s->mass));
   PetscCall(MatDiagonalSet(s->Ls, d, ADD_VALUES));
   PetscCall(DMRestoreGlobalVector(mesh->dmV1, &d));
@@ -104,18 +100,15 @@ static PetscErrorCode ApplyScalarPC(PC pc, Vec x, Vec y)
 
 PetscErrorCode CSSpinSetUpScalarPC(CSSpin s, Vec x, CSRhoLocation loc, Vec rho, PC pc)
 {
-  PetscMPIInt size;
   PetscFunctionBeginUser;
   PetscCall(AssembleScalarOperator(s, x, loc, rho));
   if (!s->klap) {
     PC lpc;
-    PetscCallMPI(MPI_Comm_size(s->mesh->comm, &size));
     PetscCall(KSPCreate(s->mesh->comm, &s->klap));
     PetscCall(KSPSetOptionsPrefix(s->klap, "spin_lap_"));
     PetscCall(KSPSetType(s->klap, KSPPREONLY));
     PetscCall(KSPGetPC(s->klap, &lpc));
-    PetscCall(PCSetType(lpc, PCCHOLESKY));
-    PetscCall(PCFactorSetMatSolverType(lpc, size == 1 ? MATSOLVERCHOLMOD : MATSOLVERMUMPS));
+    PetscCall(CSSetDefaultCholesky(lpc));
     PetscCall(KSPSetFromOptions(s->klap));
     PetscCall(CSSpinMumpsDefaultOrdering(s, lpc));
   }

@@ -92,10 +92,9 @@ PetscErrorCode CSSpinReconstruct(CSSpin s, Vec x, Vec lambda, Vec xcenter, Vec x
     PetscCall(KSPCreate(mesh->comm, &s->kpois));
     PetscCall(KSPSetOptionsPrefix(s->kpois, "spin_poisson_"));
     PetscCall(KSPGetPC(s->kpois, &pc));
-    if (size == 1) { /* CHOLMOD: 3x faster than CG + GAMG at 4k-38k vertices (runs/bench_spin.sh) */
+    if (size == 1) { /* CHOLMOD: 2-3x faster than CG + GAMG at 4k-38k vertices (runs/bench_spin.sh) */
       PetscCall(KSPSetType(s->kpois, KSPPREONLY));
-      PetscCall(PCSetType(pc, PCCHOLESKY));
-      PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERCHOLMOD));
+      PetscCall(CSSetDefaultCholesky(pc));
     } else {
       PetscCall(KSPSetType(s->kpois, KSPCG));
       PetscCall(PCSetType(pc, PCGAMG));

@@ -37,7 +37,9 @@ PetscErrorCode CSSpinSetFromOptions(CSSpin s)
   const char *problems[] = {"standard", "generalized"}, *types[] = {"aij", "shell"}, *solvers[] = {"precond", "sinvert", "inverse"};
   const char *bnames[] = {"none", "keep", "file", "target"};
   PetscInt    ip = s->generalized, it = s->shell, is = s->inverse ? 2 : (s->scalar_pc ? 0 : 1), ib = (PetscInt)s->boundary;
-  PetscBool   solver_set, complex_set;
+  const char *orderings[] = {"amd", "metis", "nesdis", "auto"};
+  PetscInt    iord = 0;
+  PetscBool   solver_set, complex_set, ord_set;
   PetscMPIInt size;
   /* crane2011 Sec. 4.3: with a boundary, (D - rho) lambda = 0 needs boundary conditions; with a free boundary
      the kernel of D holds every discrete conformal-affine map (rho = 0 is then not the identity). So an open
@@ -47,12 +49,12 @@ PetscErrorCode CSSpinSetFromOptions(CSSpin s)
   PetscOptionsBegin(s->mesh->comm, NULL, "Spin transformations (crane2011)", NULL);
   PetscCall(PetscOptionsEList("-spin_problem", "Eigenvalue problem: standard (Eq. 7) or generalized (Eq. 6)", NULL, problems, 2, problems[ip], &ip, NULL));
   PetscCall(PetscOptionsEList("-spin_dirac_type", "Dirac operator: assembled AIJ (block size 4) or matrix-free shell", NULL, types, 2, types[it], &it, NULL));
-  PetscCall(PetscOptionsEList("-spin_solver", "Smallest eigenpair: EPS preconditioned by the scalar Laplacian (LOBPCG), EPS with shift-and-invert (a 4V x 4V factorisation), or inverse iteration", NULL, solvers, 3, solvers[is], &is, &solver_set));
+  PetscCall(PetscOptionsEList("-spin_solver", "Smallest eigenpair: EPS preconditioned by the scalar Laplacian (Davidson), EPS with shift-and-invert (a factorisation of K - sigma), or inverse iteration", NULL, solvers, 3, solvers[is], &is, &solver_set));
   PetscCall(PetscOptionsInt("-spin_inverse_its", "Inverse iteration steps", NULL, s->inverse_its, &s->inverse_its, NULL));
   PetscCall(PetscOptionsBool("-spin_inverse_keep_factor", "Inverse iteration: keep the first factorisation as preconditioner for later solves", NULL, s->keep_factor, &s->keep_factor, NULL));
   PetscCall(PetscOptionsReal("-spin_shift", "Shift toward 0 (negative target), in units of the unit sphere's spectrum", NULL, s->target, &s->target, &s->target_set));
   PetscCall(PetscOptionsBool("-spin_complex_cholesky", "Serial shift-and-invert and inverse iteration: factor K - sigma as a complex Hermitian 2V x 2V matrix with CHOLMOD (half the flops of the real 4V x 4V one); 0 for the real factorisation and any -spin_st_pc_*/-spin_inverse_pc_* choice", NULL, s->complex_chol, &s->complex_chol, &complex_set));
-  PetscCall(PetscOptionsString("-spin_complex_cholesky_ordering", "Its CHOLMOD ordering: amd, metis, nesdis, auto", NULL, s->complex_ordering, s->complex_ordering, sizeof(s->complex_ordering), NULL));
+  PetscCall(PetscOptionsEList("-spin_complex_cholesky_ordering", "Its CHOLMOD ordering (auto: CHOLMOD tries several)", NULL, orderings, 4, s->complex_ordering, &iord, &ord_set));
   PetscCall(PetscOptionsReal("-spin_lap_shift", "-spin_solver precond: the mass shift c of L + c M, in units of 4 pi / area", NULL, s->lap_shift, &s->lap_shift, NULL));
   PetscCall(PetscOptionsBool("-spin_poisson_pin", "Fix the translation by pinning the first vertex instead of matching the mean", NULL, s->pin, &s->pin, NULL));
   PetscCall(PetscOptionsEList("-spin_boundary", "Boundary condition (Sec. 5.7): none (free), keep tangents, tangents from -spin_boundary_file, or from -target_mesh", NULL, bnames, 4, bnames[ib], &ib, NULL));
@@ -61,6 +63,8 @@ PetscErrorCode CSSpinSetFromOptions(CSSpin s)
   s->shell       = (PetscBool)(it == 1);
   s->inverse     = (PetscBool)(is == 2);
   s->boundary    = (CSSpinBoundary)ib;
+  if (ord_set) PetscCall(PetscStrncpy(s->complex_ordering, orderings[iord], sizeof(s->complex_ordering)));
+  PetscCheck(s->lap_shift > 0, s->mesh->comm, PETSC_ERR_ARG_OUTOFRANGE, "-spin_lap_shift %g: must be positive (L + c M must be definite)", (double)s->lap_shift);
   /* the scalar preconditioner (spin_precond.c) is made for the standard problem on the full space: elsewhere
      the default stays shift-and-invert */
   s->scalar_pc  = (PetscBool)(is == 0);
@@ -311,9 +315,13 @@ static PetscErrorCode SetDefaultFactor(CSSpin s, PC pc, PetscBool lu)
 {
   PetscMPIInt size;
   PetscFunctionBeginUser;
+  if (!lu) {
+    PetscCall(CSSetDefaultCholesky(pc));
+    PetscFunctionReturn(0);
+  }
   PetscCallMPI(MPI_Comm_size(s->mesh->comm, &size));
-  PetscCall(PCSetType(pc, lu ? PCLU : PCCHOLESKY));
-  PetscCall(PCFactorSetMatSolverType(pc, size == 1 ? (lu ? MATSOLVERPETSC : MATSOLVERCHOLMOD) : MATSOLVERMUMPS));
+  PetscCall(PCSetType(pc, PCLU));
+  PetscCall(PCFactorSetMatSolverType(pc, size == 1 ? MATSOLVERPETSC : MATSOLVERMUMPS));
   PetscFunctionReturn(0);
 }
 
@@ -385,6 +393,7 @@ static PetscErrorCode SetupEPS(CSSpin s, Vec x, CSRhoLocation loc, Vec rho, Pets
       PetscCall(STSetType(st, STPRECOND));
       PetscCall(KSPSetType(ksp, KSPPREONLY));
       PetscCall(EPSSetWhichEigenpairs(s->eps, EPS_SMALLEST_REAL));
+      PetscCall(EPSSetDimensions(s->eps, nev, PETSC_DEFAULT, PETSC_DEFAULT));
     } else {
       PetscCall(STSetType(st, STSINVERT));
       if (s->complex_chol) {
@@ -405,7 +414,6 @@ static PetscErrorCode SetupEPS(CSSpin s, Vec x, CSRhoLocation loc, Vec rho, Pets
          runs/bench_spin.sh; 8 solves with 8, SLEPc's default is 16) */
       PetscCall(EPSSetDimensions(s->eps, nev, nev == 1 ? 6 : PETSC_DEFAULT, PETSC_DEFAULT));
     }
-    if (precond) PetscCall(EPSSetDimensions(s->eps, nev, PETSC_DEFAULT, PETSC_DEFAULT));
     PetscCall(EPSSetProblemType(s->eps, s->generalized ? EPS_GNHEP : EPS_HEP));
     PetscCall(EPSSetTolerances(s->eps, 1e-10, PETSC_DEFAULT));
     PetscCall(EPSSetOperators(s->eps, s->K, s->generalized ? s->Y : NULL));

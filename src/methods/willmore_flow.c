@@ -521,6 +521,7 @@ static PetscErrorCode Project(Flow *F, Vec x, PetscBool *ok, PetscInt *kspits)
 {
   PetscReal conf, glob;
   Vec       pmu = NULL, pdf;
+  PetscBool done = PETSC_FALSE;
   PetscFunctionBeginUser;
   *ok = PETSC_FALSE;
   /* the Newton corrections get their own vectors: F->dmu, F->df, F->dnu hold the step's solution, whose
@@ -532,11 +533,9 @@ static PetscErrorCode Project(Flow *F, Vec x, PetscBool *ok, PetscInt *kspits)
     PetscInt its;
     PetscCall(EvalConstraints(F, x, F->ct, F->cxt, PETSC_TRUE));
     PetscCall(Violation(F, F->ct, F->cxt, &conf, &glob));
-    if (!(conf == conf) || !(glob == glob)) break;
-    if (PetscMax(conf, glob) < 0.1 * F->ctol) {
-      *ok = PETSC_TRUE;
-      break;
-    }
+    if (!(conf == conf) || !(glob == glob)) done = PETSC_TRUE;
+    else if (PetscMax(conf, glob) < 0.1 * F->ctol) *ok = done = PETSC_TRUE;
+    if (done) break;
     if (F->k) PetscCall(GlobalWeights(F));
     PetscCall(CSMetricUpdate(&F->metric, x));
     PetscCall(QuadDiffMetric(F, x, NULL));
@@ -546,14 +545,14 @@ static PetscErrorCode Project(Flow *F, Vec x, PetscBool *ok, PetscInt *kspits)
     PetscCall(VecSet(F->tmp, 0));
     PetscCall(TrySolve(F, F->ct, F->tmp, F->cxt, pmu, pdf, F->dnu2, &its, ok));
     *kspits += its;
-    if (!*ok) break;
+    if (!*ok) done = PETSC_TRUE;
+    else PetscCall(VecAXPY(x, 1.0, pdf));
     *ok = PETSC_FALSE;
-    PetscCall(VecAXPY(x, 1.0, pdf));
-    if (it == F->proj_max_it - 1) {
-      PetscCall(EvalConstraints(F, x, F->ct, F->cxt, PETSC_FALSE));
-      PetscCall(Violation(F, F->ct, F->cxt, &conf, &glob));
-      *ok = (PetscBool)(PetscMax(conf, glob) < F->ctol);
-    }
+  }
+  if (!done) { /* all Newton steps taken: feasible enough? */
+    PetscCall(EvalConstraints(F, x, F->ct, F->cxt, PETSC_FALSE));
+    PetscCall(Violation(F, F->ct, F->cxt, &conf, &glob));
+    *ok = (PetscBool)(PetscMax(conf, glob) < F->ctol);
   }
   PetscCall(VecDestroy(&pmu));
   PetscCall(VecDestroy(&pdf));

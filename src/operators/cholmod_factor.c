@@ -29,7 +29,7 @@ static PetscErrorCode CholmodCheck(cholmod_common *c, const char *what)
   PetscFunctionReturn(0);
 }
 
-/* A new pattern (size or kind): drop the old matrix, analysis and work vector. */
+/* A new pattern: drop the old matrix, analysis and work vector. */
 static void Reset(CSCholmod f)
 {
   cholmod_free_sparse(&f->A, &f->common);
@@ -37,21 +37,29 @@ static void Reset(CSCholmod f)
   cholmod_free_dense(&f->b, &f->common);
 }
 
-/* Column pointers from per-column counts, and cnt turned into fill positions. */
-static PetscErrorCode AllocateLower(CSCholmod f, PetscInt ncol, PetscInt *cnt, int xtype)
+/* Column pointers from per-column counts, and cnt turned into fill positions. The symbolic analysis belongs
+   to one pattern: if the column counts differ from the kept matrix's, everything is rebuilt. */
+static PetscErrorCode AllocateLower(CSCholmod f, PetscInt ncol, PetscInt *cnt)
 {
   int *colp;
   PetscFunctionBeginUser;
+  if (f->A) {
+    colp = (int *)f->A->p;
+    for (PetscInt c = 0; c < ncol; c++)
+      if (colp[c + 1] - colp[c] != (int)cnt[c]) {
+        Reset(f);
+        break;
+      }
+  }
   if (!f->A) {
     PetscInt nnz = 0;
     for (PetscInt c = 0; c < ncol; c++) nnz += cnt[c];
-    f->A = cholmod_allocate_sparse((size_t)ncol, (size_t)ncol, (size_t)nnz, 1, 1, -1, xtype, &f->common);
+    f->A = cholmod_allocate_sparse((size_t)ncol, (size_t)ncol, (size_t)nnz, 1, 1, -1, CHOLMOD_COMPLEX, &f->common);
     PetscCall(CholmodCheck(&f->common, "allocate"));
   }
   colp    = (int *)f->A->p;
   colp[0] = 0;
   for (PetscInt c = 0; c < ncol; c++) colp[c + 1] = colp[c] + (int)cnt[c];
-  PetscCheck((size_t)colp[ncol] <= f->A->nzmax, PETSC_COMM_SELF, PETSC_ERR_PLIB, "CHOLMOD matrix pattern changed");
   for (PetscInt c = 0; c < ncol; c++) cnt[c] = colp[c];
   PetscFunctionReturn(0);
 }
@@ -83,7 +91,7 @@ static PetscErrorCode BuildQuaternion(CSCholmod f, Mat K, PetscReal sigma)
     }
     PetscCall(MatRestoreRow(K, 4 * i, &nc, &cols, NULL));
   }
-  PetscCall(AllocateLower(f, 2 * nb, cnt, CHOLMOD_COMPLEX));
+  PetscCall(AllocateLower(f, 2 * nb, cnt));
   rowi = (int *)f->A->i;
   val  = (double *)f->A->x;
   /* pass 2: block row i gives complex rows 2i, 2i+1 in increasing order, so each column stays sorted */
@@ -221,5 +229,15 @@ PetscErrorCode CSCholmodSolve(CSCholmod f, Vec x, Vec y)
   PetscCall(VecRestoreArray(y, &ya));
   cholmod_free_dense(&sol, &f->common);
   PetscCall(PetscLogEventEnd(CS_EVENT_Solve, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSSetDefaultCholesky(PC pc)
+{
+  PetscMPIInt size;
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_size(PetscObjectComm((PetscObject)pc), &size));
+  PetscCall(PCSetType(pc, PCCHOLESKY));
+  PetscCall(PCFactorSetMatSolverType(pc, size == 1 ? MATSOLVERCHOLMOD : MATSOLVERMUMPS));
   PetscFunctionReturn(0);
 }

@@ -13,6 +13,7 @@
    Cholesky: MUMPS, CHOLMOD serially; e.g. -flow_h2_pc_type hypre for one AMG cycle per solve). */
 #include <petsc/private/pcimpl.h> /* a PC type of our own: the documented way (PCRegister) */
 #include "cs_operators_conformal.h"
+#include "cs_cholmod.h"
 
 typedef struct {
   KSP       ksp;  /* on A = s *0 + L (per coordinate, 3V) */
@@ -78,7 +79,6 @@ static PetscErrorCode PCSetUp_CSH2(PC pc)
   H2Info        *info;
   CSMetric      *m;
   Mat            P;
-  Vec            sm;
   PetscFunctionBeginUser;
   PetscCall(PCGetOperators(pc, NULL, &P));
   PetscCall(PetscObjectQuery((PetscObject)P, "CSMetric", (PetscObject *)&c));
@@ -92,17 +92,6 @@ static PetscErrorCode PCSetUp_CSH2(PC pc)
     PetscCall(PetscObjectReference((PetscObject)info->fixed));
     h->fixed = info->fixed;
   }
-  /* A = s *0 + L, with identity rows on the fixed dofs */
-  if (!h->A) PetscCall(MatDuplicate(m->L3, MAT_COPY_VALUES, &h->A));
-  else PetscCall(MatCopy(m->L3, h->A, SAME_NONZERO_PATTERN));
-  PetscCall(VecDuplicate(m->m3, &sm));
-  PetscCall(VecCopy(m->m3, sm));
-  PetscCall(VecScale(sm, PetscSqrtReal(m->mass_weight)));
-  PetscCall(MatDiagonalSet(h->A, sm, ADD_VALUES));
-  PetscCall(VecDestroy(&sm));
-  if (h->fixed) PetscCall(MatZeroRowsColumnsIS(h->A, h->fixed, 1.0, NULL, NULL));
-  PetscCall(MatSetOption(h->A, MAT_SYMMETRIC, PETSC_TRUE));
-  PetscCall(MatSetOption(h->A, MAT_SPD, PETSC_TRUE));
   if (!h->m3) {
     PetscCall(VecDuplicate(m->m3, &h->m3));
     PetscCall(VecDuplicate(m->m3, &h->diag));
@@ -111,19 +100,24 @@ static PetscErrorCode PCSetUp_CSH2(PC pc)
   }
   PetscCall(VecCopy(m->m3, h->m3));
   PetscCall(MatGetDiagonal(P, h->diag));
+  /* A = s *0 + L, with identity rows on the fixed dofs */
+  if (!h->A) PetscCall(MatDuplicate(m->L3, MAT_COPY_VALUES, &h->A));
+  else PetscCall(MatCopy(m->L3, h->A, SAME_NONZERO_PATTERN));
+  PetscCall(VecAXPBY(h->w1, PetscSqrtReal(m->mass_weight), 0.0, h->m3));
+  PetscCall(MatDiagonalSet(h->A, h->w1, ADD_VALUES));
+  if (h->fixed) PetscCall(MatZeroRowsColumnsIS(h->A, h->fixed, 1.0, NULL, NULL));
+  PetscCall(MatSetOption(h->A, MAT_SYMMETRIC, PETSC_TRUE));
+  PetscCall(MatSetOption(h->A, MAT_SPD, PETSC_TRUE));
   if (!h->ksp) {
     const char *prefix;
     PC          ipc;
-    PetscMPIInt size;
-    PetscCallMPI(MPI_Comm_size(PetscObjectComm((PetscObject)pc), &size));
     PetscCall(KSPCreate(PetscObjectComm((PetscObject)pc), &h->ksp));
     PetscCall(PCGetOptionsPrefix(pc, &prefix));
     PetscCall(KSPSetOptionsPrefix(h->ksp, prefix));
     PetscCall(KSPAppendOptionsPrefix(h->ksp, "h2_"));
     PetscCall(KSPSetType(h->ksp, KSPPREONLY));
     PetscCall(KSPGetPC(h->ksp, &ipc));
-    PetscCall(PCSetType(ipc, PCCHOLESKY));
-    PetscCall(PCFactorSetMatSolverType(ipc, size == 1 ? MATSOLVERCHOLMOD : MATSOLVERMUMPS));
+    PetscCall(CSSetDefaultCholesky(ipc));
     PetscCall(KSPSetFromOptions(h->ksp));
   }
   PetscCall(KSPSetOperators(h->ksp, h->A, h->A));
