@@ -64,6 +64,11 @@ PETSC_EXTERN PetscErrorCode CSConstraintCreateVolume(CSMesh mesh, PetscReal targ
    a repeated vertex. 3 rows per point. */
 PETSC_EXTERN PetscErrorCode CSConstraintCreatePointsFromFile(CSMesh mesh, const char option[], const char path[], CSGlobalConstraint *g);
 
+/* Moebius balancing (gauge of the Moebius orbit left free by the conformal constraint, along which the
+   discrete Willmore energy is not invariant): the 3 rows sum_i A_i(f) (f0_i - c0) = 0, normalised by
+   A(f0)^(3/2); see constraints_global.c. */
+PETSC_EXTERN PetscErrorCode CSConstraintCreateMobiusBalance(CSMesh mesh, Vec x0, CSGlobalConstraint *g);
+
 /* Fairing energy E = 1/2 ||f - f0||^2_{L2} + eps W(f) (soliman2021 Eq. 21), with the L2 norm of the input
    mesh (mass *0(f0), fixed), so grad E = *0(f0) (f - f0) + eps grad W. */
 PETSC_EXTERN PetscErrorCode CSEnergyCreateFairing(CSMesh mesh, Vec x0, PetscReal eps, CSEnergy *e);

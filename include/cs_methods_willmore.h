@@ -37,7 +37,13 @@ typedef struct {
   Vec      *B, *W;      /* k rows, k solutions (each an (E+3V) or 3V vector) */
   PetscReal *G;
   PetscInt  reuse_its;  /* keep the preconditioner while the last solve took <= this many its */
-  PetscInt  last_its, setups;
+  PetscInt  last_its;   /* Krylov iterations of the last solve */
+  PetscInt  setups;     /* preconditioner (factorisation) builds so far */
+  PetscInt  max_it;     /* the KSP's own iteration limit */
+  PetscBool reusing;    /* this step keeps an earlier preconditioner */
+  Vec       iq;         /* this step's I_Q, t_mu and X (borrowed), to rebuild S when a kept one fails */
+  PetscReal tmu;
+  Mat       X;
   PetscBool have_pc;
   char     **preset;    /* option names inserted as defaults (cleared after the first setup) */
   PetscInt  npreset;

@@ -228,3 +228,109 @@ PetscErrorCode CSConstraintCreatePointsFromFile(CSMesh mesh, const char option[]
   (*g)->destroy  = PointsDestroy;
   PetscFunctionReturn(0);
 }
+
+/* ---- Moebius balancing ----
+   The conformal constraint (length cross ratios) and the smooth Willmore energy are invariant under Moebius
+   transformations, but the discrete energy (soliman2021 Eq. 28) is not: it decreases when the vertices are
+   graded along a Moebius orbit (a Moebius-boosted icosphere keeps every cross ratio to 1e-13 and has a lower
+   discrete W; far enough along, W drops below 4 pi). Left free, CGD slides along that orbit and ends on a
+   mesh whose resolution has collapsed (options/flow_vesicle.opts, options/flow_class_change.opts). The three
+   rows below fix the Moebius gauge as Hersch's balancing condition does (the centre of mass of the current
+   area distribution, placed on the input's vertices, stays at the input's centroid):
+     m(f) = sum_i A_i(f) (f0_i - c0) / (A(f0) sqrt(A(f0))) = 0,   c0 = sum_i A_i(f0) f0_i / A(f0),
+   A_i the barycentric vertex areas, so m(f0) = 0 exactly. Similarities of f leave m = 0 (m only sees the areas,
+   and a scaling scales all of them), a Moebius boost b changes it to first order by 2 I0 b with the positive
+   definite area-inertia tensor I0 of the input, so the rows fix exactly the three boost directions.
+   Per face, sum_i A_i y_i = sum_f A_f ybar_f (ybar_f the mean of y over the face's corners), and the row d at
+   a corner k is ybar_f[d] dA_f/df_k (CSTriangleAreaGradient). */
+typedef struct {
+  PetscReal *y;     /* (f0_i - c0) / (A0 sqrt(A0)) for the local vertices (with ghosts), 3 per vertex */
+} MobiusCtx;
+
+static PetscErrorCode MobiusEvaluate(CSGlobalConstraint g, Vec x, PetscReal c[], Vec rows[])
+{
+  MobiusCtx       *ctx = (MobiusCtx *)g->ctx;
+  CSMesh           m   = g->mesh;
+  Vec              xl, rl[3];
+  const PetscReal *p;
+  PetscScalar     *ra[3];
+  PetscReal        cl[3] = {0, 0, 0};
+  PetscFunctionBeginUser;
+  PetscCall(CSMeshGetLocalPositions(m, x, &xl, &p));
+  if (rows)
+    for (int d = 0; d < 3; d++) {
+      PetscCall(DMGetLocalVector(m->dmV3, &rl[d]));
+      PetscCall(VecSet(rl[d], 0));
+      PetscCall(VecGetArray(rl[d], &ra[d]));
+    }
+  for (PetscInt f = 0; f < m->nf; f++) { /* every face lives on exactly one rank */
+    const PetscInt  *v    = m->faceVert + 3 * f;
+    const PetscReal *q[3] = {p + 3 * v[0], p + 3 * v[1], p + 3 * v[2]};
+    PetscReal        an[3], A, N[3], ybar[3], dA[3][3];
+    CSTriangleAreaVector(q, an);
+    A = CSVecNorm(an);
+    for (int d = 0; d < 3; d++) ybar[d] = (ctx->y[3 * v[0] + d] + ctx->y[3 * v[1] + d] + ctx->y[3 * v[2] + d]) / 3;
+    for (int d = 0; d < 3; d++) cl[d] += A * ybar[d];
+    if (!rows || !(A > 0)) continue;
+    for (int d = 0; d < 3; d++) N[d] = an[d] / A;
+    CSTriangleAreaGradient(q, N, dA);
+    for (int k = 0; k < 3; k++)
+      for (int d = 0; d < 3; d++)
+        for (int e = 0; e < 3; e++) ra[d][3 * v[k] + e] += ybar[d] * dA[k][e];
+  }
+  PetscCall(CSMeshRestoreLocalPositions(m, x, &xl, &p));
+  PetscCall(MPIU_Allreduce(cl, c, 3, MPIU_REAL, MPIU_SUM, m->comm));
+  if (rows)
+    for (int d = 0; d < 3; d++) {
+      PetscCall(VecRestoreArray(rl[d], &ra[d]));
+      PetscCall(VecSet(rows[d], 0));
+      PetscCall(DMLocalToGlobal(m->dmV3, rl[d], ADD_VALUES, rows[d]));
+      PetscCall(DMRestoreLocalVector(m->dmV3, &rl[d]));
+    }
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode MobiusDestroy(CSGlobalConstraint g)
+{
+  MobiusCtx *ctx = (MobiusCtx *)g->ctx;
+  PetscFunctionBeginUser;
+  PetscCall(PetscFree(ctx->y));
+  PetscCall(PetscFree(ctx));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSConstraintCreateMobiusBalance(CSMesh mesh, Vec x0, CSGlobalConstraint *g)
+{
+  MobiusCtx       *ctx;
+  Vec              xl;
+  const PetscReal *p;
+  PetscReal        s[4] = {0, 0, 0, 0}, t[4], c0[3], scale;
+  PetscFunctionBeginUser;
+  PetscCall(CSMeshGetLocalPositions(mesh, x0, &xl, &p));
+  for (PetscInt f = 0; f < mesh->nf; f++) {
+    const PetscInt  *v    = mesh->faceVert + 3 * f;
+    const PetscReal *q[3] = {p + 3 * v[0], p + 3 * v[1], p + 3 * v[2]};
+    PetscReal        an[3], A;
+    CSTriangleAreaVector(q, an);
+    A = CSVecNorm(an);
+    s[3] += A;
+    for (int d = 0; d < 3; d++) s[d] += A * (q[0][d] + q[1][d] + q[2][d]) / 3;
+  }
+  PetscCall(MPIU_Allreduce(s, t, 4, MPIU_REAL, MPIU_SUM, mesh->comm));
+  PetscCheck(t[3] > 0, mesh->comm, PETSC_ERR_ARG_WRONG, "-constraint_mobius: the input mesh %s has zero area", mesh->name);
+  for (int d = 0; d < 3; d++) c0[d] = t[d] / t[3];
+  scale = 1.0 / (t[3] * PetscSqrtReal(t[3]));
+  PetscCall(PetscNew(&ctx));
+  PetscCall(PetscMalloc1(3 * mesh->nv, &ctx->y));
+  for (PetscInt i = 0; i < mesh->nv; i++)
+    for (int d = 0; d < 3; d++) ctx->y[3 * i + d] = (p[3 * i + d] - c0[d]) * scale;
+  PetscCall(CSMeshRestoreLocalPositions(mesh, x0, &xl, &p));
+  PetscCall(PetscNew(g));
+  PetscCall(PetscStrncpy((*g)->name, "mobius", sizeof((*g)->name)));
+  (*g)->mesh     = mesh;
+  (*g)->k        = 3;
+  (*g)->ctx      = ctx;
+  (*g)->evaluate = MobiusEvaluate;
+  (*g)->destroy  = MobiusDestroy;
+  PetscFunctionReturn(0);
+}

@@ -28,7 +28,17 @@
    Stopping: el_residual = ||g + X^T mu + B^T nu||_2, the Euclidean norm of the residual 2-form of the
    Euler-Lagrange equations (soliman2021 Eq. 7 with the extra constraints; entries of fixed vertices
    excluded), below -flow_rtol, and the constraint violation max(||C lambda - c0||_inf, max_j |xi_j|)
-   below -flow_ctol. */
+   below -flow_ctol.
+   Resolution guard (-flow_max_area_ratio): the discrete conformal constraint (length cross ratios) is
+   invariant under Moebius transformations of R^3, and so is the smooth W, but the discrete W (Eq. 28) is
+   not: it decreases when the vertex density is graded along a Moebius orbit (a boosted icosphere on the
+   unit sphere keeps every cross ratio to 1e-13 and has W = 9.8 < 4 pi; an icosahedron has W = 9.57). The
+   flow then lowers W by concentrating vertices instead of changing the shape, and W can end below the
+   smooth lower bounds (4 pi, 2 pi^2). We stop when the spread max_i(A_i/A0_i) / min_i(A_i/A0_i) of the
+   barycentric vertex areas relative to the input exceeds the limit (0 disables; default 200: the vesicle of
+   options/flow_vesicle.opts is still well resolved at a spread of 159 and W has dropped by 1.4 at 1740).
+   The cure is -constraint_mobius (constraints_global.c), which fixes the three Moebius boosts: with it the
+   vesicle keeps q_max 1.08 and W = 16.31 instead of sliding to W = 9.29. */
 #include "willmore_flow.h"
 #include "cs_util.h"
 
@@ -46,7 +56,7 @@ typedef struct {
   IS                    isM[2];       /* edge / normal rows in the multiplier layout */
   Vec                   cE, cN, iqE, iqN;
   PetscInt              ng, k;
-  CSGlobalConstraint    gc[3];
+  CSGlobalConstraint    gc[4];
   PetscBool            *fixed; /* local vertices held fixed (Dirichlet), or NULL */
   IS                    fixedIS; /* global dmV3 dofs of owned fixed vertices */
   CSMetric              metric;
@@ -56,6 +66,8 @@ typedef struct {
   PetscReal            *cx, *cxt, *nu, *dnu, *dnu2, *gw;
   PetscReal             t, tmu, tmax, grow, rtol, ctol, wmin, rho, vmax, *nun;
   Vec                   mun;
+  Vec                   area0, areat; /* barycentric vertex areas of the input and of the current state */
+  PetscReal             max_area_ratio;
   PetscInt              max_it, max_rej, proj_max_it;
   PetscBool             step_control;
   PetscReal             proj_tmu;
@@ -106,7 +118,7 @@ static PetscErrorCode FlowSetUp(MPI_Comm comm, Flow *F, CSFlowKind kind, CSOutpu
 {
   CSMesh    m;
   char      metric[16] = "h2", energy[32] = "willmore", target[PETSC_MAX_PATH_LEN] = "", points[PETSC_MAX_PATH_LEN] = "", boundary[32] = "";
-  PetscBool conformal = (PetscBool)(kind != CS_FLOW_GD), conformal_set, has_target, has_points, has_boundary, area_set, area_given, vol_set, vol_given, h2;
+  PetscBool conformal = (PetscBool)(kind != CS_FLOW_GD), conformal_set, has_target, has_points, has_boundary, area_set, area_given, vol_set, vol_given, h2, mobius = PETSC_FALSE, mobius_set;
   PetscReal area_target = 0, vol_target = 0, bump = 0, bump_k = 3, stretch[3] = {1, 1, 1}, eps = 1e-3;
   PetscInt  nstretch = 3;
   PetscBool stretch_set;
@@ -130,6 +142,7 @@ static PetscErrorCode FlowSetUp(MPI_Comm comm, Flow *F, CSFlowKind kind, CSOutpu
   F->step_control = PETSC_TRUE;
   F->rho       = 0.0;
   F->vmax      = 1e-2;
+  F->max_area_ratio = 200;
   PetscOptionsBegin(comm, NULL, "Constrained Willmore flow (soliman2021)", NULL);
   PetscCall(PetscOptionsReal("-flow_t", "Initial primal step size t", NULL, F->t, &F->t, NULL));
   PetscCall(PetscOptionsReal("-flow_t_mu", "Dual step size t_mu of the multipliers (default 1e3 t)", NULL, F->tmu, &F->tmu, NULL));
@@ -139,6 +152,7 @@ static PetscErrorCode FlowSetUp(MPI_Comm comm, Flow *F, CSFlowKind kind, CSOutpu
   PetscCall(PetscOptionsInt("-flow_max_rejections", "Consecutive rejected steps before giving up", NULL, F->max_rej, &F->max_rej, NULL));
   PetscCall(PetscOptionsReal("-flow_merit_rho", "Weight of the quadratic constraint penalty in the merit function, relative to |E(input)|", NULL, F->rho, &F->rho, NULL));
   PetscCall(PetscOptionsReal("-flow_vmax", "Step control: reject steps whose constraint violation exceeds max(10 v, this)", NULL, F->vmax, &F->vmax, NULL));
+  PetscCall(PetscOptionsReal("-flow_max_area_ratio", "Stop when max(A_i/A0_i)/min(A_i/A0_i) of the vertex areas exceeds this (mesh resolution collapse; 0: off)", NULL, F->max_area_ratio, &F->max_area_ratio, NULL));
   PetscCall(PetscOptionsReal("-flow_rtol", "Stop when ||g + X^T mu||_2 is below this", NULL, F->rtol, &F->rtol, NULL));
   PetscCall(PetscOptionsReal("-flow_ctol", "... and the constraint violation (inf-norm) below this", NULL, F->ctol, &F->ctol, NULL));
   PetscCall(PetscOptionsInt("-flow_max_it", "Maximum number of iterations", NULL, F->max_it, &F->max_it, NULL));
@@ -151,6 +165,7 @@ static PetscErrorCode FlowSetUp(MPI_Comm comm, Flow *F, CSFlowKind kind, CSOutpu
   PetscCall(OptionalTarget("-constraint_area", "Total area constraint [target value, default the initial area]", &area_set, &area_target, &area_given, PetscOptionsObject));
   PetscCall(OptionalTarget("-constraint_volume", "Enclosed volume constraint [target value, default the initial volume]", &vol_set, &vol_target, &vol_given, PetscOptionsObject));
   PetscCall(PetscOptionsString("-constraint_points", "File of point constraints: lines 'vertex_index x y z' (0-based)", NULL, points, points, sizeof(points), &has_points));
+  PetscCall(PetscOptionsBool("-constraint_mobius", "Moebius balancing: fix the three Moebius boosts that the conformal constraint leaves free and along which the discrete W degrades the mesh (default: on for the Willmore energy on closed surfaces with the conformal constraint and no point constraints)", NULL, mobius, &mobius, &mobius_set));
   PetscCall(PetscOptionsString("-flow_boundary", "dirichlet|free|normals: boundary vertices fixed, free (C0 only), or fixed with fixed boundary-face normals (App. D)", NULL, boundary, boundary, sizeof(boundary), &has_boundary));
   PetscCall(PetscOptionsReal("-flow_init_bump", "Test input: radial bump amplitude applied to the initial positions", NULL, bump, &bump, NULL));
   PetscCall(PetscOptionsReal("-flow_init_bump_freq", "Test input: bump frequency k in sin(k x) sin(k y) sin(k z)", NULL, bump_k, &bump_k, NULL));
@@ -180,6 +195,9 @@ static PetscErrorCode FlowSetUp(MPI_Comm comm, Flow *F, CSFlowKind kind, CSOutpu
   if (bump != 0 || stretch[0] != 1 || stretch[1] != 1 || stretch[2] != 1) PetscCall(DeformInitial(F->x, bump, bump_k, stretch));
   PetscCall(VecDuplicate(F->x, &F->x0));
   PetscCall(VecCopy(F->x, F->x0));
+  PetscCall(DMCreateGlobalVector(m->dmV1, &F->area0));
+  PetscCall(VecDuplicate(F->area0, &F->areat));
+  PetscCall(CSGeometryLaplacianPositions(m, F->x0, NULL, F->area0));
 
   /* boundary */
   if (has_boundary) PetscCheck(m->topo.boundary_loops > 0, comm, PETSC_ERR_ARG_INCOMP, "-flow_boundary %s: the mesh %s is closed (no boundary); boundary methods need a surface with boundary", boundary, m->name);
@@ -242,6 +260,18 @@ static PetscErrorCode FlowSetUp(MPI_Comm comm, Flow *F, CSFlowKind kind, CSOutpu
     PetscCall(CSConstraintCreateVolume(m, vol_given ? vol_target : V, &F->gc[F->ng++]));
   }
   if (has_points) PetscCall(CSConstraintCreatePointsFromFile(m, "-constraint_points", points, &F->gc[F->ng++]));
+  /* Moebius balancing by default where the Moebius orbit is free and W invariant along it: the Willmore energy
+     on closed surfaces (no fixed or free boundary vertices) under the conformal constraint, without point
+     constraints (which pin the gauge themselves) */
+  if (!mobius_set) {
+    PetscBool willmore;
+    PetscCall(PetscStrcmp(energy, "willmore", &willmore)); /* area and fairing (data term) are not Moebius invariant */
+    mobius = (PetscBool)(willmore && conformal && m->topo.boundary_loops == 0 && !has_points);
+  }
+  if (mobius) {
+    PetscCheck(conformal, comm, PETSC_ERR_ARG_INCOMP, "-constraint_mobius fixes the Moebius gauge of the conformal constraint: it needs -flow_conformal (cgd, pgd)");
+    PetscCall(CSConstraintCreateMobiusBalance(m, F->x0, &F->gc[F->ng++]));
+  }
   for (PetscInt j = 0; j < F->ng; j++) F->k += F->gc[j]->k;
   PetscCheck(F->conformal || F->k == 0 || kind != CS_FLOW_PGD, comm, PETSC_ERR_ARG_INCOMP, "pgd without the conformal constraint is not supported");
 
@@ -311,6 +341,8 @@ static PetscErrorCode FlowDestroy(Flow *F)
   PetscCall(CSEnergyDestroy(&F->energy));
   PetscCall(VecDestroy(&F->x));
   PetscCall(VecDestroy(&F->x0));
+  PetscCall(VecDestroy(&F->area0));
+  PetscCall(VecDestroy(&F->areat));
   PetscCall(VecDestroy(&F->g));
   PetscCall(VecDestroy(&F->r));
   PetscCall(VecDestroy(&F->df));
@@ -640,6 +672,18 @@ PetscErrorCode CSWillmoreFlowRun(MPI_Comm comm, CSOutput *out, CSFlowKind kind)
       PetscCall(CSHistoryAppend(hist, 11, row));
     }
     if (!(E == E) || !(el == el)) SETERRQ(comm, PETSC_ERR_FP, "flow: the energy or the residual is not a number at iteration %" PetscInt_FMT " (degenerate triangles?); try a smaller -flow_t", it);
+    if (F.max_area_ratio > 0) {
+      PetscReal amax, amin;
+      PetscCall(CSGeometryLaplacianPositions(F.mesh, F.x, NULL, F.areat));
+      PetscCall(VecPointwiseDivide(F.areat, F.areat, F.area0));
+      PetscCall(VecMax(F.areat, NULL, &amax));
+      PetscCall(VecMin(F.areat, NULL, &amin));
+      if (!(amin > 0) || amax > F.max_area_ratio * amin) {
+        PetscCall(PetscPrintf(comm, "flow: mesh resolution collapse at iteration %" PetscInt_FMT ": the vertex areas relative to the input spread by max(A/A0)/min(A/A0) = %g exceeds -flow_max_area_ratio (%g): the constraints are invariant under Moebius transformations but the discrete Willmore energy is not: it is being lowered by concentrating vertices, not by changing the shape, and W below 4 pi (genus 0) or 2 pi^2 (genus 1) is then a discretisation artefact. Stopping with this state; its energy is not trustworthy (-constraint_mobius fixes the Moebius gauge; -flow_max_area_ratio 0 disables this check)\n", it, (double)(amin > 0 ? amax / amin : PETSC_INFINITY), (double)F.max_area_ratio));
+        stop_reason = "mesh_degenerate";
+        break;
+      }
+    }
     if (el < F.rtol && PetscMax(conf, glob) < F.ctol) {
       converged   = PETSC_TRUE;
       stop_reason = "converged";
@@ -790,6 +834,7 @@ PetscErrorCode CSWillmoreFlowRun(MPI_Comm comm, CSOutput *out, CSFlowKind kind)
   PetscCall(CSJSONAddReal(out->json, "el_residual", el));
   PetscCall(CSJSONAddInt(out->json, "rejections", n.rejections));
   PetscCall(CSJSONAddInt(out->json, "ksp_iterations", n.kspits_total));
+  PetscCall(CSJSONAddInt(out->json, "pc_setups", F.saddle.setups)); /* preconditioner builds (factorisations) */
   PetscCall(CSJSONAddReal(out->json, "t_final", F.t));
   PetscCall(CSJSONAddReal(out->json, "seconds_per_iteration", it ? (tnow - n.t0) / it : 0));
   if (F.k) PetscCall(CSJSONAddRealArray(out->json, "constraint_values", F.k, F.cx));

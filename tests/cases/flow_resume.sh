@@ -19,7 +19,10 @@ size = max(abs(x) for v in a for x in v)
 d = max(abs(x - y) for u, v in zip(a, b) for x, y in zip(u, v)) / size
 sa, sb = json.load(open(p + "-full.json")), json.load(open(p + "-res.json"))
 ha, hb = list(csv.reader(open(p + "-full.csv"))), list(csv.reader(open(p + "-split.csv")))
-hd = max(abs(float(x) - float(y)) / max(1.0, abs(float(x))) for r, s in zip(ha[1:], hb[1:]) for x, y in zip(r[:-1], s[:-1]))
+# every column but the timings and the Krylov counts (a resumed run starts with a new factorisation, where the
+# straight run may still be reusing an earlier one: -flow_pc_reuse_its)
+keep = [k for k, name in enumerate(ha[0]) if name not in ("seconds", "ksp_its")]
+hd = max(abs(float(r[k]) - float(s[k])) / max(1.0, abs(float(r[k]))) for r, s in zip(ha[1:], hb[1:]) for k in keep)
 checks = [
   ("same vertex count (%d)" % len(a), len(a) == len(b) and len(a) > 0),
   ("positions agree: max diff / size = %.2e < 1e-10" % d, d < 1e-10),

@@ -2,7 +2,8 @@ static const char help[] = "Checks of the conformal-constraint operators of soli
                            "finite differences of C lambda, the identities C A u = 0 (cross ratios are invariant under\n"
                            "vertex scaling, Eq. 4), X f = 0 (global scaling), X t = 0 and X (w x f) = 0 (translations,\n"
                            "rotations), the vertex-star relation sum_j (C lambda)_ij = 0 (why PGD's matrix is singular),\n"
-                           "the shell H^2 metric against the assembled one, H 1 = *0 1, I_Q > 0, the fairing gradient.\n"
+                           "the shell H^2 metric against the assembled one, H 1 = *0 1, I_Q > 0, the fairing gradient, the\n"
+                           "Moebius-balancing rows (finite differences, similarity invariance, the boost rate).\n"
                            "Exit status = number of failed checks.\n";
 
 #include "cs_constraints.h"
@@ -289,6 +290,96 @@ static PetscErrorCode CheckNormals(MPI_Comm comm)
   PetscFunctionReturn(0);
 }
 
+/* Moebius balancing rows (constraints_global.c): m(f0) = 0; rows against central differences of m; m = 0 after
+   a similarity of f0 (scaling, rotation and translation stay free); and the infinitesimal Moebius boost of the
+   unit sphere v(x) = b - (b.x) x (area change dA = -2 (b.x) A) moves m at the rate of the smooth identity
+   dm = -2 (sum_i A_i x_i x_i^T) b / A^(3/2) = -(2/3) b / sqrt(4 pi): the rows do fix the boosts. */
+static PetscErrorCode CheckMobius(MPI_Comm comm)
+{
+  CSMesh             m;
+  CSGlobalConstraint g;
+  Vec               *rows, d, xp;
+  PetscRandom        rnd;
+  PetscReal          c[3], cp[3], cm[3], err = 0, nrm = 0, h = 1e-6, expect;
+  const PetscReal    b[3] = {0.3, -0.5, 0.2}, w[3] = {0.2, 0.9, -0.4};
+  PetscScalar        jd[3];
+  PetscFunctionBeginUser;
+  PetscCall(MakeMesh(comm, PETSC_FALSE, 0.0, &m)); /* level-2 icosphere, vertices on the unit sphere */
+  PetscCall(CSConstraintCreateMobiusBalance(m, m->x, &g));
+  PetscCall(VecDuplicateVecs(m->x, 3, &rows));
+  PetscCall(VecDuplicate(m->x, &d));
+  PetscCall(VecDuplicate(m->x, &xp));
+  PetscCall(CSGlobalConstraintEvaluate(g, m->x, c, rows));
+  err = PetscMax(PetscAbsReal(c[0]), PetscMax(PetscAbsReal(c[1]), PetscAbsReal(c[2])));
+  PetscCall(CSTestCheck(comm, (PetscBool)(err < 1e-15), "mobius: m(f0) = 0", err, 1e-15));
+  /* rows vs central differences along a random direction */
+  PetscCall(PetscRandomCreate(comm, &rnd));
+  PetscCall(PetscRandomSetSeed(rnd, 7));
+  PetscCall(PetscRandomSeed(rnd));
+  PetscCall(VecSetRandom(d, rnd));
+  PetscCall(VecMDot(d, 3, rows, jd));
+  PetscCall(VecWAXPY(xp, h, d, m->x));
+  PetscCall(CSGlobalConstraintEvaluate(g, xp, cp, NULL));
+  PetscCall(VecWAXPY(xp, -h, d, m->x));
+  PetscCall(CSGlobalConstraintEvaluate(g, xp, cm, NULL));
+  err = 0;
+  for (int k = 0; k < 3; k++) {
+    err = PetscMax(err, PetscAbsReal((cp[k] - cm[k]) / (2 * h) - PetscRealPart(jd[k])));
+    nrm = PetscMax(nrm, PetscAbsReal(PetscRealPart(jd[k])));
+  }
+  PetscCall(CSTestCheck(comm, (PetscBool)(err / nrm < 1e-6), "mobius: rows vs central differences of m (relative)", err / nrm, 1e-6));
+  /* a similarity: x -> 1.7 R x + t, R the rotation exp([w]x) to first order made exact by Rodrigues */
+  {
+    PetscInt           nl;
+    const PetscScalar *x;
+    PetscScalar       *y;
+    PetscReal          th = CSVecNorm(w), k[3], t[3] = {0.4, -1.1, 2.0};
+    for (int e = 0; e < 3; e++) k[e] = w[e] / th;
+    PetscCall(VecGetLocalSize(m->x, &nl));
+    PetscCall(VecGetArrayRead(m->x, &x));
+    PetscCall(VecGetArray(xp, &y));
+    for (PetscInt i = 0; i < nl / 3; i++) {
+      const PetscReal *v = (const PetscReal *)x + 3 * i;
+      PetscReal        kv[3], kd = CSVecDot(k, v);
+      CSVecCross(k, v, kv);
+      for (int e = 0; e < 3; e++) y[3 * i + e] = 1.7 * (v[e] * PetscCosReal(th) + kv[e] * PetscSinReal(th) + k[e] * kd * (1 - PetscCosReal(th))) + t[e];
+    }
+    PetscCall(VecRestoreArrayRead(m->x, &x));
+    PetscCall(VecRestoreArray(xp, &y));
+    PetscCall(CSGlobalConstraintEvaluate(g, xp, cp, NULL));
+    err = PetscMax(PetscAbsReal(cp[0]), PetscMax(PetscAbsReal(cp[1]), PetscAbsReal(cp[2])));
+    PetscCall(CSTestCheck(comm, (PetscBool)(err < 1e-13), "mobius: m = 0 after a similarity (scaling, rotation, translation free)", err, 1e-13));
+  }
+  /* the boost field */
+  {
+    PetscInt           nl;
+    const PetscScalar *x;
+    PetscScalar       *v;
+    PetscCall(VecGetLocalSize(m->x, &nl));
+    PetscCall(VecGetArrayRead(m->x, &x));
+    PetscCall(VecGetArray(d, &v));
+    for (PetscInt i = 0; i < nl / 3; i++) {
+      const PetscReal *f  = (const PetscReal *)x + 3 * i;
+      PetscReal        bx = CSVecDot(b, f);
+      for (int e = 0; e < 3; e++) v[3 * i + e] = b[e] - bx * f[e];
+    }
+    PetscCall(VecRestoreArrayRead(m->x, &x));
+    PetscCall(VecRestoreArray(d, &v));
+    PetscCall(VecMDot(d, 3, rows, jd));
+    expect = -2.0 / (3.0 * PetscSqrtReal(4 * PETSC_PI));
+    err    = 0;
+    for (int k = 0; k < 3; k++) err = PetscMax(err, PetscAbsReal(PetscRealPart(jd[k]) - expect * b[k]) / (PetscAbsReal(expect) * CSVecNorm(b)));
+    PetscCall(CSTestCheck(comm, (PetscBool)(err < 0.05), "mobius: rows . boost field = -(2/3) b / sqrt(4 pi) (smooth identity, relative, level-2 icosphere)", err, 0.05));
+  }
+  PetscCall(PetscRandomDestroy(&rnd));
+  PetscCall(VecDestroyVecs(3, &rows));
+  PetscCall(VecDestroy(&d));
+  PetscCall(VecDestroy(&xp));
+  PetscCall(CSGlobalConstraintDestroy(&g));
+  PetscCall(CSMeshDestroy(&m));
+  PetscFunctionReturn(0);
+}
+
 int main(int argc, char **argv)
 {
   PetscCall(PetscInitialize(&argc, &argv, NULL, help));
@@ -296,6 +387,7 @@ int main(int argc, char **argv)
   PetscCall(RunChecks(PETSC_COMM_WORLD, PETSC_FALSE));
   PetscCall(RunChecks(PETSC_COMM_WORLD, PETSC_TRUE));
   PetscCall(CheckNormals(PETSC_COMM_WORLD));
+  PetscCall(CheckMobius(PETSC_COMM_WORLD));
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%" PetscInt_FMT " failed\n", cs_test_failures));
   PetscCall(PetscFinalize());
   return (int)cs_test_failures;
