@@ -231,7 +231,13 @@ PetscErrorCode CSSaddleSetOperators(CSSaddle *s, Mat H, PetscReal t, Vec iq, Pet
   } else {
     /* an earlier factorisation is a strong preconditioner for the slightly changed matrix (PETSC-NOTES): keep
        S (and so its factorisation, which the Schur sub-solver redoes whenever S changes) as it is */
-    s->reusing = (PetscBool)(s->reuse_its > 0 && s->last_its <= s->reuse_its);
+    /* reuse while the last solve was cheap; after a failed attempt (a solve of more than reuse_its iterations
+       with the kept factorisation) wait 1, 2, 4, ... 16 fresh steps before trying again: early in a run the
+       surface changes fast and every attempt would waste its iterations */
+    if (s->wait > 0) {
+      s->reusing = PETSC_FALSE;
+      s->wait--;
+    } else s->reusing = (PetscBool)(s->reuse_its > 0 && s->last_its <= s->reuse_its);
     if (!s->reusing) {
       if (s->S) PetscCall(AssembleSchur(s, iq, tmu, X));
       s->setups++;
@@ -244,7 +250,7 @@ PetscErrorCode CSSaddleSetOperators(CSSaddle *s, Mat H, PetscReal t, Vec iq, Pet
   PetscFunctionReturn(0);
 }
 
-/* A solve with a kept preconditioner is given at most 4 reuse_its (at least 40) iterations; if it needs more,
+/* A solve with a kept preconditioner is given at most 2 reuse_its (at least 20) iterations; if it needs more,
    the preconditioner is rebuilt for the current matrix and the solve repeated, so a stale factorisation
    costs a bounded number of wasted iterations and never a rejected step. */
 static PetscErrorCode KSolve(CSSaddle *s, Vec b, Vec z, PetscInt *its)
@@ -253,12 +259,16 @@ static PetscErrorCode KSolve(CSSaddle *s, Vec b, Vec z, PetscInt *its)
   PetscInt           n;
   PetscFunctionBeginUser;
   if (s->reusing) {
-    PetscCall(KSPSetTolerances(s->ksp, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT, PetscMin(s->max_it, PetscMax(40, 4 * s->reuse_its))));
+    PetscCall(KSPSetTolerances(s->ksp, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT, PetscMin(s->max_it, PetscMax(20, 2 * s->reuse_its))));
     PetscCall(KSPSolve(s->ksp, b, z));
     PetscCall(KSPSetTolerances(s->ksp, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT, s->max_it));
     PetscCall(KSPGetConvergedReason(s->ksp, &reason));
     PetscCall(KSPGetIterationNumber(s->ksp, &n));
     s->last_its = n;
+    if (n > s->reuse_its) { /* a failed attempt: back off */
+      s->backoff = PetscMin(16, PetscMax(1, 2 * s->backoff));
+      s->wait    = s->backoff;
+    } else s->backoff = 0;
     if (reason > 0) {
       *its += n;
       PetscFunctionReturn(0);

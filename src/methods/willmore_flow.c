@@ -37,8 +37,8 @@
    smooth lower bounds (4 pi, 2 pi^2). We stop when the spread max_i(A_i/A0_i) / min_i(A_i/A0_i) of the
    barycentric vertex areas relative to the input exceeds the limit (0 disables; default 200: the vesicle of
    options/flow_vesicle.opts is still well resolved at a spread of 159 and W has dropped by 1.4 at 1740).
-   The cure is -constraint_mobius (constraints_global.c), which fixes the three Moebius boosts: with it the
-   vesicle keeps q_max 1.08 and W = 16.31 instead of sliding to W = 9.29. */
+   The cure is -constraint_mobius (constraints_global.c, not the default), which fixes the three Moebius
+   boosts: with it the vesicle keeps q_max 1.08 and W = 16.31 instead of sliding to W = 9.29. */
 #include "willmore_flow.h"
 #include "cs_util.h"
 
@@ -118,7 +118,7 @@ static PetscErrorCode FlowSetUp(MPI_Comm comm, Flow *F, CSFlowKind kind, CSOutpu
 {
   CSMesh    m;
   char      metric[16] = "h2", energy[32] = "willmore", target[PETSC_MAX_PATH_LEN] = "", points[PETSC_MAX_PATH_LEN] = "", boundary[32] = "";
-  PetscBool conformal = (PetscBool)(kind != CS_FLOW_GD), conformal_set, has_target, has_points, has_boundary, area_set, area_given, vol_set, vol_given, h2, mobius = PETSC_FALSE, mobius_set;
+  PetscBool conformal = (PetscBool)(kind != CS_FLOW_GD), conformal_set, has_target, has_points, has_boundary, area_set, area_given, vol_set, vol_given, h2, mobius = PETSC_FALSE;
   PetscReal area_target = 0, vol_target = 0, bump = 0, bump_k = 3, stretch[3] = {1, 1, 1}, eps = 1e-3;
   PetscInt  nstretch = 3;
   PetscBool stretch_set;
@@ -165,7 +165,7 @@ static PetscErrorCode FlowSetUp(MPI_Comm comm, Flow *F, CSFlowKind kind, CSOutpu
   PetscCall(OptionalTarget("-constraint_area", "Total area constraint [target value, default the initial area]", &area_set, &area_target, &area_given, PetscOptionsObject));
   PetscCall(OptionalTarget("-constraint_volume", "Enclosed volume constraint [target value, default the initial volume]", &vol_set, &vol_target, &vol_given, PetscOptionsObject));
   PetscCall(PetscOptionsString("-constraint_points", "File of point constraints: lines 'vertex_index x y z' (0-based)", NULL, points, points, sizeof(points), &has_points));
-  PetscCall(PetscOptionsBool("-constraint_mobius", "Moebius balancing: fix the three Moebius boosts that the conformal constraint leaves free and along which the discrete W degrades the mesh (default: on for the Willmore energy on closed surfaces with the conformal constraint and no point constraints)", NULL, mobius, &mobius, &mobius_set));
+  PetscCall(PetscOptionsBool("-constraint_mobius", "Moebius balancing: fix the three Moebius boosts that the conformal constraint leaves free and along which the discrete W degrades the mesh (for the Willmore energy on closed surfaces; needs the conformal constraint)", NULL, mobius, &mobius, NULL));
   PetscCall(PetscOptionsString("-flow_boundary", "dirichlet|free|normals: boundary vertices fixed, free (C0 only), or fixed with fixed boundary-face normals (App. D)", NULL, boundary, boundary, sizeof(boundary), &has_boundary));
   PetscCall(PetscOptionsReal("-flow_init_bump", "Test input: radial bump amplitude applied to the initial positions", NULL, bump, &bump, NULL));
   PetscCall(PetscOptionsReal("-flow_init_bump_freq", "Test input: bump frequency k in sin(k x) sin(k y) sin(k z)", NULL, bump_k, &bump_k, NULL));
@@ -260,14 +260,11 @@ static PetscErrorCode FlowSetUp(MPI_Comm comm, Flow *F, CSFlowKind kind, CSOutpu
     PetscCall(CSConstraintCreateVolume(m, vol_given ? vol_target : V, &F->gc[F->ng++]));
   }
   if (has_points) PetscCall(CSConstraintCreatePointsFromFile(m, "-constraint_points", points, &F->gc[F->ng++]));
-  /* Moebius balancing by default where the Moebius orbit is free and W invariant along it: the Willmore energy
-     on closed surfaces (no fixed or free boundary vertices) under the conformal constraint, without point
-     constraints (which pin the gauge themselves) */
-  if (!mobius_set) {
-    PetscBool willmore;
-    PetscCall(PetscStrcmp(energy, "willmore", &willmore)); /* area and fairing (data term) are not Moebius invariant */
-    mobius = (PetscBool)(willmore && conformal && m->topo.boundary_loops == 0 && !has_points);
-  }
+  /* Moebius balancing on request (-constraint_mobius): it matters where the Moebius orbit is free and W
+     invariant along it (the Willmore energy on closed surfaces under the conformal constraint, without point
+     constraints, which pin the gauge themselves), and the guard below stops runs that need it. Not the
+     default: its 3 dense rows cost 3 more solves per step (bordering), 3.3x the time of a 200-step run at 20k
+     faces once the factorisation is kept (159 vs 48 s), and soliman2021's method has no such rows. */
   if (mobius) {
     PetscCheck(conformal, comm, PETSC_ERR_ARG_INCOMP, "-constraint_mobius fixes the Moebius gauge of the conformal constraint: it needs -flow_conformal (cgd, pgd)");
     PetscCall(CSConstraintCreateMobiusBalance(m, F->x0, &F->gc[F->ng++]));

@@ -2,17 +2,17 @@
 # (-flow_max_area_ratio): on a sphere at reduced volume (soliman2021 Fig. 3; area + volume 3.5 + conformal),
 # the length cross ratios and the smooth W are Moebius invariant but the discrete W is not, and the unbalanced
 # flow slides along the Moebius orbit, concentrating the vertices, until W is below 4 pi (no closed surface
-# has that) -- shown in (c). (a) With the balancing (the default on closed surfaces) the run converges with
+# has that) -- shown in (c). (a) With the balancing (-constraint_mobius) the run converges with
 # every constraint, the three balancing rows included, met to 1e-10 and W above 4 pi. (b) Without it the
 # guard stops the run once the vertex areas spread by more than 200 and says why.
 # nprocs: 1 2
 source tests/lib.sh
 S="-task flow -gen icosphere -gen_level 3 -constraint_area -constraint_volume 3.5 -flow_max_it 400"
-timeout 180 $MPIEXEC "$CS_BIN" $S -summary "$TMP/a.json" > "$TMP/a.log" 2>&1 || { tail "$TMP/a.log"; exit 1; }
-timeout 180 $MPIEXEC "$CS_BIN" $S -constraint_mobius 0 -summary "$TMP/b.json" > "$TMP/b.log" 2>&1 || { tail "$TMP/b.log"; exit 1; }
+timeout 180 $MPIEXEC "$CS_BIN" $S -constraint_mobius -summary "$TMP/a.json" > "$TMP/a.log" 2>&1 || { tail "$TMP/a.log"; exit 1; }
+timeout 180 $MPIEXEC "$CS_BIN" $S -summary "$TMP/b.json" > "$TMP/b.log" 2>&1 || { tail "$TMP/b.log"; exit 1; }
 grep -q "mesh resolution collapse .*-constraint_mobius" "$TMP/b.log" || { echo "BAD: no resolution-collapse message"; tail -3 "$TMP/b.log"; exit 1; }
 if [ "$NP" = 1 ]; then
-  timeout 180 $MPIEXEC "$CS_BIN" $S -constraint_mobius 0 -flow_max_area_ratio 0 -summary "$TMP/c.json" > "$TMP/c.log" 2>&1 || { tail "$TMP/c.log"; exit 1; }
+  timeout 180 $MPIEXEC "$CS_BIN" $S -flow_max_area_ratio 0 -summary "$TMP/c.json" > "$TMP/c.log" 2>&1 || { tail "$TMP/c.log"; exit 1; }
 else cp "$TMP/b.json" "$TMP/c.json"; fi
 python3 - "$TMP" "$NP" <<'PY'
 import json, sys, math
