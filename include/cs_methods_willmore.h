@@ -41,6 +41,7 @@ typedef struct {
   PetscInt  setups;     /* preconditioner (factorisation) builds so far */
   PetscInt  max_it;     /* the KSP's own iteration limit */
   PetscBool reusing;    /* this step keeps an earlier preconditioner */
+  PetscBool krylov;     /* the KSP iterates (not preonly): kept preconditioners and initial guesses allowed */
   PetscInt  backoff, wait; /* fresh steps to take before the next reuse attempt, after failed attempts */
   Vec       iq;         /* this step's I_Q, t_mu and X (borrowed), to rebuild S when a kept one fails */
   PetscReal tmu;

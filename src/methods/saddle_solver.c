@@ -186,7 +186,10 @@ PetscErrorCode CSSaddleSetOperators(CSSaddle *s, Mat H, PetscReal t, Vec iq, Pet
   for (PetscInt j = 0; j < s->k; j++) {
     if (!s->B) PetscCall(PetscCalloc1(s->k, &s->B));
     if (!s->B[j]) PetscCall(VecDuplicate(s->b, &s->B[j]));
-    if (!s->W[j]) PetscCall(VecDuplicate(s->b, &s->W[j]));
+    if (!s->W[j]) {
+      PetscCall(VecDuplicate(s->b, &s->W[j]));
+      PetscCall(VecSet(s->W[j], 0)); /* later steps start from the previous step's W_j */
+    }
     PetscCall(VecSet(s->B[j], 0));
     if (s->edges) {
       Vec sub;
@@ -227,6 +230,10 @@ PetscErrorCode CSSaddleSetOperators(CSSaddle *s, Mat H, PetscReal t, Vec iq, Pet
       PetscBool preonly;
       PetscCall(PetscObjectTypeCompare((PetscObject)s->ksp, KSPPREONLY, &preonly));
       if (preonly) s->reuse_its = 0;
+      s->krylov = (PetscBool)!preonly;
+      /* tolerances relative to |b| (the zero-guess residual), also for the bordering solves that start from the
+         previous step's solution: the same accuracy, fewer iterations */
+      if (s->krylov) PetscCall(KSPConvergedDefaultSetUIRNorm(s->ksp));
     }
   } else {
     /* an earlier factorisation is a strong preconditioner for the slightly changed matrix (PETSC-NOTES): keep
@@ -335,6 +342,7 @@ PetscErrorCode CSSaddleSolve(CSSaddle *s, Vec rE, Vec rV, const PetscReal rX[], 
     PetscCall(VecCopy(rV, sub));
     PetscCall(VecRestoreSubVector(s->b, s->is[1], &sub));
   } else PetscCall(VecCopy(rV, s->b));
+  PetscCall(KSPSetInitialGuessNonzero(s->ksp, PETSC_FALSE));
   PetscCall(KSolve(s, s->b, s->z, &n));
   nfirst = s->last_its; /* the iterations of the (last) solve of the step's own right-hand side */
   if (s->k) {
@@ -342,7 +350,10 @@ PetscErrorCode CSSaddleSolve(CSSaddle *s, Vec rE, Vec rV, const PetscReal rX[], 
     PetscScalar   *S, *rhs;
     PetscErrorCode ierr;
     /* the solves first: a failed one (a rejected step, retried by the flow) then leaves nothing allocated */
+    /* W_j = K^{-1} B_j changes little from step to step: start from the last one (Krylov solvers only) */
+    PetscCall(KSPSetInitialGuessNonzero(s->ksp, s->krylov));
     for (PetscInt j = 0; j < s->k; j++) PetscCall(KSolve(s, s->B[j], s->W[j], &n));
+    PetscCall(KSPSetInitialGuessNonzero(s->ksp, PETSC_FALSE));
     PetscCall(PetscMalloc2(s->k * s->k, &S, s->k, &rhs));
     for (PetscInt i = 0; i < s->k; i++) {
       PetscScalar v;
