@@ -8,9 +8,9 @@
    CHOLMOD at 20k faces); S is factored by CHOLMOD serially (1.8x faster than MUMPS-AMD at 20k faces) and by
    MUMPS with the PORD ordering in parallel; the outer iteration then converges in 1-2 steps. The factorisation
    is kept over later steps while it stays a good preconditioner (-flow_pc_reuse_its, default 10: refactor
-   once a solve needed more than 10 FGMRES iterations): at level 5 a 200-iteration run needs 137 s when
-   refactoring every step and 31 s with the kept factorisation (1115 FGMRES iterations in all, identical
-   result; runs/bench_flow.sh). The default is
+   once a solve needed more than 10 FGMRES iterations): at level 5 a 200-step run needs 207 s (201
+   factorisations) when refactoring every step and 49.5 s with the kept one (18 factorisations, 1122 FGMRES
+   iterations in all; the same W to 1e-13; runs/bench_flow.md). The default is
    inserted as a preset when -flow_pc_type is not given; any single preset option can be overridden on the
    command line (e.g. -flow_pc_fieldsplit_schur_precondition selfp). */
 #include "cs_methods_willmore.h"
@@ -236,11 +236,11 @@ PetscErrorCode CSSaddleSetOperators(CSSaddle *s, Mat H, PetscReal t, Vec iq, Pet
       if (s->krylov) PetscCall(KSPConvergedDefaultSetUIRNorm(s->ksp));
     }
   } else {
-    /* an earlier factorisation is a strong preconditioner for the slightly changed matrix (PETSC-NOTES): keep
-       S (and so its factorisation, which the Schur sub-solver redoes whenever S changes) as it is */
-    /* reuse while the last solve was cheap; after a failed attempt (a solve of more than reuse_its iterations
-       with the kept factorisation) wait 1, 2, 4, ... 16 fresh steps before trying again: early in a run the
-       surface changes fast and every attempt would waste its iterations */
+    /* an earlier factorisation is a strong preconditioner for the slightly changed matrix (PETSC-NOTES). To
+       keep it, S is left as it is (the Schur sub-solver refactors whenever S changes). Reuse while the last
+       solve was cheap; after a failed attempt (more than reuse_its iterations with the kept factorisation)
+       take 1, 2, 4, ... 16 fresh steps before trying again: early in a run the surface changes fast and every
+       attempt would waste its iterations. */
     if (s->wait > 0) {
       s->reusing = PETSC_FALSE;
       s->wait--;
