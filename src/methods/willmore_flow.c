@@ -35,7 +35,9 @@
    unit sphere keeps every cross ratio to 1e-13 and has W = 9.8 < 4 pi; an icosahedron has W = 9.57). The
    flow then lowers W by concentrating vertices instead of changing the shape, and W can end below the
    smooth lower bounds (4 pi, 2 pi^2). We stop when the spread max_i(A_i/A0_i) / min_i(A_i/A0_i) of the
-   barycentric vertex areas relative to the input exceeds the limit (0 disables; default 200: the vesicle of
+   barycentric vertex areas relative to the input exceeds the limit, or when the total area has changed by more
+   than that factor (a diverging run: a far-off volume target once grew |xi| 6x per step with the Lagrangian
+   falling, which the step filter accepts) (0 disables; default 200: the vesicle of
    options/flow_vesicle.opts is still well resolved at a spread of 159 and W has dropped by 1.4 at 1740).
    The cure is -constraint_mobius (constraints_global.c, not the default), which fixes the three Moebius
    boosts: with it the vesicle keeps q_max 1.08 and W = 16.31 instead of sliding to W = 9.29. */
@@ -670,8 +672,17 @@ PetscErrorCode CSWillmoreFlowRun(MPI_Comm comm, CSOutput *out, CSFlowKind kind)
     }
     if (!(E == E) || !(el == el)) SETERRQ(comm, PETSC_ERR_FP, "flow: the energy or the residual is not a number at iteration %" PetscInt_FMT " (degenerate triangles?); try a smaller -flow_t", it);
     if (F.max_area_ratio > 0) {
-      PetscReal amax, amin;
+      PetscReal   amax, amin, ratio;
+      PetscScalar atot, a0tot;
       PetscCall(CSGeometryLaplacianPositions(F.mesh, F.x, NULL, F.areat));
+      PetscCall(VecSum(F.areat, &atot));
+      PetscCall(VecSum(F.area0, &a0tot));
+      ratio = PetscRealPart(atot / a0tot);
+      if (!(ratio < F.max_area_ratio && ratio > 1 / F.max_area_ratio)) { /* e.g. a far-off volume target */
+        PetscCall(PetscPrintf(comm, "flow: the flow diverges at iteration %" PetscInt_FMT ": the total area is %g times the input's, beyond -flow_max_area_ratio (%g). Stopping with this state; it is not a solution (try a smaller -flow_t_max, or a constraint target nearer the input)\n", it, (double)ratio, (double)F.max_area_ratio));
+        stop_reason = "diverged";
+        break;
+      }
       PetscCall(VecPointwiseDivide(F.areat, F.areat, F.area0));
       PetscCall(VecMax(F.areat, NULL, &amax));
       PetscCall(VecMin(F.areat, NULL, &amin));

@@ -4,7 +4,8 @@
 # flow slides along the Moebius orbit, concentrating the vertices, until W is below 4 pi (no closed surface
 # has that) -- shown in (c). (a) With the balancing (-constraint_mobius) the run converges with
 # every constraint, the three balancing rows included, met to 1e-10 and W above 4 pi. (b) Without it the
-# guard stops the run once the vertex areas spread by more than 200 and says why.
+# guard stops the run once the vertex areas spread by more than 200 and says why. (d) The same guard stops a
+# diverging run (total area changed 200-fold).
 # nprocs: 1 2
 source tests/lib.sh
 S="-task flow -gen icosphere -gen_level 3 -constraint_area -constraint_volume 3.5 -flow_max_it 400"
@@ -14,10 +15,14 @@ grep -q "mesh resolution collapse .*-constraint_mobius" "$TMP/b.log" || { echo "
 if [ "$NP" = 1 ]; then
   timeout 180 $MPIEXEC "$CS_BIN" $S -flow_max_area_ratio 0 -summary "$TMP/c.json" > "$TMP/c.log" 2>&1 || { tail "$TMP/c.log"; exit 1; }
 else cp "$TMP/b.json" "$TMP/c.json"; fi
+# (d) a far-off volume target (v = 0.24) makes CGD diverge (|xi| grew 6x per step while the Lagrangian fell): the
+#     guard stops it once the total area has changed 200-fold, with stop_reason "diverged"
+timeout 60 $MPIEXEC "$CS_BIN" -task flow -gen icosphere -gen_level 2 -constraint_area -constraint_volume 0.95 -flow_max_it 60 -summary "$TMP/d.json" > "$TMP/d.log" 2>&1 || { tail "$TMP/d.log"; exit 1; }
+grep -q "the flow diverges at iteration" "$TMP/d.log" || { echo "BAD: no divergence message"; tail -3 "$TMP/d.log"; exit 1; }
 python3 - "$TMP" "$NP" <<'PY'
 import json, sys, math
 d, np = sys.argv[1], sys.argv[2]
-a, b, c = (json.load(open(d + '/%s.json' % k)) for k in 'abc')
+a, b, c, dv = (json.load(open(d + '/%s.json' % k)) for k in 'abcd')
 cv = a.get('constraint_values', [])
 checks = [
   ("(a) balanced: converged", a['converged'] in (True, 1, 'true'), (a['iterations'], a['stop_reason'])),
@@ -27,6 +32,7 @@ checks = [
   ("(a) conformal_violation < 1e-10", a['conformal_violation'] < 1e-10, a['conformal_violation']),
   ("(a) W > 4 pi", a['energy'] > 4 * math.pi, a['energy']),
   ("(b) unbalanced: stopped by the guard", b['stop_reason'] == 'mesh_degenerate', b['stop_reason']),
+  ("(d) far-off volume: stopped as diverged", dv['stop_reason'] == 'diverged' and dv['converged'] in (False, 0, 'false'), (dv['stop_reason'], dv['iterations'])),
 ]
 if np == '1':
   checks.append(("(c) unbalanced, no guard: W ends below 4 pi (the artefact the balancing removes)", c['energy'] < 4 * math.pi, c['energy']))
