@@ -154,7 +154,8 @@ static PetscErrorCode FlowSetUp(MPI_Comm comm, Flow *F, CSFlowKind kind, CSOutpu
   PetscCall(PetscOptionsInt("-flow_max_rejections", "Consecutive rejected steps before giving up", NULL, F->max_rej, &F->max_rej, NULL));
   PetscCall(PetscOptionsReal("-flow_merit_rho", "Weight of the quadratic constraint penalty in the merit function, relative to |E(input)|", NULL, F->rho, &F->rho, NULL));
   PetscCall(PetscOptionsReal("-flow_vmax", "Step control: reject steps whose constraint violation exceeds max(10 v, this)", NULL, F->vmax, &F->vmax, NULL));
-  PetscCall(PetscOptionsReal("-flow_max_area_ratio", "Stop when max(A_i/A0_i)/min(A_i/A0_i) of the vertex areas exceeds this (mesh resolution collapse; 0: off)", NULL, F->max_area_ratio, &F->max_area_ratio, NULL));
+  PetscCall(PetscOptionsReal("-flow_max_area_ratio", "Stop when max(A_i/A0_i)/min(A_i/A0_i) of the vertex areas, or the total area relative to the input, exceeds this (mesh resolution collapse, divergence; 0: off)", NULL, F->max_area_ratio, &F->max_area_ratio, NULL));
+  PetscCheck(F->max_area_ratio == 0 || F->max_area_ratio > 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-flow_max_area_ratio %g: use 0 (off) or a ratio above 1", (double)F->max_area_ratio);
   PetscCall(PetscOptionsReal("-flow_rtol", "Stop when ||g + X^T mu||_2 is below this", NULL, F->rtol, &F->rtol, NULL));
   PetscCall(PetscOptionsReal("-flow_ctol", "... and the constraint violation (inf-norm) below this", NULL, F->ctol, &F->ctol, NULL));
   PetscCall(PetscOptionsInt("-flow_max_it", "Maximum number of iterations", NULL, F->max_it, &F->max_it, NULL));

@@ -17,3 +17,6 @@ EXPECT="-flow_metric" expect_fail F -gen icosphere -gen_level 2 -flow_metric h3
 EXPECT="gd.*conformal" expect_fail F -gen icosphere -gen_level 2 -flow_type gd -flow_conformal
 EXPECT="-flow_boundary normals.*conformal" expect_fail F -gen cylinder -flow_boundary normals -flow_type gd
 EXPECT="-flow_boundary.*unknown" expect_fail F -gen cylinder -flow_boundary neumann
+EXPECT="-flow_max_area_ratio 0.5" expect_fail F -gen icosphere -gen_level 1 -flow_max_area_ratio 0.5
+EXPECT="-flow_pc_reuse_its -1" expect_fail F -gen icosphere -gen_level 1 -flow_pc_reuse_its -1
+EXPECT="-constraint_mobius.*-flow_conformal" expect_fail F -gen icosphere -gen_level 1 -flow_type gd -constraint_mobius
