@@ -73,6 +73,7 @@ typedef struct {
   PetscInt              max_it, max_rej, proj_max_it;
   PetscBool             step_control;
   PetscReal             proj_tmu;
+  PetscReal             tmu_grow, tmu_max; /* own schedule of the dual step (0: t_mu follows t) */
 } Flow;
 
 /* ---------- options and setup ---------- */
@@ -144,11 +145,15 @@ static PetscErrorCode FlowSetUp(MPI_Comm comm, Flow *F, CSFlowKind kind, CSOutpu
   F->step_control = PETSC_TRUE;
   F->rho       = 0.0;
   F->vmax      = 1e-2;
+  F->tmu_grow  = 0;
+  F->tmu_max   = 0;
   F->max_area_ratio = 200;
   PetscOptionsBegin(comm, NULL, "Constrained Willmore flow (soliman2021)", NULL);
   PetscCall(PetscOptionsReal("-flow_t", "Initial primal step size t", NULL, F->t, &F->t, NULL));
   PetscCall(PetscOptionsReal("-flow_t_mu", "Dual step size t_mu of the multipliers (default 1e3 t)", NULL, F->tmu, &F->tmu, NULL));
   PetscCall(PetscOptionsReal("-flow_t_max", "Largest primal step", NULL, F->tmax, &F->tmax, NULL));
+  PetscCall(PetscOptionsReal("-flow_t_mu_grow", "Grow t_mu by this factor after each accepted step, independently of t, up to -flow_t_mu_max (0: t_mu follows t)", NULL, F->tmu_grow, &F->tmu_grow, NULL));
+  PetscCall(PetscOptionsReal("-flow_t_mu_max", "Largest t_mu with -flow_t_mu_grow (default 1e3 t_max, in the units of -flow_t_mu)", NULL, F->tmu_max, &F->tmu_max, NULL));
   PetscCall(PetscOptionsReal("-flow_t_grow", "Factor on t after an accepted step", NULL, F->grow, &F->grow, NULL));
   PetscCall(PetscOptionsBool("-flow_step_control", "Accept a step only if the merit function decreases (else halve t)", NULL, F->step_control, &F->step_control, NULL));
   PetscCall(PetscOptionsInt("-flow_max_rejections", "Consecutive rejected steps before giving up", NULL, F->max_rej, &F->max_rej, NULL));
@@ -178,6 +183,7 @@ static PetscErrorCode FlowSetUp(MPI_Comm comm, Flow *F, CSFlowKind kind, CSOutpu
   PetscOptionsEnd();
   if (F->tmu <= 0) F->tmu = 1e3 * F->t;
   PetscCheck(F->t > 0 && F->tmu > 0 && F->grow >= 1 && F->tmax >= F->t, comm, PETSC_ERR_ARG_OUTOFRANGE, "-flow_t %g, -flow_t_mu %g, -flow_t_grow %g, -flow_t_max %g: need t > 0, t_mu > 0, grow >= 1, t_max >= t", (double)F->t, (double)F->tmu, (double)F->grow, (double)F->tmax);
+  PetscCheck(F->tmu_grow == 0 || F->tmu_grow >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-flow_t_mu_grow %g: use 0 (t_mu follows t) or a factor >= 1", (double)F->tmu_grow);
   PetscCheck(kind != CS_FLOW_GD || !conformal, comm, PETSC_ERR_ARG_INCOMP, "-flow_type gd is unconstrained Sobolev gradient descent: -flow_conformal true is not allowed (use cgd or pgd)");
   F->conformal = conformal;
   PetscCheck(!has_target || conformal, comm, PETSC_ERR_ARG_INCOMP, "-target_mesh %s needs the conformal constraint (cgd, or pgd with -flow_conformal)", target);
@@ -318,6 +324,8 @@ static PetscErrorCode FlowSetUp(MPI_Comm comm, Flow *F, CSFlowKind kind, CSOutpu
     sc                    = A / (4 * PETSC_PI);
     F->metric.mass_weight = 1.0 / (sc * sc);
     F->tmu /= sc;
+    if (F->tmu_max <= 0) F->tmu_max = 1e3 * F->tmax;
+    F->tmu_max /= sc;
     /* merit weight relative to the size of the energy (a Willmore energy ~ 4pi and a fairing energy
        eps W differ by orders of magnitude) */
     PetscCall(CSEnergyValue(F->energy, F->x0, &E0));
@@ -822,7 +830,12 @@ PetscErrorCode CSWillmoreFlowRun(MPI_Comm comm, CSOutput *out, CSFlowKind kind)
       for (PetscInt j = 0; j < F.k; j++) F.nu[j] += F.dnu[j];
     }
     n.kspits_total += n.kspits;
-    if (F.t * F.grow <= F.tmax) {
+    if (F.tmu_grow > 0 && kind != CS_FLOW_PGD) {
+      /* a dual step ramped on its own (-flow_t_mu_grow): a large t_mu during the transient of a class change
+         seeds an unstable mode (options/flow_class_change.opts) */
+      if (F.t * F.grow <= F.tmax) F.t *= F.grow;
+      F.tmu = PetscMin(F.tmu * F.tmu_grow, F.tmu_max);
+    } else if (F.t * F.grow <= F.tmax) {
       F.t *= F.grow;
       if (kind != CS_FLOW_PGD) F.tmu *= F.grow;
     }
