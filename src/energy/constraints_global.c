@@ -19,6 +19,20 @@ PetscErrorCode CSGlobalConstraintDestroy(CSGlobalConstraint *g)
   PetscFunctionReturn(0);
 }
 
+/* The object common to all global constraints; ctx is owned (freed by destroy). */
+static PetscErrorCode GlobalConstraintNew(CSMesh mesh, const char name[], PetscInt k, void *ctx, PetscErrorCode (*evaluate)(CSGlobalConstraint, Vec, PetscReal[], Vec[]), PetscErrorCode (*destroy)(CSGlobalConstraint), CSGlobalConstraint *g)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscNew(g));
+  PetscCall(PetscStrncpy((*g)->name, name, sizeof((*g)->name)));
+  (*g)->mesh     = mesh;
+  (*g)->k        = k;
+  (*g)->ctx      = ctx;
+  (*g)->evaluate = evaluate;
+  (*g)->destroy  = destroy;
+  PetscFunctionReturn(0);
+}
+
 typedef struct {
   CSEnergy  e; /* area or volume energy: value and gradient */
   PetscReal target;
@@ -48,16 +62,10 @@ static PetscErrorCode CreateEnergyConstraint(CSMesh mesh, const char name[], CSE
 {
   EnergyConstraintCtx *ctx;
   PetscFunctionBeginUser;
-  PetscCall(PetscNew(g));
   PetscCall(PetscNew(&ctx));
   ctx->e      = e;
   ctx->target = target;
-  PetscCall(PetscStrncpy((*g)->name, name, sizeof((*g)->name)));
-  (*g)->mesh     = mesh;
-  (*g)->k        = 1;
-  (*g)->ctx      = ctx;
-  (*g)->evaluate = EnergyConstraintEvaluate;
-  (*g)->destroy  = EnergyConstraintDestroy;
+  PetscCall(GlobalConstraintNew(mesh, name, 1, ctx, EnergyConstraintEvaluate, EnergyConstraintDestroy, g));
   PetscFunctionReturn(0);
 }
 
@@ -219,13 +227,7 @@ PetscErrorCode CSConstraintCreatePointsFromFile(CSMesh mesh, const char option[]
     for (PetscInt v = 0; v < mesh->nv; v++)
       if (mesh->vertOwned[v] && mesh->vertNatural[v] == ctx->vnat[k]) ctx->vloc[k] = v;
   }
-  PetscCall(PetscNew(g));
-  PetscCall(PetscStrncpy((*g)->name, "points", sizeof((*g)->name)));
-  (*g)->mesh     = mesh;
-  (*g)->k        = 3 * n;
-  (*g)->ctx      = ctx;
-  (*g)->evaluate = PointsEvaluate;
-  (*g)->destroy  = PointsDestroy;
+  PetscCall(GlobalConstraintNew(mesh, "points", 3 * n, ctx, PointsEvaluate, PointsDestroy, g));
   PetscFunctionReturn(0);
 }
 
@@ -325,12 +327,6 @@ PetscErrorCode CSConstraintCreateMobiusBalance(CSMesh mesh, Vec x0, CSGlobalCons
   for (PetscInt i = 0; i < mesh->nv; i++)
     for (int d = 0; d < 3; d++) ctx->y[3 * i + d] = (p[3 * i + d] - c0[d]) * scale;
   PetscCall(CSMeshRestoreLocalPositions(mesh, x0, &xl, &p));
-  PetscCall(PetscNew(g));
-  PetscCall(PetscStrncpy((*g)->name, "mobius", sizeof((*g)->name)));
-  (*g)->mesh     = mesh;
-  (*g)->k        = 3;
-  (*g)->ctx      = ctx;
-  (*g)->evaluate = MobiusEvaluate;
-  (*g)->destroy  = MobiusDestroy;
+  PetscCall(GlobalConstraintNew(mesh, "mobius", 3, ctx, MobiusEvaluate, MobiusDestroy, g));
   PetscFunctionReturn(0);
 }

@@ -277,11 +277,8 @@ static PetscErrorCode KSolve(CSSaddle *s, Vec b, Vec z, PetscInt *its)
       s->backoff = PetscMin(16, PetscMax(1, 2 * s->backoff));
       s->wait    = s->backoff;
     } else s->backoff = 0;
-    if (reason > 0) {
-      *its += n;
-      PetscFunctionReturn(0);
-    }
-    *its += n; /* wasted, but spent */
+    *its += n; /* spent, even if wasted */
+    if (reason > 0) PetscFunctionReturn(0);
     s->reusing = PETSC_FALSE;
     s->setups++;
     if (s->S) PetscCall(AssembleSchur(s, s->iq, s->tmu, s->X));
@@ -353,8 +350,7 @@ PetscErrorCode CSSaddleSolve(CSSaddle *s, Vec rE, Vec rV, const PetscReal rX[], 
     /* the solves first: a failed one (a rejected step, retried by the flow) then leaves nothing allocated */
     /* W_j = K^{-1} B_j changes little from step to step: start from the last one (Krylov solvers only) */
     PetscCall(KSPSetInitialGuessNonzero(s->ksp, s->krylov));
-    for (PetscInt j = 0; j < s->k; j++) PetscCall(KSolve(s, s->B[j], s->W[j], &n));
-    PetscCall(KSPSetInitialGuessNonzero(s->ksp, PETSC_FALSE));
+    for (PetscInt j = 0; j < s->k; j++) PetscCall(KSolve(s, s->B[j], s->W[j], &n)); /* (reset before the next step's first solve) */
     PetscCall(PetscMalloc2(s->k * s->k, &S, s->k, &rhs));
     for (PetscInt i = 0; i < s->k; i++) {
       PetscScalar v;

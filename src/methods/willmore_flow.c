@@ -69,6 +69,7 @@ typedef struct {
   PetscReal             t, tmu, tmax, grow, rtol, ctol, wmin, rho, vmax, *nun;
   Vec                   mun;
   Vec                   area0, areat; /* barycentric vertex areas of the input and of the current state */
+  PetscReal             area0_total;  /* total area of the input */
   PetscReal             max_area_ratio;
   PetscInt              max_it, max_rej, proj_max_it;
   PetscBool             step_control;
@@ -206,7 +207,12 @@ static PetscErrorCode FlowSetUp(MPI_Comm comm, Flow *F, CSFlowKind kind, CSOutpu
   PetscCall(VecCopy(F->x, F->x0));
   PetscCall(DMCreateGlobalVector(m->dmV1, &F->area0));
   PetscCall(VecDuplicate(F->area0, &F->areat));
-  PetscCall(CSGeometryLaplacianPositions(m, F->x0, NULL, F->area0));
+  PetscCall(CSGeometryVertexAreas(m, F->x0, F->area0));
+  {
+    PetscScalar a0;
+    PetscCall(VecSum(F->area0, &a0));
+    F->area0_total = PetscRealPart(a0);
+  }
 
   /* boundary */
   if (has_boundary) PetscCheck(m->topo.boundary_loops > 0, comm, PETSC_ERR_ARG_INCOMP, "-flow_boundary %s: the mesh %s is closed (no boundary); boundary methods need a surface with boundary", boundary, m->name);
@@ -627,6 +633,32 @@ static PetscErrorCode FlowCheckpoint(Flow *F, CSOutput *out, PetscInt it, PetscB
   PetscFunctionReturn(0);
 }
 
+/* The resolution guard (-flow_max_area_ratio, see the top of this file): sets *why to "diverged" when the total
+   area has changed by more than the ratio, or to "mesh_degenerate" when the vertex areas relative to the input
+   spread by more than it; leaves it alone otherwise. */
+static PetscErrorCode CheckResolution(Flow *F, PetscInt it, const char **why)
+{
+  PetscReal   amax, amin, ratio;
+  PetscScalar atot;
+  PetscFunctionBeginUser;
+  PetscCall(CSGeometryVertexAreas(F->mesh, F->x, F->areat));
+  PetscCall(VecSum(F->areat, &atot));
+  ratio = PetscRealPart(atot) / F->area0_total;
+  if (!(ratio < F->max_area_ratio && ratio > 1 / F->max_area_ratio)) { /* e.g. a far-off volume target */
+    PetscCall(PetscPrintf(F->comm, "flow: the flow diverges at iteration %" PetscInt_FMT ": the total area is %g times the input's, beyond -flow_max_area_ratio (%g). Stopping with this state; it is not a solution (try a smaller -flow_t_max, or a constraint target nearer the input)\n", it, (double)ratio, (double)F->max_area_ratio));
+    *why = "diverged";
+    PetscFunctionReturn(0);
+  }
+  PetscCall(VecPointwiseDivide(F->areat, F->areat, F->area0));
+  PetscCall(VecMax(F->areat, NULL, &amax));
+  PetscCall(VecMin(F->areat, NULL, &amin));
+  if (!(amin > 0) || amax > F->max_area_ratio * amin) {
+    PetscCall(PetscPrintf(F->comm, "flow: mesh resolution collapse at iteration %" PetscInt_FMT ": the vertex areas relative to the input spread by max(A/A0)/min(A/A0) = %g exceeds -flow_max_area_ratio (%g): the constraints are invariant under Moebius transformations but the discrete Willmore energy is not: it is being lowered by concentrating vertices, not by changing the shape, and W below 4 pi (genus 0) or 2 pi^2 (genus 1) is then a discretisation artefact. Stopping with this state; its energy is not trustworthy (-constraint_mobius fixes the Moebius gauge; -flow_max_area_ratio 0 disables this check)\n", it, (double)(amin > 0 ? amax / amin : PETSC_INFINITY), (double)F->max_area_ratio));
+    *why = "mesh_degenerate";
+  }
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode CSWillmoreFlowRun(MPI_Comm comm, CSOutput *out, CSFlowKind kind)
 {
   Flow           F;
@@ -681,23 +713,10 @@ PetscErrorCode CSWillmoreFlowRun(MPI_Comm comm, CSOutput *out, CSFlowKind kind)
     }
     if (!(E == E) || !(el == el)) SETERRQ(comm, PETSC_ERR_FP, "flow: the energy or the residual is not a number at iteration %" PetscInt_FMT " (degenerate triangles?); try a smaller -flow_t", it);
     if (F.max_area_ratio > 0) {
-      PetscReal   amax, amin, ratio;
-      PetscScalar atot, a0tot;
-      PetscCall(CSGeometryLaplacianPositions(F.mesh, F.x, NULL, F.areat));
-      PetscCall(VecSum(F.areat, &atot));
-      PetscCall(VecSum(F.area0, &a0tot));
-      ratio = PetscRealPart(atot / a0tot);
-      if (!(ratio < F.max_area_ratio && ratio > 1 / F.max_area_ratio)) { /* e.g. a far-off volume target */
-        PetscCall(PetscPrintf(comm, "flow: the flow diverges at iteration %" PetscInt_FMT ": the total area is %g times the input's, beyond -flow_max_area_ratio (%g). Stopping with this state; it is not a solution (try a smaller -flow_t_max, or a constraint target nearer the input)\n", it, (double)ratio, (double)F.max_area_ratio));
-        stop_reason = "diverged";
-        break;
-      }
-      PetscCall(VecPointwiseDivide(F.areat, F.areat, F.area0));
-      PetscCall(VecMax(F.areat, NULL, &amax));
-      PetscCall(VecMin(F.areat, NULL, &amin));
-      if (!(amin > 0) || amax > F.max_area_ratio * amin) {
-        PetscCall(PetscPrintf(comm, "flow: mesh resolution collapse at iteration %" PetscInt_FMT ": the vertex areas relative to the input spread by max(A/A0)/min(A/A0) = %g exceeds -flow_max_area_ratio (%g): the constraints are invariant under Moebius transformations but the discrete Willmore energy is not: it is being lowered by concentrating vertices, not by changing the shape, and W below 4 pi (genus 0) or 2 pi^2 (genus 1) is then a discretisation artefact. Stopping with this state; its energy is not trustworthy (-constraint_mobius fixes the Moebius gauge; -flow_max_area_ratio 0 disables this check)\n", it, (double)(amin > 0 ? amax / amin : PETSC_INFINITY), (double)F.max_area_ratio));
-        stop_reason = "mesh_degenerate";
+      const char *why = NULL;
+      PetscCall(CheckResolution(&F, it, &why));
+      if (why) {
+        stop_reason = why;
         break;
       }
     }
