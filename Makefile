@@ -15,7 +15,7 @@ CC       := $(shell pkg-config --variable=ccompiler petsc)
 CPPFLAGS := -Iinclude $(shell pkg-config --cflags slepc petsc)
 CFLAGS   ?= -O2 -g
 CFLAGS   += -std=gnu11 -Wall -Wextra -Wno-unused-parameter -Werror -MMD -MP
-LDLIBS   := $(shell pkg-config --libs slepc petsc) -lcholmod -lm
+LDLIBS   := $(shell pkg-config --libs slepc petsc) -lcholmod -lblas -lm
 
 LIB_SRC  := $(sort $(wildcard src/*/*.c))
 LIB_SRC  := $(filter-out src/driver/%,$(LIB_SRC))
@@ -29,6 +29,9 @@ BENCHES  := $(BENCH_SRC:runs/%.c=build/runs/%)
 LIB      := build/libconfsurf.a
 
 all: bin/confsurf $(TESTS) $(BENCHES)
+
+# the quaternion Cholesky's dense loops need -O3 to be vectorised (gcc 12 does not at -O2)
+build/obj/src/operators/quaternion_cholesky.o: CFLAGS += -O3
 
 build/obj/%.o: %.c
 	@mkdir -p $(dir $@)

@@ -4,11 +4,13 @@
 # mesh I/O and distribution excluded), for a painted bump rho, on
 #   torus 64x64 (4096 vertices), torus 120x120 (14400 vertices), bunny_closed_cgal.obj (37706 vertices, 75408 faces),
 # serial and 2 ranks, with
-#   default   Krylov-Schur + shift-and-invert; serially the factorisation of K - sigma in complex form with CHOLMOD
-#             (src/operators/cholmod_factor.c) and a CHOLMOD Poisson solve; in parallel MUMPS-AMD on the real 4V x 4V
-#             matrix and CG + GAMG for the Poisson problem
+#   default   Krylov-Schur + shift-and-invert; serially the supernodal factorisation of K - sigma in quaternion
+#             arithmetic (src/operators/quaternion_cholesky.c) and a CHOLMOD Poisson solve; in parallel MUMPS-AMD on
+#             the real 4V x 4V matrix and CG + GAMG for the Poisson problem
+#   complex   the same with CHOLMOD's factorisation of the complex form (-spin_cholesky_arithmetic complex; the
+#             previous default, cholmod_factor.c)
 #   default_2threads  the same serial run with 2 BLAS/OpenMP threads (CHOLMOD's supernodal BLAS; one process)
-#   real4V    the same with the real 4V x 4V CHOLMOD factorisation (-spin_complex_cholesky 0; the previous default)
+#   real4V    the same with the real 4V x 4V CHOLMOD factorisation (-spin_complex_cholesky 0; the default before the complex form)
 #   inverse1  one step of inverse iteration with the same factorisation (-spin_solver inverse)
 #   precond   iterative: LOBPCG preconditioned by the scalar Laplacian L + cM per quaternion component
 #             (-spin_solver precond; no 4V factorisation at all)
@@ -31,6 +33,7 @@ declare -A MESH=(
 declare -A CONF=(
   [default]=""
   [default_2threads]=""
+  [complex]="-spin_cholesky_arithmetic complex"
   [real4V]="-spin_complex_cholesky 0"
   [inverse1]="-spin_solver inverse"
   [precond]="-spin_solver precond"
@@ -46,10 +49,10 @@ declare -A CONF=(
 } > $out
 for m in torus4k torus14k bunny75kF; do
   for np in 1 2; do
-    for c in default default_2threads real4V inverse1 precond; do
+    for c in default default_2threads complex real4V inverse1 precond; do
       rm -f runs/results/spin_bench_tmp.txt
       opts=${CONF[$c]}
-      if [ $c = real4V ] && [ $np = 2 ]; then continue; fi   # the complex form is serial: same as default
+      if { [ $c = real4V ] || [ $c = complex ]; } && [ $np = 2 ]; then continue; fi   # serial-only choices: same as default
       if [ $c = default_2threads ] && [ $np = 2 ]; then continue; fi
       th=1; [ $c = default_2threads ] && th=2
       for r in $(seq $reps); do

@@ -26,6 +26,7 @@ PetscErrorCode CSSpinCreate(CSMesh mesh, CSSpin *spin)
   s->scalar_pc    = PETSC_FALSE;
   s->lap_shift    = 1;
   s->complex_chol = PETSC_TRUE;
+  s->quat_chol    = PETSC_TRUE;
   PetscCall(PetscStrncpy(s->complex_ordering, "amd", sizeof(s->complex_ordering)));
   PetscCall(CSDiracCreateDM(mesh, NULL, &s->dm));
   *spin = s;
@@ -37,9 +38,9 @@ PetscErrorCode CSSpinSetFromOptions(CSSpin s)
   const char *problems[] = {"standard", "generalized"}, *types[] = {"aij", "shell"}, *solvers[] = {"precond", "sinvert", "inverse"};
   const char *bnames[] = {"none", "keep", "file", "target"};
   PetscInt    ip = s->generalized, it = s->shell, is = s->inverse ? 2 : (s->scalar_pc ? 0 : 1), ib = (PetscInt)s->boundary;
-  const char *orderings[] = {"amd", "metis", "nesdis", "auto"};
-  PetscInt    iord = 0;
-  PetscBool   solver_set, complex_set, ord_set;
+  const char *orderings[] = {"amd", "metis", "nesdis", "auto"}, *arith[] = {"quaternion", "complex"};
+  PetscInt    iord = 0, iar = 0;
+  PetscBool   solver_set, complex_set, ord_set, ar_set;
   PetscMPIInt size;
   /* crane2011 Sec. 4.3: with a boundary, (D - rho) lambda = 0 needs boundary conditions; with a free boundary
      the kernel of D holds every discrete conformal-affine map (rho = 0 is then not the identity). So an open
@@ -53,8 +54,9 @@ PetscErrorCode CSSpinSetFromOptions(CSSpin s)
   PetscCall(PetscOptionsInt("-spin_inverse_its", "Inverse iteration steps", NULL, s->inverse_its, &s->inverse_its, NULL));
   PetscCall(PetscOptionsBool("-spin_inverse_keep_factor", "Inverse iteration: keep the first factorisation as preconditioner for later solves", NULL, s->keep_factor, &s->keep_factor, NULL));
   PetscCall(PetscOptionsReal("-spin_shift", "Shift toward 0 (negative target), in units of the unit sphere's spectrum", NULL, s->target, &s->target, &s->target_set));
-  PetscCall(PetscOptionsBool("-spin_complex_cholesky", "Serial shift-and-invert and inverse iteration: factor K - sigma as a complex Hermitian 2V x 2V matrix with CHOLMOD (half the flops of the real 4V x 4V one); 0 for the real factorisation and any -spin_st_pc_*/-spin_inverse_pc_* choice", NULL, s->complex_chol, &s->complex_chol, &complex_set));
-  PetscCall(PetscOptionsEList("-spin_complex_cholesky_ordering", "Its CHOLMOD ordering (auto: CHOLMOD tries several)", NULL, orderings, 4, s->complex_ordering, &iord, &ord_set));
+  PetscCall(PetscOptionsBool("-spin_complex_cholesky", "Serial shift-and-invert and inverse iteration: factor K - sigma as a quaternionic matrix (-spin_cholesky_arithmetic; a quarter of the flops of the real 4V x 4V factorisation); 0 for the real factorisation and any -spin_st_pc_*/-spin_inverse_pc_* choice", NULL, s->complex_chol, &s->complex_chol, &complex_set));
+  PetscCall(PetscOptionsEList("-spin_cholesky_arithmetic", "That factorisation in quaternion arithmetic (quaternion_cholesky.c: half the flops of the complex form) or in CHOLMOD's complex form", NULL, arith, 2, arith[s->quat_chol ? 0 : 1], &iar, &ar_set));
+  PetscCall(PetscOptionsEList("-spin_complex_cholesky_ordering", "Its fill-reducing ordering, by CHOLMOD (auto: CHOLMOD tries several)", NULL, orderings, 4, s->complex_ordering, &iord, &ord_set));
   PetscCall(PetscOptionsReal("-spin_lap_shift", "-spin_solver precond: the mass shift c of L + c M, in units of 4 pi / area", NULL, s->lap_shift, &s->lap_shift, NULL));
   PetscCall(PetscOptionsBool("-spin_poisson_pin", "Fix the translation by pinning the first vertex instead of matching the mean", NULL, s->pin, &s->pin, NULL));
   PetscCall(PetscOptionsEList("-spin_boundary", "Boundary condition (Sec. 5.7): none (free), keep tangents, tangents from -spin_boundary_file, or from -target_mesh", NULL, bnames, 4, bnames[ib], &ib, NULL));
@@ -64,17 +66,18 @@ PetscErrorCode CSSpinSetFromOptions(CSSpin s)
   s->inverse     = (PetscBool)(is == 2);
   s->boundary    = (CSSpinBoundary)ib;
   if (ord_set) PetscCall(PetscStrncpy(s->complex_ordering, orderings[iord], sizeof(s->complex_ordering)));
+  if (ar_set) s->quat_chol = (PetscBool)(iar == 0);
   PetscCheck(s->lap_shift > 0, s->mesh->comm, PETSC_ERR_ARG_OUTOFRANGE, "-spin_lap_shift %g: must be positive (L + c M must be definite)", (double)s->lap_shift);
   /* the scalar preconditioner (spin_precond.c) is made for the standard problem on the full space: elsewhere
      the default stays shift-and-invert */
   s->scalar_pc  = (PetscBool)(is == 0);
   s->solver_set = solver_set;
-  /* the complex form needs quaternionic blocks (not the reduced boundary space, not Eq. 6's non-Hermitian
+  /* the quaternionic factorisation needs quaternionic blocks (not the reduced boundary space, not Eq. 6's non-Hermitian
      pencil), an assembled matrix and one rank */
   PetscCallMPI(MPI_Comm_size(s->mesh->comm, &size));
   if (size > 1 || s->generalized || s->boundary != CS_SPIN_BOUNDARY_NONE || s->shell || s->scalar_pc) s->complex_chol = PETSC_FALSE;
   if (s->complex_chol && !complex_set) {
-    /* a user's choice of the inner solver means the real matrix: the complex form replaces that solver */
+    /* a user's choice of the inner solver means the real matrix: the quaternionic factorisation replaces that solver */
     PetscBool a, b, c, d;
     PetscCall(PetscOptionsHasName(NULL, NULL, "-spin_st_pc_type", &a));
     PetscCall(PetscOptionsHasName(NULL, NULL, "-spin_st_ksp_type", &b));
@@ -354,7 +357,17 @@ static PetscErrorCode ComplexFactorApply(PC pc, Vec x, Vec y)
   CSSpin s;
   PetscFunctionBeginUser;
   PetscCall(PCShellGetContext(pc, &s));
-  PetscCall(CSCholmodSolve(s->cf, x, y));
+  if (s->quat_chol) PetscCall(CSQuatCholeskySolve(s->qc, x, y));
+  else PetscCall(CSCholmodSolve(s->cf, x, y));
+  PetscFunctionReturn(0);
+}
+
+/* factor K - sigma for ComplexFactorPC, in quaternion arithmetic or in CHOLMOD's complex form */
+static PetscErrorCode DirectFactorSetUp(CSSpin s, PetscReal sigma)
+{
+  PetscFunctionBeginUser;
+  if (s->quat_chol) PetscCall(CSQuatCholeskySetUp(s->qc, s->K, sigma));
+  else PetscCall(CSCholmodSetUpQuaternion(s->cf, s->K, sigma));
   PetscFunctionReturn(0);
 }
 
@@ -362,11 +375,12 @@ static PetscErrorCode ComplexFactorApply(PC pc, Vec x, Vec y)
 static PetscErrorCode ComplexFactorPC(CSSpin s, PC pc)
 {
   PetscFunctionBeginUser;
-  if (!s->cf) PetscCall(CSCholmodCreate(s->complex_ordering, &s->cf));
+  if (s->quat_chol && !s->qc) PetscCall(CSQuatCholeskyCreate(s->complex_ordering, &s->qc));
+  if (!s->quat_chol && !s->cf) PetscCall(CSCholmodCreate(s->complex_ordering, &s->cf));
   PetscCall(PCSetType(pc, PCSHELL));
   PetscCall(PCShellSetContext(pc, s));
   PetscCall(PCShellSetApply(pc, ComplexFactorApply));
-  PetscCall(PCShellSetName(pc, "confsurf: CHOLMOD Cholesky of K - sigma in complex form"));
+  PetscCall(PCShellSetName(pc, s->quat_chol ? "confsurf: supernodal Cholesky of K - sigma in quaternion arithmetic" : "confsurf: CHOLMOD Cholesky of K - sigma in complex form"));
   PetscFunctionReturn(0);
 }
 
@@ -433,7 +447,7 @@ static PetscErrorCode SetupEPS(CSSpin s, Vec x, CSRhoLocation loc, Vec rho, Pets
   if (s->complex_chol && !precond) {
     PetscReal tgt;
     PetscCall(EPSGetTarget(s->eps, &tgt));
-    PetscCall(CSCholmodSetUpQuaternion(s->cf, s->K, tgt));
+    PetscCall(DirectFactorSetUp(s, tgt));
   }
   if (s->shell && !precond) {
     Mat       Pm;
@@ -485,9 +499,9 @@ static PetscErrorCode InverseIteration(CSSpin s, Vec xr, PetscReal *kr)
     PetscCall(KSPSetFromOptions(s->kinv));
     PetscCall(CSSpinMumpsDefaultOrdering(s, pc));
     PetscCall(MatDuplicate(s->K, MAT_COPY_VALUES, &s->Kinv));
-    if (s->complex_chol) PetscCall(CSCholmodSetUpQuaternion(s->cf, s->K, sigma));
+    if (s->complex_chol) PetscCall(DirectFactorSetUp(s, sigma));
   } else {
-    if (s->complex_chol && !s->keep_factor) PetscCall(CSCholmodSetUpQuaternion(s->cf, s->K, sigma));
+    if (s->complex_chol && !s->keep_factor) PetscCall(DirectFactorSetUp(s, sigma));
     PetscCall(MatCopy(s->K, s->Kinv, SAME_NONZERO_PATTERN));
     /* crane2013 Sec. 6.4.2: consecutive problems are close, so the old factorisation preconditions the new one */
     if (s->keep_factor) PetscCall(KSPSetReusePreconditioner(s->kinv, PETSC_TRUE));
@@ -711,6 +725,7 @@ PetscErrorCode CSSpinDestroy(CSSpin *spin)
   PetscCall(KSPDestroy(&s->kinv));
   PetscCall(KSPDestroy(&s->klap));
   PetscCall(CSCholmodDestroy(&s->cf));
+  PetscCall(CSQuatCholeskyDestroy(&s->qc));
   PetscCall(MatDestroy(&s->Ls));
   PetscCall(KSPDestroy(&s->kpois));
   PetscCall(MatDestroy(&s->Kinv));

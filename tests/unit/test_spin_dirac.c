@@ -4,6 +4,7 @@
    Run: build/tests/test_spin_dirac [-gen_level 2]   (also under mpirun -n 2) */
 #include <slepcsys.h>
 #include "cs_methods_spin.h"
+#include "cs_quaternion_cholesky.h"
 
 static PetscInt nfail = 0;
 
@@ -217,6 +218,42 @@ static PetscErrorCode CheckOperators(CSMesh mesh, Vec x, CSRhoLocation loc, Vec 
       PetscCall(PetscSNPrintf(what, sizeof(what), "%s: complex-form Cholesky solve, (X - sigma) y == u", label));
       PetscCall(Check(mesh->comm, what, err, 1e-12));
       PetscCall(CSCholmodDestroy(&cf));
+      /* the quaternion-arithmetic factorisation (quaternion_cholesky.c): the same solve, twice with the kept
+         symbolic phase, and a clear error when K - sigma is indefinite */
+      {
+        CSQuatCholesky qc;
+        PetscErrorCode ierr;
+        Vec            y4;
+        PetscCall(VecDuplicate(u, &y4));
+        PetscCall(CSQuatCholeskyCreate("amd", &qc));
+        for (int pass = 0; pass < 2; pass++) {
+          const PetscReal sg = pass ? -2.0 : sigma;
+          PetscCall(CSQuatCholeskySetUp(qc, X, sg));
+          PetscCall(CSQuatCholeskySolve(qc, u, y4));
+          PetscCall(MatMult(X, y4, y2));
+          PetscCall(VecAXPY(y2, -sg, y4));
+          PetscCall(RelDiff(u, y2, &err));
+          PetscCall(PetscSNPrintf(what, sizeof(what), "%s: quaternion Cholesky solve (sigma %g), (X - sigma) y == u", label, (double)sg));
+          PetscCall(Check(mesh->comm, what, err, 1e-12));
+          if (!pass) {
+            PetscCall(RelDiff(y1, y4, &err));
+            PetscCall(PetscSNPrintf(what, sizeof(what), "%s: quaternion Cholesky == complex-form Cholesky", label));
+            PetscCall(Check(mesh->comm, what, err, 1e-12));
+          }
+        }
+        PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
+        ierr = CSQuatCholeskySetUp(qc, X, 1e3);
+        PetscCall(PetscPopErrorHandler());
+        PetscCall(PetscSNPrintf(what, sizeof(what), "%s: quaternion Cholesky of an indefinite X - sigma fails with ZRPVT", label));
+        PetscCall(Check(mesh->comm, what, ierr == PETSC_ERR_MAT_CH_ZRPVT ? 0 : 1, 0));
+        PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
+        ierr = CSQuatCholeskySolve(qc, u, y4);
+        PetscCall(PetscPopErrorHandler());
+        PetscCall(PetscSNPrintf(what, sizeof(what), "%s: no solve after a failed factorisation", label));
+        PetscCall(Check(mesh->comm, what, ierr == PETSC_ERR_ORDER ? 0 : 1, 0));
+        PetscCall(CSQuatCholeskyDestroy(&qc));
+        PetscCall(VecDestroy(&y4));
+      }
     }
   }
   /* kernel: for rho = 0 every constant quaternion field is in ker D and ker X */
