@@ -6,6 +6,9 @@
 /* Rank 0 did work that may have failed with ierr (run under PetscReturnErrorHandler so nothing was printed).
    Every rank then raises the same error with rank 0's message, or all return 0. Collective. */
 PETSC_EXTERN PetscErrorCode CSSyncRootError(MPI_Comm comm, PetscErrorCode ierr);
+/* Threads per process: OpenMP loops (CHOLMOD's) bounded by OMP_NUM_THREADS, default 1; one OpenBLAS thread per
+   rank when several ranks run, unless OPENBLAS_NUM_THREADS is set (src/util/threads.c). Returns the counts. */
+PETSC_EXTERN PetscErrorCode CSLimitThreads(MPI_Comm comm, PetscInt *omp_threads, PetscInt *blas_threads);
 
 /* Call expr on rank 0 only, capturing its error for CSSyncRootError. Use:
      CSRootCall(comm, CSMeshDataRead(path, &md)); */
