@@ -7,8 +7,10 @@
    Every rank then raises the same error with rank 0's message, or all return 0. Collective. */
 PETSC_EXTERN PetscErrorCode CSSyncRootError(MPI_Comm comm, PetscErrorCode ierr);
 /* Threads per process: OpenMP loops (CHOLMOD's) bounded by OMP_NUM_THREADS, default 1; one OpenBLAS thread per
-   rank when several ranks run, unless OPENBLAS_NUM_THREADS is set (src/util/threads.c). Returns the counts. */
-PETSC_EXTERN PetscErrorCode CSLimitThreads(MPI_Comm comm, PetscInt *omp_threads, PetscInt *blas_threads);
+   rank when several ranks run, unless OPENBLAS_NUM_THREADS is set (src/util/threads.c). */
+PETSC_EXTERN PetscErrorCode CSLimitThreads(MPI_Comm comm);
+/* the resulting OpenMP and OpenBLAS thread counts of this process (1 where the library is absent) */
+PETSC_EXTERN PetscErrorCode CSGetThreadCounts(PetscInt *omp_threads, PetscInt *blas_threads);
 
 /* Call expr on rank 0 only, capturing its error for CSSyncRootError. Use:
      CSRootCall(comm, CSMeshDataRead(path, &md)); */

@@ -142,7 +142,7 @@ int main(int argc, char **argv)
 
   RenameHistoryOption(argc, argv);
   PetscCall(SlepcInitialize(&argc, &argv, NULL, help));
-  PetscCall(CSLimitThreads(PETSC_COMM_WORLD, NULL, NULL));
+  PetscCall(CSLimitThreads(PETSC_COMM_WORLD));
   PetscCall(PetscOptionsHasName(NULL, NULL, "-cs_traceback", &traceback));
   if (!traceback) PetscCall(PetscPushErrorHandler(ConciseErrorHandler, NULL));
   ierr = Run(PETSC_COMM_WORLD);

@@ -41,6 +41,12 @@ PetscErrorCode CSOutputFromOptions(MPI_Comm comm, CSOutput *o)
     PetscCheck(!strcmp(ext, "obj") || !strcmp(ext, "ply"), comm, PETSC_ERR_ARG_WRONG, "-o %s: the final mesh is written as .obj or .ply", o->out);
   }
   PetscCall(CSJSONCreate(comm, &o->json));
+  { /* the threads of rank 0 (src/util/threads.c); "ranks" comes with CSOutputFinish */
+    PetscInt omp, blas;
+    PetscCall(CSGetThreadCounts(&omp, &blas));
+    PetscCall(CSJSONAddInt(o->json, "omp_threads", omp));
+    PetscCall(CSJSONAddInt(o->json, "blas_threads", blas));
+  }
   PetscFunctionReturn(0);
 }
 

@@ -14,19 +14,25 @@
 #include <stdlib.h>
 #include "cs_util.h"
 
-PetscErrorCode CSLimitThreads(MPI_Comm comm, PetscInt *omp_threads, PetscInt *blas_threads)
+PetscErrorCode CSLimitThreads(MPI_Comm comm)
 {
-  void (*set_dynamic)(int)           = (void (*)(int))dlsym(RTLD_DEFAULT, "omp_set_dynamic");
-  void (*set_num_threads)(int)       = (void (*)(int))dlsym(RTLD_DEFAULT, "omp_set_num_threads");
-  int (*get_max_threads)(void)       = (int (*)(void))dlsym(RTLD_DEFAULT, "omp_get_max_threads");
-  void (*openblas_set_threads)(int)  = (void (*)(int))dlsym(RTLD_DEFAULT, "openblas_set_num_threads");
-  int (*openblas_get_threads)(void)  = (int (*)(void))dlsym(RTLD_DEFAULT, "openblas_get_num_threads");
+  void (*set_dynamic)(int)          = (void (*)(int))dlsym(RTLD_DEFAULT, "omp_set_dynamic");
+  void (*set_num_threads)(int)      = (void (*)(int))dlsym(RTLD_DEFAULT, "omp_set_num_threads");
+  void (*openblas_set_threads)(int) = (void (*)(int))dlsym(RTLD_DEFAULT, "openblas_set_num_threads");
   PetscMPIInt size;
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_size(comm, &size));
   if (set_dynamic) set_dynamic(1);
   if (set_num_threads && !getenv("OMP_NUM_THREADS")) set_num_threads(1);
   if (openblas_set_threads && size > 1 && !getenv("OPENBLAS_NUM_THREADS")) openblas_set_threads(1);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSGetThreadCounts(PetscInt *omp_threads, PetscInt *blas_threads)
+{
+  int (*get_max_threads)(void)      = (int (*)(void))dlsym(RTLD_DEFAULT, "omp_get_max_threads");
+  int (*openblas_get_threads)(void) = (int (*)(void))dlsym(RTLD_DEFAULT, "openblas_get_num_threads");
+  PetscFunctionBeginUser;
   if (omp_threads) *omp_threads = get_max_threads ? get_max_threads() : 1;
   if (blas_threads) *blas_threads = openblas_get_threads ? openblas_get_threads() : 1;
   PetscFunctionReturn(0);
