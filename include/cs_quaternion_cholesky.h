@@ -13,9 +13,10 @@ typedef struct _p_CSQuatCholesky *CSQuatCholesky;
 PETSC_EXTERN PetscErrorCode CSQuatCholeskyCreate(const char ordering[], CSQuatCholesky *f);
 /* factor K - sigma I; K: SeqAIJ, every 4x4 block the left multiplication by a quaternion (CSQuatBlock) */
 PETSC_EXTERN PetscErrorCode CSQuatCholeskySetUp(CSQuatCholesky f, Mat K, PetscReal sigma);
-/* y = (K - sigma)^{-1} x for real 4V vectors (x and y may not be the same vector) */
+/* y = (K - sigma)^{-1} x for real 4V vectors (x and y may be the same vector) */
 PETSC_EXTERN PetscErrorCode CSQuatCholeskySolve(CSQuatCholesky f, Vec x, Vec y);
-/* quaternion entries of L and real flops of the factorisation (after SetUp) */
+/* nominal quaternion entries of L (the explicit zeros of relaxed supernodes included) and real flops of the
+   factorisation (after SetUp) */
 PETSC_EXTERN PetscErrorCode CSQuatCholeskyGetInfo(CSQuatCholesky f, PetscLogDouble *nnz, PetscLogDouble *flops);
 PETSC_EXTERN PetscErrorCode CSQuatCholeskyDestroy(CSQuatCholesky *f);
 #endif

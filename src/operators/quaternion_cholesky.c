@@ -17,7 +17,11 @@
    The products C -= A B^H of quaternion matrices are single real GEMMs: with A split as [A0 A1 A2 A3]
    (m x 4k), C's component c is sum_r A_r P_{r,c} where P = B^H and the 4k x 4n matrix [P_{r,c}] holds +-P_0..P_3
    following the Hamilton product (CSQuatMul). That is 32 real flops per quaternion multiply-add, the same count as
-   the product itself, at BLAS speed. */
+   the product itself, at BLAS speed.
+
+   The method is the classical one for real matrices: multifrontal factorisation (Duff and Reid, ACM TOMS 9, 1983;
+   Liu, SIAM Rev. 34, 1992) on CHOLMOD's relaxed supernodes (Chen, Davis, Hager and Rajamanickam, ACM TOMS 35,
+   2008); only the arithmetic is quaternionic. */
 #include <suitesparse/cholmod.h>
 #include "cs_quaternion.h"
 #include "cs_quaternion_cholesky.h"
@@ -56,7 +60,8 @@ struct _p_CSQuatCholesky {
   PetscLogDouble nnzL, flops;
 };
 
-/* C (ldc) = beta C + alpha op(A) op(B), sizes as in BLAS; nothing for an empty product */
+/* C (ldc) = beta C + alpha op(A) op(B), sizes as in BLAS. An empty product returns at once, without applying
+   beta: every call here has beta = 1 or a k > 0. */
 static PetscErrorCode Gemm(const char *ta, const char *tb, PetscInt m, PetscInt n, PetscInt k, double alpha, const double *A, PetscInt lda, const double *B, PetscInt ldb, double beta, double *C, PetscInt ldc)
 {
   PetscBLASInt bm, bn, bk, bla, blb, blc;
@@ -87,11 +92,11 @@ static void BuildP(const double *B, PetscInt64 cs, PetscInt ld, PetscInt nc, Pet
       const double  sg = QSgn[r][c] * ((conjtrans && q) ? -1.0 : 1.0);
       const double *Bq = B + q * cs;
       for (PetscInt j = 0; j < nr; j++) {
-        double *Pc = P + (c * nr + j) * ldp + r * nc;
+        double *Pc = P + (PetscInt64)(c * nr + j) * ldp + r * nc;
         if (conjtrans)
-          for (PetscInt t = 0; t < nc; t++) Pc[t] = sg * Bq[t * ld + j];
+          for (PetscInt t = 0; t < nc; t++) Pc[t] = sg * Bq[(PetscInt64)t * ld + j];
         else
-          for (PetscInt t = 0; t < nc; t++) Pc[t] = sg * Bq[j * ld + t];
+          for (PetscInt t = 0; t < nc; t++) Pc[t] = sg * Bq[(PetscInt64)j * ld + t];
       }
     }
 }
@@ -122,40 +127,52 @@ static PetscErrorCode FreeSymbolic(CSQuatCholesky f)
   PetscCall(PetscFree3(f->y, f->tmp, f->lmap));
   f->nsuper   = 0;
   f->factored = PETSC_FALSE;
+  f->kid      = 0; /* no matrix: the next SetUp analyses again */
   PetscFunctionReturn(0);
 }
 
 /* The pattern of the lower triangle of K's quaternion entries, analysed by CHOLMOD; the supernodes copied out
-   with their parents and the position in lx of every entry of K. */
+   with their parents and the position in lx of every entry of K. Everything allocated here belongs to f (freed by
+   FreeSymbolic), except cnt and the bucket arrays, which are freed before any check can fail; f->nsuper is set
+   last, so a failed analysis is redone at the next SetUp. */
 static PetscErrorCode Symbolic(CSQuatCholesky f, Mat K)
 {
-  PetscInt        n4, nb, nent = 0, *cnt, *col2super, *iperm, *eI, *eJ, *bucket, *bptr;
+  PetscInt        n4, nb, nsuper, nent = 0, nlow = 0, nup = 0, nodiag = -1, outside = -1, *cnt, *col2super, *iperm, *eI, *eJ, *bucket, *bptr, *stk, top = 0;
   cholmod_sparse *A;
   cholmod_factor *L;
-  int            *Ap, *Ai, *Ls, *Lpi, *Lsuper, *Lperm;
+  int            *Ap, *Ai, *Ls, *Lpi, *Lsuper, *Lperm, status;
   PetscFunctionBeginUser;
-  PetscCall(PetscLogEventBegin(CS_EVENT_QSymbolic, 0, 0, 0, 0));
   PetscCall(FreeSymbolic(f));
   PetscCall(MatGetSize(K, &n4, NULL));
   PetscCheck(n4 % 4 == 0, PETSC_COMM_SELF, PETSC_ERR_ARG_SIZ, "matrix of size %" PetscInt_FMT " is not quaternionic", n4);
   f->nb = nb = n4 / 4;
-  /* lower triangle pattern by columns (stype -1): block (bi, bj), bi >= bj, in column bj */
+  /* lower triangle pattern by columns (stype -1): block (bi, bj), bi >= bj, in column bj; every block row needs its
+     diagonal block (it carries -sigma) and the pattern must be symmetric (the upper blocks are not read) */
   PetscCall(PetscCalloc1(nb + 1, &cnt));
   for (PetscInt bi = 0; bi < nb; bi++) {
     PetscInt        nc;
     const PetscInt *cols;
+    PetscBool       diag = PETSC_FALSE;
     PetscCall(MatGetRow(K, 4 * bi, &nc, &cols, NULL));
     for (PetscInt k = 0, jprev = -1; k < nc; k++) {
       PetscInt bj = cols[k] / 4;
       if (bj == jprev) continue;
       jprev = bj;
       if (bj <= bi) cnt[bj]++;
+      if (bj < bi) nlow++;
+      if (bj > bi) nup++;
+      if (bj == bi) diag = PETSC_TRUE;
       nent++;
     }
     PetscCall(MatRestoreRow(K, 4 * bi, &nc, &cols, NULL));
+    if (!diag && nodiag < 0) nodiag = bi;
   }
+  if (nodiag >= 0 || nlow != nup) PetscCall(PetscFree(cnt));
+  PetscCheck(nodiag < 0, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "quaternion Cholesky: K has no diagonal block in block row %" PetscInt_FMT, nodiag);
+  PetscCheck(nlow == nup, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "quaternion Cholesky: K is not structurally symmetric (%" PetscInt_FMT " blocks below the diagonal, %" PetscInt_FMT " above)", nlow, nup);
   A = cholmod_allocate_sparse((size_t)nb, (size_t)nb, (size_t)nent, 0, 1, -1, CHOLMOD_PATTERN, &f->common);
-  PetscCheck(A && f->common.status >= CHOLMOD_OK, PETSC_COMM_SELF, PETSC_ERR_LIB, "CHOLMOD allocate failed (status %d)", f->common.status);
+  if (!A) PetscCall(PetscFree(cnt));
+  PetscCheck(A, PETSC_COMM_SELF, PETSC_ERR_LIB, "CHOLMOD allocate failed (status %d)", f->common.status);
   Ap    = (int *)A->p;
   Ai    = (int *)A->i;
   Ap[0] = 0;
@@ -173,47 +190,65 @@ static PetscErrorCode Symbolic(CSQuatCholesky f, Mat K)
     }
     PetscCall(MatRestoreRow(K, 4 * bi, &nc, &cols, NULL));
   }
-  L = cholmod_analyze(A, &f->common);
+  PetscCall(PetscFree(cnt));
+  L      = cholmod_analyze(A, &f->common);
+  status = f->common.status;
   cholmod_free_sparse(&A, &f->common);
-  PetscCheck(L && f->common.status >= CHOLMOD_OK && L->is_super, PETSC_COMM_SELF, PETSC_ERR_LIB, "CHOLMOD supernodal analysis failed (status %d)", f->common.status);
+  if (L && !L->is_super) cholmod_free_factor(&L, &f->common);
+  PetscCheck(L, PETSC_COMM_SELF, PETSC_ERR_LIB, "CHOLMOD supernodal analysis failed (status %d)", status);
   /* copy the supernodes out */
-  f->nsuper = (PetscInt)L->nsuper;
-  Lsuper    = (int *)L->super;
-  Lpi       = (int *)L->pi;
-  Ls        = (int *)L->s;
-  Lperm     = (int *)L->Perm;
-  PetscCall(PetscMalloc5(f->nsuper + 1, &f->super, f->nsuper + 1, &f->rowptr, Lpi[f->nsuper], &f->rows, f->nsuper, &f->parent, f->nsuper + 1, &f->lxptr));
+  nsuper = (PetscInt)L->nsuper;
+  Lsuper = (int *)L->super;
+  Lpi    = (int *)L->pi;
+  Ls     = (int *)L->s;
+  Lperm  = (int *)L->Perm;
+  PetscCall(PetscMalloc5(nsuper + 1, &f->super, nsuper + 1, &f->rowptr, Lpi[nsuper], &f->rows, nsuper, &f->parent, nsuper + 1, &f->lxptr));
   PetscCall(PetscMalloc4(nb, &f->perm, nb, &f->iperm, nb, &f->col2super, nb, &f->map));
   iperm     = f->iperm;
   col2super = f->col2super;
-  for (PetscInt s = 0; s <= f->nsuper; s++) f->super[s] = Lsuper[s], f->rowptr[s] = Lpi[s];
-  for (PetscInt p = 0; p < Lpi[f->nsuper]; p++) f->rows[p] = Ls[p];
+  for (PetscInt s = 0; s <= nsuper; s++) f->super[s] = Lsuper[s], f->rowptr[s] = Lpi[s];
+  for (PetscInt p = 0; p < Lpi[nsuper]; p++) f->rows[p] = Ls[p];
   for (PetscInt p = 0; p < nb; p++) f->perm[p] = Lperm[p], iperm[Lperm[p]] = p, f->map[p] = -1;
   cholmod_free_factor(&L, &f->common);
+  /* what the numeric phase relies on: a supernode's rows ascend from its own columns; a supernode with rows
+     beyond its columns has a parent (the supernode of the first such row) that comes later and whose rows contain
+     them; the supernodes are in postorder, so that the children's update matrices are the top of a stack */
   f->lxptr[0] = 0;
   f->nnzL = f->flops = 0;
-  for (PetscInt s = 0; s < f->nsuper; s++) {
+  for (PetscInt s = 0; s < nsuper; s++) {
     const PetscInt k = f->super[s + 1] - f->super[s], N = f->rowptr[s + 1] - f->rowptr[s], *r = f->rows + f->rowptr[s];
-    PetscInt       first = PETSC_MAX_INT;
-    for (PetscInt t = 0; t < k; t++) PetscCheck(r[t] == f->super[s] + t, PETSC_COMM_SELF, PETSC_ERR_LIB, "CHOLMOD supernode %" PetscInt_FMT ": unexpected row order", s);
+    for (PetscInt t = 0; t < N; t++) PetscCheck(t < k ? r[t] == f->super[s] + t : r[t] > r[t - 1], PETSC_COMM_SELF, PETSC_ERR_LIB, "CHOLMOD supernode %" PetscInt_FMT ": rows not in ascending order from its columns", s);
     for (PetscInt t = f->super[s]; t < f->super[s + 1]; t++) col2super[t] = s;
-    for (PetscInt t = k; t < N; t++) first = PetscMin(first, r[t]);
-    f->parent[s]    = first; /* a column for now, mapped to its supernode below */
     f->lxptr[s + 1] = f->lxptr[s] + 4 * (PetscInt64)N * k;
+    /* nominal counts (the explicit zeros of relaxed supernodes included) */
     for (PetscInt t = 0; t < k; t++) f->nnzL += N - t, f->flops += 32.0 * (N - t) * (N - t) / 2;
   }
-  for (PetscInt s = 0; s < f->nsuper; s++) {
-    f->parent[s] = f->parent[s] == PETSC_MAX_INT ? -1 : col2super[f->parent[s]];
-    PetscCheck(f->parent[s] == -1 || f->parent[s] > s, PETSC_COMM_SELF, PETSC_ERR_LIB, "CHOLMOD supernodes are not in postorder");
+  PetscCall(PetscMalloc1(nsuper, &stk));
+  for (PetscInt s = 0; s < nsuper; s++) {
+    const PetscInt k = f->super[s + 1] - f->super[s], N = f->rowptr[s + 1] - f->rowptr[s], *r = f->rows + f->rowptr[s];
+    f->parent[s] = N > k ? col2super[r[k]] : -1;
+    while (top > 0 && f->parent[stk[top - 1]] == s) top--;
+    if (N > k) {
+      const PetscInt p = f->parent[s], Np = f->rowptr[p + 1] - f->rowptr[p], *rp = f->rows + f->rowptr[p];
+      for (PetscInt t = 0; t < Np; t++) f->map[rp[t]] = t;
+      for (PetscInt t = k; t < N; t++)
+        if (f->map[r[t]] < 0 && outside < 0) outside = s;
+      for (PetscInt t = 0; t < Np; t++) f->map[rp[t]] = -1;
+      if (p <= s && outside < 0) outside = s;
+      stk[top++] = s;
+    }
   }
-  PetscCall(PetscMalloc1(f->lxptr[f->nsuper], &f->lx));
+  PetscCall(PetscFree(stk));
+  PetscCheck(outside < 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "CHOLMOD supernode %" PetscInt_FMT ": rows not contained in its parent's", outside);
+  PetscCheck(top == 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "CHOLMOD supernodes are not in postorder (%" PetscInt_FMT " update matrices left)", top);
+  PetscCall(PetscMalloc1(f->lxptr[nsuper], &f->lx));
   PetscCall(PetscMalloc3(4 * nb, &f->y, 4 * nb, &f->tmp, nb, &f->lmap));
   /* where each entry of K goes: entry e = block (bi, bj) in MatGetRow order; stored if iperm[bi] >= iperm[bj], at
      (row iperm[bi], column iperm[bj]) of the panel owning that column. Bucketed by supernode to use map. */
   f->nent = nent;
   PetscCall(PetscMalloc2(nent, &f->apos, nent, &f->astride));
-  PetscCall(PetscMalloc4(nent, &eI, nent, &eJ, nent, &bucket, f->nsuper + 1, &bptr));
-  PetscCall(PetscArrayzero(bptr, f->nsuper + 1));
+  PetscCall(PetscMalloc4(nent, &eI, nent, &eJ, nent, &bucket, nsuper + 1, &bptr));
+  PetscCall(PetscArrayzero(bptr, nsuper + 1));
   nent = 0;
   for (PetscInt bi = 0; bi < nb; bi++) {
     PetscInt        nc;
@@ -222,34 +257,34 @@ static PetscErrorCode Symbolic(CSQuatCholesky f, Mat K)
     for (PetscInt k = 0, jprev = -1; k < nc; k++) {
       PetscInt bj = cols[k] / 4;
       if (bj == jprev) continue;
-      jprev      = bj;
-      eI[nent]   = iperm[bi];
-      eJ[nent]   = iperm[bj];
+      jprev         = bj;
+      eI[nent]      = iperm[bi];
+      eJ[nent]      = iperm[bj];
       f->apos[nent] = -1; /* upper triangle: not stored */
       if (eI[nent] >= eJ[nent]) bptr[col2super[eJ[nent]] + 1]++;
       nent++;
     }
     PetscCall(MatRestoreRow(K, 4 * bi, &nc, &cols, NULL));
   }
-  for (PetscInt s = 0; s < f->nsuper; s++) bptr[s + 1] += bptr[s];
+  for (PetscInt s = 0; s < nsuper; s++) bptr[s + 1] += bptr[s];
   for (PetscInt e = 0; e < nent; e++)
     if (eI[e] >= eJ[e]) bucket[bptr[col2super[eJ[e]]]++] = e;
-  for (PetscInt s = f->nsuper; s > 0; s--) bptr[s] = bptr[s - 1];
+  for (PetscInt s = nsuper; s > 0; s--) bptr[s] = bptr[s - 1];
   bptr[0] = 0;
-  for (PetscInt s = 0; s < f->nsuper; s++) {
+  for (PetscInt s = 0; s < nsuper; s++) {
     const PetscInt k = f->super[s + 1] - f->super[s], N = f->rowptr[s + 1] - f->rowptr[s], *r = f->rows + f->rowptr[s];
     for (PetscInt t = 0; t < N; t++) f->map[r[t]] = t;
     for (PetscInt b = bptr[s]; b < bptr[s + 1]; b++) {
       const PetscInt e = bucket[b], li = f->map[eI[e]], lj = eJ[e] - f->super[s];
-      PetscCheck(li >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "entry outside the symbolic factor");
+      if (li < 0 && outside < 0) outside = e;
       f->apos[e]    = f->lxptr[s] + (PetscInt64)lj * N + li;
       f->astride[e] = (PetscInt64)k * N;
     }
     for (PetscInt t = 0; t < N; t++) f->map[r[t]] = -1;
   }
   PetscCall(PetscFree4(eI, eJ, bucket, bptr));
-  PetscCall(PetscFree(cnt));
-  PetscCall(PetscLogEventEnd(CS_EVENT_QSymbolic, 0, 0, 0, 0));
+  PetscCheck(outside < 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "CHOLMOD: entry %" PetscInt_FMT " of K lies outside the symbolic factor", outside);
+  f->nsuper = nsuper;
   PetscFunctionReturn(0);
 }
 
@@ -291,15 +326,15 @@ static PetscErrorCode PanelFactor(CSQuatCholesky f, double *L, PetscInt N, Petsc
       for (PetscInt j2 = j + 1; j2 < r0; j2++) /* column j2 -= L(:, j) conj(L(j2, j)) */
         RankOneUpdate(Lj + j2, cs, L + (PetscInt64)j2 * N + j2, N - j2, Lj[j2], -Lj[cs + j2], -Lj[2 * cs + j2], -Lj[3 * cs + j2]);
     }
-    if (r0 < k) { /* columns r0..k-1, rows >= column: -= L(r0:N, jb:r0) L(r0:k, jb:r0)^H */
+    if (r0 < k) { /* columns r0..k-1, rows >= column: -= L(r0:N, jb:r0) L(r0:k, jb:r0)^H, NB columns at a time */
       const PetscInt m = N - r0, n = k - r0;
-      PetscCall(EnsureWork(f, (size_t)16 * nbb * n, (size_t)4 * nbb * m));
+      PetscCall(EnsureWork(f, (size_t)16 * nbb * NB, (size_t)4 * nbb * m));
       for (int c = 0; c < 4; c++)
-        for (PetscInt t = 0; t < nbb; t++) PetscCall(PetscArraycpy(f->apack + (c * nbb + t) * m, L + c * cs + (jb + t) * N + r0, m));
-      BuildP(L + jb * N + r0, cs, N, nbb, n, PETSC_TRUE, f->pbig);
+        for (PetscInt t = 0; t < nbb; t++) PetscCall(PetscArraycpy(f->apack + (PetscInt64)(c * nbb + t) * m, L + c * cs + (PetscInt64)(jb + t) * N + r0, m));
       for (PetscInt jc = 0; jc < n; jc += NB) {
         const PetscInt ncb = PetscMin(NB, n - jc);
-        for (int c = 0; c < 4; c++) PetscCall(Gemm("N", "N", m - jc, ncb, 4 * nbb, -1.0, f->apack + jc, m, f->pbig + (c * n + jc) * 4 * nbb, 4 * nbb, 1.0, L + c * cs + (PetscInt64)(r0 + jc) * N + r0 + jc, N));
+        BuildP(L + (PetscInt64)jb * N + r0 + jc, cs, N, nbb, ncb, PETSC_TRUE, f->pbig);
+        for (int c = 0; c < 4; c++) PetscCall(Gemm("N", "N", m - jc, ncb, 4 * nbb, -1.0, f->apack + jc, m, f->pbig + (PetscInt64)c * ncb * 4 * nbb, 4 * nbb, 1.0, L + c * cs + (PetscInt64)(r0 + jc) * N + r0 + jc, N));
       }
     }
   }
@@ -329,6 +364,7 @@ static PetscErrorCode Numeric(CSQuatCholesky f, Mat K, PetscReal sigma)
       double         q[4] = {0, 0, 0, 0};
       for (; k < nc && cols[k] / 4 == bj; k++) q[cols[k] % 4] = (cols[k] % 4 ? -1 : 1) * PetscRealPart(v[k]);
       if (bj == bi) q[0] -= sigma;
+      if (e >= f->nent) break; /* the pattern grew without a new symbolic phase: reported below */
       if (f->apos[e] >= 0)
         for (int c = 0; c < 4; c++) f->lx[f->apos[e] + c * f->astride[e]] = q[c];
       e++;
@@ -348,35 +384,20 @@ static PetscErrorCode Numeric(CSQuatCholesky f, Mat K, PetscReal sigma)
       const PetscInt *rc = f->rows + f->rowptr[c] + kc;
       const double   *Uc = stack[top].U;
       PetscInt       *lm = f->lmap;
-      PetscBool       sorted = PETSC_TRUE;
-      for (PetscInt ii = 0; ii < mc; ii++) {
-        lm[ii] = f->map[rc[ii]];
-        PetscCheck(lm[ii] >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "update row outside the parent supernode");
-        if (ii && lm[ii] < lm[ii - 1]) sorted = PETSC_FALSE;
-      }
-      if (sorted) /* CHOLMOD's rows are sorted: the lower triangle maps into the lower triangle */
-        for (int q = 0; q < 4; q++)
-          for (PetscInt jj = 0; jj < mc; jj++) {
-            const PetscInt lj = lm[jj];
-            const double  *u  = Uc + q * (PetscInt64)mc * mc + (PetscInt64)jj * mc;
-            double        *d  = lj < k ? L + q * cs + (PetscInt64)lj * N : U + q * us + (PetscInt64)(lj - k) * m - k;
+      /* rows ascend in child and parent (checked in Symbolic): the lower triangle maps into the lower triangle */
+      for (PetscInt ii = 0; ii < mc; ii++) lm[ii] = f->map[rc[ii]];
+      for (int q = 0; q < 4; q++)
+        for (PetscInt jj = 0; jj < mc; jj++) {
+          const PetscInt lj = lm[jj];
+          const double  *u  = Uc + q * (PetscInt64)mc * mc + (PetscInt64)jj * mc;
+          if (lj < k) { /* a column of the panel */
+            double *d = L + q * cs + (PetscInt64)lj * N;
             for (PetscInt ii = jj; ii < mc; ii++) d[lm[ii]] += u[ii];
+          } else { /* a column of s's own update matrix */
+            double *d = U + q * us + (PetscInt64)(lj - k) * m;
+            for (PetscInt ii = jj; ii < mc; ii++) d[lm[ii] - k] += u[ii];
           }
-      else
-        for (PetscInt jj = 0; jj < mc; jj++)
-          for (PetscInt ii = jj; ii < mc; ii++) {
-            PetscInt li = lm[ii], lj = lm[jj];
-            double   sg = 1; /* an entry above the diagonal goes to its mirror, conjugated */
-            if (li < lj) {
-              const PetscInt tt = li;
-              li = lj, lj = tt, sg = -1;
-            }
-            for (int q = 0; q < 4; q++) {
-              const double val = (q ? sg : 1) * Uc[q * (PetscInt64)mc * mc + (PetscInt64)jj * mc + ii];
-              if (lj < k) L[q * cs + (PetscInt64)lj * N + li] += val;
-              else U[q * us + (PetscInt64)(lj - k) * m + li - k] += val;
-            }
-          }
+        }
       PetscCall(PetscFree(stack[top].U));
     }
     for (PetscInt t = 0; t < N; t++) f->map[r[t]] = -1;
@@ -387,21 +408,19 @@ static PetscErrorCode Numeric(CSQuatCholesky f, Mat K, PetscReal sigma)
       while (top > 0) PetscCall(PetscFree(stack[--top].U));
       PetscCall(PetscFree(stack));
       PetscCall(PetscLogEventEnd(CS_EVENT_QNumeric, 0, 0, 0, 0));
-      SETERRQ(PETSC_COMM_SELF, PETSC_ERR_MAT_CH_ZRPVT, "quaternion Cholesky: the matrix is not positive definite (pivot %g at elimination step %" PetscInt_FMT " of %" PetscInt_FMT ")", pivot, f->super[s] + bad, f->nb);
+      SETERRQ(PETSC_COMM_SELF, PETSC_ERR_MAT_CH_ZRPVT, "quaternion Cholesky: the matrix is not positive definite (pivot %g at block row %" PetscInt_FMT ", elimination step %" PetscInt_FMT " of %" PetscInt_FMT ")", pivot, f->perm[f->super[s] + bad], f->super[s] + bad, f->nb);
     }
-    if (m > 0) { /* U -= L21 L21^H, lower triangle by column blocks */
-      PetscCall(EnsureWork(f, (size_t)16 * k * m, 0));
-      BuildP(L + k, cs, N, k, m, PETSC_TRUE, f->pbig);
+    if (m > 0) { /* U -= L21 L21^H, lower triangle by blocks of NBU columns */
+      PetscCall(EnsureWork(f, (size_t)16 * k * NBU, 0));
       for (PetscInt jc = 0; jc < m; jc += NBU) {
         const PetscInt ncb = PetscMin(NBU, m - jc);
-        for (int c = 0; c < 4; c++) PetscCall(Gemm("N", "N", m - jc, ncb, 4 * k, -1.0, L + k + jc, N, f->pbig + (c * m + jc) * 4 * k, 4 * k, 1.0, U + c * us + (PetscInt64)jc * m + jc, m));
+        BuildP(L + k + jc, cs, N, k, ncb, PETSC_TRUE, f->pbig);
+        for (int c = 0; c < 4; c++) PetscCall(Gemm("N", "N", m - jc, ncb, 4 * k, -1.0, L + k + jc, N, f->pbig + (PetscInt64)c * ncb * 4 * k, 4 * k, 1.0, U + c * us + (PetscInt64)jc * m + jc, m));
       }
-      PetscCheck(f->parent[s] >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "supernode with rows beyond it but no parent");
       stack[top].U   = U;
       stack[top++].s = s;
     }
   }
-  PetscCheck(top == 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "supernodes not in postorder: %" PetscInt_FMT " update matrices left", top);
   PetscCall(PetscFree(stack));
   f->factored = PETSC_TRUE;
   PetscCall(PetscLogFlops(f->flops));
@@ -427,7 +446,7 @@ PetscErrorCode CSQuatCholeskyCreate(const char ordering[], CSQuatCholesky *fac)
   PetscCall(PetscStrcmp(ordering, "auto", &autom));
   PetscCheck(amd || metis || nesdis || autom, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Cholesky ordering %s: use amd, metis, nesdis or auto", ordering);
   PetscCall(PetscNew(&f));
-  cholmod_start(&f->common);
+  PetscCheck(cholmod_start(&f->common), PETSC_COMM_SELF, PETSC_ERR_LIB, "cholmod_start failed");
   f->common.supernodal = CHOLMOD_SUPERNODAL;
   if (!autom) {
     f->common.nmethods           = 1;
@@ -441,11 +460,16 @@ PetscErrorCode CSQuatCholeskySetUp(CSQuatCholesky f, Mat K, PetscReal sigma)
 {
   PetscObjectId    id;
   PetscObjectState st;
+  PetscMPIInt      size;
   PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_size(PetscObjectComm((PetscObject)K), &size));
+  PetscCheck(size == 1, PetscObjectComm((PetscObject)K), PETSC_ERR_SUP, "the quaternion Cholesky factorisation is serial: K lives on %d processes", size);
   PetscCall(PetscObjectGetId((PetscObject)K, &id));
   PetscCall(MatGetNonzeroState(K, &st));
   if (!f->nsuper || id != f->kid || st != f->kstate) {
+    PetscCall(PetscLogEventBegin(CS_EVENT_QSymbolic, 0, 0, 0, 0));
     PetscCall(Symbolic(f, K));
+    PetscCall(PetscLogEventEnd(CS_EVENT_QSymbolic, 0, 0, 0, 0));
     f->kid    = id;
     f->kstate = st;
   }
@@ -461,6 +485,12 @@ PetscErrorCode CSQuatCholeskySolve(CSQuatCholesky f, Vec x, Vec yv)
   double            *y = f->y, *t = f->tmp;
   PetscFunctionBeginUser;
   PetscCheck(f->factored, PETSC_COMM_SELF, PETSC_ERR_ORDER, "CSQuatCholeskySolve before a successful SetUp");
+  {
+    PetscInt nx, ny;
+    PetscCall(VecGetLocalSize(x, &nx));
+    PetscCall(VecGetLocalSize(yv, &ny));
+    PetscCheck(nx == 4 * f->nb && ny == 4 * f->nb, PETSC_COMM_SELF, PETSC_ERR_ARG_SIZ, "CSQuatCholeskySolve: vectors of local sizes %" PetscInt_FMT " and %" PetscInt_FMT " for a factor of %" PetscInt_FMT " rows", nx, ny, 4 * f->nb);
+  }
   PetscCall(PetscLogEventBegin(CS_EVENT_QSolve, 0, 0, 0, 0));
   PetscCall(VecGetArrayRead(x, &xa));
   for (PetscInt p = 0; p < f->nb; p++)

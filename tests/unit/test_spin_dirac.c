@@ -144,6 +144,79 @@ static PetscErrorCode RelDiff(Vec a, Vec b, PetscReal *err)
   PetscFunctionReturn(0);
 }
 
+/* A SeqAIJ quaternionic matrix of n vertices from blocks (i, j, q): the 4x4 left multiplication by q at (i, j). */
+static PetscErrorCode QuatMat(PetscInt n, PetscInt nb, const PetscInt ij[][2], const PetscReal q[][4], Mat *K)
+{
+  PetscFunctionBeginUser;
+  PetscCall(MatCreateSeqAIJ(PETSC_COMM_SELF, 4 * n, 4 * n, 16, NULL, K));
+  for (PetscInt b = 0; b < nb; b++) {
+    PetscScalar B[16];
+    PetscInt    rows[4], cols[4];
+    CSQuatBlock(q[b], B);
+    for (int c = 0; c < 4; c++) rows[c] = 4 * ij[b][0] + c, cols[c] = 4 * ij[b][1] + c;
+    PetscCall(MatSetValues(*K, 4, rows, 4, cols, B, INSERT_VALUES));
+  }
+  PetscCall(MatAssemblyBegin(*K, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(*K, MAT_FINAL_ASSEMBLY));
+  PetscFunctionReturn(0);
+}
+
+/* quaternion_cholesky.c on small hand-made matrices: a forest (two components), clear errors for a missing diagonal
+   block, an unsymmetric pattern and vectors of the wrong size, and a good factorisation again after a failed one. */
+static PetscErrorCode CheckQuatCholeskyInputs(void)
+{
+  const PetscInt  fij[8][2] = {{0, 0}, {1, 1}, {2, 2}, {3, 3}, {0, 2}, {2, 0}, {1, 3}, {3, 1}};
+  const PetscReal fq[8][4]  = {{4, 0, 0, 0}, {3, 0, 0, 0}, {5, 0, 0, 0}, {2, 0, 0, 0}, {1, 0.5, -0.3, 0.2}, {1, -0.5, 0.3, -0.2}, {0.5, 0.1, 0.2, -0.4}, {0.5, -0.1, -0.2, 0.4}};
+  const PetscInt  nij[3][2] = {{0, 0}, {0, 1}, {1, 0}}, uij[3][2] = {{0, 0}, {1, 1}, {0, 1}};
+  const PetscReal nq[3][4]  = {{2, 0, 0, 0}, {0.3, 0.1, 0, 0}, {0.3, -0.1, 0, 0}}, uq[3][4] = {{2, 0, 0, 0}, {2, 0, 0, 0}, {0.3, 0.1, 0, 0}};
+  Mat             F, N, U;
+  Vec             u, y, r, w;
+  CSQuatCholesky  qc;
+  PetscRandom     rnd;
+  PetscErrorCode  ierr;
+  PetscReal       err;
+  PetscFunctionBeginUser;
+  PetscCall(QuatMat(4, 8, fij, fq, &F));
+  PetscCall(QuatMat(2, 3, nij, nq, &N));
+  PetscCall(QuatMat(2, 3, uij, uq, &U));
+  PetscCall(MatCreateVecs(F, &u, &y));
+  PetscCall(VecDuplicate(u, &r));
+  PetscCall(VecCreateSeq(PETSC_COMM_SELF, 8, &w));
+  PetscCall(PetscRandomCreate(PETSC_COMM_SELF, &rnd));
+  PetscCall(VecSetRandom(u, rnd));
+  PetscCall(CSQuatCholeskyCreate("amd", &qc));
+  for (int pass = 0; pass < 2; pass++) {
+    PetscCall(CSQuatCholeskySetUp(qc, F, -0.5));
+    PetscCall(CSQuatCholeskySolve(qc, u, y));
+    PetscCall(MatMult(F, y, r));
+    PetscCall(VecAXPY(r, 0.5, y));
+    PetscCall(RelDiff(u, r, &err));
+    PetscCall(Check(PETSC_COMM_SELF, pass ? "quaternion Cholesky: a forest again after a failed analysis" : "quaternion Cholesky: a forest of two components", err, 1e-14));
+    if (pass) break;
+    PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
+    ierr = CSQuatCholeskySetUp(qc, N, -0.5);
+    PetscCall(PetscPopErrorHandler());
+    PetscCall(Check(PETSC_COMM_SELF, "quaternion Cholesky: no diagonal block -> ARG_WRONG", ierr == PETSC_ERR_ARG_WRONG ? 0 : 1, 0));
+    PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
+    ierr = CSQuatCholeskySetUp(qc, U, -0.5);
+    PetscCall(PetscPopErrorHandler());
+    PetscCall(Check(PETSC_COMM_SELF, "quaternion Cholesky: unsymmetric pattern -> ARG_WRONG", ierr == PETSC_ERR_ARG_WRONG ? 0 : 1, 0));
+  }
+  PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
+  ierr = CSQuatCholeskySolve(qc, w, y);
+  PetscCall(PetscPopErrorHandler());
+  PetscCall(Check(PETSC_COMM_SELF, "quaternion Cholesky: vector of the wrong size -> ARG_SIZ", ierr == PETSC_ERR_ARG_SIZ ? 0 : 1, 0));
+  PetscCall(CSQuatCholeskyDestroy(&qc));
+  PetscCall(PetscRandomDestroy(&rnd));
+  PetscCall(VecDestroy(&u));
+  PetscCall(VecDestroy(&y));
+  PetscCall(VecDestroy(&r));
+  PetscCall(VecDestroy(&w));
+  PetscCall(MatDestroy(&F));
+  PetscCall(MatDestroy(&N));
+  PetscCall(MatDestroy(&U));
+  PetscFunctionReturn(0);
+}
 static PetscErrorCode CheckOperators(CSMesh mesh, Vec x, CSRhoLocation loc, Vec rho, const char label[])
 {
   DM          dm;
@@ -311,6 +384,11 @@ int main(int argc, char **argv)
   }
   PetscCall(CheckQuaternions(comm));
   PetscCall(CheckAppendixG(comm));
+  {
+    PetscMPIInt size;
+    PetscCallMPI(MPI_Comm_size(comm, &size));
+    if (size == 1) PetscCall(CheckQuatCholeskyInputs());
+  }
   PetscCall(CSMeshCreateFromOptions(comm, NULL, &mesh));
   /* a generic (non-round) surface: perturb the positions */
   PetscCall(PetscRandomCreate(comm, &r));
