@@ -17,7 +17,9 @@
 
 static const char *PresetSchur[][2] = {
   {"-flow_ksp_type", "fgmres"},
-  {"-flow_ksp_rtol", "1e-9"},
+  /* relative to |b| = |(-g - X^T mu, -c)|, which falls with the run: 1e-6 gives the same iterates as 1e-9 (level 6,
+     100 steps: W to 1e-14, el_residual to 1e-7 relative) with 380 instead of 574 FGMRES iterations, 83.8 vs 113.2 s */
+  {"-flow_ksp_rtol", "1e-6"},
   {"-flow_pc_type", "fieldsplit"},
   {"-flow_pc_fieldsplit_type", "schur"},
   {"-flow_pc_fieldsplit_schur_fact_type", "full"},
