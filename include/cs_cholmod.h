@@ -15,6 +15,11 @@ PETSC_EXTERN PetscErrorCode CSCholmodSetUpQuaternion(CSCholmod f, Mat K, PetscRe
 PETSC_EXTERN PetscErrorCode CSCholmodSolve(CSCholmod f, Vec x, Vec y);
 PETSC_EXTERN PetscErrorCode CSCholmodDestroy(CSCholmod *f);
 
+/* cholmod_start on c with the project's settings: supernodal, and the ordering named ("amd", "metis", "nesdis", or
+   "auto": CHOLMOD's own choice among several). Shared by cholmod_factor.c and quaternion_cholesky.c. */
+struct cholmod_common_struct;
+PETSC_EXTERN PetscErrorCode CSCholmodStartCommon(const char ordering[], struct cholmod_common_struct *c);
+
 /* The project's default sparse Cholesky for an SPD operator: CHOLMOD on one rank, MUMPS on several. */
 PETSC_EXTERN PetscErrorCode CSSetDefaultCholesky(PC pc);
 #endif

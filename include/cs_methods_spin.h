@@ -39,9 +39,9 @@ struct _p_CSSpin {
   PetscBool      inverse;     /* inverse iteration instead of EPS */
   PetscBool      scalar_pc;   /* EPS with STPRECOND and the scalar Laplacian preconditioner (spin_precond.c) */
   PetscBool      solver_set;  /* -spin_solver given */
-  PetscBool      complex_chol; /* factor K - sigma directly, outside PETSc (serial, standard problem, no boundary map) */
+  PetscBool      direct_chol; /* factor K - sigma directly, outside PETSc (serial, standard problem, no boundary map) */
   PetscBool      quat_chol;    /* ... in quaternion arithmetic (else CHOLMOD's complex form) */
-  char           complex_ordering[16]; /* its CHOLMOD ordering */
+  char           chol_ordering[16]; /* its CHOLMOD ordering */
   PetscInt       inverse_its;
   PetscBool      keep_factor; /* inverse iteration: keep the numeric factorisation across solves */
   PetscBool      pin;         /* Poisson: pin one vertex instead of mean-zero */
@@ -61,8 +61,8 @@ struct _p_CSSpin {
   Mat       Kinv;    /* K - sigma I for the inverse iteration */
   KSP       kpois;
   Mat       L;
-  CSCholmod cf;      /* K - sigma in complex form (cholmod_factor.c), when complex_chol and not quat_chol */
-  CSQuatCholesky qc; /* K - sigma in quaternion arithmetic (quaternion_cholesky.c), when complex_chol and quat_chol */
+  CSCholmod cf;      /* K - sigma in complex form (cholmod_factor.c), when direct_chol and not quat_chol */
+  CSQuatCholesky qc; /* K - sigma in quaternion arithmetic (quaternion_cholesky.c), when direct_chol and quat_chol */
   Mat       Ls;      /* L + c M (dmV1), the scalar preconditioner of spin_precond.c */
   KSP       klap;    /* its solver, prefix spin_lap_ */
   PetscInt  lap_its;

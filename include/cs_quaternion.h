@@ -73,6 +73,18 @@ static inline void CSQuatBlock(const PetscReal q[4], PetscScalar M[16])
   M[15] = a;
 }
 
+/* The next 4x4 block of row 4i of a quaternionic AIJ matrix (nc, cols, v from MatGetRow of that row): returns
+   its block column and advances *k past it; with q, also its quaternion, read off the block's first row
+   (a, -b, -c, -d) of CSQuatBlock (v is then needed). One visit per block, whichever of its 4 entries are stored. */
+static inline PetscInt CSQuatRowNextBlock(PetscInt nc, const PetscInt cols[], const PetscScalar v[], PetscInt *k, PetscReal q[4])
+{
+  const PetscInt j = cols[*k] / 4;
+  if (q) q[0] = q[1] = q[2] = q[3] = 0;
+  for (; *k < nc && cols[*k] / 4 == j; (*k)++)
+    if (q) q[cols[*k] % 4] = (cols[*k] % 4 ? -1 : 1) * PetscRealPart(v[*k]);
+  return j;
+}
+
 /* conj(l) v l for v imaginary (only the imaginary part is returned, in r[3]): the similarity of crane2011
    Sec. 3 -- rotation and scaling by |l|^2. */
 static inline void CSQuatSandwich(const PetscReal l[4], const PetscReal v[3], PetscReal r[3])

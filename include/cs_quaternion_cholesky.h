@@ -15,8 +15,5 @@ PETSC_EXTERN PetscErrorCode CSQuatCholeskyCreate(const char ordering[], CSQuatCh
 PETSC_EXTERN PetscErrorCode CSQuatCholeskySetUp(CSQuatCholesky f, Mat K, PetscReal sigma);
 /* y = (K - sigma)^{-1} x for real 4V vectors (x and y may be the same vector) */
 PETSC_EXTERN PetscErrorCode CSQuatCholeskySolve(CSQuatCholesky f, Vec x, Vec y);
-/* nominal quaternion entries of L (the explicit zeros of relaxed supernodes included) and real flops of the
-   factorisation (after SetUp) */
-PETSC_EXTERN PetscErrorCode CSQuatCholeskyGetInfo(CSQuatCholesky f, PetscLogDouble *nnz, PetscLogDouble *flops);
 PETSC_EXTERN PetscErrorCode CSQuatCholeskyDestroy(CSQuatCholesky *f);
 #endif

@@ -25,9 +25,9 @@ PetscErrorCode CSSpinCreate(CSMesh mesh, CSSpin *spin)
   s->target      = 1e-2;
   s->scalar_pc    = PETSC_FALSE;
   s->lap_shift    = 1;
-  s->complex_chol = PETSC_TRUE;
+  s->direct_chol = PETSC_TRUE;
   s->quat_chol    = PETSC_TRUE;
-  PetscCall(PetscStrncpy(s->complex_ordering, "amd", sizeof(s->complex_ordering)));
+  PetscCall(PetscStrncpy(s->chol_ordering, "amd", sizeof(s->chol_ordering)));
   PetscCall(CSDiracCreateDM(mesh, NULL, &s->dm));
   *spin = s;
   PetscFunctionReturn(0);
@@ -54,9 +54,9 @@ PetscErrorCode CSSpinSetFromOptions(CSSpin s)
   PetscCall(PetscOptionsInt("-spin_inverse_its", "Inverse iteration steps", NULL, s->inverse_its, &s->inverse_its, NULL));
   PetscCall(PetscOptionsBool("-spin_inverse_keep_factor", "Inverse iteration: keep the first factorisation as preconditioner for later solves", NULL, s->keep_factor, &s->keep_factor, NULL));
   PetscCall(PetscOptionsReal("-spin_shift", "Shift toward 0 (negative target), in units of the unit sphere's spectrum", NULL, s->target, &s->target, &s->target_set));
-  PetscCall(PetscOptionsBool("-spin_complex_cholesky", "Serial shift-and-invert and inverse iteration: factor K - sigma as a quaternionic matrix (-spin_cholesky_arithmetic; a quarter of the flops of the real 4V x 4V factorisation); 0 for the real factorisation and any -spin_st_pc_*/-spin_inverse_pc_* choice", NULL, s->complex_chol, &s->complex_chol, &complex_set));
+  PetscCall(PetscOptionsBool("-spin_complex_cholesky", "Serial shift-and-invert and inverse iteration: factor K - sigma as a quaternionic matrix (-spin_cholesky_arithmetic; a quarter of the flops of the real 4V x 4V factorisation); 0 for the real factorisation and any -spin_st_pc_*/-spin_inverse_pc_* choice", NULL, s->direct_chol, &s->direct_chol, &complex_set));
   PetscCall(PetscOptionsEList("-spin_cholesky_arithmetic", "That factorisation in quaternion arithmetic (quaternion_cholesky.c: half the flops of the complex form) or in CHOLMOD's complex form", NULL, arith, 2, arith[s->quat_chol ? 0 : 1], &iar, &ar_set));
-  PetscCall(PetscOptionsEList("-spin_complex_cholesky_ordering", "Its fill-reducing ordering, by CHOLMOD (auto: CHOLMOD tries several)", NULL, orderings, 4, s->complex_ordering, &iord, &ord_set));
+  PetscCall(PetscOptionsEList("-spin_complex_cholesky_ordering", "Its fill-reducing ordering, by CHOLMOD (auto: CHOLMOD tries several)", NULL, orderings, 4, s->chol_ordering, &iord, &ord_set));
   PetscCall(PetscOptionsReal("-spin_lap_shift", "-spin_solver precond: the mass shift c of L + c M, in units of 4 pi / area", NULL, s->lap_shift, &s->lap_shift, NULL));
   PetscCall(PetscOptionsBool("-spin_poisson_pin", "Fix the translation by pinning the first vertex instead of matching the mean", NULL, s->pin, &s->pin, NULL));
   PetscCall(PetscOptionsEList("-spin_boundary", "Boundary condition (Sec. 5.7): none (free), keep tangents, tangents from -spin_boundary_file, or from -target_mesh", NULL, bnames, 4, bnames[ib], &ib, NULL));
@@ -65,7 +65,7 @@ PetscErrorCode CSSpinSetFromOptions(CSSpin s)
   s->shell       = (PetscBool)(it == 1);
   s->inverse     = (PetscBool)(is == 2);
   s->boundary    = (CSSpinBoundary)ib;
-  if (ord_set) PetscCall(PetscStrncpy(s->complex_ordering, orderings[iord], sizeof(s->complex_ordering)));
+  if (ord_set) PetscCall(PetscStrncpy(s->chol_ordering, orderings[iord], sizeof(s->chol_ordering)));
   if (ar_set) s->quat_chol = (PetscBool)(iar == 0);
   PetscCheck(s->lap_shift > 0, s->mesh->comm, PETSC_ERR_ARG_OUTOFRANGE, "-spin_lap_shift %g: must be positive (L + c M must be definite)", (double)s->lap_shift);
   /* the scalar preconditioner (spin_precond.c) is made for the standard problem on the full space: elsewhere
@@ -75,15 +75,15 @@ PetscErrorCode CSSpinSetFromOptions(CSSpin s)
   /* the quaternionic factorisation needs quaternionic blocks (not the reduced boundary space, not Eq. 6's non-Hermitian
      pencil), an assembled matrix and one rank */
   PetscCallMPI(MPI_Comm_size(s->mesh->comm, &size));
-  if (size > 1 || s->generalized || s->boundary != CS_SPIN_BOUNDARY_NONE || s->shell || s->scalar_pc) s->complex_chol = PETSC_FALSE;
-  if (s->complex_chol && !complex_set) {
+  if (size > 1 || s->generalized || s->boundary != CS_SPIN_BOUNDARY_NONE || s->shell || s->scalar_pc) s->direct_chol = PETSC_FALSE;
+  if (s->direct_chol && !complex_set) {
     /* a user's choice of the inner solver means the real matrix: the quaternionic factorisation replaces that solver */
     PetscBool a, b, c, d;
     PetscCall(PetscOptionsHasName(NULL, NULL, "-spin_st_pc_type", &a));
     PetscCall(PetscOptionsHasName(NULL, NULL, "-spin_st_ksp_type", &b));
     PetscCall(PetscOptionsHasName(NULL, NULL, "-spin_inverse_pc_type", &c));
     PetscCall(PetscOptionsHasName(NULL, NULL, "-spin_inverse_ksp_type", &d));
-    if (a || b || c || d) s->complex_chol = PETSC_FALSE;
+    if (a || b || c || d) s->direct_chol = PETSC_FALSE;
   }
   PetscCheck(!(s->scalar_pc && s->generalized), s->mesh->comm, PETSC_ERR_SUP, "-spin_solver precond supports only -spin_problem standard");
   PetscCheck(!(s->scalar_pc && s->boundary != CS_SPIN_BOUNDARY_NONE), s->mesh->comm, PETSC_ERR_SUP, "-spin_solver precond does not support -spin_boundary (use -spin_solver sinvert)");
@@ -352,7 +352,7 @@ PetscErrorCode CSSpinMumpsDefaultOrdering(CSSpin s, PC pc)
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode ComplexFactorApply(PC pc, Vec x, Vec y)
+static PetscErrorCode DirectFactorApply(PC pc, Vec x, Vec y)
 {
   CSSpin s;
   PetscFunctionBeginUser;
@@ -362,7 +362,7 @@ static PetscErrorCode ComplexFactorApply(PC pc, Vec x, Vec y)
   PetscFunctionReturn(0);
 }
 
-/* factor K - sigma for ComplexFactorPC, in quaternion arithmetic or in CHOLMOD's complex form */
+/* factor K - sigma for DirectFactorPC, in quaternion arithmetic or in CHOLMOD's complex form */
 static PetscErrorCode DirectFactorSetUp(CSSpin s, PetscReal sigma)
 {
   PetscFunctionBeginUser;
@@ -371,15 +371,15 @@ static PetscErrorCode DirectFactorSetUp(CSSpin s, PetscReal sigma)
   PetscFunctionReturn(0);
 }
 
-/* pc applies (K - sigma)^{-1} through the complex factorisation (factored in SetupEPS / InverseIteration) */
-static PetscErrorCode ComplexFactorPC(CSSpin s, PC pc)
+/* pc applies (K - sigma)^{-1} through the direct factorisation (quaternion or complex form) (factored in SetupEPS / InverseIteration) */
+static PetscErrorCode DirectFactorPC(CSSpin s, PC pc)
 {
   PetscFunctionBeginUser;
-  if (s->quat_chol && !s->qc) PetscCall(CSQuatCholeskyCreate(s->complex_ordering, &s->qc));
-  if (!s->quat_chol && !s->cf) PetscCall(CSCholmodCreate(s->complex_ordering, &s->cf));
+  if (s->quat_chol && !s->qc) PetscCall(CSQuatCholeskyCreate(s->chol_ordering, &s->qc));
+  if (!s->quat_chol && !s->cf) PetscCall(CSCholmodCreate(s->chol_ordering, &s->cf));
   PetscCall(PCSetType(pc, PCSHELL));
   PetscCall(PCShellSetContext(pc, s));
-  PetscCall(PCShellSetApply(pc, ComplexFactorApply));
+  PetscCall(PCShellSetApply(pc, DirectFactorApply));
   PetscCall(PCShellSetName(pc, s->quat_chol ? "confsurf: supernodal Cholesky of K - sigma in quaternion arithmetic" : "confsurf: CHOLMOD Cholesky of K - sigma in complex form"));
   PetscFunctionReturn(0);
 }
@@ -410,18 +410,18 @@ static PetscErrorCode SetupEPS(CSSpin s, Vec x, CSRhoLocation loc, Vec rho, Pets
       PetscCall(EPSSetDimensions(s->eps, nev, PETSC_DEFAULT, PETSC_DEFAULT));
     } else {
       PetscCall(STSetType(st, STSINVERT));
-      if (s->complex_chol) {
-        /* the ST's solve is ours (cholmod_factor.c): no shifted copy of K is formed */
+      if (s->direct_chol) {
+        /* the ST's solve is ours (quaternion_cholesky.c or cholmod_factor.c): no shifted copy of K is formed */
         PetscCall(STSetMatMode(st, ST_MATMODE_SHELL));
         PetscCall(KSPSetType(ksp, KSPPREONLY));
-        PetscCall(ComplexFactorPC(s, pc));
+        PetscCall(DirectFactorPC(s, pc));
       } else if (s->shell) {
         /* the shell cannot be factored: Krylov inner solve preconditioned by the factored assembled copy */
         PetscCall(STSetMatMode(st, ST_MATMODE_SHELL));
         PetscCall(KSPSetType(ksp, KSPGMRES));
         PetscCall(KSPSetTolerances(ksp, 1e-12, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
       } else PetscCall(KSPSetType(ksp, KSPPREONLY));
-      if (!s->complex_chol) PetscCall(SetDefaultFactor(s, pc, s->generalized));
+      if (!s->direct_chol) PetscCall(SetDefaultFactor(s, pc, s->generalized));
       PetscCall(EPSSetWhichEigenpairs(s->eps, EPS_TARGET_MAGNITUDE));
       PetscCall(EPSSetTarget(s->eps, sigma));
       /* nev = 1: 6 basis vectors (6 shifted solves, converged without restart on the meshes of
@@ -444,7 +444,7 @@ static PetscErrorCode SetupEPS(CSSpin s, Vec x, CSRhoLocation loc, Vec rho, Pets
       PetscCall(CSSpinSetUpScalarPC(s, x, loc, rho, pc));
     }
   }
-  if (s->complex_chol && !precond) {
+  if (s->direct_chol && !precond) {
     PetscReal tgt;
     PetscCall(EPSGetTarget(s->eps, &tgt));
     PetscCall(DirectFactorSetUp(s, tgt));
@@ -494,14 +494,14 @@ static PetscErrorCode InverseIteration(CSSpin s, Vec xr, PetscReal *kr)
     PetscCall(KSPSetType(s->kinv, s->keep_factor ? KSPGMRES : KSPPREONLY));
     PetscCall(KSPSetTolerances(s->kinv, 1e-12, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
     PetscCall(KSPGetPC(s->kinv, &pc));
-    if (s->complex_chol) PetscCall(ComplexFactorPC(s, pc));
+    if (s->direct_chol) PetscCall(DirectFactorPC(s, pc));
     else PetscCall(SetDefaultFactor(s, pc, PETSC_FALSE));
     PetscCall(KSPSetFromOptions(s->kinv));
     PetscCall(CSSpinMumpsDefaultOrdering(s, pc));
     PetscCall(MatDuplicate(s->K, MAT_COPY_VALUES, &s->Kinv));
-    if (s->complex_chol) PetscCall(DirectFactorSetUp(s, sigma));
+    if (s->direct_chol) PetscCall(DirectFactorSetUp(s, sigma));
   } else {
-    if (s->complex_chol && !s->keep_factor) PetscCall(DirectFactorSetUp(s, sigma));
+    if (s->direct_chol && !s->keep_factor) PetscCall(DirectFactorSetUp(s, sigma));
     PetscCall(MatCopy(s->K, s->Kinv, SAME_NONZERO_PATTERN));
     /* crane2013 Sec. 6.4.2: consecutive problems are close, so the old factorisation preconditions the new one */
     if (s->keep_factor) PetscCall(KSPSetReusePreconditioner(s->kinv, PETSC_TRUE));

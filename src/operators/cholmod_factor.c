@@ -11,6 +11,7 @@
    real, so the vectors are converted on the way in and out. */
 #include <suitesparse/cholmod.h>
 #include "cs_cholmod.h"
+#include "cs_quaternion.h"
 
 static PetscLogEvent CS_EVENT_Symbolic = 0, CS_EVENT_Numeric = 0, CS_EVENT_Solve = 0;
 
@@ -82,10 +83,9 @@ static PetscErrorCode BuildQuaternion(CSCholmod f, Mat K, PetscReal sigma)
     PetscInt        nc;
     const PetscInt *cols;
     PetscCall(MatGetRow(K, 4 * i, &nc, &cols, NULL));
-    for (PetscInt k = 0, jprev = -1; k < nc; k++) {
-      PetscInt j = cols[k] / 4;
-      if (j == jprev || j > i) continue; /* one visit per block, lower blocks only */
-      jprev = j;
+    for (PetscInt k = 0; k < nc;) {
+      PetscInt j = CSQuatRowNextBlock(nc, cols, NULL, &k, NULL);
+      if (j > i) continue; /* lower blocks only */
       if (j < i) cnt[2 * j] += 2, cnt[2 * j + 1] += 2;
       else cnt[2 * j] += 2, cnt[2 * j + 1] += 1; /* diagonal block: (0,0), (1,0), (1,1) */
     }
@@ -101,9 +101,8 @@ static PetscErrorCode BuildQuaternion(CSCholmod f, Mat K, PetscReal sigma)
     const PetscScalar *v;
     PetscCall(MatGetRow(K, 4 * i, &nc, &cols, &v));
     for (PetscInt k = 0; k < nc;) {
-      PetscInt  j    = cols[k] / 4;
-      PetscReal q[4] = {0, 0, 0, 0};
-      for (; k < nc && cols[k] / 4 == j; k++) q[cols[k] % 4] = (cols[k] % 4 ? -1 : 1) * PetscRealPart(v[k]);
+      PetscReal q[4];
+      PetscInt  j = CSQuatRowNextBlock(nc, cols, v, &k, q);
       if (j > i) continue;
       if (j == i) q[0] -= sigma;
       {
@@ -129,10 +128,27 @@ static PetscErrorCode BuildQuaternion(CSCholmod f, Mat K, PetscReal sigma)
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode CSCholmodStartCommon(const char ordering[], cholmod_common *c)
+{
+  PetscBool amd, metis, nesdis, autom;
+  PetscFunctionBeginUser;
+  PetscCall(PetscStrcmp(ordering, "amd", &amd));
+  PetscCall(PetscStrcmp(ordering, "metis", &metis));
+  PetscCall(PetscStrcmp(ordering, "nesdis", &nesdis));
+  PetscCall(PetscStrcmp(ordering, "auto", &autom));
+  PetscCheck(amd || metis || nesdis || autom, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "CHOLMOD ordering %s: use amd, metis, nesdis or auto", ordering);
+  PetscCheck(cholmod_start(c), PETSC_COMM_SELF, PETSC_ERR_LIB, "cholmod_start failed");
+  c->supernodal = CHOLMOD_SUPERNODAL;
+  if (!autom) {
+    c->nmethods           = 1;
+    c->method[0].ordering = amd ? CHOLMOD_AMD : (metis ? CHOLMOD_METIS : CHOLMOD_NESDIS);
+  }
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode CSCholmodCreate(const char ordering[], CSCholmod *fac)
 {
   CSCholmod f;
-  PetscBool amd, metis, nesdis, autom;
   PetscFunctionBeginUser;
   if (!CS_EVENT_Symbolic) {
     PetscClassId id;
@@ -141,18 +157,8 @@ PetscErrorCode CSCholmodCreate(const char ordering[], CSCholmod *fac)
     PetscCall(PetscLogEventRegister("CSCholmodNum", id, &CS_EVENT_Numeric));
     PetscCall(PetscLogEventRegister("CSCholmodSolve", id, &CS_EVENT_Solve));
   }
-  PetscCall(PetscStrcmp(ordering, "amd", &amd));
-  PetscCall(PetscStrcmp(ordering, "metis", &metis));
-  PetscCall(PetscStrcmp(ordering, "nesdis", &nesdis));
-  PetscCall(PetscStrcmp(ordering, "auto", &autom));
-  PetscCheck(amd || metis || nesdis || autom, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "CHOLMOD ordering %s: use amd, metis, nesdis or auto", ordering);
   PetscCall(PetscNew(&f));
-  cholmod_start(&f->common);
-  f->common.supernodal = CHOLMOD_SUPERNODAL;
-  if (!autom) {
-    f->common.nmethods           = 1;
-    f->common.method[0].ordering = amd ? CHOLMOD_AMD : (metis ? CHOLMOD_METIS : CHOLMOD_NESDIS);
-  }
+  PetscCall(CSCholmodStartCommon(ordering, &f->common));
   *fac = f;
   PetscFunctionReturn(0);
 }

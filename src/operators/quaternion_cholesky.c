@@ -25,6 +25,7 @@
 #include <suitesparse/cholmod.h>
 #include "cs_quaternion.h"
 #include "cs_quaternion_cholesky.h"
+#include "cs_cholmod.h"
 #include <petscblaslapack.h>
 
 /* Column blocks (measured on the 14,400-vertex torus of runs/bench_spin.sh; 16/32/64 within noise of each other):
@@ -154,10 +155,8 @@ static PetscErrorCode Symbolic(CSQuatCholesky f, Mat K)
     const PetscInt *cols;
     PetscBool       diag = PETSC_FALSE;
     PetscCall(MatGetRow(K, 4 * bi, &nc, &cols, NULL));
-    for (PetscInt k = 0, jprev = -1; k < nc; k++) {
-      PetscInt bj = cols[k] / 4;
-      if (bj == jprev) continue;
-      jprev = bj;
+    for (PetscInt k = 0; k < nc;) {
+      PetscInt bj = CSQuatRowNextBlock(nc, cols, NULL, &k, NULL);
       if (bj <= bi) cnt[bj]++;
       if (bj < bi) nlow++;
       if (bj > bi) nup++;
@@ -182,10 +181,8 @@ static PetscErrorCode Symbolic(CSQuatCholesky f, Mat K)
     PetscInt        nc;
     const PetscInt *cols;
     PetscCall(MatGetRow(K, 4 * bi, &nc, &cols, NULL));
-    for (PetscInt k = 0, jprev = -1; k < nc; k++) {
-      PetscInt bj = cols[k] / 4;
-      if (bj == jprev) continue;
-      jprev = bj;
+    for (PetscInt k = 0; k < nc;) {
+      PetscInt bj = CSQuatRowNextBlock(nc, cols, NULL, &k, NULL);
       if (bj <= bi) Ai[cnt[bj]++] = (int)bi;
     }
     PetscCall(MatRestoreRow(K, 4 * bi, &nc, &cols, NULL));
@@ -254,10 +251,8 @@ static PetscErrorCode Symbolic(CSQuatCholesky f, Mat K)
     PetscInt        nc;
     const PetscInt *cols;
     PetscCall(MatGetRow(K, 4 * bi, &nc, &cols, NULL));
-    for (PetscInt k = 0, jprev = -1; k < nc; k++) {
-      PetscInt bj = cols[k] / 4;
-      if (bj == jprev) continue;
-      jprev         = bj;
+    for (PetscInt k = 0; k < nc;) {
+      PetscInt bj   = CSQuatRowNextBlock(nc, cols, NULL, &k, NULL);
       eI[nent]      = iperm[bi];
       eJ[nent]      = iperm[bj];
       f->apos[nent] = -1; /* upper triangle: not stored */
@@ -354,15 +349,14 @@ static PetscErrorCode Numeric(CSQuatCholesky f, Mat K, PetscReal sigma)
   PetscCall(PetscLogEventBegin(CS_EVENT_QNumeric, 0, 0, 0, 0));
   f->factored = PETSC_FALSE;
   PetscCall(PetscArrayzero(f->lx, f->lxptr[f->nsuper]));
-  for (PetscInt bi = 0; bi < f->nb; bi++) { /* K's entries, q from the first row (a, -b, -c, -d) of each block */
+  for (PetscInt bi = 0; bi < f->nb; bi++) { /* K's entries, one quaternion per block */
     PetscInt           nc;
     const PetscInt    *cols;
     const PetscScalar *v;
     PetscCall(MatGetRow(K, 4 * bi, &nc, &cols, &v));
     for (PetscInt k = 0; k < nc;) {
-      const PetscInt bj    = cols[k] / 4;
-      double         q[4] = {0, 0, 0, 0};
-      for (; k < nc && cols[k] / 4 == bj; k++) q[cols[k] % 4] = (cols[k] % 4 ? -1 : 1) * PetscRealPart(v[k]);
+      double         q[4];
+      const PetscInt bj = CSQuatRowNextBlock(nc, cols, v, &k, q);
       if (bj == bi) q[0] -= sigma;
       if (e >= f->nent) break; /* the pattern grew without a new symbolic phase: reported below */
       if (f->apos[e] >= 0)
@@ -431,7 +425,6 @@ static PetscErrorCode Numeric(CSQuatCholesky f, Mat K, PetscReal sigma)
 PetscErrorCode CSQuatCholeskyCreate(const char ordering[], CSQuatCholesky *fac)
 {
   CSQuatCholesky f;
-  PetscBool      amd, metis, nesdis, autom;
   PetscFunctionBeginUser;
   if (!CS_EVENT_QSymbolic) {
     PetscClassId id;
@@ -440,18 +433,8 @@ PetscErrorCode CSQuatCholeskyCreate(const char ordering[], CSQuatCholesky *fac)
     PetscCall(PetscLogEventRegister("CSQuatCholNum", id, &CS_EVENT_QNumeric));
     PetscCall(PetscLogEventRegister("CSQuatCholSolve", id, &CS_EVENT_QSolve));
   }
-  PetscCall(PetscStrcmp(ordering, "amd", &amd));
-  PetscCall(PetscStrcmp(ordering, "metis", &metis));
-  PetscCall(PetscStrcmp(ordering, "nesdis", &nesdis));
-  PetscCall(PetscStrcmp(ordering, "auto", &autom));
-  PetscCheck(amd || metis || nesdis || autom, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Cholesky ordering %s: use amd, metis, nesdis or auto", ordering);
   PetscCall(PetscNew(&f));
-  PetscCheck(cholmod_start(&f->common), PETSC_COMM_SELF, PETSC_ERR_LIB, "cholmod_start failed");
-  f->common.supernodal = CHOLMOD_SUPERNODAL;
-  if (!autom) {
-    f->common.nmethods           = 1;
-    f->common.method[0].ordering = amd ? CHOLMOD_AMD : (metis ? CHOLMOD_METIS : CHOLMOD_NESDIS);
-  }
+  PetscCall(CSCholmodStartCommon(ordering, &f->common));
   *fac = f;
   PetscFunctionReturn(0);
 }
@@ -563,14 +546,6 @@ PetscErrorCode CSQuatCholeskySolve(CSQuatCholesky f, Vec x, Vec yv)
   PetscCall(VecRestoreArray(yv, &ya));
   PetscCall(PetscLogFlops(2.0 * 32.0 * f->nnzL));
   PetscCall(PetscLogEventEnd(CS_EVENT_QSolve, 0, 0, 0, 0));
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSQuatCholeskyGetInfo(CSQuatCholesky f, PetscLogDouble *nnz, PetscLogDouble *flops)
-{
-  PetscFunctionBeginUser;
-  if (nnz) *nnz = f->nnzL;
-  if (flops) *flops = f->flops;
   PetscFunctionReturn(0);
 }
 
