@@ -15,7 +15,7 @@ CC       := $(shell pkg-config --variable=ccompiler petsc)
 CPPFLAGS := -Iinclude $(shell pkg-config --cflags slepc petsc)
 CFLAGS   ?= -O2 -g
 CFLAGS   += -std=gnu11 -Wall -Wextra -Wno-unused-parameter -Werror -MMD -MP
-LDLIBS   := $(shell pkg-config --libs slepc petsc) -lcholmod -lblas -lm
+LDLIBS   := $(shell pkg-config --libs slepc petsc) -lcholmod -llapack -lblas -lm
 
 LIB_SRC  := $(sort $(wildcard src/*/*.c))
 LIB_SRC  := $(filter-out src/driver/%,$(LIB_SRC))

@@ -5,8 +5,10 @@
    S = H/t + t_mu X^T I_Q^{-1} X is sparse, SPD and exact. We assemble S ourselves with a pattern fixed over the
    run and hand it to the fieldsplit as the `user` Schur preconditioner (`selfp` forms the same matrix, but
    with a new nonzero pattern every step, which forces a new symbolic factorisation: 0.5 s per step with
-   CHOLMOD at 20k faces); S is factored by CHOLMOD serially (1.8x faster than MUMPS-AMD at 20k faces) and by
-   MUMPS with the PORD ordering in parallel; the outer iteration then converges in 1-2 steps. The factorisation
+   CHOLMOD at 20k faces); S is factored by CHOLMOD serially (1.8x faster than MUMPS-AMD at 20k faces) and in
+   parallel by substructuring (PC cssubchol: CHOLMOD + METIS on each rank's part, then the dense interface; level
+   6, 10 steps: 2.36 s/step on 2 ranks against 3.89 serially, where MUMPS-PORD on S gained nothing); the outer
+   iteration then converges in 1-2 steps. The factorisation
    is kept over later steps while it stays a good preconditioner (-flow_pc_reuse_its, default 10: refactor
    once a solve needed more than 10 FGMRES iterations): at level 5 a 200-step run needs 207 s (201
    factorisations) when refactoring every step and 49.5 s with the kept one (18 factorisations, 1122 FGMRES
@@ -14,6 +16,7 @@
    inserted as a preset when -flow_pc_type is not given; any single preset option can be overridden on the
    command line (e.g. -flow_pc_fieldsplit_schur_precondition selfp). */
 #include "cs_methods_willmore.h"
+#include "cs_substructured_cholesky.h"
 
 static const char *PresetSchur[][2] = {
   {"-flow_ksp_type", "fgmres"},
@@ -27,8 +30,10 @@ static const char *PresetSchur[][2] = {
   {"-flow_fieldsplit_0_ksp_type", "preonly"},
   {"-flow_fieldsplit_0_pc_type", "jacobi"},
   {"-flow_fieldsplit_1_ksp_type", "preonly"},
-  {"-flow_fieldsplit_1_pc_type", "cholesky"},
-  {"-flow_fieldsplit_1_pc_factor_mat_solver_type", "cholmod"}, /* mumps in parallel: see InsertPreset */
+  /* "serial|parallel" values. In parallel, the substructured CHOLMOD factorisation (PC cssubchol,
+     substructured_cholesky.c): each rank factors its part of S with METIS + CHOLMOD, then the dense interface */
+  {"-flow_fieldsplit_1_pc_type", "cholesky|cssubchol"},
+  {"-flow_fieldsplit_1_pc_factor_mat_solver_type", "cholmod|mumps"}, /* for -flow_fieldsplit_1_pc_type cholesky */
   {"-flow_fieldsplit_1_mat_mumps_icntl_7", "4"}, /* PORD: per step 1.08 vs 1.28 s (AMD) at 20k faces, 5.7 vs 7.9 s at
                                                   82k faces, on 2 ranks; its slow analysis is paid once per run */
 };
@@ -50,24 +55,26 @@ static const char *PresetMass[][2] = {
 
 static PetscErrorCode InsertPreset(CSSaddle *s, const char *p[][2], PetscInt n)
 {
-  PetscBool set;
+  PetscBool   set;
+  PetscMPIInt size;
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsHasName(NULL, NULL, "-flow_pc_type", &set));
   if (set) PetscFunctionReturn(0); /* the user chose a solver: no preset at all */
+  PetscCallMPI(MPI_Comm_size(s->mesh->comm, &size));
   PetscCall(PetscMalloc1(n, &s->preset));
   for (PetscInt i = 0; i < n; i++) {
+    char        value[64];
+    const char *bar;
     PetscCall(PetscOptionsHasName(NULL, NULL, p[i][0], &set));
     if (set) continue;
-    if (!strcmp(p[i][1], "cholmod")) { /* CHOLMOD is sequential */
-      PetscMPIInt size;
-      PetscCallMPI(MPI_Comm_size(s->mesh->comm, &size));
-      if (size > 1) {
-        PetscCall(PetscOptionsSetValue(NULL, p[i][0], "mumps"));
-        PetscCall(PetscStrallocpy(p[i][0], &s->preset[s->npreset++]));
-        continue;
-      }
+    /* "serial|parallel": CHOLMOD is sequential */
+    PetscCall(PetscStrncpy(value, p[i][1], sizeof(value)));
+    PetscCall(PetscStrchr(p[i][1], '|', (char **)&bar));
+    if (bar) {
+      if (size > 1) PetscCall(PetscStrncpy(value, bar + 1, sizeof(value)));
+      else value[bar - p[i][1]] = 0;
     }
-    PetscCall(PetscOptionsSetValue(NULL, p[i][0], p[i][1]));
+    PetscCall(PetscOptionsSetValue(NULL, p[i][0], value));
     PetscCall(PetscStrallocpy(p[i][0], &s->preset[s->npreset++]));
   }
   PetscFunctionReturn(0);
@@ -87,6 +94,7 @@ PetscErrorCode CSSaddleCreate(CSMesh mesh, PetscBool edges, PetscBool h2, PetscI
   PetscCall(PetscOptionsString("-flow_saddle_mat", "nest|aij: the saddle matrix as MATNEST (fieldsplit) or converted to AIJ (monolithic direct solvers)", NULL, type, type, sizeof(type), NULL));
   PetscCall(PetscOptionsInt("-flow_pc_reuse_its", "Keep the preconditioner (factorisation) of an earlier step while the last solve needed at most this many Krylov iterations (0: refactor every step; default 10 with the conformal constraint, else 0; ignored with -flow_ksp_type preonly)", NULL, s->reuse_its, &s->reuse_its, NULL));
   PetscOptionsEnd();
+  PetscCall(CSSubCholRegister());
   PetscCheck(s->reuse_its >= 0, mesh->comm, PETSC_ERR_ARG_OUTOFRANGE, "-flow_pc_reuse_its %" PetscInt_FMT ": use 0 (refactor every step) or a positive iteration count", s->reuse_its);
   PetscCall(PetscStrcmp(type, "aij", &aij));
   s->monolithic = aij;

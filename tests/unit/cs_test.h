@@ -17,7 +17,7 @@ static PetscErrorCode CSTestCheck(MPI_Comm comm, PetscBool ok, const char what[]
 /* md was generated on rank 0 (empty elsewhere). amp > 0 adds uniform noise in [-amp, amp] from a seeded
    PetscRandom on rank 0, in file order, so every process count sees the same mesh. Then validate and
    distribute; md is consumed. */
-static PetscErrorCode CSTestDistribute(MPI_Comm comm, CSMeshData *md, PetscReal amp, unsigned long seed, CSMesh *mesh)
+PETSC_UNUSED static PetscErrorCode CSTestDistribute(MPI_Comm comm, CSMeshData *md, PetscReal amp, unsigned long seed, CSMesh *mesh)
 {
   CSTopology  topo;
   PetscMPIInt rank;

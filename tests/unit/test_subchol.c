@@ -1,0 +1,153 @@
+static const char help[] = "Checks of the substructured CHOLMOD Cholesky (PC cssubchol, issue 3) on a matrix shaped like the\n"
+                           "flow's Schur complement: 3 dofs per node of an n x n grid, two-ring couplings,\n"
+                           "S = (L L + eps I) (x) K with the 5-point Laplacian L (Dirichlet) and K = tridiag(1,2,1) (3x3).\n"
+                           "Relative residual of a direct solve (KSP preonly), after new values on the same pattern\n"
+                           "(numeric phase only), with the AMD and NESDIS interior orderings; the interface size;\n"
+                           "an indefinite matrix stops the KSP with DIVERGED_PC_FAILED on every rank (no error, no hang).\n"
+                           "Exit status = number of failed checks.\n";
+
+#include "cs_substructured_cholesky.h"
+#include "cs_test.h"
+
+/* S = (L L + eps I) (x) K, rows distributed by PETSc's default layout of the n^2 nodes */
+static PetscErrorCode BuildMatrix(MPI_Comm comm, PetscInt n, PetscReal eps, Mat *S)
+{
+  Mat      L, LL;
+  PetscInt rs, re;
+  const PetscReal K[3][3] = {{2, 1, 0}, {1, 2, 1}, {0, 1, 2}};
+  PetscFunctionBeginUser;
+  PetscCall(MatCreateAIJ(comm, PETSC_DECIDE, PETSC_DECIDE, n * n, n * n, 5, NULL, 4, NULL, &L));
+  PetscCall(MatGetOwnershipRange(L, &rs, &re));
+  for (PetscInt r = rs; r < re; r++) {
+    PetscInt i = r / n, j = r % n;
+    PetscCall(MatSetValue(L, r, r, 4.0, INSERT_VALUES));
+    if (i > 0) PetscCall(MatSetValue(L, r, r - n, -1.0, INSERT_VALUES));
+    if (i < n - 1) PetscCall(MatSetValue(L, r, r + n, -1.0, INSERT_VALUES));
+    if (j > 0) PetscCall(MatSetValue(L, r, r - 1, -1.0, INSERT_VALUES));
+    if (j < n - 1) PetscCall(MatSetValue(L, r, r + 1, -1.0, INSERT_VALUES));
+  }
+  PetscCall(MatAssemblyBegin(L, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(L, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatMatMult(L, L, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &LL));
+  PetscCall(MatShift(LL, eps));
+  PetscCall(MatCreateAIJ(comm, 3 * (re - rs), 3 * (re - rs), PETSC_DETERMINE, PETSC_DETERMINE, 39, NULL, 39, NULL, S));
+  for (PetscInt r = rs; r < re; r++) {
+    PetscInt           nc;
+    const PetscInt    *cols;
+    const PetscScalar *vals;
+    PetscCall(MatGetRow(LL, r, &nc, &cols, &vals));
+    for (PetscInt k = 0; k < nc; k++)
+      for (PetscInt a = 0; a < 3; a++)
+        for (PetscInt b = 0; b < 3; b++)
+          if (K[a][b] != 0) PetscCall(MatSetValue(*S, 3 * r + a, 3 * cols[k] + b, vals[k] * K[a][b], INSERT_VALUES));
+    PetscCall(MatRestoreRow(LL, r, &nc, &cols, &vals));
+  }
+  PetscCall(MatAssemblyBegin(*S, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(*S, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatSetOption(*S, MAT_SPD, PETSC_TRUE));
+  PetscCall(MatDestroy(&L));
+  PetscCall(MatDestroy(&LL));
+  PetscFunctionReturn(0);
+}
+
+/* |S x - b| / |b| after a preonly solve with the PC as it stands */
+static PetscErrorCode Residual(KSP ksp, Mat S, Vec b, PetscReal *rel, KSPConvergedReason *reason)
+{
+  Vec       x, r;
+  PetscReal nb, nr;
+  PetscFunctionBeginUser;
+  PetscCall(VecDuplicate(b, &x));
+  PetscCall(VecDuplicate(b, &r));
+  PetscCall(KSPSolve(ksp, b, x));
+  PetscCall(KSPGetConvergedReason(ksp, reason));
+  PetscCall(MatMult(S, x, r));
+  PetscCall(VecAXPY(r, -1.0, b));
+  PetscCall(VecNorm(r, NORM_2, &nr));
+  PetscCall(VecNorm(b, NORM_2, &nb));
+  *rel = nr / nb;
+  PetscCall(VecDestroy(&x));
+  PetscCall(VecDestroy(&r));
+  PetscFunctionReturn(0);
+}
+
+int main(int argc, char **argv)
+{
+  MPI_Comm           comm;
+  PetscMPIInt        size;
+  Mat                S;
+  Vec                b;
+  KSP                ksp;
+  PC                 pc;
+  PetscRandom        rnd;
+  PetscReal          rel;
+  PetscInt           G, n = 40;
+  KSPConvergedReason reason;
+  const char        *orderings[] = {"amd", "nesdis"};
+  char               what[128];
+
+  PetscCall(PetscInitialize(&argc, &argv, NULL, help));
+  comm = PETSC_COMM_WORLD;
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  PetscCall(CSSubCholRegister());
+  PetscCall(BuildMatrix(comm, n, 1e-3, &S));
+  PetscCall(MatCreateVecs(S, &b, NULL));
+  PetscCall(PetscRandomCreate(comm, &rnd));
+  PetscCall(PetscRandomSetSeed(rnd, 7));
+  PetscCall(PetscRandomSeed(rnd));
+  PetscCall(VecSetRandom(b, rnd));
+
+  PetscCall(KSPCreate(comm, &ksp));
+  PetscCall(KSPSetType(ksp, KSPPREONLY));
+  PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(PCSetType(pc, "cssubchol"));
+  PetscCall(KSPSetOperators(ksp, S, S));
+  PetscCall(KSPSetFromOptions(ksp));
+  PetscCall(Residual(ksp, S, b, &rel, &reason));
+  PetscCall(CSTestCheck(comm, (PetscBool)(rel < 1e-11 && reason > 0), "direct solve, METIS interior: |Sx - b|/|b|", rel, 1e-11));
+  PetscCall(CSSubCholGetInterfaceSize(pc, &G));
+  /* two grid rows of nodes (3 dofs each) per cut between consecutive ranks */
+  PetscCall(CSTestCheck(comm, (PetscBool)(size == 1 ? G == 0 : (G >= 3 * 2 * n && G <= (size - 1) * 3 * 2 * n + 3 * 2 * n)), "interface dofs (0 on one rank, about 6n per cut)", (PetscReal)G, (PetscReal)(size - 1) * 6 * n));
+
+  /* new values, same pattern: the numeric phase alone */
+  PetscCall(MatScale(S, 2.0));
+  PetscCall(MatShift(S, 0.5));
+  PetscCall(KSPSetOperators(ksp, S, S));
+  PetscCall(Residual(ksp, S, b, &rel, &reason));
+  PetscCall(CSTestCheck(comm, (PetscBool)(rel < 1e-11 && reason > 0), "refactorisation with new values: |Sx - b|/|b|", rel, 1e-11));
+
+  for (int o = 0; o < 2; o++) {
+    KSP k2;
+    PC  p2;
+    PetscCall(KSPCreate(comm, &k2));
+    PetscCall(KSPSetType(k2, KSPPREONLY));
+    PetscCall(KSPGetPC(k2, &p2));
+    PetscCall(PCSetType(p2, "cssubchol"));
+    PetscCall(KSPSetOptionsPrefix(k2, orderings[o]));
+    PetscCall(KSPAppendOptionsPrefix(k2, "_"));
+    {
+      char name[64];
+      PetscCall(PetscSNPrintf(name, sizeof(name), "-%s_pc_cssubchol_ordering", orderings[o]));
+      PetscCall(PetscOptionsSetValue(NULL, name, orderings[o]));
+    }
+    PetscCall(KSPSetOperators(k2, S, S));
+    PetscCall(KSPSetFromOptions(k2));
+    PetscCall(Residual(k2, S, b, &rel, &reason));
+    PetscCall(PetscSNPrintf(what, sizeof(what), "direct solve, %s interior: |Sx - b|/|b|", orderings[o]));
+    PetscCall(CSTestCheck(comm, (PetscBool)(rel < 1e-11 && reason > 0), what, rel, 1e-11));
+    PetscCall(KSPDestroy(&k2));
+  }
+
+  /* indefinite: shift below the smallest eigenvalue of S (>= 0.5 + 2 eps) and above its largest */
+  PetscCall(MatShift(S, -300.0));
+  PetscCall(KSPSetOperators(ksp, S, S));
+  PetscCall(Residual(ksp, S, b, &rel, &reason));
+  PetscCall(CSTestCheck(comm, (PetscBool)(reason == KSP_DIVERGED_PC_FAILED), "indefinite matrix: KSP reason DIVERGED_PC_FAILED (-11)", (PetscReal)reason, (PetscReal)KSP_DIVERGED_PC_FAILED));
+
+  PetscCall(KSPDestroy(&ksp));
+  PetscCall(VecDestroy(&b));
+  PetscCall(MatDestroy(&S));
+  PetscCall(PetscRandomDestroy(&rnd));
+  PetscCall(PetscPrintf(comm, "%" PetscInt_FMT " failed\n", cs_test_failures));
+  PetscCall(PetscFinalize());
+  return (int)cs_test_failures;
+}
