@@ -20,6 +20,7 @@ PETSC_EXTERN PetscErrorCode CSCholmodDestroy(CSCholmod *f);
 struct cholmod_common_struct;
 PETSC_EXTERN PetscErrorCode CSCholmodStartCommon(const char ordering[], struct cholmod_common_struct *c);
 
-/* The project's default sparse Cholesky for an SPD operator: CHOLMOD on one rank, MUMPS on several. */
+/* The project's default sparse Cholesky for an SPD operator: CHOLMOD on one rank, the substructured CHOLMOD
+   factorisation (PC cssubchol) on several. */
 PETSC_EXTERN PetscErrorCode CSSetDefaultCholesky(PC pc);
 #endif

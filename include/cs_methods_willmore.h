@@ -30,6 +30,7 @@ typedef struct {
   Mat       A00, Xt, H11, K, Kaij;
   Mat       XtD, XtDX, S; /* the exact Schur complement S = H/t + X^T (t_mu I_Q^{-1}) X, assembled with a fixed
                              pattern (for -flow_pc_fieldsplit_schur_precondition user) */
+  CSMatAddMap add_xtdx, add_h11; /* S refilled from its two terms (fixed patterns) */
   IS        is[2];
   Vec       b, z;
   IS        fixed;      /* Dirichlet dofs of H (identity rows/cols), may be NULL */

@@ -11,6 +11,7 @@
    real, so the vectors are converted on the way in and out. */
 #include <suitesparse/cholmod.h>
 #include "cs_cholmod.h"
+#include "cs_substructured_cholesky.h"
 #include "cs_quaternion.h"
 
 static PetscLogEvent CS_EVENT_Symbolic = 0, CS_EVENT_Numeric = 0, CS_EVENT_Solve = 0;
@@ -243,7 +244,12 @@ PetscErrorCode CSSetDefaultCholesky(PC pc)
   PetscMPIInt size;
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_size(PetscObjectComm((PetscObject)pc), &size));
+  if (size > 1) { /* substructured CHOLMOD (substructured_cholesky.c): MUMPS here orders only with PORD/AMD */
+    PetscCall(CSSubCholRegister());
+    PetscCall(PCSetType(pc, "cssubchol"));
+    PetscFunctionReturn(0);
+  }
   PetscCall(PCSetType(pc, PCCHOLESKY));
-  PetscCall(PCFactorSetMatSolverType(pc, size == 1 ? MATSOLVERCHOLMOD : MATSOLVERMUMPS));
+  PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERCHOLMOD));
   PetscFunctionReturn(0);
 }
