@@ -6,7 +6,7 @@
    unknowns by the mesh partition lets each rank factor its own half with CHOLMOD + METIS at full speed.
 
    The split. Each dof belongs to the rank that owns its row. The interface Gamma is the set of dofs that are
-   coupled (nonzero S_ij) to a dof of a higher rank; what remains on rank p, its interior I_p, is coupled only to
+   coupled (S_ij stored in row i or in row j) to a dof of a higher rank; what remains on rank p, its interior I_p, is coupled only to
    I_p and Gamma, never to another rank's interior. Rank p factors its local matrix
        A_p = [ S(I_p, I_p)  S(I_p, G_p) ]      G_p = the interface dofs coupled to I_p, and its own,
              [ S(G_p, I_p)  S(G_p, G_p) ]
@@ -18,12 +18,14 @@
    A solve S x = b then is: y_p = L^{-1} [b_I; 0] on each rank (its interface part gives S(G,I)S(I,I)^{-1} b_I
    as -L_GG y_G), x_Gamma = S_Gamma^{-1} (b_Gamma - sum), and x_I = L^{-T} [y_I; L_GG^T x_G] on each rank.
    All interface couplings stay correct under CHOLMOD's postordering: G_p is closed upwards in the elimination
-   tree (it is ordered last), so no interior column is eliminated after an interface column it touches.
+   tree (it is ordered last), so L(I,G) = 0 even where the postorder puts an interface column before interior ones.
+   Errors: a failure on one rank (CHOLMOD, a matrix that is not positive definite) is agreed on by all ranks before
+   the next collective call, so every rank raises the error or reports PC_FACTOR_NUMERIC_ZEROPIVOT together.
 
    Cost: the interface has about two rows of mesh vertices along the cut (S couples two-rings); its dense
    factorisation is small next to the two halves (level 6: 2.1k interface dofs, 3.3e10 flops per rank against
-   5.7e10 serially). The interface is redundant on every rank, so this is meant for a few ranks (memory
-   8 G^2 bytes per rank); on one rank it is a plain CHOLMOD factorisation. The symbolic phase (split, METIS,
+   5.7e10 serially). The interface is redundant on every rank, so this is meant for a few ranks (memory about
+   8 (G^2 + 2 gp^2 + G^2/2) bytes per rank, gp <= G the rank's share); on one rank it is a plain CHOLMOD factorisation. The symbolic phase (split, METIS,
    CHOLMOD analysis) is kept while the nonzero pattern stays. */
 #include <petsc/private/pcimpl.h> /* a PC type of our own (PCRegister) */
 #include <petscblaslapack.h>
@@ -42,9 +44,11 @@ typedef struct {
   PetscBool       started;
   cholmod_sparse *A; /* local matrix, upper part used (stype 1) */
   cholmod_factor *L;
-  Mat            *sub; /* the local matrix as SeqAIJ (MatCreateSubMatrices) */
+  cholmod_dense  *v, *t1, *t2, *Yw, *Ew; /* solve vectors and cholmod_solve2 workspace, kept */
+  Mat            *sub;   /* the local matrix as SeqAIJ (MatCreateSubMatrices) */
   IS              isloc; /* global indices of the local dofs, ascending */
   PetscInt        m;     /* local dofs */
+  PetscInt        nextra; /* of which the first nextra belong to lower ranks (their interface) */
   PetscInt        G;     /* interface dofs, all ranks */
   PetscInt       *gidx;  /* their global indices, ascending */
   PetscInt        gp;    /* interface dofs of the local matrix */
@@ -53,8 +57,9 @@ typedef struct {
   PetscInt       *gloc;  /* their local numbers (0..m-1), in that order */
   PetscScalar    *LG;    /* gp x gp: L restricted to them (lower triangular, column-major) */
   PetscScalar    *SG;    /* G x G: Cholesky factor of S_Gamma */
+  PetscScalar    *pack;  /* G (G + 1) / 2 + 1: the lower triangle of S_Gamma and an error flag, for the reduction */
   PetscScalar    *work;  /* max(gp, G) */
-  PetscScalar    *rG;    /* G */
+  PetscScalar    *rG;    /* G + 1: interface vector and an error flag */
   PetscInt        nown;    /* owned rows */
   PetscInt       *own_loc; /* for each: local number, or -1 - (interface number) on the interface */
   VecScatter      scat;    /* global -> local dofs */
@@ -68,12 +73,55 @@ static PetscErrorCode CholCheck(cholmod_common *c, const char *what)
   PetscFunctionReturn(0);
 }
 
+/* the message of an error captured under PetscReturnErrorHandler (which prints nothing), or "none" */
+static const char *Captured(PetscErrorCode ierr)
+{
+  char *specific = NULL;
+  if (!ierr || PetscErrorMessage(ierr, NULL, &specific) || !specific) return ierr ? "an error" : "none";
+  return specific;
+}
+
+/* the rank where a captured error happened prints it (the collective error that follows names no rank) */
+static PetscErrorCode ReportCaptured(MPI_Comm comm, PetscErrorCode ierr)
+{
+  PetscMPIInt rank;
+  PetscFunctionBeginUser;
+  if (!ierr) PetscFunctionReturn(0);
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCall(PetscFPrintf(PETSC_COMM_SELF, PETSC_STDERR, "[%d] cssubchol: %s\n", rank, Captured(ierr)));
+  PetscFunctionReturn(0);
+}
+
+/* Every rank learns whether a rank-local phase failed on any rank (ierr captured under PetscReturnErrorHandler)
+   and raises the same error: no rank is left waiting in a later collective call. */
+static PetscErrorCode AgreeOnError(MPI_Comm comm, PetscErrorCode ierr, const char *what)
+{
+  PetscMPIInt mine = ierr ? 1 : 0, any;
+  PetscFunctionBeginUser;
+  PetscCall(ReportCaptured(comm, ierr));
+  PetscCallMPI(MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, comm));
+  PetscCheck(!any, comm, PETSC_ERR_LIB, "cssubchol: %s failed on some rank (its message above)", what);
+  PetscFunctionReturn(0);
+}
+
+#define CaptureError(ierr, expr) \
+  do { \
+    PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL)); \
+    (ierr) = (expr); \
+    PetscCall(PetscPopErrorHandler()); \
+  } while (0)
+
 static PetscErrorCode ResetSymbolic(PC_SubChol *s)
 {
   PetscFunctionBeginUser;
   if (s->started) {
     cholmod_free_sparse(&s->A, &s->c);
     cholmod_free_factor(&s->L, &s->c);
+    cholmod_free_dense(&s->v, &s->c);
+    cholmod_free_dense(&s->t1, &s->c);
+    cholmod_free_dense(&s->t2, &s->c);
+    cholmod_free_dense(&s->Yw, &s->c);
+    cholmod_free_dense(&s->Ew, &s->c);
   }
   if (s->sub) PetscCall(MatDestroySubMatrices(1, &s->sub));
   PetscCall(ISDestroy(&s->isloc));
@@ -81,46 +129,68 @@ static PetscErrorCode ResetSymbolic(PC_SubChol *s)
   PetscCall(PetscFree3(s->gpos, s->gglob, s->gloc));
   PetscCall(PetscFree(s->LG));
   PetscCall(PetscFree(s->SG));
+  PetscCall(PetscFree(s->pack));
   PetscCall(PetscFree2(s->work, s->rG));
   PetscCall(PetscFree(s->own_loc));
   PetscCall(VecScatterDestroy(&s->scat));
   PetscCall(VecDestroy(&s->bloc));
-  s->m = s->G = s->gp = s->nown = 0;
+  s->m = s->G = s->gp = s->nown = s->nextra = 0;
   PetscFunctionReturn(0);
 }
 
-/* The split and the local matrix's pattern, ordering and CHOLMOD analysis. */
-static PetscErrorCode SetUpSymbolic(PC pc, PC_SubChol *s)
+/* Collective: the split (interface from the pattern), the local dofs, the local matrix and the scatter. */
+static PetscErrorCode SetUpSplit(PC pc, PC_SubChol *s)
 {
-  Mat             S = pc->pmat;
-  MPI_Comm        comm;
-  PetscMPIInt     size, rank;
-  const PetscInt *ranges;
-  PetscInt        rstart, rend, nown, *mine, nmine = 0, *extra, nextra = 0, cap = 16;
-  PetscBool      *isgam;
+  Mat         S = pc->pmat;
+  MPI_Comm    comm;
+  PetscMPIInt size;
+  PetscInt    rstart, rend, nown, *mine, nmine = 0, *extra, nextra = 0, cap = 16, n, cn;
+  PetscBool   *isgam, aij;
   PetscFunctionBeginUser;
   PetscCall(PetscObjectGetComm((PetscObject)S, &comm));
   PetscCallMPI(MPI_Comm_size(comm, &size));
-  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  { /* AIJ with equal row and column layouts (every rank decides the same) */
+    PetscMPIInt bad = 0, anybad;
+    PetscCall(PetscObjectBaseTypeCompareAny((PetscObject)S, &aij, MATSEQAIJ, MATMPIAIJ, ""));
+    PetscCall(MatGetLocalSize(S, &n, &cn));
+    bad = (!aij || n != cn) ? 1 : 0;
+    PetscCallMPI(MPI_Allreduce(&bad, &anybad, 1, MPI_INT, MPI_MAX, comm));
+    PetscCheck(!anybad, comm, PETSC_ERR_SUP, "cssubchol: the matrix must be AIJ (Seq or MPI) with the same row and column layout");
+  }
   PetscCall(MatGetOwnershipRange(S, &rstart, &rend));
-  PetscCall(MatGetOwnershipRanges(S, &ranges));
   nown = rend - rstart;
-  /* interface rows: coupled to a higher rank (columns >= rend); the pattern is symmetric, so a column below
-     rstart in any row is another rank's interface dof */
+  /* interface: coupled to a higher rank, through its own row (a column >= rend) or through a higher rank's row
+     (a column < rstart there, counted into a vector): a one-sided pattern needs both */
   PetscCall(PetscCalloc1(nown, &isgam));
+  {
+    Vec                f;
+    const PetscScalar *fa;
+    PetscScalar        one = 1;
+    PetscCall(MatCreateVecs(S, &f, NULL));
+    for (PetscInt i = rstart; i < rend; i++) {
+      PetscInt        nc;
+      const PetscInt *cols;
+      PetscCall(MatGetRow(S, i, &nc, &cols, NULL));
+      for (PetscInt k = 0; k < nc; k++) {
+        if (cols[k] >= rend) isgam[i - rstart] = PETSC_TRUE;
+        if (cols[k] < rstart) PetscCall(VecSetValues(f, 1, &cols[k], &one, ADD_VALUES));
+      }
+      PetscCall(MatRestoreRow(S, i, &nc, &cols, NULL));
+    }
+    PetscCall(VecAssemblyBegin(f));
+    PetscCall(VecAssemblyEnd(f));
+    PetscCall(VecGetArrayRead(f, &fa));
+    for (PetscInt i = 0; i < nown; i++)
+      if (fa[i] != 0) isgam[i] = PETSC_TRUE;
+    PetscCall(VecRestoreArrayRead(f, &fa));
+    PetscCall(VecDestroy(&f));
+  }
+  /* the lower-rank dofs (all on the interface now) coupled to interior rows */
   PetscCall(PetscMalloc1(cap, &extra));
   for (PetscInt i = rstart; i < rend; i++) {
     PetscInt        nc;
     const PetscInt *cols;
-    PetscCall(MatGetRow(S, i, &nc, &cols, NULL));
-    for (PetscInt k = 0; k < nc; k++)
-      if (cols[k] >= rend) isgam[i - rstart] = PETSC_TRUE;
-    PetscCall(MatRestoreRow(S, i, &nc, &cols, NULL));
-  }
-  for (PetscInt i = rstart; i < rend; i++) {
-    PetscInt        nc;
-    const PetscInt *cols;
-    if (isgam[i - rstart]) continue; /* the lower-rank dofs coupled to interior rows only */
+    if (isgam[i - rstart]) continue;
     PetscCall(MatGetRow(S, i, &nc, &cols, NULL));
     for (PetscInt k = 0; k < nc && cols[k] < rstart; k++) {
       if (nextra == cap) {
@@ -138,39 +208,61 @@ static PetscErrorCode SetUpSymbolic(PC pc, PC_SubChol *s)
   PetscCall(PetscSortRemoveDupsInt(&nextra, extra));
   /* the global interface list on every rank */
   {
-    PetscMPIInt *counts, *displs, n;
+    PetscMPIInt *counts, *displs, nm;
     PetscInt     G = 0;
     for (PetscInt i = 0; i < nown; i++) G += isgam[i];
     PetscCall(PetscMalloc1(G, &mine));
     for (PetscInt i = 0; i < nown; i++)
       if (isgam[i]) mine[nmine++] = rstart + i;
-    PetscCall(PetscMPIIntCast(nmine, &n));
+    PetscCall(PetscMPIIntCast(nmine, &nm));
     PetscCall(PetscMalloc2(size, &counts, size, &displs));
-    PetscCallMPI(MPI_Allgather(&n, 1, MPI_INT, counts, 1, MPI_INT, comm));
+    PetscCallMPI(MPI_Allgather(&nm, 1, MPI_INT, counts, 1, MPI_INT, comm));
     G = 0;
     for (PetscMPIInt r = 0; r < size; r++) {
-      displs[r] = (PetscMPIInt)G;
+      PetscCall(PetscMPIIntCast(G, &displs[r]));
       G += counts[r];
     }
     s->G = G;
     PetscCall(PetscMalloc1(G, &s->gidx));
-    PetscCallMPI(MPI_Allgatherv(mine, n, MPIU_INT, s->gidx, counts, displs, MPIU_INT, comm));
+    PetscCallMPI(MPI_Allgatherv(mine, nm, MPIU_INT, s->gidx, counts, displs, MPIU_INT, comm));
     PetscCall(PetscFree2(counts, displs));
+    PetscCall(PetscFree(mine));
   }
-  /* local dofs: owned ones (interior and interface) and the lower-rank interface dofs of the interior rows */
+  /* local dofs: the lower-rank interface dofs of the interior rows, then the owned ones */
   {
     PetscInt *loc;
-    s->m = nown + nextra;
+    s->m      = nown + nextra;
+    s->nextra = nextra;
+    s->nown   = nown;
     PetscCall(PetscMalloc1(s->m, &loc));
     for (PetscInt k = 0; k < nextra; k++) loc[k] = extra[k];
     for (PetscInt i = 0; i < nown; i++) loc[nextra + i] = rstart + i; /* ascending: extra < rstart */
     PetscCall(ISCreateGeneral(PETSC_COMM_SELF, s->m, loc, PETSC_OWN_POINTER, &s->isloc));
     PetscCall(ISSetInfo(s->isloc, IS_SORTED, IS_LOCAL, PETSC_TRUE, PETSC_TRUE));
   }
-  PetscCheck(s->m < PETSC_MAX_INT / 2 && s->m < 2147483647, PETSC_COMM_SELF, PETSC_ERR_SUP, "cssubchol: %" PetscInt_FMT " local dofs: too many for CHOLMOD's int interface", s->m);
+  PetscCall(PetscFree(isgam));
+  PetscCall(PetscFree(extra));
   PetscCall(MatCreateSubMatrices(S, 1, &s->isloc, &s->isloc, MAT_INITIAL_MATRIX, &s->sub));
-  /* the local matrix in CHOLMOD form: CSR of a symmetric matrix = its CSC, upper part used */
   {
+    Vec g;
+    PetscCall(MatCreateVecs(S, &g, NULL));
+    PetscCall(VecCreateSeq(PETSC_COMM_SELF, s->m, &s->bloc));
+    PetscCall(VecScatterCreate(g, s->isloc, s->bloc, NULL, &s->scat));
+    PetscCall(VecDestroy(&g));
+  }
+  PetscFunctionReturn(0);
+}
+
+/* Rank-local: the local matrix in CHOLMOD form, the ordering (interior by METIS/AMD/NESDIS, interface last) and
+   CHOLMOD's analysis, the interface columns in the factor's order, the owned rows' places. */
+static PetscErrorCode SetUpAnalysis(PC_SubChol *s)
+{
+  PetscInt        mi = 0, q = 0, *pos;
+  int            *perm, *sub = NULL, *pi = NULL;
+  const PetscInt *loc;
+  PetscFunctionBeginUser;
+  PetscCheck(s->m < 2147483647, PETSC_COMM_SELF, PETSC_ERR_SUP, "cssubchol: %" PetscInt_FMT " local dofs: too many for CHOLMOD's int interface", s->m);
+  { /* CSR of a symmetric matrix = its CSC, upper part used */
     const PetscInt *ia, *ja;
     PetscInt        n;
     PetscBool       done;
@@ -185,129 +277,105 @@ static PetscErrorCode SetUpSymbolic(PC pc, PC_SubChol *s)
     for (PetscInt k = 0; k < ia[n]; k++) ci[k] = (int)ja[k];
     PetscCall(MatRestoreRowIJ(s->sub[0], 0, PETSC_FALSE, PETSC_FALSE, &n, &ia, &ja, &done));
   }
-  /* ordering: the interior by METIS (or AMD/NESDIS), then the interface */
-  {
-    PetscInt        mi = 0, q = 0, *pos;
-    int            *perm, *sub = NULL, *pi = NULL;
-    const PetscInt *loc;
-    PetscCall(ISGetIndices(s->isloc, &loc));
-    PetscCall(PetscMalloc1(s->m, &pos));
-    for (PetscInt k = 0; k < s->m; k++) {
-      PetscInt g;
-      PetscCall(PetscFindInt(loc[k], s->G, s->gidx, &g));
-      pos[k] = g; /* interface number or < 0 */
-      if (g < 0) mi++;
-    }
-    PetscCall(PetscMalloc1(s->m, &perm));
-    if (mi > 0) {
-      cholmod_sparse *Au, *Ai;
-      PetscBool       amd, nesdis;
-      PetscCall(PetscMalloc2(mi, &sub, mi, &pi));
-      for (PetscInt k = 0; k < s->m; k++)
-        if (pos[k] < 0) sub[q++] = (int)k;
-      Au = cholmod_copy(s->A, 0, 1, &s->c); /* cholmod_submatrix needs both triangles */
-      PetscCall(CholCheck(&s->c, "copy"));
-      Ai = cholmod_submatrix(Au, sub, (long)mi, sub, (long)mi, 1, 1, &s->c);
-      cholmod_free_sparse(&Au, &s->c);
-      PetscCall(CholCheck(&s->c, "submatrix"));
-      Ai->stype = 1;
-      PetscCall(PetscStrcmp(s->ordering, "amd", &amd));
-      PetscCall(PetscStrcmp(s->ordering, "nesdis", &nesdis));
-      if (amd) cholmod_amd(Ai, NULL, 0, pi, &s->c);
-      else if (nesdis) {
-        int *cp, *cm;
-        PetscCall(PetscMalloc2(mi, &cp, mi, &cm));
-        cholmod_nested_dissection(Ai, NULL, 0, pi, cp, cm, &s->c);
-        PetscCall(PetscFree2(cp, cm));
-      } else cholmod_metis(Ai, NULL, 0, 1, pi, &s->c);
-      cholmod_free_sparse(&Ai, &s->c);
-      PetscCall(CholCheck(&s->c, "interior ordering"));
-      for (PetscInt k = 0; k < mi; k++) perm[k] = sub[pi[k]];
-      PetscCall(PetscFree2(sub, pi));
-    }
-    q = mi;
-    for (PetscInt k = 0; k < s->m; k++)
-      if (pos[k] >= 0) perm[q++] = (int)k;
-    s->c.nmethods           = 1;
-    s->c.method[0].ordering = CHOLMOD_GIVEN;
-    s->L                    = cholmod_analyze_p(s->A, perm, NULL, 0, &s->c);
-    PetscCall(CholCheck(&s->c, "analysis"));
-    PetscCall(PetscFree(perm));
-    /* the interface columns in the factor's order */
-    s->gp = s->m - mi;
-    PetscCall(PetscMalloc3(s->gp, &s->gpos, s->gp, &s->gglob, s->gp, &s->gloc));
-    {
-      const int *P = (const int *)s->L->Perm;
-      PetscInt   l = 0;
-      for (PetscInt k = 0; k < s->m; k++)
-        if (pos[P[k]] >= 0) {
-          s->gpos[l]  = k;
-          s->gglob[l] = pos[P[k]];
-          s->gloc[l]  = P[k];
-          l++;
-        }
-    }
-    /* owned rows: local number or interface number */
-    s->nown = nown;
-    PetscCall(PetscMalloc1(nown, &s->own_loc));
-    for (PetscInt i = 0; i < nown; i++) s->own_loc[i] = pos[nextra + i] >= 0 ? -1 - pos[nextra + i] : nextra + i;
-    PetscCall(PetscFree(pos));
-    PetscCall(ISRestoreIndices(s->isloc, &loc));
+  PetscCall(ISGetIndices(s->isloc, &loc));
+  PetscCall(PetscMalloc1(s->m, &pos));
+  for (PetscInt k = 0; k < s->m; k++) {
+    PetscInt g;
+    PetscCall(PetscFindInt(loc[k], s->G, s->gidx, &g));
+    pos[k] = g; /* interface number or < 0 */
+    if (g < 0) mi++;
   }
+  PetscCall(ISRestoreIndices(s->isloc, &loc));
+  PetscCall(PetscMalloc1(PetscMax(s->m, 1), &perm)); /* CHOLMOD_GIVEN needs a pointer even for m = 0 */
+  if (mi > 0) {
+    cholmod_sparse *Au, *Ai;
+    PetscBool       amd, nesdis;
+    PetscCall(PetscMalloc2(mi, &sub, mi, &pi));
+    for (PetscInt k = 0; k < s->m; k++)
+      if (pos[k] < 0) sub[q++] = (int)k;
+    Au = cholmod_copy(s->A, 0, 0, &s->c); /* both triangles (cholmod_submatrix needs them), pattern only */
+    PetscCall(CholCheck(&s->c, "copy"));
+    Ai = cholmod_submatrix(Au, sub, (long)mi, sub, (long)mi, 0, 1, &s->c);
+    cholmod_free_sparse(&Au, &s->c);
+    PetscCall(CholCheck(&s->c, "submatrix"));
+    Ai->stype = 1;
+    PetscCall(PetscStrcmp(s->ordering, "amd", &amd));
+    PetscCall(PetscStrcmp(s->ordering, "nesdis", &nesdis));
+    if (amd) cholmod_amd(Ai, NULL, 0, pi, &s->c);
+    else if (nesdis) {
+      int *cpar, *cm;
+      PetscCall(PetscMalloc2(mi, &cpar, mi, &cm));
+      cholmod_nested_dissection(Ai, NULL, 0, pi, cpar, cm, &s->c);
+      PetscCall(PetscFree2(cpar, cm));
+    } else cholmod_metis(Ai, NULL, 0, 1, pi, &s->c);
+    cholmod_free_sparse(&Ai, &s->c);
+    PetscCall(CholCheck(&s->c, "interior ordering"));
+    for (PetscInt k = 0; k < mi; k++) perm[k] = sub[pi[k]];
+    PetscCall(PetscFree2(sub, pi));
+  }
+  q = mi;
+  for (PetscInt k = 0; k < s->m; k++)
+    if (pos[k] >= 0) perm[q++] = (int)k;
+  s->c.nmethods           = 1;
+  s->c.method[0].ordering = CHOLMOD_GIVEN;
+  s->L                    = cholmod_analyze_p(s->A, perm, NULL, 0, &s->c);
+  PetscCall(PetscFree(perm));
+  PetscCall(CholCheck(&s->c, "analysis"));
+  s->gp = s->m - mi;
+  PetscCall(PetscMalloc3(s->gp, &s->gpos, s->gp, &s->gglob, s->gp, &s->gloc));
+  {
+    const int *P = (const int *)s->L->Perm;
+    PetscInt   l = 0;
+    for (PetscInt k = 0; k < s->m; k++)
+      if (pos[P[k]] >= 0) {
+        s->gpos[l]  = k;
+        s->gglob[l] = pos[P[k]];
+        s->gloc[l]  = P[k];
+        l++;
+      }
+  }
+  PetscCall(PetscMalloc1(s->nown, &s->own_loc));
+  for (PetscInt i = 0; i < s->nown; i++) s->own_loc[i] = pos[s->nextra + i] >= 0 ? -1 - pos[s->nextra + i] : s->nextra + i;
+  PetscCall(PetscFree(pos));
   PetscCall(PetscMalloc1((size_t)s->gp * s->gp, &s->LG));
   PetscCall(PetscMalloc1((size_t)s->G * s->G, &s->SG));
-  PetscCall(PetscMalloc2(PetscMax(s->gp, s->G), &s->work, s->G, &s->rG));
-  {
-    Vec g;
-    PetscCall(MatCreateVecs(S, &g, NULL));
-    PetscCall(VecCreateSeq(PETSC_COMM_SELF, s->m, &s->bloc));
-    PetscCall(VecScatterCreate(g, s->isloc, s->bloc, NULL, &s->scat));
-    PetscCall(VecDestroy(&g));
-  }
-  PetscCall(PetscFree(isgam));
-  PetscCall(PetscFree(mine));
-  PetscCall(PetscFree(extra));
+  PetscCall(PetscMalloc1((size_t)s->G * (s->G + 1) / 2 + 1, &s->pack));
+  PetscCall(PetscMalloc2(PetscMax(s->gp, s->G), &s->work, s->G + 1, &s->rG));
+  s->v = cholmod_zeros((size_t)s->m, 1, CHOLMOD_REAL, &s->c);
+  PetscCall(CholCheck(&s->c, "allocate"));
   PetscFunctionReturn(0);
 }
 
-/* The local factorisation, its interface block, and the factored S_Gamma. */
-static PetscErrorCode SetUpNumeric(PC pc, PC_SubChol *s)
+/* Rank-local: new values into the local matrix, factorisation. *notpd: not positive definite. */
+static PetscErrorCode LocalFactor(PC_SubChol *s, PetscBool *notpd)
 {
-  Mat          S = pc->pmat;
-  PetscInt     rstart, rend, gp = s->gp, G = s->G;
-  PetscBLASInt bgp, bG, info;
-  MPI_Comm     comm;
+  const PetscScalar *a;
   PetscFunctionBeginUser;
-  PetscCall(PetscObjectGetComm((PetscObject)S, &comm));
-  PetscCall(MatCreateSubMatrices(S, 1, &s->isloc, &s->isloc, MAT_REUSE_MATRIX, &s->sub));
-  {
-    const PetscScalar *a;
-    PetscInt           nz;
-    PetscCall(MatSeqAIJGetArrayRead(s->sub[0], &a));
-    nz = ((int *)s->A->p)[s->m];
-    PetscCall(PetscArraycpy((PetscScalar *)s->A->x, a, nz));
-    PetscCall(MatSeqAIJRestoreArrayRead(s->sub[0], &a));
-  }
+  PetscCall(MatSeqAIJGetArrayRead(s->sub[0], &a));
+  PetscCall(PetscArraycpy((PetscScalar *)s->A->x, a, ((int *)s->A->p)[s->m]));
+  PetscCall(MatSeqAIJRestoreArrayRead(s->sub[0], &a));
   cholmod_factorize(s->A, s->L, &s->c);
   PetscCall(CholCheck(&s->c, "factorisation"));
-  { /* a matrix that is not positive definite fails on some ranks only: decide together, and report it the PETSc
-       way (the KSP then stops with DIVERGED_PC_FAILED; the flow halves its step) */
-    PetscMPIInt bad = s->c.status == CHOLMOD_NOT_POSDEF, anybad;
-    if (bad) PetscCall(PetscInfo(pc, "cssubchol: the local matrix is not positive definite (CHOLMOD stopped at column %d of %" PetscInt_FMT ")\n", (int)s->L->minor, s->m));
-    PetscCallMPI(MPI_Allreduce(&bad, &anybad, 1, MPI_INT, MPI_MAX, comm));
-    if (anybad) {
-      PetscCall(PCSetFailedReason(pc, PC_FACTOR_NUMERIC_ZEROPIVOT));
-      PetscFunctionReturn(0);
-    }
-  }
-  PetscCheck(s->L->is_super, PETSC_COMM_SELF, PETSC_ERR_PLIB, "cssubchol: CHOLMOD returned a simplicial factor");
-  PetscCall(PetscLogEventBegin(EV_Dense, pc, 0, 0, 0));
-  /* LG = L(interface, interface) of the local factor, in the factor's order */
+  *notpd = (PetscBool)(s->c.status == CHOLMOD_NOT_POSDEF);
+  PetscFunctionReturn(0);
+}
+
+/* Rank-local: LG = L(interface, interface) of the local factor, and this rank's part of S_Gamma (lower triangle,
+   packed): T_p - S(G_p, G_p) with T_p = L_GG L_GG^T, plus S(Gamma, Gamma) on the owned interface rows. */
+static PetscErrorCode LocalInterface(Mat S, PC_SubChol *s)
+{
+  PetscInt     gp = s->gp, G = s->G, rstart;
+  PetscBLASInt bgp, info;
+  PetscFunctionBeginUser;
+#define PACK(i, j) ((size_t)(j) * (2 * (size_t)G - (j) + 1) / 2 + ((i) - (j))) /* lower triangle, column-major, i >= j */
+  PetscCall(PetscArrayzero(s->pack, (size_t)G * (G + 1) / 2 + 1));
   PetscCall(PetscArrayzero(s->LG, (size_t)gp * gp));
   if (gp) {
     const int    *super = (const int *)s->L->super, *lpi = (const int *)s->L->pi, *lpx = (const int *)s->L->px, *ls = (const int *)s->L->s;
     const double *lx    = (const double *)s->L->x;
     PetscInt     *inv;
+    PetscScalar  *U;
+    PetscCheck(s->L->is_super, PETSC_COMM_SELF, PETSC_ERR_PLIB, "cssubchol: CHOLMOD returned a simplicial factor");
     PetscCall(PetscMalloc1(s->m, &inv));
     for (PetscInt k = 0; k < s->m; k++) inv[k] = -1;
     for (PetscInt l = 0; l < gp; l++) inv[s->gpos[l]] = l;
@@ -322,39 +390,26 @@ static PetscErrorCode SetUpNumeric(PC pc, PC_SubChol *s)
         }
       }
     }
-    PetscCall(PetscFree(inv));
-  }
-  /* S_Gamma = S(Gamma,Gamma) - sum_p C_p with C_p = S(G_p,G_p) - L_GG L_GG^T. L_GG L_GG^T by LAPACK's U U^T on the
-     reversed (upper triangular) L_GG: a third of the flops of a general product. */
-  PetscCall(PetscArrayzero(s->SG, (size_t)G * G));
-  if (gp) {
-    PetscScalar *U;
+    /* T_p = L_GG L_GG^T by LAPACK's U U^T on the reversed (upper triangular) L_GG: a third of the flops of a
+       general product */
     PetscCall(PetscMalloc1((size_t)gp * gp, &U));
     for (PetscInt j = 0; j < gp; j++)
       for (PetscInt i = 0; i < gp; i++) U[(gp - 1 - i) + (size_t)gp * (gp - 1 - j)] = s->LG[i + (size_t)gp * j];
     PetscCall(PetscBLASIntCast(gp, &bgp));
     dlauum_("U", &bgp, U, &bgp, &info);
     PetscCheck(!info, PETSC_COMM_SELF, PETSC_ERR_LIB, "cssubchol: LAPACK dlauum info %d", (int)info);
-    /* SG(lower) += T_p - S(G_p, G_p): T(i,j) = (U U^T)(gp-1-i, gp-1-j), i >= j */
-    for (PetscInt j = 0; j < gp; j++)
+    for (PetscInt j = 0; j < gp; j++) /* T(i,j) = (U U^T)(gp-1-i, gp-1-j), i >= j */
       for (PetscInt i = j; i < gp; i++) {
-        PetscInt gi = s->gglob[i], gj = s->gglob[j];
-        PetscScalar t = U[(gp - 1 - i) + (size_t)gp * (gp - 1 - j)];
-        if (gi < gj) {
-          PetscInt tmp = gi;
-          gi           = gj;
-          gj           = tmp;
-        }
-        s->SG[gi + (size_t)G * gj] += t;
+        PetscInt gi = PetscMax(s->gglob[i], s->gglob[j]), gj = PetscMin(s->gglob[i], s->gglob[j]);
+        s->pack[PACK(gi, gj)] += U[(gp - 1 - i) + (size_t)gp * (gp - 1 - j)];
       }
     PetscCall(PetscFree(U));
+    /* - S(G_p, G_p), from the local matrix (both triangles stored: take each pair once) */
     {
       const PetscInt    *ia, *ja;
       const PetscScalar *a;
       PetscInt           n;
       PetscBool          done;
-      PetscInt          *inv; /* local number -> interface number */
-      PetscCall(PetscMalloc1(s->m, &inv));
       for (PetscInt k = 0; k < s->m; k++) inv[k] = -1;
       for (PetscInt l = 0; l < gp; l++) inv[s->gloc[l]] = s->gglob[l];
       PetscCall(MatGetRowIJ(s->sub[0], 0, PETSC_FALSE, PETSC_FALSE, &n, &ia, &ja, &done));
@@ -362,54 +417,108 @@ static PetscErrorCode SetUpNumeric(PC pc, PC_SubChol *s)
       for (PetscInt r = 0; r < n; r++) {
         if (inv[r] < 0) continue;
         for (PetscInt k = ia[r]; k < ia[r + 1]; k++)
-          if (inv[ja[k]] >= 0 && inv[ja[k]] <= inv[r]) s->SG[inv[r] + (size_t)G * inv[ja[k]]] -= a[k];
+          if (inv[ja[k]] >= 0 && inv[ja[k]] <= inv[r]) s->pack[PACK(inv[r], inv[ja[k]])] -= a[k];
       }
       PetscCall(MatSeqAIJRestoreArrayRead(s->sub[0], &a));
       PetscCall(MatRestoreRowIJ(s->sub[0], 0, PETSC_FALSE, PETSC_FALSE, &n, &ia, &ja, &done));
-      PetscCall(PetscFree(inv));
+    }
+    PetscCall(PetscFree(inv));
+  }
+  /* + S(Gamma, Gamma): the owner of each interface row adds its lower part once */
+  PetscCall(MatGetOwnershipRange(S, &rstart, NULL));
+  for (PetscInt i = 0; i < s->nown && G; i++) {
+    PetscInt           nc, gi = -1 - s->own_loc[i];
+    const PetscInt    *cols;
+    const PetscScalar *vals;
+    if (s->own_loc[i] >= 0) continue;
+    PetscCall(MatGetRow(S, rstart + i, &nc, &cols, &vals));
+    for (PetscInt k = 0; k < nc; k++) {
+      PetscInt gj;
+      PetscCall(PetscFindInt(cols[k], G, s->gidx, &gj));
+      if (gj >= 0 && gj <= gi) s->pack[PACK(gi, gj)] += vals[k];
+    }
+    PetscCall(MatRestoreRow(S, rstart + i, &nc, &cols, &vals));
+  }
+  PetscFunctionReturn(0);
+}
+
+/* The local factorisation, its interface block, and the factored S_Gamma. Collective. */
+static PetscErrorCode SetUpNumeric(PC pc, PC_SubChol *s)
+{
+  Mat            S = pc->pmat;
+  PetscInt       G = s->G;
+  MPI_Comm       comm;
+  PetscMPIInt    size;
+  PetscErrorCode ierr;
+  PetscBool      notpd = PETSC_FALSE;
+  PetscFunctionBeginUser;
+  PetscCall(PetscObjectGetComm((PetscObject)S, &comm));
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  PetscCall(MatCreateSubMatrices(S, 1, &s->isloc, &s->isloc, MAT_REUSE_MATRIX, &s->sub));
+  CaptureError(ierr, LocalFactor(s, &notpd));
+  { /* errors, and a matrix that is not positive definite, are decided by all ranks together; the latter is
+       reported the PETSc way (the KSP stops with DIVERGED_PC_FAILED; the flow halves its step) */
+    PetscMPIInt code = ierr ? 2 : (notpd ? 1 : 0), worst;
+    if (notpd) PetscCall(PetscInfo(pc, "the local matrix is not positive definite (CHOLMOD stopped at column %d of %" PetscInt_FMT ")\n", (int)s->L->minor, s->m));
+    PetscCall(ReportCaptured(comm, ierr));
+    PetscCallMPI(MPI_Allreduce(&code, &worst, 1, MPI_INT, MPI_MAX, comm));
+    PetscCheck(worst < 2, comm, PETSC_ERR_LIB, "cssubchol: the local CHOLMOD factorisation failed on some rank (its message above)");
+    if (worst) {
+      PetscCheck(!pc->erroriffailure, comm, PETSC_ERR_MAT_CH_ZRPVT, "cssubchol: the matrix is not positive definite");
+      PetscCall(PCSetFailedReason(pc, PC_FACTOR_NUMERIC_ZEROPIVOT));
+      PetscFunctionReturn(0);
     }
   }
+  PetscCall(PetscLogEventBegin(EV_Dense, pc, 0, 0, 0));
+  CaptureError(ierr, LocalInterface(S, s));
+  if (size > 1) {
+    size_t      npack = (size_t)G * (G + 1) / 2 + 1;
+    PetscMPIInt n;
+    s->pack[npack - 1] = ierr ? 1 : 0; /* the error flag travels with the sum */
+    PetscCall(PetscMPIIntCast((PetscInt)npack, &n));
+    PetscCall(ReportCaptured(comm, ierr));
+    PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, s->pack, n, MPIU_SCALAR, MPIU_SUM, comm));
+    PetscCheck(s->pack[npack - 1] == 0, comm, PETSC_ERR_LIB, "cssubchol: the interface Schur complement failed on some rank (its message above)");
+  } else PetscCheck(!ierr, comm, PETSC_ERR_LIB, "cssubchol: the interface Schur complement failed: %s", Captured(ierr));
   if (G) {
-    /* + S(Gamma, Gamma): the owner of each interface row adds it once */
-    PetscCall(MatGetOwnershipRange(S, &rstart, &rend));
-    for (PetscInt i = 0; i < s->nown; i++) {
-      PetscInt           nc, gi = -1 - s->own_loc[i];
-      const PetscInt    *cols;
-      const PetscScalar *vals;
-      if (s->own_loc[i] >= 0) continue;
-      PetscCall(MatGetRow(S, rstart + i, &nc, &cols, &vals));
-      for (PetscInt k = 0; k < nc; k++) {
-        PetscInt gj;
-        PetscCall(PetscFindInt(cols[k], G, s->gidx, &gj));
-        if (gj >= 0 && gj <= gi) s->SG[gi + (size_t)G * gj] += vals[k];
-      }
-      PetscCall(MatRestoreRow(S, rstart + i, &nc, &cols, &vals));
-    }
-    PetscCall(MPIU_Allreduce(MPI_IN_PLACE, s->SG, (PetscMPIInt)((size_t)G * G), MPIU_SCALAR, MPIU_SUM, comm));
+    PetscBLASInt bG, info;
+    PetscMPIInt  bad, anybad;
+    for (PetscInt j = 0; j < G; j++)
+      for (PetscInt i = j; i < G; i++) s->SG[i + (size_t)G * j] = s->pack[PACK(i, j)];
     PetscCall(PetscBLASIntCast(G, &bG));
-    LAPACKpotrf_("L", &bG, s->SG, &bG, &info); /* the same data and result on every rank */
-    if (info) {
-      PetscCall(PetscInfo(pc, "cssubchol: the interface Schur complement (%" PetscInt_FMT " dofs) is not positive definite (LAPACK potrf info %d)\n", G, (int)info));
+    LAPACKpotrf_("L", &bG, s->SG, &bG, &info); /* the same data on every rank: decided together all the same */
+    bad = info ? 1 : 0;
+    PetscCallMPI(MPI_Allreduce(&bad, &anybad, 1, MPI_INT, MPI_MAX, comm));
+    if (anybad) {
+      PetscCall(PetscInfo(pc, "the interface Schur complement (%" PetscInt_FMT " dofs) is not positive definite (LAPACK potrf info %d)\n", G, (int)info));
+      PetscCheck(!pc->erroriffailure, comm, PETSC_ERR_MAT_CH_ZRPVT, "cssubchol: the interface Schur complement is not positive definite");
       PetscCall(PCSetFailedReason(pc, PC_FACTOR_NUMERIC_ZEROPIVOT));
     }
   }
+#undef PACK
   PetscCall(PetscLogEventEnd(EV_Dense, pc, 0, 0, 0));
   PetscFunctionReturn(0);
 }
 
 static PetscErrorCode PCSetUp_SubChol(PC pc)
 {
-  PC_SubChol *s = (PC_SubChol *)pc->data;
+  PC_SubChol    *s = (PC_SubChol *)pc->data;
+  PetscErrorCode ierr;
   PetscFunctionBeginUser;
   if (!s->started) {
     PetscCall(CSCholmodStartCommon("auto", &s->c));
-    s->c.print   = 0; /* silent: a matrix that is not positive definite is reported through the PC, errors by status */
+    s->c.print = 0; /* silent: a matrix that is not positive definite is reported through the PC, errors by status */
     s->started = PETSC_TRUE;
   }
   if (!pc->setupcalled || pc->flag == DIFFERENT_NONZERO_PATTERN || !s->L) {
     PetscCall(PetscLogEventBegin(EV_Sym, pc, 0, 0, 0));
     PetscCall(ResetSymbolic(s));
-    PetscCall(SetUpSymbolic(pc, s));
+    PetscCall(SetUpSplit(pc, s));
+    CaptureError(ierr, SetUpAnalysis(s));
+    if (ierr) { /* free what a half-done analysis left, on every rank the same state */
+      PetscCall(ResetSymbolic(s));
+    }
+    PetscCall(AgreeOnError(PetscObjectComm((PetscObject)pc), ierr, "the local ordering and CHOLMOD analysis"));
     PetscCall(PetscLogEventEnd(EV_Sym, pc, 0, 0, 0));
   }
   PetscCall(PCSetFailedReason(pc, PC_NOERROR));
@@ -419,17 +528,45 @@ static PetscErrorCode PCSetUp_SubChol(PC pc)
   PetscFunctionReturn(0);
 }
 
-/* b -> local dense CHOLMOD vector with the interface entries zeroed */
+/* Rank-local: y = L^{-1} P [b_I; 0]; its interface part gives work = L_GG y_G = -S(G,I) S(I,I)^{-1} b_I, added
+   into rG; owned interface entries of b into rG too. */
+static PetscErrorCode ApplyForward(PC_SubChol *s, Vec b)
+{
+  const PetscScalar *bl, *ba;
+  PetscScalar       *ya;
+  PetscBLASInt       bgp, one = 1;
+  PetscFunctionBeginUser;
+  PetscCall(VecGetArrayRead(s->bloc, &bl));
+  PetscCall(PetscArraycpy((PetscScalar *)s->v->x, bl, s->m));
+  PetscCall(VecRestoreArrayRead(s->bloc, &bl));
+  for (PetscInt l = 0; l < s->gp; l++) ((PetscScalar *)s->v->x)[s->gloc[l]] = 0;
+  cholmod_solve2(CHOLMOD_P, s->L, s->v, NULL, &s->t1, NULL, &s->Yw, &s->Ew, &s->c);
+  cholmod_solve2(CHOLMOD_L, s->L, s->t1, NULL, &s->t2, NULL, &s->Yw, &s->Ew, &s->c);
+  PetscCall(CholCheck(&s->c, "forward solve"));
+  PetscCall(PetscArrayzero(s->rG, s->G + 1));
+  if (s->gp) {
+    ya = (PetscScalar *)s->t2->x;
+    for (PetscInt l = 0; l < s->gp; l++) s->work[l] = ya[s->gpos[l]];
+    PetscCall(PetscBLASIntCast(s->gp, &bgp));
+    BLAStrmv_("L", "N", "N", &bgp, s->LG, &bgp, s->work, &one);
+    for (PetscInt l = 0; l < s->gp; l++) s->rG[s->gglob[l]] += s->work[l];
+  }
+  PetscCall(VecGetArrayRead(b, &ba));
+  for (PetscInt i = 0; i < s->nown; i++)
+    if (s->own_loc[i] < 0) s->rG[-1 - s->own_loc[i]] += ba[i];
+  PetscCall(VecRestoreArrayRead(b, &ba));
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode PCApply_SubChol(PC pc, Vec b, Vec x)
 {
-  PC_SubChol        *s = (PC_SubChol *)pc->data;
-  cholmod_dense     *v, *y, *u, *z;
-  const PetscScalar *bl;
-  PetscScalar       *xa, *ya;
-  PetscInt           gp = s->gp, G = s->G, rstart;
-  PetscBLASInt       bgp, bG, one = 1, info;
-  const PetscScalar *ba;
-  MPI_Comm           comm;
+  PC_SubChol    *s = (PC_SubChol *)pc->data;
+  PetscScalar   *xa, *ya;
+  PetscInt       gp = s->gp, G = s->G;
+  PetscBLASInt   bgp, bG, one = 1, info;
+  MPI_Comm       comm;
+  PetscMPIInt    size;
+  PetscErrorCode ierr;
   PetscFunctionBeginUser;
   if (pc->failedreason) { /* PETSc's convention after a failed factorisation */
     PetscCall(VecSetInf(x));
@@ -437,56 +574,37 @@ static PetscErrorCode PCApply_SubChol(PC pc, Vec b, Vec x)
   }
   PetscCall(PetscLogEventBegin(EV_Solve, pc, b, x, 0));
   PetscCall(PetscObjectGetComm((PetscObject)pc, &comm));
+  PetscCallMPI(MPI_Comm_size(comm, &size));
   PetscCall(VecScatterBegin(s->scat, b, s->bloc, INSERT_VALUES, SCATTER_FORWARD));
   PetscCall(VecScatterEnd(s->scat, b, s->bloc, INSERT_VALUES, SCATTER_FORWARD));
-  v = cholmod_allocate_dense((size_t)s->m, 1, (size_t)s->m, CHOLMOD_REAL, &s->c);
-  PetscCall(CholCheck(&s->c, "allocate"));
-  PetscCall(VecGetArrayRead(s->bloc, &bl));
-  PetscCall(PetscArraycpy((PetscScalar *)v->x, bl, s->m));
-  PetscCall(VecRestoreArrayRead(s->bloc, &bl));
-  for (PetscInt l = 0; l < gp; l++) ((PetscScalar *)v->x)[s->gloc[l]] = 0;
-  /* forward: y = L^{-1} P [b_I; 0] */
-  u = cholmod_solve(CHOLMOD_P, s->L, v, &s->c);
-  y = cholmod_solve(CHOLMOD_L, s->L, u, &s->c);
-  cholmod_free_dense(&u, &s->c);
-  cholmod_free_dense(&v, &s->c);
-  PetscCall(CholCheck(&s->c, "forward solve"));
-  ya = (PetscScalar *)y->x;
-  /* r_Gamma = b_Gamma + sum_p L_GG y_G  (L_GG y_G = -S(G,I) S(I,I)^{-1} b_I) */
+  CaptureError(ierr, ApplyForward(s, b));
+  if (G && size > 1) { /* r_Gamma = b_Gamma + sum_p L_GG y_G, with the error flag */
+    PetscMPIInt n;
+    s->rG[G] = ierr ? 1 : 0;
+    PetscCall(PetscMPIIntCast(G + 1, &n));
+    PetscCall(ReportCaptured(comm, ierr));
+    PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, s->rG, n, MPIU_SCALAR, MPIU_SUM, comm));
+    PetscCheck(s->rG[G] == 0, comm, PETSC_ERR_LIB, "cssubchol: the forward solve failed on some rank (its message above)");
+  } else PetscCheck(!ierr, PETSC_COMM_SELF, PETSC_ERR_LIB, "cssubchol: the forward solve failed: %s", Captured(ierr)); /* no collective call follows */
   if (G) {
-    PetscCall(PetscArrayzero(s->rG, G));
-    if (gp) {
-      for (PetscInt l = 0; l < gp; l++) s->work[l] = ya[s->gpos[l]];
-      PetscCall(PetscBLASIntCast(gp, &bgp));
-      BLAStrmv_("L", "N", "N", &bgp, s->LG, &bgp, s->work, &one);
-      for (PetscInt l = 0; l < gp; l++) s->rG[s->gglob[l]] += s->work[l];
-    }
-    PetscCall(VecGetArrayRead(b, &ba));
-    for (PetscInt i = 0; i < s->nown; i++)
-      if (s->own_loc[i] < 0) s->rG[-1 - s->own_loc[i]] += ba[i];
-    PetscCall(VecRestoreArrayRead(b, &ba));
-    PetscCall(MPIU_Allreduce(MPI_IN_PLACE, s->rG, (PetscMPIInt)G, MPIU_SCALAR, MPIU_SUM, comm));
     PetscCall(PetscBLASIntCast(G, &bG));
     LAPACKpotrs_("L", &bG, &one, s->SG, &bG, s->rG, &bG, &info); /* rG = x_Gamma */
     PetscCheck(!info, PETSC_COMM_SELF, PETSC_ERR_LIB, "cssubchol: LAPACK potrs info %d", (int)info);
-    /* backward data: y_G = L_GG^T x_G */
-    if (gp) {
+    if (gp) { /* backward data: y_G = L_GG^T x_G */
+      ya = (PetscScalar *)s->t2->x;
       for (PetscInt l = 0; l < gp; l++) s->work[l] = s->rG[s->gglob[l]];
+      PetscCall(PetscBLASIntCast(gp, &bgp));
       BLAStrmv_("L", "T", "N", &bgp, s->LG, &bgp, s->work, &one);
       for (PetscInt l = 0; l < gp; l++) ya[s->gpos[l]] = s->work[l];
     }
   }
   /* backward: x_loc = P^T L^{-T} y */
-  u = cholmod_solve(CHOLMOD_Lt, s->L, y, &s->c);
-  z = cholmod_solve(CHOLMOD_Pt, s->L, u, &s->c);
-  cholmod_free_dense(&u, &s->c);
-  cholmod_free_dense(&y, &s->c);
+  cholmod_solve2(CHOLMOD_Lt, s->L, s->t2, NULL, &s->t1, NULL, &s->Yw, &s->Ew, &s->c);
+  cholmod_solve2(CHOLMOD_Pt, s->L, s->t1, NULL, &s->t2, NULL, &s->Yw, &s->Ew, &s->c);
   PetscCall(CholCheck(&s->c, "backward solve"));
-  PetscCall(VecGetOwnershipRange(x, &rstart, NULL));
   PetscCall(VecGetArray(x, &xa));
-  for (PetscInt i = 0; i < s->nown; i++) xa[i] = s->own_loc[i] >= 0 ? ((PetscScalar *)z->x)[s->own_loc[i]] : s->rG[-1 - s->own_loc[i]];
+  for (PetscInt i = 0; i < s->nown; i++) xa[i] = s->own_loc[i] >= 0 ? ((PetscScalar *)s->t2->x)[s->own_loc[i]] : s->rG[-1 - s->own_loc[i]];
   PetscCall(VecRestoreArray(x, &xa));
-  cholmod_free_dense(&z, &s->c);
   PetscCall(PetscLogEventEnd(EV_Solve, pc, b, x, 0));
   PetscFunctionReturn(0);
 }
@@ -513,7 +631,7 @@ static PetscErrorCode PCDestroy_SubChol(PC pc)
 static PetscErrorCode PCSetFromOptions_SubChol(PC pc, PetscOptionItems *PetscOptionsObject)
 {
   PC_SubChol *s = (PC_SubChol *)pc->data;
-  PetscBool   ok, a, b, c;
+  PetscBool   a, b, c;
   PetscFunctionBeginUser;
   PetscOptionsHeadBegin(PetscOptionsObject, "Substructured CHOLMOD Cholesky (cssubchol)");
   PetscCall(PetscOptionsString("-pc_cssubchol_ordering", "Ordering of each rank's interior: metis|amd|nesdis", NULL, s->ordering, s->ordering, sizeof(s->ordering), NULL));
@@ -521,8 +639,7 @@ static PetscErrorCode PCSetFromOptions_SubChol(PC pc, PetscOptionItems *PetscOpt
   PetscCall(PetscStrcmp(s->ordering, "metis", &a));
   PetscCall(PetscStrcmp(s->ordering, "amd", &b));
   PetscCall(PetscStrcmp(s->ordering, "nesdis", &c));
-  ok = (PetscBool)(a || b || c);
-  PetscCheck(ok, PetscObjectComm((PetscObject)pc), PETSC_ERR_ARG_OUTOFRANGE, "-%spc_cssubchol_ordering %s: use metis, amd or nesdis", ((PetscObject)pc)->prefix ? ((PetscObject)pc)->prefix : "", s->ordering);
+  PetscCheck(a || b || c, PetscObjectComm((PetscObject)pc), PETSC_ERR_ARG_OUTOFRANGE, "-%spc_cssubchol_ordering %s: use metis, amd or nesdis", ((PetscObject)pc)->prefix ? ((PetscObject)pc)->prefix : "", s->ordering);
   PetscFunctionReturn(0);
 }
 
@@ -552,6 +669,8 @@ static PetscErrorCode GetInterfaceSize_SubChol(PC pc, PetscInt *G)
 PetscErrorCode CSSubCholGetInterfaceSize(PC pc, PetscInt *G)
 {
   PetscFunctionBeginUser;
+  PetscValidHeaderSpecific(pc, PC_CLASSID, 1);
+  PetscValidIntPointer(G, 2);
   *G = 0;
   PetscTryMethod(pc, "CSSubCholGetInterfaceSize_C", (PC, PetscInt *), (pc, G));
   PetscFunctionReturn(0);
@@ -566,6 +685,7 @@ static PetscErrorCode PCCreate_SubChol(PC pc)
   pc->data                 = s;
   pc->ops->setup           = PCSetUp_SubChol;
   pc->ops->apply           = PCApply_SubChol;
+  pc->ops->applytranspose  = PCApply_SubChol; /* S is symmetric */
   pc->ops->reset           = PCReset_SubChol;
   pc->ops->destroy         = PCDestroy_SubChol;
   pc->ops->setfromoptions  = PCSetFromOptions_SubChol;

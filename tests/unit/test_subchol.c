@@ -9,14 +9,20 @@ static const char help[] = "Checks of the substructured CHOLMOD Cholesky (PC css
 #include "cs_substructured_cholesky.h"
 #include "cs_test.h"
 
-/* S = (L L + eps I) (x) K, rows distributed by PETSc's default layout of the n^2 nodes */
-static PetscErrorCode BuildMatrix(MPI_Comm comm, PetscInt n, PetscReal eps, Mat *S)
+/* S = (L L + eps I) (x) K (ring 2) or (L + eps I) (x) K (ring 1), K = tridiag(1,2,1) of size dof (1 or 3). The
+   n^2 nodes are distributed by PETSc's default layout, or (last_empty, several ranks) over all ranks but the
+   last, which owns no rows. */
+static PetscErrorCode BuildMatrix(MPI_Comm comm, PetscInt n, PetscReal eps, PetscInt ring, PetscInt dof, PetscBool last_empty, Mat *S)
 {
-  Mat      L, LL;
-  PetscInt rs, re;
-  const PetscReal K[3][3] = {{2, 1, 0}, {1, 2, 1}, {0, 1, 2}};
+  Mat         L, LL;
+  PetscInt    rs, re, nloc = PETSC_DECIDE;
+  PetscMPIInt size, rank;
+  const PetscReal K3[3][3] = {{2, 1, 0}, {1, 2, 1}, {0, 1, 2}};
   PetscFunctionBeginUser;
-  PetscCall(MatCreateAIJ(comm, PETSC_DECIDE, PETSC_DECIDE, n * n, n * n, 5, NULL, 4, NULL, &L));
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (last_empty && size > 1) nloc = rank == size - 1 ? 0 : n * n / (size - 1) + (rank < (n * n) % (size - 1) ? 1 : 0);
+  PetscCall(MatCreateAIJ(comm, nloc, nloc, n * n, n * n, 5, NULL, 4, NULL, &L));
   PetscCall(MatGetOwnershipRange(L, &rs, &re));
   for (PetscInt r = rs; r < re; r++) {
     PetscInt i = r / n, j = r % n;
@@ -28,18 +34,21 @@ static PetscErrorCode BuildMatrix(MPI_Comm comm, PetscInt n, PetscReal eps, Mat 
   }
   PetscCall(MatAssemblyBegin(L, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(L, MAT_FINAL_ASSEMBLY));
-  PetscCall(MatMatMult(L, L, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &LL));
+  if (ring == 2) PetscCall(MatMatMult(L, L, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &LL));
+  else PetscCall(MatDuplicate(L, MAT_COPY_VALUES, &LL));
   PetscCall(MatShift(LL, eps));
-  PetscCall(MatCreateAIJ(comm, 3 * (re - rs), 3 * (re - rs), PETSC_DETERMINE, PETSC_DETERMINE, 39, NULL, 39, NULL, S));
+  PetscCall(MatCreateAIJ(comm, dof * (re - rs), dof * (re - rs), PETSC_DETERMINE, PETSC_DETERMINE, 39, NULL, 39, NULL, S));
   for (PetscInt r = rs; r < re; r++) {
     PetscInt           nc;
     const PetscInt    *cols;
     const PetscScalar *vals;
     PetscCall(MatGetRow(LL, r, &nc, &cols, &vals));
     for (PetscInt k = 0; k < nc; k++)
-      for (PetscInt a = 0; a < 3; a++)
-        for (PetscInt b = 0; b < 3; b++)
-          if (K[a][b] != 0) PetscCall(MatSetValue(*S, 3 * r + a, 3 * cols[k] + b, vals[k] * K[a][b], INSERT_VALUES));
+      for (PetscInt a = 0; a < dof; a++)
+        for (PetscInt b = 0; b < dof; b++) {
+          PetscReal kab = dof == 3 ? K3[a][b] : 1.0;
+          if (kab != 0) PetscCall(MatSetValue(*S, dof * r + a, dof * cols[k] + b, vals[k] * kab, INSERT_VALUES));
+        }
     PetscCall(MatRestoreRow(LL, r, &nc, &cols, &vals));
   }
   PetscCall(MatAssemblyBegin(*S, MAT_FINAL_ASSEMBLY));
@@ -89,7 +98,7 @@ int main(int argc, char **argv)
   comm = PETSC_COMM_WORLD;
   PetscCallMPI(MPI_Comm_size(comm, &size));
   PetscCall(CSSubCholRegister());
-  PetscCall(BuildMatrix(comm, n, 1e-3, &S));
+  PetscCall(BuildMatrix(comm, n, 1e-3, 2, 3, PETSC_FALSE, &S));
   PetscCall(MatCreateVecs(S, &b, NULL));
   PetscCall(PetscRandomCreate(comm, &rnd));
   PetscCall(PetscRandomSetSeed(rnd, 7));
@@ -135,6 +144,40 @@ int main(int argc, char **argv)
     PetscCall(PetscSNPrintf(what, sizeof(what), "direct solve, %s interior: |Sx - b|/|b|", orderings[o]));
     PetscCall(CSTestCheck(comm, (PetscBool)(rel < 1e-11 && reason > 0), what, rel, 1e-11));
     PetscCall(KSPDestroy(&k2));
+  }
+
+  /* other shapes: a one-ring scalar matrix on a small grid (CHOLMOD's postorder may put interface columns before
+     interior ones there), and a last rank that owns no rows */
+  {
+    struct {
+      PetscInt    n, ring, dof;
+      PetscBool   empty;
+      const char *label;
+    } cases[] = {
+      {5,  1, 1, PETSC_FALSE, "one-ring, 1 dof, 5 x 5 grid"},
+      {3,  1, 3, PETSC_FALSE, "one-ring, 3 dofs, 3 x 3 grid"},
+      {12, 2, 3, PETSC_TRUE,  "two-ring, 3 dofs, last rank without rows"},
+    };
+    for (size_t c = 0; c < sizeof(cases) / sizeof(cases[0]); c++) {
+      Mat A;
+      Vec bb;
+      KSP k3;
+      PC  p3;
+      PetscCall(BuildMatrix(comm, cases[c].n, 1e-2, cases[c].ring, cases[c].dof, cases[c].empty, &A));
+      PetscCall(MatCreateVecs(A, &bb, NULL));
+      PetscCall(VecSetRandom(bb, rnd));
+      PetscCall(KSPCreate(comm, &k3));
+      PetscCall(KSPSetType(k3, KSPPREONLY));
+      PetscCall(KSPGetPC(k3, &p3));
+      PetscCall(PCSetType(p3, "cssubchol"));
+      PetscCall(KSPSetOperators(k3, A, A));
+      PetscCall(Residual(k3, A, bb, &rel, &reason));
+      PetscCall(PetscSNPrintf(what, sizeof(what), "%s: |Sx - b|/|b|", cases[c].label));
+      PetscCall(CSTestCheck(comm, (PetscBool)(rel < 1e-11 && reason > 0), what, rel, 1e-11));
+      PetscCall(KSPDestroy(&k3));
+      PetscCall(VecDestroy(&bb));
+      PetscCall(MatDestroy(&A));
+    }
   }
 
   /* indefinite: shift below the smallest eigenvalue of S (>= 0.5 + 2 eps) and above its largest */
