@@ -2,7 +2,7 @@
 # Benchmark of the constrained Willmore flow (issue 3; not a test): seconds per iteration and KSP iterations per
 # iteration of cgd on bumpy icospheres (levels 5/6/7 = 20k/82k/328k faces) and the closed bunny (75k faces),
 # serial and on 2 ranks, with the default solver (fieldsplit Schur with our assembled exact S as `user` Schur
-# preconditioner, CHOLMOD Cholesky of S serially, MUMPS-PORD on 2 ranks) and with the
+# preconditioner, CHOLMOD Cholesky of S serially, the substructured CHOLMOD factorisation cssubchol on 2 ranks) and with the
 # monolithic MUMPS reference (options/flow_mumps.opts). Each configuration runs -flow_max_it N iterations
 # (default 5) REPEAT times (default 3); the table shows the median. Writes runs/bench_flow.md.
 # The factorisation is kept across steps while it preconditions well (-flow_pc_reuse_its): the first steps

@@ -1,6 +1,7 @@
 /* New positions of a spin transformation (crane2011 Sec. 5.6): the transformed edge vectors e~ (Eq. 8), then
    the least-squares Poisson problem L f~ = div e~ with the cotan Laplacian, per coordinate, KSP prefix
-   spin_poisson_ (CHOLMOD Cholesky serially, CG + GAMG in parallel, by default). */
+   spin_poisson_ (CHOLMOD Cholesky serially, the substructured CHOLMOD factorisation cssubchol in parallel, by
+   default). */
 #include "cs_methods_spin.h"
 
 /* crane2011 Eq. 8: e~_ij = 1/3 conj(l_i) e l_i + 1/6 conj(l_i) e l_j + 1/6 conj(l_j) e l_i + 1/3 conj(l_j) e l_j.
@@ -69,7 +70,7 @@ PetscErrorCode CSSpinReconstruct(CSSpin s, Vec x, Vec lambda, Vec xcenter, Vec x
 {
   CSMesh         mesh = s->mesh;
   Vec            b, b1, u1;
-  PetscMPIInt    rank, size;
+  PetscMPIInt    rank;
   PetscInt       row = 0;
   PetscReal      shift[3];
   PetscLogDouble t0, t1, c0, c1;
@@ -78,7 +79,6 @@ PetscErrorCode CSSpinReconstruct(CSSpin s, Vec x, Vec lambda, Vec xcenter, Vec x
   PetscCall(PetscTime(&t0));
   c0 = CSSpinCPUTime();
   PetscCallMPI(MPI_Comm_rank(mesh->comm, &rank));
-  PetscCallMPI(MPI_Comm_size(mesh->comm, &size));
   PetscCall(DMCreateGlobalVector(mesh->dmV3, &b));
   PetscCall(PoissonRHS(s, x, lambda, b));
   /* L has the constants in its kernel and b _|_ 1 (every edge adds +-w e~): the system is consistent. Solve it
@@ -92,13 +92,10 @@ PetscErrorCode CSSpinReconstruct(CSSpin s, Vec x, Vec lambda, Vec xcenter, Vec x
     PetscCall(KSPCreate(mesh->comm, &s->kpois));
     PetscCall(KSPSetOptionsPrefix(s->kpois, "spin_poisson_"));
     PetscCall(KSPGetPC(s->kpois, &pc));
-    if (size == 1) { /* CHOLMOD: 2-3x faster than CG + GAMG at 4k-38k vertices (runs/bench_spin.sh) */
-      PetscCall(KSPSetType(s->kpois, KSPPREONLY));
-      PetscCall(CSSetDefaultCholesky(pc));
-    } else {
-      PetscCall(KSPSetType(s->kpois, KSPCG));
-      PetscCall(PCSetType(pc, PCGAMG));
-    }
+    /* a Cholesky factorisation (CHOLMOD; the substructured cssubchol on several ranks): serially 2-3x faster than
+       CG + GAMG at 4k-38k vertices (runs/bench_spin.sh) */
+    PetscCall(KSPSetType(s->kpois, KSPPREONLY));
+    PetscCall(CSSetDefaultCholesky(pc));
     PetscCall(KSPSetTolerances(s->kpois, 1e-12, 1e-14, PETSC_DEFAULT, 1000));
     PetscCall(KSPSetFromOptions(s->kpois));
   }
