@@ -237,7 +237,7 @@ PetscErrorCode CSSaddleSetOperators(CSSaddle *s, Mat H, PetscReal t, Vec iq, Pet
       }
     }
     s->have_pc = PETSC_TRUE;
-    s->setups  = 1;
+    s->setups++; /* 1 at the first call; more after a new solver (failed factorisation) */
     s->reusing = PETSC_FALSE;
     PetscCall(KSPSetReusePreconditioner(s->ksp, PETSC_FALSE));
     PetscCall(KSPGetTolerances(s->ksp, NULL, NULL, NULL, &s->max_it));
@@ -302,6 +302,15 @@ static PetscErrorCode KSolve(CSSaddle *s, Vec b, Vec z, PetscInt *its)
   PetscCall(KSPGetConvergedReason(s->ksp, &reason));
   PetscCall(KSPGetIterationNumber(s->ksp, &n));
   s->last_its = n;
+  if (reason == KSP_DIVERGED_PC_FAILED) {
+    /* a failed factorisation (not positive definite, or MUMPS out of workspace: its numeric refactorisations
+       reuse the first analysis and its memory estimate) would fail again at every smaller t: the next attempt
+       starts from a new solver (analysis included) */
+    PetscCall(KSPDestroy(&s->ksp));
+    PetscCall(KSPCreate(s->mesh->comm, &s->ksp));
+    PetscCall(KSPSetOptionsPrefix(s->ksp, "flow_"));
+    s->have_pc = PETSC_FALSE;
+  }
   PetscCheck(reason > 0, s->mesh->comm, PETSC_ERR_NOT_CONVERGED, "flow: the linear solve (prefix -flow_) did not converge: %s after %" PetscInt_FMT " iterations; try -flow_saddle_mat aij -flow_pc_type cholesky -flow_pc_factor_mat_solver_type mumps, or a smaller -flow_t", KSPConvergedReasons[reason], n);
   *its += n;
   PetscFunctionReturn(0);
