@@ -91,7 +91,7 @@ int main(int argc, char **argv)
   PetscReal          rel;
   PetscInt           G, n = 40;
   KSPConvergedReason reason;
-  const char        *orderings[] = {"amd", "nesdis"};
+  const char        *orderings[] = {"amd", "nesdis"}, *sides[] = {"lower", "upper"};
   char               what[128];
 
   PetscCall(PetscInitialize(&argc, &argv, NULL, help));
@@ -142,6 +142,26 @@ int main(int argc, char **argv)
     PetscCall(KSPSetFromOptions(k2));
     PetscCall(Residual(k2, S, b, &rel, &reason));
     PetscCall(PetscSNPrintf(what, sizeof(what), "direct solve, %s interior: |Sx - b|/|b|", orderings[o]));
+    PetscCall(CSTestCheck(comm, (PetscBool)(rel < 1e-11 && reason > 0), what, rel, 1e-11));
+    PetscCall(KSPDestroy(&k2));
+  }
+
+  for (int o = 0; o < 2; o++) { /* the interface on either side of each cut */
+    KSP  k2;
+    PC   p2;
+    char name[64], pre[16];
+    PetscCall(KSPCreate(comm, &k2));
+    PetscCall(KSPSetType(k2, KSPPREONLY));
+    PetscCall(KSPGetPC(k2, &p2));
+    PetscCall(PCSetType(p2, "cssubchol"));
+    PetscCall(PetscSNPrintf(pre, sizeof(pre), "%s_", sides[o]));
+    PetscCall(KSPSetOptionsPrefix(k2, pre));
+    PetscCall(PetscSNPrintf(name, sizeof(name), "-%s_pc_cssubchol_interface", sides[o]));
+    PetscCall(PetscOptionsSetValue(NULL, name, sides[o]));
+    PetscCall(KSPSetOperators(k2, S, S));
+    PetscCall(KSPSetFromOptions(k2));
+    PetscCall(Residual(k2, S, b, &rel, &reason));
+    PetscCall(PetscSNPrintf(what, sizeof(what), "interface on the %s side: |Sx - b|/|b|", sides[o]));
     PetscCall(CSTestCheck(comm, (PetscBool)(rel < 1e-11 && reason > 0), what, rel, 1e-11));
     PetscCall(KSPDestroy(&k2));
   }
