@@ -3,28 +3,32 @@
 #define CS_UTIL_H
 #include <petscsys.h>
 
-/* Rank 0 did work that may have failed with ierr (run under PetscReturnErrorHandler so nothing was printed).
-   Every rank then raises the same error with rank 0's message, or all return 0. Collective. */
-PETSC_EXTERN PetscErrorCode CSSyncRootError(MPI_Comm comm, PetscErrorCode ierr);
+/* Some ranks did work that may have failed with ierr (run under CSCaptureError, so nothing was printed). Every
+   rank then raises the error of the lowest failing rank, with its message, or all return 0. Collective. */
+PETSC_EXTERN PetscErrorCode CSSyncError(MPI_Comm comm, PetscErrorCode ierr);
 /* Threads per process: OpenMP loops (CHOLMOD's) bounded by OMP_NUM_THREADS, default 1; one OpenBLAS thread per
    rank when several ranks run, unless OPENBLAS_NUM_THREADS is set (src/util/threads.c). */
 PETSC_EXTERN PetscErrorCode CSLimitThreads(MPI_Comm comm);
 /* the resulting OpenMP and OpenBLAS thread counts of this process (1 where the library is absent) */
 PETSC_EXTERN PetscErrorCode CSGetThreadCounts(PetscInt *omp_threads, PetscInt *blas_threads);
 
-/* Call expr on rank 0 only, capturing its error for CSSyncRootError. Use:
+/* ierr = expr, with PETSc's error printing off (PetscReturnErrorHandler): for CSSyncError */
+#define CSCaptureError(ierr, expr) \
+  do { \
+    PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL)); \
+    (ierr) = (expr); \
+    PetscCall(PetscPopErrorHandler()); \
+  } while (0)
+
+/* Call expr on rank 0 only, every rank raising its error (CSSyncError). Use:
      CSRootCall(comm, CSMeshDataRead(path, &md)); */
 #define CSRootCall(comm, expr) \
   do { \
     PetscMPIInt    _rank; \
     PetscErrorCode _ierr = 0; \
     PetscCallMPI(MPI_Comm_rank((comm), &_rank)); \
-    if (!_rank) { \
-      PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL)); \
-      _ierr = (expr); \
-      PetscCall(PetscPopErrorHandler()); \
-    } \
-    PetscCall(CSSyncRootError((comm), _ierr)); \
+    if (!_rank) CSCaptureError(_ierr, (expr)); \
+    PetscCall(CSSyncError((comm), _ierr)); \
   } while (0)
 
 /* JSON summary: a flat object of numbers, integers, strings and number arrays, written by rank 0. */

@@ -38,7 +38,7 @@ static PetscErrorCode MeshSourceLoad(const MeshSource *src, CSMeshData *md, CSTo
     }
   }
   ierr = CSMeshDataValidate(md, topo);
-  if (ierr) { /* keep the validation message (CSSyncRootError reads it) and free the data */
+  if (ierr) { /* keep the validation message (CSSyncError reads it) and free the data */
     PetscCall(CSMeshDataDestroy(md));
     return ierr;
   }

@@ -7,18 +7,17 @@
    with a new nonzero pattern every step, which forces a new symbolic factorisation: 0.5 s per step with
    CHOLMOD at 20k faces); S is factored by CHOLMOD serially (1.8x faster than MUMPS-AMD at 20k faces) and in
    parallel by substructuring (PC cssubchol: CHOLMOD + METIS on each rank's part, then the dense interface; level
-   6, 10 steps: 2.36 s/step on 2 ranks against 3.89 serially, where MUMPS-PORD on S gained nothing); the outer
-   iteration then converges in 1-2 steps.
-   Measured and dropped: the other Schur complement, on the multipliers (vertex block first, exact H/t solves by
-   a Cholesky factorisation of H, CG + Jacobi(I_Q) on S_mu = I_Q/t_mu + t X H^{-1} X^T, fieldsplit_1 rtol 1e-8):
-   113-260 CG iterations per solve at levels 3, 4 and 5 (mesh-independent, but growing with t t_mu), 2 s per solve
-   at level 5 against 0.3 s for a factorisation of S. The factorisation
-   is kept over later steps while it stays a good preconditioner (-flow_pc_reuse_its, default 10: refactor
+   6, 20 steps: 2.10 s/step on 2 ranks against 2.82 serially, runs/bench_flow.md, where MUMPS-PORD on S gained
+   nothing); the outer iteration then converges in 1-2 steps. The factorisation is kept over later steps while it stays a good preconditioner (-flow_pc_reuse_its, default 10: refactor
    once a solve needed more than 10 FGMRES iterations): at level 5 a 200-step run needs 207 s (201
    factorisations) when refactoring every step and 49.5 s with the kept one (18 factorisations, 1122 FGMRES
    iterations in all; the same W to 1e-13; runs/bench_flow.md). The default is
    inserted as a preset when -flow_pc_type is not given; any single preset option can be overridden on the
-   command line (e.g. -flow_pc_fieldsplit_schur_precondition selfp). */
+   command line (e.g. -flow_pc_fieldsplit_schur_precondition selfp).
+   Measured and dropped: the other Schur complement, on the multipliers (vertex block first, exact H/t solves by
+   a Cholesky factorisation of H, CG + Jacobi(I_Q) on S_mu = I_Q/t_mu + t X H^{-1} X^T, fieldsplit_1 rtol 1e-8):
+   113-260 CG iterations per solve at levels 3, 4 and 5 (mesh-independent, but growing with t t_mu), 2 s per solve
+   at level 5 against 0.3 s for a factorisation of S. */
 #include "cs_methods_willmore.h"
 #include "cs_substructured_cholesky.h"
 
@@ -84,6 +83,16 @@ static PetscErrorCode InsertPreset(CSSaddle *s, const char *p[][2], PetscInt n)
   PetscFunctionReturn(0);
 }
 
+/* the KSP of prefix flow_, configured at the next CSSaddleSetOperators */
+static PetscErrorCode NewKSP(CSSaddle *s)
+{
+  PetscFunctionBeginUser;
+  PetscCall(KSPCreate(s->mesh->comm, &s->ksp));
+  PetscCall(KSPSetOptionsPrefix(s->ksp, "flow_"));
+  s->have_pc = PETSC_FALSE;
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode CSSaddleCreate(CSMesh mesh, PetscBool edges, PetscBool h2, PetscInt k, CSSaddle *s)
 {
   char      type[16] = "nest";
@@ -110,8 +119,7 @@ PetscErrorCode CSSaddleCreate(CSMesh mesh, PetscBool edges, PetscBool h2, PetscI
   if (edges) PetscCall(InsertPreset(s, PresetSchur, (PetscInt)(sizeof(PresetSchur) / sizeof(PresetSchur[0]))));
   else if (h2) PetscCall(InsertPreset(s, PresetMetric, (PetscInt)(sizeof(PresetMetric) / sizeof(PresetMetric[0]))));
   else PetscCall(InsertPreset(s, PresetMass, (PetscInt)(sizeof(PresetMass) / sizeof(PresetMass[0]))));
-  PetscCall(KSPCreate(mesh->comm, &s->ksp));
-  PetscCall(KSPSetOptionsPrefix(s->ksp, "flow_"));
+  PetscCall(NewKSP(s));
   if (k) {
     PetscCall(PetscMalloc1(k, &s->G));
     PetscCall(PetscCalloc1(k, &s->W));
@@ -307,9 +315,7 @@ static PetscErrorCode KSolve(CSSaddle *s, Vec b, Vec z, PetscInt *its)
        reuse the first analysis and its memory estimate) would fail again at every smaller t: the next attempt
        starts from a new solver (analysis included) */
     PetscCall(KSPDestroy(&s->ksp));
-    PetscCall(KSPCreate(s->mesh->comm, &s->ksp));
-    PetscCall(KSPSetOptionsPrefix(s->ksp, "flow_"));
-    s->have_pc = PETSC_FALSE;
+    PetscCall(NewKSP(s));
   }
   PetscCheck(reason > 0, s->mesh->comm, PETSC_ERR_NOT_CONVERGED, "flow: the linear solve (prefix -flow_) did not converge: %s after %" PetscInt_FMT " iterations; try -flow_saddle_mat aij -flow_pc_type cholesky -flow_pc_factor_mat_solver_type mumps, or a smaller -flow_t", KSPConvergedReasons[reason], n);
   *its += n;

@@ -243,9 +243,9 @@ PetscErrorCode CSSetDefaultCholesky(PC pc)
 {
   PetscMPIInt size;
   PetscFunctionBeginUser;
+  PetscCall(CSSubCholRegister()); /* also for -<prefix>pc_type cssubchol on one rank */
   PetscCallMPI(MPI_Comm_size(PetscObjectComm((PetscObject)pc), &size));
   if (size > 1) { /* substructured CHOLMOD (substructured_cholesky.c): MUMPS here orders only with PORD/AMD */
-    PetscCall(CSSubCholRegister());
     PetscCall(PCSetType(pc, "cssubchol"));
     PetscFunctionReturn(0);
   }

@@ -23,8 +23,8 @@ static PetscErrorCode GetBlocks(Mat A, PetscInt *nblk, Mat blk[2], const PetscIn
     *nblk     = 2;
   } else {
     PetscBool seq;
+    MatType   type;
     PetscCall(PetscObjectBaseTypeCompare((PetscObject)A, MATSEQAIJ, &seq));
-    MatType type;
     PetscCall(MatGetType(A, &type));
     PetscCheck(seq, PetscObjectComm((PetscObject)A), PETSC_ERR_SUP, "CSMatAddFixedPattern: AIJ matrices only, not %s", type);
     blk[0]    = A;

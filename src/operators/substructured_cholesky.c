@@ -21,7 +21,8 @@
    All interface couplings stay correct under CHOLMOD's postordering: G_p is closed upwards in the elimination
    tree (it is ordered last), so L(I,G) = 0 even where the postorder puts an interface column before interior ones.
    Errors: a failure on one rank (CHOLMOD, a matrix that is not positive definite) is agreed on by all ranks before
-   the next collective call, so every rank raises the error or reports PC_FACTOR_NUMERIC_ZEROPIVOT together.
+   the next collective call (CSSyncError), so every rank raises the error or reports PC_FACTOR_NUMERIC_ZEROPIVOT
+   together.
 
    Cost: the interface has about two rows of mesh vertices along the cut (S couples two-rings); its dense
    factorisation is small next to the two halves (level 6: 2.1k interface dofs, 3.3e10 flops per rank against
@@ -33,14 +34,20 @@
 #include <suitesparse/cholmod.h>
 #include "cs_substructured_cholesky.h"
 #include "cs_cholmod.h"
+#include "cs_util.h"
 
 /* LAPACK: U U^T of an upper triangular U (not wrapped by PETSc) */
 extern void dlauum_(const char *, const PetscBLASInt *, PetscScalar *, const PetscBLASInt *, PetscBLASInt *);
 
 static PetscLogEvent EV_Sym = 0, EV_Num = 0, EV_Dense = 0, EV_Solve = 0;
 
+enum { ORDER_METIS, ORDER_AMD, ORDER_NESDIS };
+static const char *const OrderingNames[] = {"metis", "amd", "nesdis"};
+enum { SIDE_AUTO, SIDE_LOWER, SIDE_UPPER };
+static const char *const SideNames[] = {"auto", "lower", "upper"};
+
 typedef struct {
-  char            ordering[16]; /* of the interior: metis | amd | nesdis */
+  PetscInt        ordering; /* of the interior: ORDER_* */
   cholmod_common  c;
   PetscBool       started;
   cholmod_sparse *A; /* local matrix, upper part used (stype 1) */
@@ -51,7 +58,7 @@ typedef struct {
   PetscInt        m;     /* local dofs */
   PetscInt        own_off; /* the owned dofs are local dofs own_off, own_off + 1, ... */
   PetscInt        side;    /* the interface is on the lower (0) or upper (1) side of each cut */
-  char            side_opt[8]; /* auto | lower | upper */
+  PetscInt        side_opt; /* SIDE_* (-pc_cssubchol_interface) */
   PetscInt        G;     /* interface dofs, all ranks */
   PetscInt       *gidx;  /* their global indices, ascending */
   PetscInt        gp;    /* interface dofs of the local matrix */
@@ -60,9 +67,9 @@ typedef struct {
   PetscInt       *gloc;  /* their local numbers (0..m-1), in that order */
   PetscScalar    *LG;    /* gp x gp: L restricted to them (lower triangular, column-major) */
   PetscScalar    *SG;    /* G x G: Cholesky factor of S_Gamma */
-  PetscScalar    *pack;  /* G (G + 1) / 2 + 1: the lower triangle of S_Gamma and an error flag, for the reduction */
+  PetscScalar    *pack;  /* G (G + 1) / 2: the lower triangle of S_Gamma, for the reduction */
   PetscScalar    *work;  /* max(gp, G) */
-  PetscScalar    *rG;    /* G + 1: interface vector and an error flag */
+  PetscScalar    *rG;    /* G: interface vector */
   PetscInt        nown;    /* owned rows */
   PetscInt       *own_loc; /* for each: local number, or -1 - (interface number) on the interface */
   VecScatter      scat;    /* global -> local dofs */
@@ -75,44 +82,6 @@ static PetscErrorCode CholCheck(cholmod_common *c, const char *what)
   PetscCheck(c->status >= CHOLMOD_OK, PETSC_COMM_SELF, PETSC_ERR_LIB, "cssubchol: CHOLMOD %s failed (status %d)", what, c->status);
   PetscFunctionReturn(0);
 }
-
-/* the message of an error captured under PetscReturnErrorHandler (which prints nothing), or "none" */
-static const char *Captured(PetscErrorCode ierr)
-{
-  char *specific = NULL;
-  if (!ierr || PetscErrorMessage(ierr, NULL, &specific) || !specific) return ierr ? "an error" : "none";
-  return specific;
-}
-
-/* the rank where a captured error happened prints it (the collective error that follows names no rank) */
-static PetscErrorCode ReportCaptured(MPI_Comm comm, PetscErrorCode ierr)
-{
-  PetscMPIInt rank;
-  PetscFunctionBeginUser;
-  if (!ierr) PetscFunctionReturn(0);
-  PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  PetscCall(PetscFPrintf(PETSC_COMM_SELF, PETSC_STDERR, "[%d] cssubchol: %s\n", rank, Captured(ierr)));
-  PetscFunctionReturn(0);
-}
-
-/* Every rank learns whether a rank-local phase failed on any rank (ierr captured under PetscReturnErrorHandler)
-   and raises the same error: no rank is left waiting in a later collective call. */
-static PetscErrorCode AgreeOnError(MPI_Comm comm, PetscErrorCode ierr, const char *what)
-{
-  PetscMPIInt mine = ierr ? 1 : 0, any;
-  PetscFunctionBeginUser;
-  PetscCall(ReportCaptured(comm, ierr));
-  PetscCallMPI(MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, comm));
-  PetscCheck(!any, comm, PETSC_ERR_LIB, "cssubchol: %s failed on some rank (its message above)", what);
-  PetscFunctionReturn(0);
-}
-
-#define CaptureError(ierr, expr) \
-  do { \
-    PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL)); \
-    (ierr) = (expr); \
-    PetscCall(PetscPopErrorHandler()); \
-  } while (0)
 
 static PetscErrorCode ResetSymbolic(PC_SubChol *s)
 {
@@ -230,8 +199,7 @@ static PetscErrorCode SetUpSplit(PC pc, PC_SubChol *s)
     }
     PetscCallMPI(MPI_Allreduce(mloc, mmax, 2, MPIU_INT, MPI_MAX, comm));
     s->side = mmax[1] < mmax[0] ? 1 : 0;
-    if (s->side_opt[0] == 'l') s->side = 0;
-    if (s->side_opt[0] == 'u') s->side = 1;
+    if (s->side_opt != SIDE_AUTO) s->side = s->side_opt == SIDE_UPPER ? 1 : 0;
     isgam   = gam[s->side];
     extra   = ext[s->side];
     nextra  = next[s->side];
@@ -323,7 +291,6 @@ static PetscErrorCode SetUpAnalysis(PC_SubChol *s)
   PetscCall(PetscMalloc1(PetscMax(s->m, 1), &perm)); /* CHOLMOD_GIVEN needs a pointer even for m = 0 */
   if (mi > 0) {
     cholmod_sparse *Au, *Ai;
-    PetscBool       amd, nesdis;
     PetscCall(PetscMalloc2(mi, &sub, mi, &pi));
     for (PetscInt k = 0; k < s->m; k++)
       if (pos[k] < 0) sub[q++] = (int)k;
@@ -333,10 +300,8 @@ static PetscErrorCode SetUpAnalysis(PC_SubChol *s)
     cholmod_free_sparse(&Au, &s->c);
     PetscCall(CholCheck(&s->c, "submatrix"));
     Ai->stype = 1;
-    PetscCall(PetscStrcmp(s->ordering, "amd", &amd));
-    PetscCall(PetscStrcmp(s->ordering, "nesdis", &nesdis));
-    if (amd) cholmod_amd(Ai, NULL, 0, pi, &s->c);
-    else if (nesdis) {
+    if (s->ordering == ORDER_AMD) cholmod_amd(Ai, NULL, 0, pi, &s->c);
+    else if (s->ordering == ORDER_NESDIS) {
       int *cpar, *cm;
       PetscCall(PetscMalloc2(mi, &cpar, mi, &cm));
       cholmod_nested_dissection(Ai, NULL, 0, pi, cpar, cm, &s->c);
@@ -373,8 +338,8 @@ static PetscErrorCode SetUpAnalysis(PC_SubChol *s)
   PetscCall(PetscFree(pos));
   PetscCall(PetscMalloc1((size_t)s->gp * s->gp, &s->LG));
   PetscCall(PetscMalloc1((size_t)s->G * s->G, &s->SG));
-  PetscCall(PetscMalloc1((size_t)s->G * (s->G + 1) / 2 + 1, &s->pack));
-  PetscCall(PetscMalloc2(PetscMax(s->gp, s->G), &s->work, s->G + 1, &s->rG));
+  PetscCall(PetscMalloc1((size_t)s->G * (s->G + 1) / 2, &s->pack));
+  PetscCall(PetscMalloc2(PetscMax(s->gp, s->G), &s->work, s->G, &s->rG));
   s->v = cholmod_zeros((size_t)s->m, 1, CHOLMOD_REAL, &s->c);
   PetscCall(CholCheck(&s->c, "allocate"));
   PetscFunctionReturn(0);
@@ -402,7 +367,7 @@ static PetscErrorCode LocalInterface(Mat S, PC_SubChol *s)
   PetscBLASInt bgp, info;
   PetscFunctionBeginUser;
 #define PACK(i, j) ((size_t)(j) * (2 * (size_t)G - (j) + 1) / 2 + ((i) - (j))) /* lower triangle, column-major, i >= j */
-  PetscCall(PetscArrayzero(s->pack, (size_t)G * (G + 1) / 2 + 1));
+  PetscCall(PetscArrayzero(s->pack, (size_t)G * (G + 1) / 2));
   PetscCall(PetscArrayzero(s->LG, (size_t)gp * gp));
   if (gp) {
     const int    *super = (const int *)s->L->super, *lpi = (const int *)s->L->pi, *lpx = (const int *)s->L->px, *ls = (const int *)s->L->s;
@@ -489,14 +454,13 @@ static PetscErrorCode SetUpNumeric(PC pc, PC_SubChol *s)
   PetscCall(PetscObjectGetComm((PetscObject)S, &comm));
   PetscCallMPI(MPI_Comm_size(comm, &size));
   PetscCall(MatCreateSubMatrices(S, 1, &s->isloc, &s->isloc, MAT_REUSE_MATRIX, &s->sub));
-  CaptureError(ierr, LocalFactor(s, &notpd));
-  { /* errors, and a matrix that is not positive definite, are decided by all ranks together; the latter is
-       reported the PETSc way (the KSP stops with DIVERGED_PC_FAILED; the flow halves its step) */
-    PetscMPIInt code = ierr ? 2 : (notpd ? 1 : 0), worst;
+  CSCaptureError(ierr, LocalFactor(s, &notpd));
+  PetscCall(CSSyncError(comm, ierr)); /* a failure on one rank: raised on every rank */
+  { /* a matrix that is not positive definite on some rank: decided by all ranks together and reported the PETSc
+       way (the KSP stops with DIVERGED_PC_FAILED; the flow halves its step) */
+    PetscMPIInt bad = notpd ? 1 : 0, worst;
     if (notpd) PetscCall(PetscInfo(pc, "the local matrix is not positive definite (CHOLMOD stopped at column %d of %" PetscInt_FMT ")\n", (int)s->L->minor, s->m));
-    PetscCall(ReportCaptured(comm, ierr));
-    PetscCallMPI(MPI_Allreduce(&code, &worst, 1, MPI_INT, MPI_MAX, comm));
-    PetscCheck(worst < 2, comm, PETSC_ERR_LIB, "cssubchol: the local CHOLMOD factorisation failed on some rank (its message above)");
+    PetscCallMPI(MPI_Allreduce(&bad, &worst, 1, MPI_INT, MPI_MAX, comm));
     if (worst) {
       PetscCheck(!pc->erroriffailure, comm, PETSC_ERR_MAT_CH_ZRPVT, "cssubchol: the matrix is not positive definite");
       PetscCall(PCSetFailedReason(pc, PC_FACTOR_NUMERIC_ZEROPIVOT));
@@ -504,16 +468,13 @@ static PetscErrorCode SetUpNumeric(PC pc, PC_SubChol *s)
     }
   }
   PetscCall(PetscLogEventBegin(EV_Dense, pc, 0, 0, 0));
-  CaptureError(ierr, LocalInterface(S, s));
+  CSCaptureError(ierr, LocalInterface(S, s));
+  PetscCall(CSSyncError(comm, ierr));
   if (size > 1) {
-    size_t      npack = (size_t)G * (G + 1) / 2 + 1;
     PetscMPIInt n;
-    s->pack[npack - 1] = ierr ? 1 : 0; /* the error flag travels with the sum */
-    PetscCall(PetscMPIIntCast((PetscInt)npack, &n));
-    PetscCall(ReportCaptured(comm, ierr));
+    PetscCall(PetscMPIIntCast((PetscInt)((size_t)G * (G + 1) / 2), &n));
     PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, s->pack, n, MPIU_SCALAR, MPIU_SUM, comm));
-    PetscCheck(s->pack[npack - 1] == 0, comm, PETSC_ERR_LIB, "cssubchol: the interface Schur complement failed on some rank (its message above)");
-  } else PetscCheck(!ierr, comm, PETSC_ERR_LIB, "cssubchol: the interface Schur complement failed: %s", Captured(ierr));
+  }
   if (G) {
     PetscBLASInt bG, info;
     PetscMPIInt  bad, anybad;
@@ -548,11 +509,9 @@ static PetscErrorCode PCSetUp_SubChol(PC pc)
     PetscCall(PetscLogEventBegin(EV_Sym, pc, 0, 0, 0));
     PetscCall(ResetSymbolic(s));
     PetscCall(SetUpSplit(pc, s));
-    CaptureError(ierr, SetUpAnalysis(s));
-    if (ierr) { /* free what a half-done analysis left, on every rank the same state */
-      PetscCall(ResetSymbolic(s));
-    }
-    PetscCall(AgreeOnError(PetscObjectComm((PetscObject)pc), ierr, "the local ordering and CHOLMOD analysis"));
+    CSCaptureError(ierr, SetUpAnalysis(s));
+    if (ierr) PetscCall(ResetSymbolic(s)); /* free what a half-done analysis left */
+    PetscCall(CSSyncError(PetscObjectComm((PetscObject)pc), ierr));
     PetscCall(PetscLogEventEnd(EV_Sym, pc, 0, 0, 0));
   }
   PetscCall(PCSetFailedReason(pc, PC_NOERROR));
@@ -577,7 +536,7 @@ static PetscErrorCode ApplyForward(PC_SubChol *s, Vec b)
   cholmod_solve2(CHOLMOD_P, s->L, s->v, NULL, &s->t1, NULL, &s->Yw, &s->Ew, &s->c);
   cholmod_solve2(CHOLMOD_L, s->L, s->t1, NULL, &s->t2, NULL, &s->Yw, &s->Ew, &s->c);
   PetscCall(CholCheck(&s->c, "forward solve"));
-  PetscCall(PetscArrayzero(s->rG, s->G + 1));
+  PetscCall(PetscArrayzero(s->rG, s->G));
   if (s->gp) {
     ya = (PetscScalar *)s->t2->x;
     for (PetscInt l = 0; l < s->gp; l++) s->work[l] = ya[s->gpos[l]];
@@ -611,15 +570,13 @@ static PetscErrorCode PCApply_SubChol(PC pc, Vec b, Vec x)
   PetscCallMPI(MPI_Comm_size(comm, &size));
   PetscCall(VecScatterBegin(s->scat, b, s->bloc, INSERT_VALUES, SCATTER_FORWARD));
   PetscCall(VecScatterEnd(s->scat, b, s->bloc, INSERT_VALUES, SCATTER_FORWARD));
-  CaptureError(ierr, ApplyForward(s, b));
-  if (G && size > 1) { /* r_Gamma = b_Gamma + sum_p L_GG y_G, with the error flag */
+  CSCaptureError(ierr, ApplyForward(s, b));
+  PetscCall(CSSyncError(comm, ierr));
+  if (G && size > 1) { /* r_Gamma = b_Gamma + sum_p L_GG y_G */
     PetscMPIInt n;
-    s->rG[G] = ierr ? 1 : 0;
-    PetscCall(PetscMPIIntCast(G + 1, &n));
-    PetscCall(ReportCaptured(comm, ierr));
+    PetscCall(PetscMPIIntCast(G, &n));
     PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, s->rG, n, MPIU_SCALAR, MPIU_SUM, comm));
-    PetscCheck(s->rG[G] == 0, comm, PETSC_ERR_LIB, "cssubchol: the forward solve failed on some rank (its message above)");
-  } else PetscCheck(!ierr, PETSC_COMM_SELF, PETSC_ERR_LIB, "cssubchol: the forward solve failed: %s", Captured(ierr)); /* no collective call follows */
+  }
   if (G) {
     PetscCall(PetscBLASIntCast(G, &bG));
     LAPACKpotrs_("L", &bG, &one, s->SG, &bG, s->rG, &bG, &info); /* rG = x_Gamma */
@@ -665,23 +622,11 @@ static PetscErrorCode PCDestroy_SubChol(PC pc)
 static PetscErrorCode PCSetFromOptions_SubChol(PC pc, PetscOptionItems *PetscOptionsObject)
 {
   PC_SubChol *s = (PC_SubChol *)pc->data;
-  PetscBool   a, b, c;
   PetscFunctionBeginUser;
   PetscOptionsHeadBegin(PetscOptionsObject, "Substructured CHOLMOD Cholesky (cssubchol)");
-  PetscCall(PetscOptionsString("-pc_cssubchol_ordering", "Ordering of each rank's interior: metis|amd|nesdis", NULL, s->ordering, s->ordering, sizeof(s->ordering), NULL));
-  PetscCall(PetscOptionsString("-pc_cssubchol_interface", "Side of each cut that holds the interface: auto (the smaller largest local matrix)|lower|upper", NULL, s->side_opt, s->side_opt, sizeof(s->side_opt), NULL));
+  PetscCall(PetscOptionsEList("-pc_cssubchol_ordering", "Ordering of each rank's interior", NULL, OrderingNames, 3, OrderingNames[s->ordering], &s->ordering, NULL));
+  PetscCall(PetscOptionsEList("-pc_cssubchol_interface", "Side of each cut that holds the interface (auto: the smaller largest local matrix)", NULL, SideNames, 3, SideNames[s->side_opt], &s->side_opt, NULL));
   PetscOptionsHeadEnd();
-  {
-    PetscBool au, lo, up;
-    PetscCall(PetscStrcmp(s->side_opt, "auto", &au));
-    PetscCall(PetscStrcmp(s->side_opt, "lower", &lo));
-    PetscCall(PetscStrcmp(s->side_opt, "upper", &up));
-    PetscCheck(au || lo || up, PetscObjectComm((PetscObject)pc), PETSC_ERR_ARG_OUTOFRANGE, "-%spc_cssubchol_interface %s: use auto, lower or upper", ((PetscObject)pc)->prefix ? ((PetscObject)pc)->prefix : "", s->side_opt);
-  }
-  PetscCall(PetscStrcmp(s->ordering, "metis", &a));
-  PetscCall(PetscStrcmp(s->ordering, "amd", &b));
-  PetscCall(PetscStrcmp(s->ordering, "nesdis", &c));
-  PetscCheck(a || b || c, PetscObjectComm((PetscObject)pc), PETSC_ERR_ARG_OUTOFRANGE, "-%spc_cssubchol_ordering %s: use metis, amd or nesdis", ((PetscObject)pc)->prefix ? ((PetscObject)pc)->prefix : "", s->ordering);
   PetscFunctionReturn(0);
 }
 
@@ -692,7 +637,7 @@ static PetscErrorCode PCView_SubChol(PC pc, PetscViewer viewer)
   PetscFunctionBeginUser;
   PetscCall(PetscObjectTypeCompare((PetscObject)viewer, PETSCVIEWERASCII, &ascii));
   if (ascii) {
-    PetscCall(PetscViewerASCIIPrintf(viewer, "  substructured CHOLMOD Cholesky: interior ordering %s, interface %" PetscInt_FMT " dofs (dense, redundant), on the %s side of each cut\n", s->ordering, s->G, s->side ? "upper" : "lower"));
+    PetscCall(PetscViewerASCIIPrintf(viewer, "  substructured CHOLMOD Cholesky: interior ordering %s, interface %" PetscInt_FMT " dofs (dense, redundant), on the %s side of each cut\n", OrderingNames[s->ordering], s->G, s->side ? "upper" : "lower"));
     PetscCall(PetscViewerASCIIPushSynchronized(viewer));
     if (s->L) PetscCall(PetscViewerASCIISynchronizedPrintf(viewer, "    [local] %" PetscInt_FMT " dofs, %" PetscInt_FMT " on the interface, factor %.3g entries, %.3g flops\n", s->m, s->gp, s->c.lnz, s->c.fl));
     PetscCall(PetscViewerFlush(viewer));
@@ -723,8 +668,6 @@ static PetscErrorCode PCCreate_SubChol(PC pc)
   PC_SubChol *s;
   PetscFunctionBeginUser;
   PetscCall(PetscNew(&s));
-  PetscCall(PetscStrncpy(s->ordering, "metis", sizeof(s->ordering)));
-  PetscCall(PetscStrncpy(s->side_opt, "auto", sizeof(s->side_opt)));
   pc->data                 = s;
   pc->ops->setup           = PCSetUp_SubChol;
   pc->ops->apply           = PCApply_SubChol;

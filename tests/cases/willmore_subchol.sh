@@ -3,7 +3,8 @@
 # two-ring 3-dof matrix with METIS/AMD/NESDIS interiors, a refactorisation on the same pattern, the interface size,
 # an indefinite matrix ending the KSP with DIVERGED_PC_FAILED on every rank), then a cgd flow whose steps equal those
 # with the Schur complement factored by Cholesky (MUMPS on several ranks, CHOLMOD on one): positions within 1e-9,
-# one FGMRES iteration per linear solve (an exact factorisation), the same number of iterations.
+# one FGMRES iteration per linear solve (an exact factorisation), the same number of iterations; unknown values of
+# -pc_cssubchol_ordering / -pc_cssubchol_interface fail with an error naming the option.
 # nprocs: 1 2 3
 source tests/lib.sh
 P=tests/cases/spin_tools.py
@@ -19,3 +20,6 @@ its=$(json ksp_iterations "$TMP/a.json")
 echo "FGMRES iterations $its for $solves linear solves"
 [ "$its" = "$solves" ] || { echo "BAD: an exact factorisation needs one FGMRES iteration per solve"; exit 1; }
 [ "$its" = "$(json ksp_iterations "$TMP/b.json")" ] || { echo "BAD: iteration counts differ from the Cholesky run"; exit 1; }
+# bad option values: a clear error naming the option, non-zero exit
+EXPECT="Unknown option foo for -flow_fieldsplit_1_pc_cssubchol_ordering" expect_fail timeout 60 $MPIEXEC "$CS_BIN" $S -flow_fieldsplit_1_pc_type cssubchol -flow_fieldsplit_1_pc_cssubchol_ordering foo
+EXPECT="Unknown option middle for -flow_fieldsplit_1_pc_cssubchol_interface" expect_fail timeout 60 $MPIEXEC "$CS_BIN" $S -flow_fieldsplit_1_pc_type cssubchol -flow_fieldsplit_1_pc_cssubchol_interface middle

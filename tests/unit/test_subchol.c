@@ -79,6 +79,34 @@ static PetscErrorCode Residual(KSP ksp, Mat S, Vec b, PetscReal *rel, KSPConverg
   PetscFunctionReturn(0);
 }
 
+/* A fresh preonly KSP with PC cssubchol (option -<prefix>_pc_cssubchol_<option> value, when given) solves
+   S x = b; the check passes when |Sx - b|/|b| < 1e-11 and the solve converged */
+static PetscErrorCode CheckFreshSolve(MPI_Comm comm, Mat S, Vec b, const char prefix[], const char option[], const char value[], const char what[])
+{
+  KSP                ksp;
+  PC                 pc;
+  PetscReal          rel;
+  KSPConvergedReason reason;
+  PetscFunctionBeginUser;
+  PetscCall(KSPCreate(comm, &ksp));
+  PetscCall(KSPSetType(ksp, KSPPREONLY));
+  PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(PCSetType(pc, "cssubchol"));
+  if (option) {
+    char name[64], pre[32];
+    PetscCall(PetscSNPrintf(pre, sizeof(pre), "%s_", prefix));
+    PetscCall(KSPSetOptionsPrefix(ksp, pre));
+    PetscCall(PetscSNPrintf(name, sizeof(name), "-%s_pc_cssubchol_%s", prefix, option));
+    PetscCall(PetscOptionsSetValue(NULL, name, value));
+  }
+  PetscCall(KSPSetOperators(ksp, S, S));
+  PetscCall(KSPSetFromOptions(ksp));
+  PetscCall(Residual(ksp, S, b, &rel, &reason));
+  PetscCall(CSTestCheck(comm, (PetscBool)(rel < 1e-11 && reason > 0), what, rel, 1e-11));
+  PetscCall(KSPDestroy(&ksp));
+  PetscFunctionReturn(0);
+}
+
 int main(int argc, char **argv)
 {
   MPI_Comm           comm;
@@ -125,45 +153,12 @@ int main(int argc, char **argv)
   PetscCall(CSTestCheck(comm, (PetscBool)(rel < 1e-11 && reason > 0), "refactorisation with new values: |Sx - b|/|b|", rel, 1e-11));
 
   for (int o = 0; o < 2; o++) {
-    KSP k2;
-    PC  p2;
-    PetscCall(KSPCreate(comm, &k2));
-    PetscCall(KSPSetType(k2, KSPPREONLY));
-    PetscCall(KSPGetPC(k2, &p2));
-    PetscCall(PCSetType(p2, "cssubchol"));
-    PetscCall(KSPSetOptionsPrefix(k2, orderings[o]));
-    PetscCall(KSPAppendOptionsPrefix(k2, "_"));
-    {
-      char name[64];
-      PetscCall(PetscSNPrintf(name, sizeof(name), "-%s_pc_cssubchol_ordering", orderings[o]));
-      PetscCall(PetscOptionsSetValue(NULL, name, orderings[o]));
-    }
-    PetscCall(KSPSetOperators(k2, S, S));
-    PetscCall(KSPSetFromOptions(k2));
-    PetscCall(Residual(k2, S, b, &rel, &reason));
     PetscCall(PetscSNPrintf(what, sizeof(what), "direct solve, %s interior: |Sx - b|/|b|", orderings[o]));
-    PetscCall(CSTestCheck(comm, (PetscBool)(rel < 1e-11 && reason > 0), what, rel, 1e-11));
-    PetscCall(KSPDestroy(&k2));
+    PetscCall(CheckFreshSolve(comm, S, b, orderings[o], "ordering", orderings[o], what));
   }
-
   for (int o = 0; o < 2; o++) { /* the interface on either side of each cut */
-    KSP  k2;
-    PC   p2;
-    char name[64], pre[16];
-    PetscCall(KSPCreate(comm, &k2));
-    PetscCall(KSPSetType(k2, KSPPREONLY));
-    PetscCall(KSPGetPC(k2, &p2));
-    PetscCall(PCSetType(p2, "cssubchol"));
-    PetscCall(PetscSNPrintf(pre, sizeof(pre), "%s_", sides[o]));
-    PetscCall(KSPSetOptionsPrefix(k2, pre));
-    PetscCall(PetscSNPrintf(name, sizeof(name), "-%s_pc_cssubchol_interface", sides[o]));
-    PetscCall(PetscOptionsSetValue(NULL, name, sides[o]));
-    PetscCall(KSPSetOperators(k2, S, S));
-    PetscCall(KSPSetFromOptions(k2));
-    PetscCall(Residual(k2, S, b, &rel, &reason));
     PetscCall(PetscSNPrintf(what, sizeof(what), "interface on the %s side: |Sx - b|/|b|", sides[o]));
-    PetscCall(CSTestCheck(comm, (PetscBool)(rel < 1e-11 && reason > 0), what, rel, 1e-11));
-    PetscCall(KSPDestroy(&k2));
+    PetscCall(CheckFreshSolve(comm, S, b, sides[o], "interface", sides[o], what));
   }
 
   /* other shapes: a one-ring scalar matrix on a small grid (CHOLMOD's postorder may put interface columns before
@@ -181,20 +176,11 @@ int main(int argc, char **argv)
     for (size_t c = 0; c < sizeof(cases) / sizeof(cases[0]); c++) {
       Mat A;
       Vec bb;
-      KSP k3;
-      PC  p3;
       PetscCall(BuildMatrix(comm, cases[c].n, 1e-2, cases[c].ring, cases[c].dof, cases[c].empty, &A));
       PetscCall(MatCreateVecs(A, &bb, NULL));
       PetscCall(VecSetRandom(bb, rnd));
-      PetscCall(KSPCreate(comm, &k3));
-      PetscCall(KSPSetType(k3, KSPPREONLY));
-      PetscCall(KSPGetPC(k3, &p3));
-      PetscCall(PCSetType(p3, "cssubchol"));
-      PetscCall(KSPSetOperators(k3, A, A));
-      PetscCall(Residual(k3, A, bb, &rel, &reason));
       PetscCall(PetscSNPrintf(what, sizeof(what), "%s: |Sx - b|/|b|", cases[c].label));
-      PetscCall(CSTestCheck(comm, (PetscBool)(rel < 1e-11 && reason > 0), what, rel, 1e-11));
-      PetscCall(KSPDestroy(&k3));
+      PetscCall(CheckFreshSolve(comm, A, bb, NULL, NULL, NULL, what));
       PetscCall(VecDestroy(&bb));
       PetscCall(MatDestroy(&A));
     }
