@@ -28,8 +28,11 @@ static const CSTask tasks[] = {
 /* Options nobody asked for are typos: name them and fail, instead of silently running something else. */
 static PetscErrorCode CheckUnusedOptions(MPI_Comm comm, PetscBool *bad)
 {
-  PetscInt N;
+  PetscInt  N;
+  PetscBool set;
   PetscFunctionBeginUser;
+  /* PETSc's own -options_left is read only in PetscFinalize, after this check: not a typo */
+  PetscCall(PetscOptionsHasName(NULL, NULL, "-options_left", &set));
   PetscCall(PetscOptionsAllUsed(NULL, &N));
   *bad = (PetscBool)(N > 0);
   if (N) {

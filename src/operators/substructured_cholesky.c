@@ -56,6 +56,7 @@ typedef struct {
   Mat            *sub;   /* the local matrix as SeqAIJ (MatCreateSubMatrices) */
   IS              isloc; /* global indices of the local dofs, ascending */
   PetscInt        m;     /* local dofs */
+  PetscLogDouble  fl, lnz; /* CHOLMOD's flop count of the local factorisation and nonzeros of L (for -log_view) */
   PetscInt        own_off; /* the owned dofs are local dofs own_off, own_off + 1, ... */
   PetscInt        side;    /* the interface is on the lower (0) or upper (1) side of each cut */
   PetscInt        side_opt; /* SIDE_* (-pc_cssubchol_interface) */
@@ -320,7 +321,9 @@ static PetscErrorCode SetUpAnalysis(PC_SubChol *s)
   s->L                    = cholmod_analyze_p(s->A, perm, NULL, 0, &s->c);
   PetscCall(PetscFree(perm));
   PetscCall(CholCheck(&s->c, "analysis"));
-  s->gp = s->m - mi;
+  s->fl  = s->c.fl;
+  s->lnz = s->c.lnz;
+  s->gp  = s->m - mi;
   PetscCall(PetscMalloc3(s->gp, &s->gpos, s->gp, &s->gglob, s->gp, &s->gloc));
   {
     const int *P = (const int *)s->L->Perm;
@@ -355,6 +358,7 @@ static PetscErrorCode LocalFactor(PC_SubChol *s, PetscBool *notpd)
   PetscCall(MatSeqAIJRestoreArrayRead(s->sub[0], &a));
   cholmod_factorize(s->A, s->L, &s->c);
   PetscCall(CholCheck(&s->c, "factorisation"));
+  PetscCall(PetscLogFlops(s->fl));
   *notpd = (PetscBool)(s->c.status == CHOLMOD_NOT_POSDEF);
   PetscFunctionReturn(0);
 }
@@ -397,6 +401,7 @@ static PetscErrorCode LocalInterface(Mat S, PC_SubChol *s)
     PetscCall(PetscBLASIntCast(gp, &bgp));
     dlauum_("U", &bgp, U, &bgp, &info);
     PetscCheck(!info, PETSC_COMM_SELF, PETSC_ERR_LIB, "cssubchol: LAPACK dlauum info %d", (int)info);
+    PetscCall(PetscLogFlops((PetscLogDouble)gp * gp * gp / 3));
     for (PetscInt j = 0; j < gp; j++) /* T(i,j) = (U U^T)(gp-1-i, gp-1-j), i >= j */
       for (PetscInt i = j; i < gp; i++) {
         PetscInt gi = PetscMax(s->gglob[i], s->gglob[j]), gj = PetscMin(s->gglob[i], s->gglob[j]);
@@ -482,6 +487,7 @@ static PetscErrorCode SetUpNumeric(PC pc, PC_SubChol *s)
       for (PetscInt i = j; i < G; i++) s->SG[i + (size_t)G * j] = s->pack[PACK(i, j)];
     PetscCall(PetscBLASIntCast(G, &bG));
     LAPACKpotrf_("L", &bG, s->SG, &bG, &info); /* the same data on every rank: decided together all the same */
+    PetscCall(PetscLogFlops((PetscLogDouble)G * G * G / 3));
     bad = info ? 1 : 0;
     PetscCallMPI(MPI_Allreduce(&bad, &anybad, 1, MPI_INT, MPI_MAX, comm));
     if (anybad) {
@@ -593,6 +599,7 @@ static PetscErrorCode PCApply_SubChol(PC pc, Vec b, Vec x)
   cholmod_solve2(CHOLMOD_Lt, s->L, s->t2, NULL, &s->t1, NULL, &s->Yw, &s->Ew, &s->c);
   cholmod_solve2(CHOLMOD_Pt, s->L, s->t1, NULL, &s->t2, NULL, &s->Yw, &s->Ew, &s->c);
   PetscCall(CholCheck(&s->c, "backward solve"));
+  PetscCall(PetscLogFlops(4 * s->lnz + 2.0 * G * G + 4.0 * gp * gp)); /* two triangular solves with L, potrs, two trmv */
   PetscCall(VecGetArray(x, &xa));
   for (PetscInt i = 0; i < s->nown; i++) xa[i] = s->own_loc[i] >= 0 ? ((PetscScalar *)s->t2->x)[s->own_loc[i]] : s->rG[-1 - s->own_loc[i]];
   PetscCall(VecRestoreArray(x, &xa));
