@@ -6,6 +6,8 @@
 
 /* PCRegister("cssubchol", ...) once per process */
 PETSC_EXTERN PetscErrorCode CSSubCholRegister(void);
-/* size of the interface (global) of a set-up PC of this type, for reports; 0 on one process */
-PETSC_EXTERN PetscErrorCode CSSubCholGetInterfaceSize(PC pc, PetscInt *G);
+/* Of a set-up PC of this type, for reports (each may be NULL): G the size of the interface (global; 0 on one
+   process), kept of this rank's factorisations how many took the interface Schur complement as CHOLMOD assembled
+   it (cholmod_last_supernode.c), factorisations how many there were */
+PETSC_EXTERN PetscErrorCode CSSubCholGetInfo(PC pc, PetscInt *G, PetscInt *kept, PetscInt *factorisations);
 #endif

@@ -11,13 +11,16 @@
    never to another rank's interior. Rank p factors its local matrix
        A_p = [ S(I_p, I_p)  S(I_p, G_p) ]      G_p = the interface dofs coupled to I_p, and its own,
              [ S(G_p, I_p)  S(G_p, G_p) ]
-   (a principal submatrix of S, hence SPD) with G_p ordered after I_p (METIS on I_p). The last block of its
-   Cholesky factor then holds L_GG with L_GG L_GG^T = S(G_p,G_p) - C_p, C_p = S(G_p,I_p) S(I_p,I_p)^{-1} S(I_p,G_p),
-   and the Schur complement of S on the whole interface is
+   (a principal submatrix of S, hence SPD) with G_p ordered after I_p (METIS on I_p). Its interface block is the
+   local Schur complement T_p = S(G_p,G_p) - C_p, C_p = S(G_p,I_p) S(I_p,I_p)^{-1} S(I_p,G_p): CHOLMOD assembles it
+   as the trailing block of its last supernode, and we take it there before CHOLMOD would factor it
+   (cholmod_last_supernode.c; -pc_cssubchol_skip_interface_cholesky 0, or an interface that is not that block,
+   lets CHOLMOD factor it, T_p = L_GG L_GG^T then by LAPACK dlauum). The Schur complement of S on the interface is
        S_Gamma = S(Gamma, Gamma) - sum_p C_p,
    a dense matrix of the interface size, summed over ranks (MPI_Allreduce) and factored redundantly (LAPACK).
-   A solve S x = b then is: y_p = L^{-1} [b_I; 0] on each rank (its interface part gives S(G,I)S(I,I)^{-1} b_I
-   as -L_GG y_G), x_Gamma = S_Gamma^{-1} (b_Gamma - sum), and x_I = L^{-T} [y_I; L_GG^T x_G] on each rank.
+   The local factor's interface block is then set to the identity, L = [L_II 0; L_GI I], so a solve S x = b is:
+   y_p = L^{-1} [b_I; 0] on each rank (its interface part is -L_GI y_I = -S(G,I) S(I,I)^{-1} b_I),
+   x_Gamma = S_Gamma^{-1} (b_Gamma + sum_p y_G), and x_I = L^{-T} [y_I; x_G] on each rank.
    All interface couplings stay correct under CHOLMOD's postordering: G_p is closed upwards in the elimination
    tree (it is ordered last), so L(I,G) = 0 even where the postorder puts an interface column before interior ones.
    Errors: a failure on one rank (CHOLMOD, a matrix that is not positive definite) is agreed on by all ranks before
@@ -25,9 +28,11 @@
    together.
 
    Cost: the interface has about two rows of mesh vertices along the cut (S couples two-rings); its dense
-   factorisation is small next to the two halves (level 6: 2.1k interface dofs, 3.3e10 flops per rank against
-   5.7e10 serially). The interface is redundant on every rank, so this is meant for a few ranks (memory about
-   8 (G^2 + 2 gp^2 + G^2/2) bytes per rank, gp <= G the rank's share); on one rank it is a plain CHOLMOD factorisation. The symbolic phase (split, METIS,
+   factorisation is small next to the two halves (level 6: 2.3k interface dofs, 3.8e9 flops for S_Gamma against
+   3.2e10 / 3.3e10 on the two ranks and 5.7e10 serially; taking T_p as assembled saves 2 x 3.8e9 on each rank:
+   1.40 instead of 1.65 s per factorisation, median of 3 alternating runs of the flow with
+   -flow_fieldsplit_1_pc_cssubchol_skip_interface_cholesky 1 / 0). The interface is redundant on every rank, so this is meant for a few ranks (memory about
+   8 (G^2 + gp^2 + G^2/2) bytes per rank, gp <= G the rank's share); on one rank it is a plain CHOLMOD factorisation. The symbolic phase (split, METIS,
    CHOLMOD analysis) is kept while the nonzero pattern stays. */
 #include <petsc/private/pcimpl.h> /* a PC type of our own (PCRegister) */
 #include <petscblaslapack.h>
@@ -66,10 +71,12 @@ typedef struct {
   PetscInt       *gpos;  /* their positions in the factor's (permuted) order, ascending */
   PetscInt       *gglob; /* their interface numbers (0..G-1), in that order */
   PetscInt       *gloc;  /* their local numbers (0..m-1), in that order */
-  PetscScalar    *LG;    /* gp x gp: L restricted to them (lower triangular, column-major) */
+  PetscBool       keep_last; /* -pc_cssubchol_skip_interface_cholesky: take T_p as CHOLMOD assembles it */
+  PetscBool       gamma_last; /* the interface columns end the factor's last supernode, a root (so it can be kept) */
+  PetscBool       kept;       /* the last factorisation left that block assembled */
+  PetscInt        nkept, nfact; /* factorisations that kept it / all, for -ksp_view */
   PetscScalar    *SG;    /* G x G: Cholesky factor of S_Gamma */
   PetscScalar    *pack;  /* G (G + 1) / 2: the lower triangle of S_Gamma, for the reduction */
-  PetscScalar    *work;  /* max(gp, G) */
   PetscScalar    *rG;    /* G: interface vector */
   PetscInt        nown;    /* owned rows */
   PetscInt       *own_loc; /* for each: local number, or -1 - (interface number) on the interface */
@@ -100,10 +107,9 @@ static PetscErrorCode ResetSymbolic(PC_SubChol *s)
   PetscCall(ISDestroy(&s->isloc));
   PetscCall(PetscFree(s->gidx));
   PetscCall(PetscFree3(s->gpos, s->gglob, s->gloc));
-  PetscCall(PetscFree(s->LG));
   PetscCall(PetscFree(s->SG));
   PetscCall(PetscFree(s->pack));
-  PetscCall(PetscFree2(s->work, s->rG));
+  PetscCall(PetscFree(s->rG));
   PetscCall(PetscFree(s->own_loc));
   PetscCall(VecScatterDestroy(&s->scat));
   PetscCall(VecDestroy(&s->bloc));
@@ -336,13 +342,19 @@ static PetscErrorCode SetUpAnalysis(PC_SubChol *s)
         l++;
       }
   }
+  { /* CHOLMOD can leave the interface block assembled only if the interface columns are the trailing columns of its
+       last supernode, a root (the usual case: the local Schur complement on a connected cut is dense; the top
+       separator of the interior shares that supernode) */
+    size_t     ns  = s->L->nsuper;
+    const int *sup = (const int *)s->L->super, *lpi = (const int *)s->L->pi;
+    s->gamma_last  = (PetscBool)(s->L->is_super && s->gp > 0 && ns > 0 && s->gpos[0] == s->m - s->gp && sup[ns - 1] <= s->m - s->gp && lpi[ns] - lpi[ns - 1] == sup[ns] - sup[ns - 1]);
+  }
   PetscCall(PetscMalloc1(s->nown, &s->own_loc));
   for (PetscInt i = 0; i < s->nown; i++) s->own_loc[i] = pos[s->own_off + i] >= 0 ? -1 - pos[s->own_off + i] : s->own_off + i;
   PetscCall(PetscFree(pos));
-  PetscCall(PetscMalloc1((size_t)s->gp * s->gp, &s->LG));
   PetscCall(PetscMalloc1((size_t)s->G * s->G, &s->SG));
   PetscCall(PetscMalloc1((size_t)s->G * (s->G + 1) / 2, &s->pack));
-  PetscCall(PetscMalloc2(PetscMax(s->gp, s->G), &s->work, s->G, &s->rG));
+  PetscCall(PetscMalloc1(s->G, &s->rG));
   s->v = cholmod_zeros((size_t)s->m, 1, CHOLMOD_REAL, &s->c);
   PetscCall(CholCheck(&s->c, "allocate"));
   PetscFunctionReturn(0);
@@ -356,15 +368,21 @@ static PetscErrorCode LocalFactor(PC_SubChol *s, PetscBool *notpd)
   PetscCall(MatSeqAIJGetArrayRead(s->sub[0], &a));
   PetscCall(PetscArraycpy((PetscScalar *)s->A->x, a, ((int *)s->A->p)[s->m]));
   PetscCall(MatSeqAIJRestoreArrayRead(s->sub[0], &a));
-  cholmod_factorize(s->A, s->L, &s->c);
+  s->kept = PETSC_FALSE;
+  if (s->keep_last && s->gamma_last) PetscCall(CSCholmodFactorKeepLast(s->A, s->L, s->gp, &s->c, &s->kept));
+  else cholmod_factorize(s->A, s->L, &s->c);
   PetscCall(CholCheck(&s->c, "factorisation"));
-  PetscCall(PetscLogFlops(s->fl));
+  s->nfact++;
+  if (s->kept) s->nkept++;
+  PetscCall(PetscLogFlops(s->kept ? s->fl - (PetscLogDouble)s->gp * s->gp * s->gp / 3 : s->fl));
   *notpd = (PetscBool)(s->c.status == CHOLMOD_NOT_POSDEF);
   PetscFunctionReturn(0);
 }
 
-/* Rank-local: LG = L(interface, interface) of the local factor, and this rank's part of S_Gamma (lower triangle,
-   packed): T_p - S(G_p, G_p) with T_p = L_GG L_GG^T, plus S(Gamma, Gamma) on the owned interface rows. */
+/* Rank-local: this rank's part of S_Gamma (lower triangle, packed): T_p - S(G_p, G_p), with T_p = the local Schur
+   complement on the interface, plus S(Gamma, Gamma) on the owned interface rows. T_p is the last supernode as
+   CHOLMOD assembled it when it was kept (s->kept), else L_GG L_GG^T from the factored block. Then L(G,G) is set
+   to the identity: the solves need only L_II and L_GI (ApplyForward, PCApply). */
 static PetscErrorCode LocalInterface(Mat S, PC_SubChol *s)
 {
   PetscInt     gp = s->gp, G = s->G, rstart;
@@ -372,16 +390,17 @@ static PetscErrorCode LocalInterface(Mat S, PC_SubChol *s)
   PetscFunctionBeginUser;
 #define PACK(i, j) ((size_t)(j) * (2 * (size_t)G - (j) + 1) / 2 + ((i) - (j))) /* lower triangle, column-major, i >= j */
   PetscCall(PetscArrayzero(s->pack, (size_t)G * (G + 1) / 2));
-  PetscCall(PetscArrayzero(s->LG, (size_t)gp * gp));
   if (gp) {
-    const int    *super = (const int *)s->L->super, *lpi = (const int *)s->L->pi, *lpx = (const int *)s->L->px, *ls = (const int *)s->L->s;
-    const double *lx    = (const double *)s->L->x;
-    PetscInt     *inv;
-    PetscScalar  *U;
+    const int *super = (const int *)s->L->super, *lpi = (const int *)s->L->pi, *lpx = (const int *)s->L->px, *ls = (const int *)s->L->s;
+    double    *lx    = (double *)s->L->x;
+    PetscInt  *inv;
+    PetscScalar *U; /* gp x gp: the interface block of L, reversed (upper triangular), column-major */
     PetscCheck(s->L->is_super, PETSC_COMM_SELF, PETSC_ERR_PLIB, "cssubchol: CHOLMOD returned a simplicial factor");
     PetscCall(PetscMalloc1(s->m, &inv));
+    PetscCall(PetscCalloc1((size_t)gp * gp, &U));
     for (PetscInt k = 0; k < s->m; k++) inv[k] = -1;
     for (PetscInt l = 0; l < gp; l++) inv[s->gpos[l]] = l;
+    /* the interface columns (all their rows are interface rows: Gamma is closed upwards in the elimination tree) */
     for (size_t sn = 0; sn < s->L->nsuper; sn++) {
       PetscInt k1 = super[sn], k2 = super[sn + 1], nsrow = lpi[sn + 1] - lpi[sn];
       for (PetscInt jj = 0; jj < k2 - k1; jj++) {
@@ -389,20 +408,19 @@ static PetscErrorCode LocalInterface(Mat S, PC_SubChol *s)
         if (c < 0) continue;
         for (PetscInt ii = jj; ii < nsrow; ii++) {
           PetscInt r = inv[ls[lpi[sn] + ii]];
-          if (r >= 0) s->LG[r + (size_t)gp * c] = lx[lpx[sn] + ii + (size_t)jj * nsrow];
+          if (r < 0) continue;
+          U[(gp - 1 - r) + (size_t)gp * (gp - 1 - c)] = lx[lpx[sn] + ii + (size_t)jj * nsrow];
+          lx[lpx[sn] + ii + (size_t)jj * nsrow] = r == c ? 1 : 0;
         }
       }
     }
-    /* T_p = L_GG L_GG^T by LAPACK's U U^T on the reversed (upper triangular) L_GG: a third of the flops of a
-       general product */
-    PetscCall(PetscMalloc1((size_t)gp * gp, &U));
-    for (PetscInt j = 0; j < gp; j++)
-      for (PetscInt i = 0; i < gp; i++) U[(gp - 1 - i) + (size_t)gp * (gp - 1 - j)] = s->LG[i + (size_t)gp * j];
-    PetscCall(PetscBLASIntCast(gp, &bgp));
-    dlauum_("U", &bgp, U, &bgp, &info);
-    PetscCheck(!info, PETSC_COMM_SELF, PETSC_ERR_LIB, "cssubchol: LAPACK dlauum info %d", (int)info);
-    PetscCall(PetscLogFlops((PetscLogDouble)gp * gp * gp / 3));
-    for (PetscInt j = 0; j < gp; j++) /* T(i,j) = (U U^T)(gp-1-i, gp-1-j), i >= j */
+    if (!s->kept) { /* T_p = L_GG L_GG^T by LAPACK's U U^T on the reversed L_GG: a third of the flops of a product */
+      PetscCall(PetscBLASIntCast(gp, &bgp));
+      dlauum_("U", &bgp, U, &bgp, &info);
+      PetscCheck(!info, PETSC_COMM_SELF, PETSC_ERR_LIB, "cssubchol: LAPACK dlauum info %d", (int)info);
+      PetscCall(PetscLogFlops((PetscLogDouble)gp * gp * gp / 3));
+    }
+    for (PetscInt j = 0; j < gp; j++) /* T(i,j) = U(gp-1-i, gp-1-j), i >= j */
       for (PetscInt i = j; i < gp; i++) {
         PetscInt gi = PetscMax(s->gglob[i], s->gglob[j]), gj = PetscMin(s->gglob[i], s->gglob[j]);
         s->pack[PACK(gi, gj)] += U[(gp - 1 - i) + (size_t)gp * (gp - 1 - j)];
@@ -527,13 +545,12 @@ static PetscErrorCode PCSetUp_SubChol(PC pc)
   PetscFunctionReturn(0);
 }
 
-/* Rank-local: y = L^{-1} P [b_I; 0]; its interface part gives work = L_GG y_G = -S(G,I) S(I,I)^{-1} b_I, added
-   into rG; owned interface entries of b into rG too. */
+/* Rank-local: y = L^{-1} P [b_I; 0] with L(G,G) = I; its interface part y_G = -L_GI y_I = -S(G,I) S(I,I)^{-1} b_I
+   is added into rG; owned interface entries of b into rG too. */
 static PetscErrorCode ApplyForward(PC_SubChol *s, Vec b)
 {
   const PetscScalar *bl, *ba;
-  PetscScalar       *ya;
-  PetscBLASInt       bgp, one = 1;
+  const PetscScalar *ya;
   PetscFunctionBeginUser;
   PetscCall(VecGetArrayRead(s->bloc, &bl));
   PetscCall(PetscArraycpy((PetscScalar *)s->v->x, bl, s->m));
@@ -543,13 +560,8 @@ static PetscErrorCode ApplyForward(PC_SubChol *s, Vec b)
   cholmod_solve2(CHOLMOD_L, s->L, s->t1, NULL, &s->t2, NULL, &s->Yw, &s->Ew, &s->c);
   PetscCall(CholCheck(&s->c, "forward solve"));
   PetscCall(PetscArrayzero(s->rG, s->G));
-  if (s->gp) {
-    ya = (PetscScalar *)s->t2->x;
-    for (PetscInt l = 0; l < s->gp; l++) s->work[l] = ya[s->gpos[l]];
-    PetscCall(PetscBLASIntCast(s->gp, &bgp));
-    BLAStrmv_("L", "N", "N", &bgp, s->LG, &bgp, s->work, &one);
-    for (PetscInt l = 0; l < s->gp; l++) s->rG[s->gglob[l]] += s->work[l];
-  }
+  ya = (const PetscScalar *)s->t2->x;
+  for (PetscInt l = 0; l < s->gp; l++) s->rG[s->gglob[l]] += ya[s->gpos[l]];
   PetscCall(VecGetArrayRead(b, &ba));
   for (PetscInt i = 0; i < s->nown; i++)
     if (s->own_loc[i] < 0) s->rG[-1 - s->own_loc[i]] += ba[i];
@@ -561,8 +573,8 @@ static PetscErrorCode PCApply_SubChol(PC pc, Vec b, Vec x)
 {
   PC_SubChol    *s = (PC_SubChol *)pc->data;
   PetscScalar   *xa, *ya;
-  PetscInt       gp = s->gp, G = s->G;
-  PetscBLASInt   bgp, bG, one = 1, info;
+  PetscInt       G = s->G;
+  PetscBLASInt   bG, one = 1, info;
   MPI_Comm       comm;
   PetscMPIInt    size;
   PetscErrorCode ierr;
@@ -578,7 +590,7 @@ static PetscErrorCode PCApply_SubChol(PC pc, Vec b, Vec x)
   PetscCall(VecScatterEnd(s->scat, b, s->bloc, INSERT_VALUES, SCATTER_FORWARD));
   CSCaptureError(ierr, ApplyForward(s, b));
   PetscCall(CSSyncError(comm, ierr));
-  if (G && size > 1) { /* r_Gamma = b_Gamma + sum_p L_GG y_G */
+  if (G && size > 1) { /* r_Gamma = b_Gamma + sum_p y_G */
     PetscMPIInt n;
     PetscCall(PetscMPIIntCast(G, &n));
     PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, s->rG, n, MPIU_SCALAR, MPIU_SUM, comm));
@@ -587,19 +599,14 @@ static PetscErrorCode PCApply_SubChol(PC pc, Vec b, Vec x)
     PetscCall(PetscBLASIntCast(G, &bG));
     LAPACKpotrs_("L", &bG, &one, s->SG, &bG, s->rG, &bG, &info); /* rG = x_Gamma */
     PetscCheck(!info, PETSC_COMM_SELF, PETSC_ERR_LIB, "cssubchol: LAPACK potrs info %d", (int)info);
-    if (gp) { /* backward data: y_G = L_GG^T x_G */
-      ya = (PetscScalar *)s->t2->x;
-      for (PetscInt l = 0; l < gp; l++) s->work[l] = s->rG[s->gglob[l]];
-      PetscCall(PetscBLASIntCast(gp, &bgp));
-      BLAStrmv_("L", "T", "N", &bgp, s->LG, &bgp, s->work, &one);
-      for (PetscInt l = 0; l < gp; l++) ya[s->gpos[l]] = s->work[l];
-    }
+    ya = (PetscScalar *)s->t2->x; /* backward data: y_G = x_G (L(G,G) = I) */
+    for (PetscInt l = 0; l < s->gp; l++) ya[s->gpos[l]] = s->rG[s->gglob[l]];
   }
   /* backward: x_loc = P^T L^{-T} y */
   cholmod_solve2(CHOLMOD_Lt, s->L, s->t2, NULL, &s->t1, NULL, &s->Yw, &s->Ew, &s->c);
   cholmod_solve2(CHOLMOD_Pt, s->L, s->t1, NULL, &s->t2, NULL, &s->Yw, &s->Ew, &s->c);
   PetscCall(CholCheck(&s->c, "backward solve"));
-  PetscCall(PetscLogFlops(4 * s->lnz + 2.0 * G * G + 4.0 * gp * gp)); /* two triangular solves with L, potrs, two trmv */
+  PetscCall(PetscLogFlops(4 * s->lnz + 2.0 * G * G)); /* two triangular solves with L, potrs */
   PetscCall(VecGetArray(x, &xa));
   for (PetscInt i = 0; i < s->nown; i++) xa[i] = s->own_loc[i] >= 0 ? ((PetscScalar *)s->t2->x)[s->own_loc[i]] : s->rG[-1 - s->own_loc[i]];
   PetscCall(VecRestoreArray(x, &xa));
@@ -621,7 +628,7 @@ static PetscErrorCode PCDestroy_SubChol(PC pc)
   PetscFunctionBeginUser;
   PetscCall(ResetSymbolic(s));
   if (s->started) cholmod_finish(&s->c);
-  PetscCall(PetscObjectComposeFunction((PetscObject)pc, "CSSubCholGetInterfaceSize_C", NULL));
+  PetscCall(PetscObjectComposeFunction((PetscObject)pc, "CSSubCholGetInfo_C", NULL));
   PetscCall(PetscFree(pc->data));
   PetscFunctionReturn(0);
 }
@@ -633,6 +640,7 @@ static PetscErrorCode PCSetFromOptions_SubChol(PC pc, PetscOptionItems *PetscOpt
   PetscOptionsHeadBegin(PetscOptionsObject, "Substructured CHOLMOD Cholesky (cssubchol)");
   PetscCall(PetscOptionsEList("-pc_cssubchol_ordering", "Ordering of each rank's interior", NULL, OrderingNames, 3, OrderingNames[s->ordering], &s->ordering, NULL));
   PetscCall(PetscOptionsEList("-pc_cssubchol_interface", "Side of each cut that holds the interface (auto: the smaller largest local matrix)", NULL, SideNames, 3, SideNames[s->side_opt], &s->side_opt, NULL));
+  PetscCall(PetscOptionsBool("-pc_cssubchol_skip_interface_cholesky", "Take each rank's interface Schur complement as CHOLMOD assembles it, skipping CHOLMOD's dense Cholesky of it and our product L_GG L_GG^T (cholmod_last_supernode.c)", NULL, s->keep_last, &s->keep_last, NULL));
   PetscOptionsHeadEnd();
   PetscFunctionReturn(0);
 }
@@ -646,27 +654,31 @@ static PetscErrorCode PCView_SubChol(PC pc, PetscViewer viewer)
   if (ascii) {
     PetscCall(PetscViewerASCIIPrintf(viewer, "  substructured CHOLMOD Cholesky: interior ordering %s, interface %" PetscInt_FMT " dofs (dense, redundant), on the %s side of each cut\n", OrderingNames[s->ordering], s->G, s->side ? "upper" : "lower"));
     PetscCall(PetscViewerASCIIPushSynchronized(viewer));
-    if (s->L) PetscCall(PetscViewerASCIISynchronizedPrintf(viewer, "    [local] %" PetscInt_FMT " dofs, %" PetscInt_FMT " on the interface, factor %.3g entries, %.3g flops\n", s->m, s->gp, s->c.lnz, s->c.fl));
+    if (s->L) PetscCall(PetscViewerASCIISynchronizedPrintf(viewer, "    [local] %" PetscInt_FMT " dofs, %" PetscInt_FMT " on the interface, factor %.3g entries, %.3g flops; interface block %s (%" PetscInt_FMT " of %" PetscInt_FMT " factorisations)\n", s->m, s->gp, s->c.lnz, s->c.fl, s->kept ? "kept as assembled" : "factored", s->nkept, s->nfact));
     PetscCall(PetscViewerFlush(viewer));
     PetscCall(PetscViewerASCIIPopSynchronized(viewer));
   }
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode GetInterfaceSize_SubChol(PC pc, PetscInt *G)
+static PetscErrorCode GetInfo_SubChol(PC pc, PetscInt *G, PetscInt *kept, PetscInt *factorisations)
 {
+  PC_SubChol *s = (PC_SubChol *)pc->data;
   PetscFunctionBeginUser;
-  *G = ((PC_SubChol *)pc->data)->G;
+  if (G) *G = s->G;
+  if (kept) *kept = s->nkept;
+  if (factorisations) *factorisations = s->nfact;
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CSSubCholGetInterfaceSize(PC pc, PetscInt *G)
+PetscErrorCode CSSubCholGetInfo(PC pc, PetscInt *G, PetscInt *kept, PetscInt *factorisations)
 {
   PetscFunctionBeginUser;
   PetscValidHeaderSpecific(pc, PC_CLASSID, 1);
-  PetscValidIntPointer(G, 2);
-  *G = 0;
-  PetscTryMethod(pc, "CSSubCholGetInterfaceSize_C", (PC, PetscInt *), (pc, G));
+  if (G) *G = 0;
+  if (kept) *kept = 0;
+  if (factorisations) *factorisations = 0;
+  PetscTryMethod(pc, "CSSubCholGetInfo_C", (PC, PetscInt *, PetscInt *, PetscInt *), (pc, G, kept, factorisations));
   PetscFunctionReturn(0);
 }
 
@@ -676,6 +688,7 @@ static PetscErrorCode PCCreate_SubChol(PC pc)
   PetscFunctionBeginUser;
   PetscCall(PetscNew(&s));
   pc->data                 = s;
+  s->keep_last             = PETSC_TRUE;
   pc->ops->setup           = PCSetUp_SubChol;
   pc->ops->apply           = PCApply_SubChol;
   pc->ops->applytranspose  = PCApply_SubChol; /* S is symmetric */
@@ -683,7 +696,7 @@ static PetscErrorCode PCCreate_SubChol(PC pc)
   pc->ops->destroy         = PCDestroy_SubChol;
   pc->ops->setfromoptions  = PCSetFromOptions_SubChol;
   pc->ops->view            = PCView_SubChol;
-  PetscCall(PetscObjectComposeFunction((PetscObject)pc, "CSSubCholGetInterfaceSize_C", GetInterfaceSize_SubChol));
+  PetscCall(PetscObjectComposeFunction((PetscObject)pc, "CSSubCholGetInfo_C", GetInfo_SubChol));
   PetscFunctionReturn(0);
 }
 

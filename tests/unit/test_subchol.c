@@ -117,7 +117,7 @@ int main(int argc, char **argv)
   PC                 pc;
   PetscRandom        rnd;
   PetscReal          rel;
-  PetscInt           G, n = 40;
+  PetscInt           G, n = 40, kept, nfact;
   KSPConvergedReason reason;
   const char        *orderings[] = {"amd", "nesdis"}, *sides[] = {"lower", "upper"};
   char               what[128];
@@ -141,9 +141,16 @@ int main(int argc, char **argv)
   PetscCall(KSPSetFromOptions(ksp));
   PetscCall(Residual(ksp, S, b, &rel, &reason));
   PetscCall(CSTestCheck(comm, (PetscBool)(rel < 1e-11 && reason > 0), "direct solve, METIS interior: |Sx - b|/|b|", rel, 1e-11));
-  PetscCall(CSSubCholGetInterfaceSize(pc, &G));
+  PetscCall(CSSubCholGetInfo(pc, &G, &kept, &nfact));
   /* two grid rows of nodes (3 dofs each) per cut between consecutive ranks */
   PetscCall(CSTestCheck(comm, (PetscBool)(size == 1 ? G == 0 : (G >= 3 * 2 * n && G <= (size - 1) * 3 * 2 * n + 3 * 2 * n)), "interface dofs (0 on one rank, about 6n per cut)", (PetscReal)G, (PetscReal)(size - 1) * 6 * n));
+
+  { /* on several ranks the interface is the last supernode of every local factor: its Schur complement taken as
+       CHOLMOD assembled it, on every rank (cholmod_last_supernode.c) */
+    PetscInt all;
+    PetscCallMPI(MPI_Allreduce(&kept, &all, 1, MPIU_INT, MPI_MIN, comm));
+    PetscCall(CSTestCheck(comm, (PetscBool)(size == 1 || (all == 1 && nfact == 1)), "interface block kept as CHOLMOD assembled it (fewest over ranks; not on one rank)", (PetscReal)all, 1));
+  }
 
   /* new values, same pattern: the numeric phase alone */
   PetscCall(MatScale(S, 2.0));
@@ -156,6 +163,7 @@ int main(int argc, char **argv)
     PetscCall(PetscSNPrintf(what, sizeof(what), "direct solve, %s interior: |Sx - b|/|b|", orderings[o]));
     PetscCall(CheckFreshSolve(comm, S, b, orderings[o], "ordering", orderings[o], what));
   }
+  PetscCall(CheckFreshSolve(comm, S, b, "factored", "skip_interface_cholesky", "0", "interface block factored by CHOLMOD, multiplied back (dlauum): |Sx - b|/|b|"));
   for (int o = 0; o < 2; o++) { /* the interface on either side of each cut */
     PetscCall(PetscSNPrintf(what, sizeof(what), "interface on the %s side: |Sx - b|/|b|", sides[o]));
     PetscCall(CheckFreshSolve(comm, S, b, sides[o], "interface", sides[o], what));
