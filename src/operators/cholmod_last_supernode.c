@@ -13,11 +13,14 @@
 
    How: this file defines LAPACK's dpotrf_. The dynamic linker binds every caller of dpotrf_ in the process
    (CHOLMOD, PETSc, ...) to this definition, which passes each call on to the library's own dpotrf
-   (dlsym RTLD_NEXT), except one call while CSCholmodFactorKeepLast has armed it: the first whose order and
-   leading dimension are those of the last supernode. CSCholmodFactorKeepLast then checks that the block
-   stopped early was that supernode's (the pointer is compared); if the binding did not happen (a static or
-   -Bsymbolic CHOLMOD) or another block of the same size was hit, it factors normally and says so, so nothing
-   but speed depends on the hook. */
+   (dlsym RTLD_NEXT), except the one call on the last supernode's block (recognised by its address) while
+   CSCholmodFactorKeepLast has armed it. If the binding does not happen (a static or -Bsymbolic CHOLMOD), the
+   factorisation is a normal one and CSCholmodFactorKeepLast says so: nothing but speed depends on the hook.
+   Checked against CHOLMOD 3.0's supernodal numeric factorisation (CPU path): the block handed to dpotrf is the
+   root supernode's fully assembled diagonal block (lda = its rows = its columns), nothing in CHOLMOD reads it
+   afterwards but the solves, and a failure in the leading columns returns the info a full dpotrf would.
+   One thread: the hook is armed only around our own cholmod_factorize call (CHOLMOD calls dpotrf from the calling
+   thread). */
 #define _GNU_SOURCE
 #include <dlfcn.h>
 #include <stdio.h>
@@ -29,10 +32,10 @@
 typedef void (*PotrfFn)(const char *, const int *, double *, const int *, int *);
 
 static struct {
-  int     armed; /* stop the next call with n == lda == order early */
-  int     order; /* of the last supernode */
+  double *block; /* armed: the last supernode's block, to be factored only partially; NULL: pass every call on */
+  int     order; /* its columns (= rows) */
   int     lead;  /* its columns to factor; the trailing order - lead are left as the Schur complement */
-  double *block; /* the block it stopped early */
+  int     done;  /* the block was met */
 } hook;
 
 static void LapackPotrf(const char *uplo, const int *n, double *a, const int *lda, int *info)
@@ -51,12 +54,12 @@ static void LapackPotrf(const char *uplo, const int *n, double *a, const int *ld
 /* LAPACK dpotrf (its interface): Cholesky factorisation of a dense SPD matrix, lower triangle for CHOLMOD */
 void dpotrf_(const char *uplo, const int *n, double *a, const int *lda, int *info)
 {
-  if (hook.armed && *n == hook.order && *lda == hook.order && uplo[0] == 'L') {
+  if (hook.block && a == hook.block && *n == hook.order && *lda == hook.order && uplo[0] == 'L') {
     /* [A11 .; A21 A22]: A11 = L11 L11^T, L21 = A21 L11^{-T}, A22 -= L21 L21^T; A22 is then the Schur complement */
     const int    k = hook.lead, r = hook.order - hook.lead;
     const double one = 1, minus = -1;
-    hook.armed = 0;
-    hook.block = a;
+    hook.block = NULL;
+    hook.done  = 1;
     *info      = 0;
     if (k == 0) return;
     LapackPotrf("L", &k, a, lda, info);
@@ -79,14 +82,18 @@ PetscErrorCode CSCholmodFactorKeepLast(cholmod_sparse *A, cholmod_factor *L, Pet
     cholmod_factorize(A, L, c); /* the trailing columns are not a root block's: nothing to keep */
     PetscFunctionReturn(0);
   }
+  /* a factor converted after the factorisation (LDL', simplicial) would take the kept block for a factor */
+  PetscCheck(c->final_asis, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "CSCholmodFactorKeepLast: needs Common->final_asis");
+  if (L->xtype == CHOLMOD_PATTERN) { /* the numeric space now (as cholmod_factorize would), to know the block's address */
+    cholmod_change_factor(CHOLMOD_REAL, 1, 1, 1, 1, L, c); /* LL', supernodal, packed, monotonic */
+    if (c->status < CHOLMOD_OK) PetscFunctionReturn(0); /* the caller reports it */
+  }
   hook.order = sup[ns] - sup[ns - 1];
   hook.lead  = hook.order - (int)ntrail;
-  hook.block = NULL;
-  hook.armed = 1;
+  hook.done  = 0;
+  hook.block = (double *)L->x + px[ns - 1];
   cholmod_factorize(A, L, c);
-  hook.armed = 0;
-  if (c->status < CHOLMOD_OK || c->status == CHOLMOD_NOT_POSDEF) PetscFunctionReturn(0); /* the caller reports it */
-  if (hook.block == (double *)L->x + px[ns - 1]) *kept = PETSC_TRUE;
-  else if (hook.block) cholmod_factorize(A, L, c); /* another block of that size was stopped early: redo */
+  hook.block = NULL;
+  *kept      = (PetscBool)(hook.done && c->status == CHOLMOD_OK);
   PetscFunctionReturn(0);
 }
