@@ -74,7 +74,7 @@ void dpotrf_(const char *uplo, const int *n, double *a, const int *lda, int *inf
 PetscErrorCode CSCholmodFactorKeepLast(cholmod_sparse *A, cholmod_factor *L, PetscInt ntrail, cholmod_common *c, PetscBool *kept)
 {
   size_t     ns  = L->nsuper;
-  const int *sup = ns ? (const int *)L->super : NULL, *pi = ns ? (const int *)L->pi : NULL, *px = ns ? (const int *)L->px : NULL;
+  const int *sup = ns ? (const int *)L->super : NULL, *pi = ns ? (const int *)L->pi : NULL;
   PetscFunctionBeginUser;
   *kept = PETSC_FALSE;
   PetscCheck(L->is_super, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "CSCholmodFactorKeepLast: needs a supernodal symbolic factor");
@@ -91,7 +91,7 @@ PetscErrorCode CSCholmodFactorKeepLast(cholmod_sparse *A, cholmod_factor *L, Pet
   hook.order = sup[ns] - sup[ns - 1];
   hook.lead  = hook.order - (int)ntrail;
   hook.done  = 0;
-  hook.block = (double *)L->x + px[ns - 1];
+  hook.block = (double *)L->x + ((const int *)L->px)[ns - 1]; /* read after the numeric space exists */
   cholmod_factorize(A, L, c);
   hook.block = NULL;
   *kept      = (PetscBool)(hook.done && c->status == CHOLMOD_OK);
