@@ -7,9 +7,10 @@
    with a new nonzero pattern every step, which forces a new symbolic factorisation: 0.5 s per step with
    CHOLMOD at 20k faces); S is factored by CHOLMOD serially (1.8x faster than MUMPS-AMD at 20k faces) and in
    parallel by substructuring (PC cssubchol: CHOLMOD + METIS on each rank's part, then the dense interface; level
-   6, 20 steps: 2.10 s/step on 2 ranks against 2.82 serially, runs/bench_flow.md, where MUMPS-PORD on S gained
-   nothing); the outer iteration then converges in 1-2 steps. The factorisation is kept over later steps while it stays a good preconditioner (-flow_pc_reuse_its, default 10: refactor
-   once a solve needed more than 10 FGMRES iterations): at level 5 a 200-step run needs 207 s (201
+   6, 20 steps: 1.99 s/step on 2 ranks against 2.73 serially, runs/bench_flow.md, where MUMPS-PORD on S gained
+   nothing); the outer iteration then converges in 1-2 steps. The factorisation is kept over later steps while it
+   stays a good preconditioner (-flow_pc_reuse_its, default 10: refactor once a solve needed more than 10 FGMRES
+   iterations): at level 5 a 200-step run needs 207 s (201
    factorisations) when refactoring every step and 49.5 s with the kept one (18 factorisations, 1122 FGMRES
    iterations in all; the same W to 1e-13; runs/bench_flow.md). The default is
    inserted as a preset when -flow_pc_type is not given; any single preset option can be overridden on the

@@ -72,7 +72,7 @@ typedef struct {
   PetscInt       *gglob; /* their interface numbers (0..G-1), in that order */
   PetscInt       *gloc;  /* their local numbers (0..m-1), in that order */
   PetscBool       keep_last; /* -pc_cssubchol_skip_interface_cholesky: take T_p as CHOLMOD assembles it */
-  PetscBool       gamma_last; /* the interface columns end the factor's last supernode, a root (so it can be kept) */
+  PetscBool       gamma_trailing; /* the interface dofs are the factor's last gp columns (so their block can be kept) */
   PetscBool       kept;       /* the last factorisation left that block assembled */
   PetscInt        nkept, nfact; /* factorisations that kept it / all, for -ksp_view */
   PetscScalar    *SG;    /* G x G: Cholesky factor of S_Gamma */
@@ -342,13 +342,10 @@ static PetscErrorCode SetUpAnalysis(PC_SubChol *s)
         l++;
       }
   }
-  { /* CHOLMOD can leave the interface block assembled only if the interface columns are the trailing columns of its
-       last supernode, a root (the usual case: the local Schur complement on a connected cut is dense; the top
-       separator of the interior shares that supernode) */
-    size_t     ns  = s->L->nsuper;
-    const int *sup = (const int *)s->L->super, *lpi = (const int *)s->L->pi;
-    s->gamma_last  = (PetscBool)(s->L->is_super && s->gp > 0 && ns > 0 && s->gpos[0] == s->m - s->gp && sup[ns - 1] <= s->m - s->gp && lpi[ns] - lpi[ns - 1] == sup[ns] - sup[ns - 1]);
-  }
+  /* CHOLMOD's postorder may move interface columns forward; the block can be kept only when they stayed last
+     (CSCholmodFactorKeepLast checks that they end a root supernode, the usual case: the local Schur complement on
+     a connected cut is dense, and the top separator of the interior shares that supernode) */
+  s->gamma_trailing = (PetscBool)(s->gp > 0 && s->gpos[0] == s->m - s->gp);
   PetscCall(PetscMalloc1(s->nown, &s->own_loc));
   for (PetscInt i = 0; i < s->nown; i++) s->own_loc[i] = pos[s->own_off + i] >= 0 ? -1 - pos[s->own_off + i] : s->own_off + i;
   PetscCall(PetscFree(pos));
@@ -369,7 +366,7 @@ static PetscErrorCode LocalFactor(PC_SubChol *s, PetscBool *notpd)
   PetscCall(PetscArraycpy((PetscScalar *)s->A->x, a, ((int *)s->A->p)[s->m]));
   PetscCall(MatSeqAIJRestoreArrayRead(s->sub[0], &a));
   s->kept = PETSC_FALSE;
-  if (s->keep_last && s->gamma_last) PetscCall(CSCholmodFactorKeepLast(s->A, s->L, s->gp, &s->c, &s->kept));
+  if (s->keep_last && s->gamma_trailing) PetscCall(CSCholmodFactorKeepLast(s->A, s->L, s->gp, &s->c, &s->kept));
   else cholmod_factorize(s->A, s->L, &s->c);
   PetscCall(CholCheck(&s->c, "factorisation"));
   s->nfact++;
@@ -654,7 +651,7 @@ static PetscErrorCode PCView_SubChol(PC pc, PetscViewer viewer)
   if (ascii) {
     PetscCall(PetscViewerASCIIPrintf(viewer, "  substructured CHOLMOD Cholesky: interior ordering %s, interface %" PetscInt_FMT " dofs (dense, redundant), on the %s side of each cut\n", OrderingNames[s->ordering], s->G, s->side ? "upper" : "lower"));
     PetscCall(PetscViewerASCIIPushSynchronized(viewer));
-    if (s->L) PetscCall(PetscViewerASCIISynchronizedPrintf(viewer, "    [local] %" PetscInt_FMT " dofs, %" PetscInt_FMT " on the interface, factor %.3g entries, %.3g flops; interface block %s (%" PetscInt_FMT " of %" PetscInt_FMT " factorisations)\n", s->m, s->gp, s->c.lnz, s->c.fl, s->kept ? "kept as assembled" : "factored", s->nkept, s->nfact));
+    if (s->L) PetscCall(PetscViewerASCIISynchronizedPrintf(viewer, "    [local] %" PetscInt_FMT " dofs, %" PetscInt_FMT " on the interface, factor %.3g entries, %.3g flops; interface block %s (%" PetscInt_FMT " of %" PetscInt_FMT " factorisations)\n", s->m, s->gp, s->lnz, s->fl, s->kept ? "kept as assembled" : "factored", s->nkept, s->nfact));
     PetscCall(PetscViewerFlush(viewer));
     PetscCall(PetscViewerASCIIPopSynchronized(viewer));
   }
