@@ -40,6 +40,7 @@ typedef struct {
   PetscInt  reuse_its;  /* keep the preconditioner while the last solve took <= this many its */
   PetscInt  last_its;   /* Krylov iterations of the last solve */
   PetscInt  setups;     /* preconditioner (factorisation) builds so far */
+  PetscInt  solves;     /* linear solves (right-hand sides) so far */
   PetscInt  max_it;     /* the KSP's own iteration limit */
   PetscBool reusing;    /* this step keeps an earlier preconditioner */
   PetscBool krylov;     /* the KSP iterates (not preonly): kept preconditioners and initial guesses allowed */

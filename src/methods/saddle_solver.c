@@ -289,6 +289,7 @@ static PetscErrorCode KSolve(CSSaddle *s, Vec b, Vec z, PetscInt *its)
   KSPConvergedReason reason;
   PetscInt           n;
   PetscFunctionBeginUser;
+  s->solves++;
   if (s->reusing) {
     PetscCall(KSPSetTolerances(s->ksp, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT, PetscMin(s->max_it, PetscMax(20, 2 * s->reuse_its))));
     PetscCall(KSPSolve(s->ksp, b, z));

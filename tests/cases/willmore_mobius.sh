@@ -15,10 +15,13 @@ grep -q "mesh resolution collapse .*-constraint_mobius" "$TMP/b.log" || { echo "
 if [ "$NP" = 1 ]; then
   timeout 180 $MPIEXEC "$CS_BIN" $S -flow_max_area_ratio 0 -summary "$TMP/c.json" > "$TMP/c.log" 2>&1 || { tail "$TMP/c.log"; exit 1; }
 else cp "$TMP/b.json" "$TMP/c.json"; fi
-# (d) a far-off volume target (v = 0.24) makes CGD diverge (|xi| grew 6x per step while the Lagrangian fell): the
-#     guard stops it once the total area has changed 200-fold, with stop_reason "diverged"
+# (d) a far-off volume target (v = 0.24): CGD cannot reach a critical point from the sphere. It used to diverge
+#     (|xi| grew 6x per step while the Lagrangian fell, until the guard saw the total area change 200-fold,
+#     "diverged"). Since the violation may no longer grow above -flow_vmax and a state above -flow_restore_above is
+#     projected back onto the constraints, the run reaches the volume at a crumpled state (W ~ 150) and crawls:
+#     it must end not converged, with a message (no false success)
 timeout 60 $MPIEXEC "$CS_BIN" -task flow -gen icosphere -gen_level 2 -constraint_area -constraint_volume 0.95 -flow_max_it 60 -summary "$TMP/d.json" > "$TMP/d.log" 2>&1 || { tail "$TMP/d.log"; exit 1; }
-grep -q "the flow diverges at iteration" "$TMP/d.log" || { echo "BAD: no divergence message"; tail -3 "$TMP/d.log"; exit 1; }
+grep -qE "flow cgd: NOT converged after" "$TMP/d.log" || { echo "BAD: no NOT converged line"; tail -3 "$TMP/d.log"; exit 1; }
 python3 - "$TMP" "$NP" <<'PY'
 import json, sys, math
 d, np = sys.argv[1], sys.argv[2]
@@ -32,7 +35,7 @@ checks = [
   ("(a) conformal_violation < 1e-10", a['conformal_violation'] < 1e-10, a['conformal_violation']),
   ("(a) W > 4 pi", a['energy'] > 4 * math.pi, a['energy']),
   ("(b) unbalanced: stopped by the guard", b['stop_reason'] == 'mesh_degenerate', b['stop_reason']),
-  ("(d) far-off volume: stopped as diverged", dv['stop_reason'] == 'diverged' and dv['converged'] in (False, 0, 'false'), (dv['stop_reason'], dv['iterations'])),
+  ("(d) far-off volume: stopped, not converged", dv['stop_reason'] in ('diverged', 'rejections', 'max_it', 'mesh_degenerate') and dv['converged'] in (False, 0, 'false'), (dv['stop_reason'], dv['iterations'])),
 ]
 if np == '1':
   checks.append(("(c) unbalanced, no guard: W ends below 4 pi (the artefact the balancing removes)", c['energy'] < 4 * math.pi, c['energy']))

@@ -18,7 +18,7 @@ timeout 120 $MPIEXEC "$CS_BIN" $S -flow_fieldsplit_1_pc_type cholesky -summary "
 grep -E "flow cgd: (NOT )?converged" "$TMP/a.log"
 check_close "$(python3 $P rigid "$TMP/a.obj" "$TMP/b.obj")" 0 1e-9 "cssubchol vs Cholesky of S: positions after 4 steps"
 check_close "$(json willmore "$TMP/a.json")" "$(json willmore "$TMP/b.json")" 1e-12 "W"
-solves=$(( $(json iterations "$TMP/a.json") + $(grep -c "step rejected" "$TMP/a.log" || true) ))
+solves=$(json linear_solves "$TMP/a.json") # the steps, rejected ones and second-order corrections included
 its=$(json ksp_iterations "$TMP/a.json")
 echo "FGMRES iterations $its for $solves linear solves"
 [ "$its" = "$solves" ] || { echo "BAD: an exact factorisation needs one FGMRES iteration per solve"; exit 1; }
