@@ -70,6 +70,7 @@ typedef struct {
   Vec                  *rows;
   PetscReal            *cx, *cxt, *nu, *dnu, *dnu2, *gw;
   PetscReal             t, tmu, tmax, grow, rtol, ctol, wmin, rho, vmax, vrestore, *nun;
+  PetscBool             restore_stalled, restore_failed;
   Vec                   mun;
   Vec                   area0, areat; /* barycentric vertex areas of the input and of the current state */
   PetscReal             area0_total;  /* total area of the input */
@@ -78,6 +79,7 @@ typedef struct {
   PetscBool             step_control;
   PetscReal             proj_tmu;
   PetscReal             tmu_grow, tmu_max; /* own schedule of the dual step (0: t_mu follows t) */
+  PetscReal             tmu_ratio_max;     /* following t: t_mu <= this * t (1e3 times the initial t_mu / t) */
 } Flow;
 
 /* ---------- options and setup ---------- */
@@ -151,6 +153,7 @@ static PetscErrorCode FlowSetUp(MPI_Comm comm, Flow *F, CSFlowKind kind, CSOutpu
   F->rho       = 0.0;
   F->vmax      = 1e-2;
   F->vrestore  = 0; /* off by default: see Restore */
+  F->restore_stalled = PETSC_TRUE;
   F->tmu_grow  = 0;
   F->tmu_max   = 0;
   F->max_area_ratio = 200;
@@ -166,6 +169,7 @@ static PetscErrorCode FlowSetUp(MPI_Comm comm, Flow *F, CSFlowKind kind, CSOutpu
   PetscCall(PetscOptionsReal("-flow_merit_rho", "Weight of the quadratic constraint penalty in the merit function, relative to |E(input)|", NULL, F->rho, &F->rho, NULL));
   PetscCall(PetscOptionsReal("-flow_vmax", "Step control: reject steps whose constraint violation exceeds max(v, this), v that of the current state", NULL, F->vmax, &F->vmax, NULL));
   PetscCall(PetscOptionsReal("-flow_restore_above", "CGD/GD: project an accepted state whose constraint violation exceeds this back onto the constraints (Gauss-Newton, as PGD's projection; 0: never)", NULL, F->vrestore, &F->vrestore, NULL));
+  PetscCall(PetscOptionsBool("-flow_restore_stalled", "CGD/GD: project an accepted state back onto the constraints when t has collapsed (t < 1e-3 t_max) with the violation above -flow_vmax / 10", NULL, F->restore_stalled, &F->restore_stalled, NULL));
   PetscCall(PetscOptionsReal("-flow_max_area_ratio", "Stop when max(A_i/A0_i)/min(A_i/A0_i) of the vertex areas, or the total area relative to the input, exceeds this (mesh resolution collapse, divergence; 0: off)", NULL, F->max_area_ratio, &F->max_area_ratio, NULL));
   PetscCheck(F->max_area_ratio == 0 || F->max_area_ratio > 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-flow_max_area_ratio %g: use 0 (off) or a ratio above 1", (double)F->max_area_ratio);
   PetscCall(PetscOptionsReal("-flow_rtol", "Stop when ||g + X^T mu||_2 is below this", NULL, F->rtol, &F->rtol, NULL));
@@ -336,11 +340,12 @@ static PetscErrorCode FlowSetUp(MPI_Comm comm, Flow *F, CSFlowKind kind, CSOutpu
     PetscCall(CSGeometryAreaVolume(m, F->x0, &A, &V));
     sc                    = A / (4 * PETSC_PI);
     F->metric.mass_weight = 1.0 / (sc * sc);
-    /* the ceiling of t_mu: with its own ramp 1e3 t_max; following t, none (each rejection raises t_mu / t
-       twofold for good, see the step control) */
+    /* the ceiling of t_mu: with its own ramp 1e3 t_max; following t, none but tmu_ratio_max (each rejection
+       raises t_mu / t twofold for good, up to 1e3 times its initial value, see the step control) */
     if (F->tmu_max <= 0) F->tmu_max = F->tmu_grow > 0 ? 1e3 * F->tmax : PETSC_MAX_REAL;
     F->tmu /= sc;
     if (F->tmu_max < PETSC_MAX_REAL) F->tmu_max /= sc;
+    F->tmu_ratio_max = 1e3 * F->tmu / F->t;
     /* merit weight relative to the size of the energy (a Willmore energy ~ 4pi and a fairing energy
        eps W differ by orders of magnitude) */
     PetscCall(CSEnergyValue(F->energy, F->x0, &E0));
@@ -646,14 +651,16 @@ static PetscErrorCode SecondOrderCorrection(Flow *F, Vec xt, PetscInt *kspits, P
   PetscFunctionReturn(0);
 }
 
-/* Restoration of an accepted CGD/GD state whose violation exceeds -flow_restore_above: PGD's Gauss-Newton
+/* Restoration of an accepted CGD/GD state that is stalled near the violation ceiling (-flow_restore_stalled, on:
+   t < 1e-3 t_max and a violation above -flow_vmax / 10; a torus of revolution R = 2, bump 0.2, sat at |c| = 1e-2
+   with t ~ 1e-14 for 300 iterations, and goes on with it) or whose violation exceeds -flow_restore_above: PGD's Gauss-Newton
    projection (Project) onto the constraint set, with its own operator (t = 1, t_mu = -pgd_t_mu), whose
    restoring strength does not shrink with t as the step's does (its Schur complement H/t + t_mu X^T I_Q^{-1} X
    restores by a Levenberg-Marquardt step of parameter 1/(t t_mu)). Without it a state that reached the
    ceiling -flow_vmax could not come back once t had been cut (the far-off volume target of
    tests/cases/willmore_mobius.sh). The multipliers are kept. If the projection fails the state is left as it
-   was and restorations are off for the rest of the run (cow_cgal: it fails from |c| = 9e-3). Off by default
-   (-flow_restore_above 0): on the inputs tried it helped nowhere (the cow's projection fails, the far-off volume
+   was and restorations are off for the rest of the run (cow_cgal: it fails from |c| = 9e-3). Restoring every
+   state above a threshold is off by default (-flow_restore_above 0): with 1e-3 it helped nowhere (the cow's projection fails, the far-off volume
    target is reached at a crumpled state and the run crawls), and on the area + volume test of
    tests/cases/willmore_constraints.sh one restoration at iteration 0 left the projection's factorisation in
    use as the kept preconditioner (8 FGMRES iterations per solve, under the refactorisation threshold) and the
@@ -668,16 +675,20 @@ static PetscErrorCode Restore(Flow *F, PetscInt it, PetscInt *kspits)
   PetscCall(EvalConstraints(F, F->x, F->ct, F->cxt, PETSC_FALSE));
   PetscCall(Violation(F, F->ct, F->cxt, &conf, &glob));
   v = PetscMax(conf, glob);
-  if (!(v > F->vrestore)) PetscFunctionReturn(0);
+  if (F->restore_failed) PetscFunctionReturn(0);
+  if (!((F->vrestore > 0 && v > F->vrestore) || (F->restore_stalled && F->t < 1e-3 * F->tmax && v > 0.1 * F->vmax))) PetscFunctionReturn(0);
   PetscCall(VecDuplicate(F->x, &keep));
   PetscCall(VecCopy(F->x, keep));
   PetscCall(Project(F, F->x, &ok, kspits));
+  F->saddle.wait = PetscMax(F->saddle.wait, 1); /* the next step factors its own operator: the projection's
+                                                   (t = 1, t_mu = -pgd_t_mu) preconditioned it in ~8 iterations,
+                                                   under the refactorisation threshold, for the rest of a run */
   if (!ok) {
     PetscCall(VecCopy(keep, F->x));
-    F->vrestore = 0; /* a failed projection costs -pgd_projection_max_it solves: not again in this run */
+    F->restore_failed = PETSC_TRUE; /* a failed projection costs -pgd_projection_max_it solves: not again in this run */
   }
   PetscCall(VecDestroy(&keep));
-  PetscCall(PetscPrintf(F->comm, "     restoration after iteration %" PetscInt_FMT ": violation %.3e above -flow_restore_above: %s\n", it, (double)v, ok ? "projected back onto the constraints" : "the projection failed; state kept, no more restorations in this run"));
+  PetscCall(PetscPrintf(F->comm, "     restoration after iteration %" PetscInt_FMT ": violation %.3e (t = %g): %s\n", it, (double)v, (double)F->t, ok ? "projected back onto the constraints" : "the projection failed; state kept, no more restorations in this run"));
   PetscFunctionReturn(0);
 }
 
@@ -945,12 +956,15 @@ PetscErrorCode CSWillmoreFlowRun(MPI_Comm comm, CSOutput *out, CSFlowKind kind)
          left a violated state unable to recover (knot1_cgal: |c| rose to 0.9, every t rejected). Since t_mu
          grows with t again after accepted steps, each rejection doubles t_mu / t for good: a step that had to
          be cut back weights the constraints more from then on (elephant_cgal: |c| 1e-2 and t -> 4e-16 with
-         t_mu / t capped at its initial value, 2.6e-10 without the cap; docs/real_meshes.md) */
+         t_mu / t capped at its initial value, 2.6e-10 without the cap; docs/real_meshes.md). The ratio stays
+         below tmu_ratio_max: without any bound, a run whose t stayed near 1e-35 doubled t_mu at every accepted
+         step and its multipliers blew up (el_residual 7.7e23: a torus of revolution R = 2, bump 0.2) */
+      if (kind != CS_FLOW_PGD && F.tmu_grow == 0) F.tmu = PetscMin(F.tmu, F.tmu_ratio_max * F.t);
     }
     if (stop) break;
     /* accept */
     PetscCall(VecCopy(F.xt, F.x));
-    if (kind != CS_FLOW_PGD && F.vrestore > 0) PetscCall(Restore(&F, it, &n.kspits));
+    if (kind != CS_FLOW_PGD && (F.conformal || F.k)) PetscCall(Restore(&F, it, &n.kspits));
     if (kind == CS_FLOW_PGD) {
       /* PGD's multipliers are those of the last linearised problem */
       if (F.conformal) PetscCall(VecCopy(F.dmu, F.mu));
@@ -967,7 +981,7 @@ PetscErrorCode CSWillmoreFlowRun(MPI_Comm comm, CSOutput *out, CSFlowKind kind)
       F.tmu = PetscMin(F.tmu * F.tmu_grow, F.tmu_max);
     } else if (F.t * F.grow <= F.tmax) {
       F.t *= F.grow;
-      if (kind != CS_FLOW_PGD) F.tmu = PetscMin(F.tmu * F.grow, F.tmu_max);
+      if (kind != CS_FLOW_PGD) F.tmu = PetscMin(PetscMin(F.tmu * F.grow, F.tmu_max), F.tmu_ratio_max * F.t);
     }
     PetscCall(FlowCheckpoint(&F, out, it + 1, PETSC_FALSE, &n, ck)); /* it + 1 accepted steps */
   }
