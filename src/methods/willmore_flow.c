@@ -573,6 +573,18 @@ static PetscErrorCode TrySolve(Flow *F, Vec rE, Vec rV, const PetscReal rX[], Ve
   PetscFunctionReturn(0);
 }
 
+/* One Gauss-Newton correction toward the constraints with the operator set last: the saddle system with
+   right-hand side [-c; 0; -xi] for the c, xi held in F->ct, F->cxt (both overwritten); the position part in zV. */
+static PetscErrorCode SolveCorrection(Flow *F, Vec zE, Vec zV, PetscInt *its, PetscBool *ok)
+{
+  PetscFunctionBeginUser;
+  if (F->conformal) PetscCall(VecScale(F->ct, -1.0));
+  for (PetscInt j = 0; j < F->k; j++) F->cxt[j] = -F->cxt[j];
+  PetscCall(VecSet(F->tmp, 0));
+  PetscCall(TrySolve(F, F->ct, F->tmp, F->cxt, zE, zV, F->dnu2, its, ok));
+  PetscFunctionReturn(0);
+}
+
 /* PGD projection onto the constraint set (soliman2021 Sec. 4.1: the explicit step leaves the nonlinear
    constraint manifold): Gauss-Newton steps, each the minimal-H^2-norm correction dx with X dx = -c,
    solved as the saddle system with t = 1 and a huge t_mu (the -I_Q/t_mu block only regularises the
@@ -600,10 +612,7 @@ static PetscErrorCode Project(Flow *F, Vec x, PetscBool *ok, PetscInt *kspits)
     PetscCall(CSMetricUpdate(&F->metric, x));
     PetscCall(QuadDiffMetric(F, x, NULL));
     PetscCall(SetOperators(F, 1.0, F->proj_tmu));
-    PetscCall(VecScale(F->ct, -1.0));
-    for (PetscInt j = 0; j < F->k; j++) F->cxt[j] = -F->cxt[j];
-    PetscCall(VecSet(F->tmp, 0));
-    PetscCall(TrySolve(F, F->ct, F->tmp, F->cxt, pmu, pdf, F->dnu2, &its, ok));
+    PetscCall(SolveCorrection(F, pmu, pdf, &its, ok));
     *kspits += its;
     if (!*ok) done = PETSC_TRUE;
     else PetscCall(VecAXPY(x, 1.0, pdf));
@@ -638,10 +647,7 @@ static PetscErrorCode SecondOrderCorrection(Flow *F, Vec xt, PetscInt *kspits, P
     PetscCall(EvalConstraints(F, xt, F->ct, F->cxt, PETSC_FALSE));
     PetscCall(Violation(F, F->ct, F->cxt, &conf, &glob));
     if (!(PetscMax(conf, glob) >= 0.1 * F->ctol)) break; /* feasible enough, or not a number (the filter rejects it) */
-    if (F->conformal) PetscCall(VecScale(F->ct, -1.0));
-    for (PetscInt j = 0; j < F->k; j++) F->cxt[j] = -F->cxt[j];
-    PetscCall(VecSet(F->tmp, 0));
-    PetscCall(TrySolve(F, F->ct, F->tmp, F->cxt, dmu2, df2, F->dnu2, &its, ok));
+    PetscCall(SolveCorrection(F, dmu2, df2, &its, ok));
     *kspits += its;
     if (!*ok) break;
     PetscCall(VecAXPY(xt, 1.0, df2));
