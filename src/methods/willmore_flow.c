@@ -657,38 +657,34 @@ static PetscErrorCode SecondOrderCorrection(Flow *F, Vec xt, PetscInt *kspits, P
   PetscFunctionReturn(0);
 }
 
-/* Restoration of an accepted CGD/GD state that is stalled near the violation ceiling (-flow_restore_stalled, on:
+/* Restoration of an accepted CGD/GD state by PGD's Gauss-Newton projection (Project) onto the constraint set,
+   with its own operator (t = 1, t_mu = -pgd_t_mu), whose restoring strength does not shrink with t as the
+   step's does (the step's Schur complement H/t + t_mu X^T I_Q^{-1} X restores by a Levenberg-Marquardt step of
+   parameter 1/(t t_mu)). Done when the state is stalled near the violation ceiling (-flow_restore_stalled, on:
    t < 1e-3 t_max and a violation above -flow_vmax / 10; a torus of revolution R = 2, bump 0.2, sat at |c| = 1e-2
-   with t ~ 1e-14 for 300 iterations, and goes on with it) or whose violation exceeds -flow_restore_above: PGD's Gauss-Newton
-   projection (Project) onto the constraint set, with its own operator (t = 1, t_mu = -pgd_t_mu), whose
-   restoring strength does not shrink with t as the step's does (its Schur complement H/t + t_mu X^T I_Q^{-1} X
-   restores by a Levenberg-Marquardt step of parameter 1/(t t_mu)). Without it a state that reached the
-   ceiling -flow_vmax could not come back once t had been cut (the far-off volume target of
-   tests/cases/willmore_mobius.sh). The multipliers are kept. If the projection fails the state is left as it
-   was and restorations are off for the rest of the run (cow_cgal: it fails from |c| = 9e-3). Restoring every
-   state above a threshold is off by default (-flow_restore_above 0): with 1e-3 it helped nowhere (the cow's projection fails, the far-off volume
-   target is reached at a crumpled state and the run crawls), and on the area + volume test of
-   tests/cases/willmore_constraints.sh one restoration at iteration 0 left the projection's factorisation in
-   use as the kept preconditioner (8 FGMRES iterations per solve, under the refactorisation threshold) and the
-   run then passed the saddle it converges to without (60 iterations: el 2.7e-4, 4151 KSP iterations against
-   converged in 49 with 2052). */
+   with t ~ 1e-14 for 300 iterations without it, and goes on with it), or, with -flow_restore_above V (off),
+   whenever the violation exceeds V. The multipliers are kept; the next step factors its own operator. If the
+   projection fails the state is left as it was and no restoration is tried again in the run (cow_cgal: it
+   fails from |c| = 9e-3). -flow_restore_above 1e-3 helped nowhere (measured, docs/real_meshes.md): on the area +
+   volume case of tests/cases/willmore_constraints.sh one restoration at iteration 0 sent the run past the
+   critical point it converges to without. */
 static PetscErrorCode Restore(Flow *F, PetscInt it, PetscInt *kspits)
 {
   PetscReal conf, glob, v;
-  PetscBool ok;
+  PetscBool ok, stalled;
   Vec       keep;
   PetscFunctionBeginUser;
+  stalled = (PetscBool)(F->restore_stalled && F->t < 1e-3 * F->tmax);
+  if (F->restore_failed || (!stalled && !(F->vrestore > 0))) PetscFunctionReturn(0);
   PetscCall(EvalConstraints(F, F->x, F->ct, F->cxt, PETSC_FALSE));
   PetscCall(Violation(F, F->ct, F->cxt, &conf, &glob));
   v = PetscMax(conf, glob);
-  if (F->restore_failed) PetscFunctionReturn(0);
-  if (!((F->vrestore > 0 && v > F->vrestore) || (F->restore_stalled && F->t < 1e-3 * F->tmax && v > 0.1 * F->vmax))) PetscFunctionReturn(0);
+  if (!((F->vrestore > 0 && v > F->vrestore) || (stalled && v > 0.1 * F->vmax))) PetscFunctionReturn(0);
   PetscCall(VecDuplicate(F->x, &keep));
   PetscCall(VecCopy(F->x, keep));
   PetscCall(Project(F, F->x, &ok, kspits));
-  F->saddle.wait = PetscMax(F->saddle.wait, 1); /* the next step factors its own operator: the projection's
-                                                   (t = 1, t_mu = -pgd_t_mu) preconditioned it in ~8 iterations,
-                                                   under the refactorisation threshold, for the rest of a run */
+  F->saddle.wait = PetscMax(F->saddle.wait, 1); /* else the projection's factorisation preconditions the steps
+                                                   in ~8 iterations, under the refactorisation threshold, for good */
   if (!ok) {
     PetscCall(VecCopy(keep, F->x));
     F->restore_failed = PETSC_TRUE; /* a failed projection costs -pgd_projection_max_it solves: not again in this run */
