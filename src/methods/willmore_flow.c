@@ -22,7 +22,8 @@
                      max(v(f), -flow_vmax): above the ceiling -flow_vmax the violation never grows (it used to
                      be allowed 10x per step, and on knot1_cgal it grew 1.7x per accepted step to 0.9).
              Before the test the trial point gets up to -flow_soc_max_it second-order corrections
-             (SecondOrderCorrection), and a rejection halves t but not t_mu (see there).
+             (SecondOrderCorrection), and a rejection halves t but not t_mu (see there); an accepted state
+             stalled near the ceiling is projected back onto the constraints (Restore).
    Why not a single merit: along the CGD direction dL = -<H df, df>/t < 0 (first row of the system), but
    the change of v depends on t and t_mu: with an l1 or quadratic penalty of v the penalty's first-order
    term rho <c, X df> is O(t) of either sign once c != 0, and we saw every t rejected (torus of revolution,
@@ -169,6 +170,7 @@ static PetscErrorCode FlowSetUp(MPI_Comm comm, Flow *F, CSFlowKind kind, CSOutpu
   PetscCall(PetscOptionsReal("-flow_merit_rho", "Weight of the quadratic constraint penalty in the merit function, relative to |E(input)|", NULL, F->rho, &F->rho, NULL));
   PetscCall(PetscOptionsReal("-flow_vmax", "Step control: reject steps whose constraint violation exceeds max(v, this), v that of the current state", NULL, F->vmax, &F->vmax, NULL));
   PetscCall(PetscOptionsReal("-flow_restore_above", "CGD/GD: project an accepted state whose constraint violation exceeds this back onto the constraints (Gauss-Newton, as PGD's projection; 0: never)", NULL, F->vrestore, &F->vrestore, NULL));
+  PetscCheck(F->vrestore >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-flow_restore_above %g: use 0 (off) or a positive violation", (double)F->vrestore);
   PetscCall(PetscOptionsBool("-flow_restore_stalled", "CGD/GD: project an accepted state back onto the constraints when t has collapsed (t < 1e-3 t_max) with the violation above -flow_vmax / 10", NULL, F->restore_stalled, &F->restore_stalled, NULL));
   PetscCall(PetscOptionsReal("-flow_max_area_ratio", "Stop when max(A_i/A0_i)/min(A_i/A0_i) of the vertex areas, or the total area relative to the input, exceeds this (mesh resolution collapse, divergence; 0: off)", NULL, F->max_area_ratio, &F->max_area_ratio, NULL));
   PetscCheck(F->max_area_ratio == 0 || F->max_area_ratio > 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-flow_max_area_ratio %g: use 0 (off) or a ratio above 1", (double)F->max_area_ratio);
@@ -191,6 +193,7 @@ static PetscErrorCode FlowSetUp(MPI_Comm comm, Flow *F, CSFlowKind kind, CSOutpu
   PetscCall(PetscOptionsRealArray("-flow_init_stretch", "Test input: stretch factors sx,sy,sz applied after the bump", NULL, stretch, &nstretch, &stretch_set));
   PetscCall(PetscOptionsReal("-pgd_t_mu", "PGD: regularising dual step of the (singular) PGD system and of the projection", NULL, F->proj_tmu, &F->proj_tmu, NULL));
   PetscCall(PetscOptionsInt("-flow_soc_max_it", "CGD/GD: second-order corrections of each trial step toward the constraints (0: none)", NULL, F->soc_max_it, &F->soc_max_it, NULL));
+  PetscCheck(F->soc_max_it >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-flow_soc_max_it %" PetscInt_FMT ": use 0 (no corrections) or a positive count", F->soc_max_it);
   PetscCall(PetscOptionsInt("-pgd_projection_max_it", "PGD: Gauss-Newton iterations of the projection onto the constraint set", NULL, F->proj_max_it, &F->proj_max_it, NULL));
   PetscOptionsEnd();
   if (F->tmu <= 0) F->tmu = 1e3 * F->t;
@@ -1005,8 +1008,8 @@ PetscErrorCode CSWillmoreFlowRun(MPI_Comm comm, CSOutput *out, CSFlowKind kind)
   PetscCall(CSJSONAddReal(out->json, "el_residual", el));
   PetscCall(CSJSONAddInt(out->json, "rejections", n.rejections));
   PetscCall(CSJSONAddInt(out->json, "ksp_iterations", n.kspits_total));
-  PetscCall(CSJSONAddInt(out->json, "pc_setups", F.saddle.setups));
-  PetscCall(CSJSONAddInt(out->json, "linear_solves", F.saddle.solves)); /* steps, second-order corrections, projections, bordering */ /* preconditioner builds (factorisations) */
+  PetscCall(CSJSONAddInt(out->json, "pc_setups", F.saddle.setups)); /* preconditioner builds (factorisations) */
+  PetscCall(CSJSONAddInt(out->json, "linear_solves", F.saddle.solves)); /* steps, second-order corrections, projections, bordering */
   PetscCall(CSJSONAddReal(out->json, "t_final", F.t));
   PetscCall(CSJSONAddReal(out->json, "seconds_per_iteration", it ? (tnow - n.t0) / it : 0));
   if (F.k) PetscCall(CSJSONAddRealArray(out->json, "constraint_values", F.k, F.cx));

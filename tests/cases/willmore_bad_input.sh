@@ -19,4 +19,6 @@ EXPECT="-flow_boundary normals.*conformal" expect_fail F -gen cylinder -flow_bou
 EXPECT="-flow_boundary.*unknown" expect_fail F -gen cylinder -flow_boundary neumann
 EXPECT="-flow_max_area_ratio 0.5" expect_fail F -gen icosphere -gen_level 1 -flow_max_area_ratio 0.5
 EXPECT="-flow_pc_reuse_its -1" expect_fail F -gen icosphere -gen_level 1 -flow_pc_reuse_its -1
+EXPECT="-flow_soc_max_it -1" expect_fail F -gen icosphere -gen_level 1 -flow_soc_max_it -1
+EXPECT="-flow_restore_above -0.5" expect_fail F -gen icosphere -gen_level 1 -flow_restore_above -0.5
 EXPECT="-constraint_mobius.*-flow_conformal" expect_fail F -gen icosphere -gen_level 1 -flow_type gd -constraint_mobius
