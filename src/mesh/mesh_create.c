@@ -1,6 +1,6 @@
 /* From validated serial data on rank 0 to a distributed, interpolated DMPlex with its dof layouts and the
    local connectivity tables the kernels loop over. */
-#include "cs_mesh.h"
+#include "cs_mesh_adjacency.h"
 #include "cs_util.h"
 
 PetscLogEvent CS_EVENT_MeshRead, CS_EVENT_MeshDistribute, CS_EVENT_Geometry, CS_EVENT_Energy, CS_EVENT_Gradient, CS_EVENT_Assemble;
@@ -371,6 +371,7 @@ PetscErrorCode CSMeshDestroy(CSMesh *mesh)
   CSMesh m = *mesh;
   PetscFunctionBeginUser;
   if (!m) PetscFunctionReturn(0);
+  PetscCall(CSMeshAdjacencyDestroy(&m->adj));
   PetscCall(VecDestroy(&m->x));
   PetscCall(VecScatterDestroy(&m->natV3));
   PetscCall(VecScatterDestroy(&m->natV1));
