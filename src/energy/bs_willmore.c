@@ -371,16 +371,14 @@ static PetscErrorCode BSEvaluate(CSEnergy en, Vec x, PetscReal *Wout, Vec Wv, Ve
      Both are limits of the diamond formula with one vertex sent to infinity (cos beta -> <D,A> resp. <C,D>).
      Each appears at two vertices of the closed surface (for beta_3: v_b and infinity), hence weight 2. */
   if (c->freebd) {
-    for (PetscInt f = 0; f < m->nf; f++)
+    CSFaceIter F = CS_FACE_ITER_INIT;
+    while (CSMeshFaceNext(m, NULL, &F))
       for (int k = 0; k < 3; k++) {
-        PetscInt         e = m->faceEdge[3 * f + k], vk, i, j;
+        PetscInt         vk = F.v[k], i = F.v[(k + 1) % 3], j = F.v[(k + 2) % 3];
         const PetscReal *P[3];
         PetscReal        th, M[3][3];
         PetscBool        active;
-        if (!m->edgeBoundary[e]) continue;
-        vk   = m->faceVert[3 * f + k];
-        i    = m->faceVert[3 * f + (k + 1) % 3];
-        j    = m->faceVert[3 * f + (k + 2) % 3];
+        if (!m->edgeBoundary[F.e[k]]) continue;
         /* beta_2 of edge i -> j (the boundary edge is local on this rank only, and owned here) */
         P[0] = p + 3 * vk;
         P[1] = p + 3 * i;

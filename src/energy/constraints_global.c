@@ -294,14 +294,12 @@ PetscErrorCode CSConstraintCreateMobiusBalance(CSMesh mesh, Vec x0, CSGlobalCons
   PetscReal        s[4] = {0, 0, 0, 0}, t[4], c0[3], scale;
   PetscFunctionBeginUser;
   PetscCall(CSMeshGetLocalPositions(mesh, x0, &xl, &p));
-  for (PetscInt f = 0; f < mesh->nf; f++) {
-    const PetscInt  *v    = mesh->faceVert + 3 * f;
-    const PetscReal *q[3] = {p + 3 * v[0], p + 3 * v[1], p + 3 * v[2]};
-    PetscReal        an[3], A;
-    CSTriangleAreaVector(q, an);
+  for (CSFaceIter F = CS_FACE_ITER_INIT; CSMeshFaceNext(mesh, p, &F);) {
+    PetscReal an[3], A;
+    CSTriangleAreaVector(F.c, an);
     A = CSVecNorm(an);
     s[3] += A;
-    for (int d = 0; d < 3; d++) s[d] += A * (q[0][d] + q[1][d] + q[2][d]) / 3;
+    for (int d = 0; d < 3; d++) s[d] += A * (F.c[0][d] + F.c[1][d] + F.c[2][d]) / 3;
   }
   PetscCall(MPIU_Allreduce(s, t, 4, MPIU_REAL, MPIU_SUM, mesh->comm));
   PetscCheck(t[3] > 0, mesh->comm, PETSC_ERR_ARG_WRONG, "-constraint_mobius: the input mesh %s has zero area", mesh->name);
