@@ -239,51 +239,23 @@ static PetscErrorCode BSSetUp(CSEnergy en)
 }
 
 /* ---------------------------------------------------------------- evaluation */
-/* One pass: W (always), per-vertex W_i (Wv, dmV1 global, may be NULL), gradient (g, dmV3 global, may be
-   NULL), K (may be NULL, already zeroed and preallocated; assembled here with fixdiag on fixed rows). */
-static PetscErrorCode BSEvaluate(CSEnergy en, Vec x, PetscReal *Wout, Vec Wv, Vec g, Mat K, PetscReal fixdiag)
-{
-  BSCtx             *c = (BSCtx *)en->ctx;
-  CSMesh             m = en->mesh;
-  Vec                xl;
-  CSLocalSum         es, vs = {NULL, NULL, NULL}, gs = {NULL, NULL, NULL}, ws;
-  const PetscReal   *p;
-  PetscScalar       *ea, *va = NULL, *ga = NULL, *wa;
-  PetscReal          Winf = 0, Wloc = 0, Wsum;
-  PetscFunctionBeginUser;
-  PetscCall(CSMeshGetLocalPositions(m, x, &xl, &p));
-  /* diamonds: opposite positions per edge side, written by the rank of that side's face */
-  PetscCall(CSLocalSumBegin(c->dmE6, &es));
-  for (PetscInt k = 0; k < 2 * m->ne; k++)
-    if (c->adj->edgeFace[k] >= 0)
-      for (int d = 0; d < 3; d++) es.a[3 * k + d] = p[3 * c->adj->edgeOpp[k] + d];
-  PetscCall(CSLocalSumShare(&es));
-  ea = es.a;
-  if (c->freebd) { /* boundary neighbours' positions, written by the rank of the boundary edge's face */
-    CSFaceIter F = CS_FACE_ITER_INIT;
-    PetscCall(CSLocalSumBegin(c->dmV6, &vs));
-    while (CSMeshFaceNext(m, NULL, &F))
-      for (int k = 0; k < 3; k++) {
-        PetscInt i = F.v[(k + 1) % 3], j = F.v[(k + 2) % 3];
-        if (!m->edgeBoundary[F.e[k]]) continue;
-        for (int d = 0; d < 3; d++) {
-          vs.a[6 * i + 3 + d] = p[3 * j + d];
-          vs.a[6 * j + d]     = p[3 * i + d];
-        }
-      }
-    PetscCall(CSLocalSumShare(&vs));
-    va = vs.a;
-  }
-  if (g) {
-    PetscCall(CSLocalSumBegin(m->dmV3, &gs));
-    ga = gs.a;
-  }
-  /* W is summed as sum_i W_i (each W_i = sum beta - 2 pi is small near a minimum), not as 2 sum_e beta - 2 pi V,
-     whose cancellation loses ~1e-11 on a few thousand vertices */
-  PetscCall(CSLocalSumBegin(m->dmV1, &ws));
-  wa = ws.a;
+/* Per-evaluation arrays: local positions, the far diamond vertices per edge side (dmE6) and the boundary
+   neighbours (dmV6, FREE), the local gradient (NULL: not wanted) and W_i; K may be NULL. */
+typedef struct {
+  const PetscReal *p;
+  PetscScalar     *ea, *va, *ga, *wa;
+  Mat              K;
+  PetscReal        Winf; /* W of the vertices at infinity (FREE), this rank's part */
+} BSEval;
 
-  /* interior edges: beta_1 (Sec. 3.1), edge owner adds value and rows i, j */
+/* Interior edges: beta_1 of Sec. 3.1; the edge owner adds the value and the rows of i and j (and of k and l
+   when both faces are here); otherwise the rows of k and l wait in gkl/Mkl for BSOppositeRows. */
+static PetscErrorCode BSInteriorEdges(BSCtx *c, CSMesh m, BSEval *E)
+{
+  const PetscReal *p = E->p;
+  PetscScalar     *ea = E->ea, *ga = E->ga, *wa = E->wa;
+  Mat              K = E->K;
+  PetscFunctionBeginUser;
   for (PetscInt e = 0; e < m->ne; e++) {
     PetscInt         i = m->edgeVert[2 * e], j = m->edgeVert[2 * e + 1];
     const PetscReal *P[4];
@@ -347,113 +319,188 @@ static PetscErrorCode BSEvaluate(CSEnergy en, Vec x, PetscReal *Wout, Vec Wv, Ve
       }
     }
   }
-  /* rows of the opposite vertices: added by the rank of the face they belong to */
-  if (ga || K) {
-    CSFaceIter F = CS_FACE_ITER_INIT;
-    while (CSMeshFaceNext(m, NULL, &F))
-      for (int k = 0; k < 3; k++) {
-        PetscInt e = F.e[k], o = F.v[k];
-        int      s = CSMeshEdgeSide(m, &F, k);
-        if (m->edgeBoundary[e] || c->both[e] || c->fixed[o] || c->wEdge[e] == 0) continue;
-        if (ga && c->act[e])
-          for (int d = 0; d < 3; d++) ga[3 * o + d] += c->gkl[6 * e + 3 * s + d];
-        if (K) {
-          PetscInt    cols[4] = {c->adj->edgeOppGlobal[2 * e + 1], c->gid[m->edgeVert[2 * e + 1]], c->adj->edgeOppGlobal[2 * e], c->gid[m->edgeVert[2 * e]]};
-          PetscScalar vals[4];
-          for (int q = 0; q < 4; q++) vals[q] = c->Mkl[8 * e + 4 * s + q];
-          PetscCall(MatSetValues(K, 1, &c->gid[o], 4, cols, vals, ADD_VALUES));
-        }
+  PetscFunctionReturn(0);
+}
+
+/* The rows of the opposite vertices k, l of diamonds split over two ranks: added by the rank of their face. */
+static PetscErrorCode BSOppositeRows(BSCtx *c, CSMesh m, BSEval *E)
+{
+  PetscScalar     *ga = E->ga;
+  Mat              K = E->K;
+  PetscFunctionBeginUser;
+  CSFaceIter F = CS_FACE_ITER_INIT;
+  while (CSMeshFaceNext(m, NULL, &F))
+    for (int k = 0; k < 3; k++) {
+      PetscInt e = F.e[k], o = F.v[k];
+      int      s = CSMeshEdgeSide(m, &F, k);
+      if (m->edgeBoundary[e] || c->both[e] || c->fixed[o] || c->wEdge[e] == 0) continue;
+      if (ga && c->act[e])
+        for (int d = 0; d < 3; d++) ga[3 * o + d] += c->gkl[6 * e + 3 * s + d];
+      if (K) {
+        PetscInt    cols[4] = {c->adj->edgeOppGlobal[2 * e + 1], c->gid[m->edgeVert[2 * e + 1]], c->adj->edgeOppGlobal[2 * e], c->gid[m->edgeVert[2 * e]]};
+        PetscScalar vals[4];
+        for (int q = 0; q < 4; q++) vals[q] = c->Mkl[8 * e + 4 * s + q];
+        PetscCall(MatSetValues(K, 1, &c->gid[o], 4, cols, vals, ADD_VALUES));
       }
-  }
+    }
+  PetscFunctionReturn(0);
+}
 
   /* free boundary (Sec. 3.3): beta_2 = pi - (angle opposite the boundary edge), beta_3 = pi - (angle of the
      boundary polygon at v_b) = the intersection angle of the two boundary lines through v_b and infinity.
      Both are limits of the diamond formula with one vertex sent to infinity (cos beta -> <D,A> resp. <C,D>).
-     Each appears at two vertices of the closed surface (for beta_3: v_b and infinity), hence weight 2. */
-  if (c->freebd) {
-    CSFaceIter F = CS_FACE_ITER_INIT;
-    while (CSMeshFaceNext(m, NULL, &F))
-      for (int k = 0; k < 3; k++) {
-        PetscInt         vk = F.v[k], i = F.v[(k + 1) % 3], j = F.v[(k + 2) % 3];
-        const PetscReal *P[3];
-        PetscReal        th, M[3][3];
-        PetscBool        active;
-        if (!m->edgeBoundary[F.e[k]]) continue;
-        /* beta_2 of edge i -> j (the boundary edge is local on this rank only, and owned here) */
-        P[0] = p + 3 * vk;
-        P[1] = p + 3 * i;
-        P[2] = p + 3 * j;
-        BSAngle(P, c->eps, &th, M, &active);
-        wa[i] += PETSC_PI - th;
-        wa[j] += PETSC_PI - th;
-        {
-          PetscInt idx[3] = {vk, i, j};
-          if (ga && active)
-            for (int r = 0; r < 3; r++)
-              for (int d = 0; d < 3; d++)
-                for (int q = 0; q < 3; q++) ga[3 * idx[r] + d] -= 2 * M[r][q] * P[q][d];
-          if (K) {
-            PetscInt    cols[3] = {c->gid[vk], c->gid[i], c->gid[j]};
-            PetscScalar vals[9];
-            for (int r = 0; r < 3; r++)
-              for (int q = 0; q < 3; q++) vals[3 * r + q] = -2 * M[r][q];
-            PetscCall(MatSetValues(K, 3, cols, 3, cols, vals, ADD_VALUES));
-          }
-        }
-        /* beta_3 at i (prev(i), i, j): this rank adds the row of j; at j (i, j, next(j)): the row of i */
-        for (int t = 0; t < 2; t++) {
-          PetscInt         b = t ? j : i, other = t ? i : j;
-          PetscInt         cols[3];
-          const PetscReal *Q[3];
-          PetscScalar      vals[3];
-          int              ro = 0;
-          Q[0]    = p + 3 * b;
-          cols[0] = c->gid[b];
-          if (!t) { /* b = i: prev(i) (slot 0), next = j */
-            Q[1]    = va + 6 * i;
-            cols[1] = c->adj->bdPrevGlobal[i];
-            Q[2]    = p + 3 * j;
-            cols[2] = c->gid[j];
-            ro      = 2;
-          } else { /* b = j: prev = i, next(j) (slot 1) */
-            Q[1]    = p + 3 * i;
-            cols[1] = c->gid[i];
-            Q[2]    = va + 6 * j + 3;
-            cols[2] = c->adj->bdNextGlobal[j];
-            ro      = 1;
-          }
-          BSAngle(Q, c->eps, &th, M, &active);
-          if (ga && active)
-            for (int d = 0; d < 3; d++)
-              for (int q = 0; q < 3; q++) ga[3 * other + d] -= 2 * M[ro][q] * Q[q][d];
-          if (K) {
-            for (int q = 0; q < 3; q++) vals[q] = -2 * M[ro][q];
-            PetscCall(MatSetValues(K, 1, &cols[ro], 3, cols, vals, ADD_VALUES));
-          }
-        }
-      }
-    /* beta_3 value and the row of v_b itself: the owner of v_b */
-    for (PetscInt b = 0; b < m->nv; b++) {
-      const PetscReal *Q[3];
+     Each appears at two vertices of the closed surface (for beta_3: v_b and infinity), hence weight 2.
+   This rank adds beta_2 of the boundary edges of its faces and the rows of beta_3 at their ends. */
+static PetscErrorCode BSFreeBoundaryFaces(BSCtx *c, CSMesh m, BSEval *E)
+{
+  const PetscReal *p = E->p;
+  PetscScalar     *va = E->va, *ga = E->ga, *wa = E->wa;
+  Mat              K = E->K;
+  PetscFunctionBeginUser;
+  CSFaceIter F = CS_FACE_ITER_INIT;
+  while (CSMeshFaceNext(m, NULL, &F))
+    for (int k = 0; k < 3; k++) {
+      PetscInt         vk = F.v[k], i = F.v[(k + 1) % 3], j = F.v[(k + 2) % 3];
+      const PetscReal *P[3];
       PetscReal        th, M[3][3];
       PetscBool        active;
-      if (!m->vertBoundary[b] || !m->vertOwned[b]) continue;
-      Q[0] = p + 3 * b;
-      Q[1] = va + 6 * b;
-      Q[2] = va + 6 * b + 3;
-      BSAngle(Q, c->eps, &th, M, &active);
-      wa[b] += PETSC_PI - th;
-      Winf += PETSC_PI - th; /* W of the vertex at infinity: sum of its beta_3 - 2 pi per loop */
-      if (ga && active)
-        for (int d = 0; d < 3; d++)
-          for (int q = 0; q < 3; q++) ga[3 * b + d] -= 2 * M[0][q] * Q[q][d];
-      if (K) {
-        PetscInt    cols[3] = {c->gid[b], c->adj->bdPrevGlobal[b], c->adj->bdNextGlobal[b]};
-        PetscScalar vals[3];
-        for (int q = 0; q < 3; q++) vals[q] = -2 * M[0][q];
-        PetscCall(MatSetValues(K, 1, &cols[0], 3, cols, vals, ADD_VALUES));
+      if (!m->edgeBoundary[F.e[k]]) continue;
+      /* beta_2 of edge i -> j (the boundary edge is local on this rank only, and owned here) */
+      P[0] = p + 3 * vk;
+      P[1] = p + 3 * i;
+      P[2] = p + 3 * j;
+      BSAngle(P, c->eps, &th, M, &active);
+      wa[i] += PETSC_PI - th;
+      wa[j] += PETSC_PI - th;
+      {
+        PetscInt idx[3] = {vk, i, j};
+        if (ga && active)
+          for (int r = 0; r < 3; r++)
+            for (int d = 0; d < 3; d++)
+              for (int q = 0; q < 3; q++) ga[3 * idx[r] + d] -= 2 * M[r][q] * P[q][d];
+        if (K) {
+          PetscInt    cols[3] = {c->gid[vk], c->gid[i], c->gid[j]};
+          PetscScalar vals[9];
+          for (int r = 0; r < 3; r++)
+            for (int q = 0; q < 3; q++) vals[3 * r + q] = -2 * M[r][q];
+          PetscCall(MatSetValues(K, 3, cols, 3, cols, vals, ADD_VALUES));
+        }
+      }
+      /* beta_3 at i (prev(i), i, j): this rank adds the row of j; at j (i, j, next(j)): the row of i */
+      for (int t = 0; t < 2; t++) {
+        PetscInt         b = t ? j : i, other = t ? i : j;
+        PetscInt         cols[3];
+        const PetscReal *Q[3];
+        PetscScalar      vals[3];
+        int              ro = 0;
+        Q[0]    = p + 3 * b;
+        cols[0] = c->gid[b];
+        if (!t) { /* b = i: prev(i) (slot 0), next = j */
+          Q[1]    = va + 6 * i;
+          cols[1] = c->adj->bdPrevGlobal[i];
+          Q[2]    = p + 3 * j;
+          cols[2] = c->gid[j];
+          ro      = 2;
+        } else { /* b = j: prev = i, next(j) (slot 1) */
+          Q[1]    = p + 3 * i;
+          cols[1] = c->gid[i];
+          Q[2]    = va + 6 * j + 3;
+          cols[2] = c->adj->bdNextGlobal[j];
+          ro      = 1;
+        }
+        BSAngle(Q, c->eps, &th, M, &active);
+        if (ga && active)
+          for (int d = 0; d < 3; d++)
+            for (int q = 0; q < 3; q++) ga[3 * other + d] -= 2 * M[ro][q] * Q[q][d];
+        if (K) {
+          for (int q = 0; q < 3; q++) vals[q] = -2 * M[ro][q];
+          PetscCall(MatSetValues(K, 1, &cols[ro], 3, cols, vals, ADD_VALUES));
+        }
       }
     }
+  PetscFunctionReturn(0);
+}
+
+/* beta_3 value and the row of v_b itself: the owner of v_b. */
+static PetscErrorCode BSFreeBoundaryVertices(BSCtx *c, CSMesh m, BSEval *E)
+{
+  const PetscReal *p = E->p;
+  PetscScalar     *va = E->va, *ga = E->ga, *wa = E->wa;
+  Mat              K = E->K;
+  PetscFunctionBeginUser;
+  for (PetscInt b = 0; b < m->nv; b++) {
+    const PetscReal *Q[3];
+    PetscReal        th, M[3][3];
+    PetscBool        active;
+    if (!m->vertBoundary[b] || !m->vertOwned[b]) continue;
+    Q[0] = p + 3 * b;
+    Q[1] = va + 6 * b;
+    Q[2] = va + 6 * b + 3;
+    BSAngle(Q, c->eps, &th, M, &active);
+    wa[b] += PETSC_PI - th;
+    E->Winf += PETSC_PI - th; /* W of the vertex at infinity: sum of its beta_3 - 2 pi per loop */
+    if (ga && active)
+      for (int d = 0; d < 3; d++)
+        for (int q = 0; q < 3; q++) ga[3 * b + d] -= 2 * M[0][q] * Q[q][d];
+    if (K) {
+      PetscInt    cols[3] = {c->gid[b], c->adj->bdPrevGlobal[b], c->adj->bdNextGlobal[b]};
+      PetscScalar vals[3];
+      for (int q = 0; q < 3; q++) vals[q] = -2 * M[0][q];
+      PetscCall(MatSetValues(K, 1, &cols[0], 3, cols, vals, ADD_VALUES));
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
+/* One pass: W (always), per-vertex W_i (Wv, dmV1 global, may be NULL), gradient (g, dmV3 global, may be
+   NULL), K (may be NULL, already zeroed and preallocated; assembled here with fixdiag on fixed rows). */
+static PetscErrorCode BSEvaluate(CSEnergy en, Vec x, PetscReal *Wout, Vec Wv, Vec g, Mat K, PetscReal fixdiag)
+{
+  BSCtx             *c = (BSCtx *)en->ctx;
+  CSMesh             m = en->mesh;
+  Vec                xl;
+  CSLocalSum         es, vs = {NULL, NULL, NULL}, gs = {NULL, NULL, NULL}, ws;
+  const PetscReal   *p;
+  BSEval             E = {NULL, NULL, NULL, NULL, NULL, K, 0};
+  PetscReal          Wloc = 0, Wsum;
+  PetscFunctionBeginUser;
+  PetscCall(CSMeshGetLocalPositions(m, x, &xl, &p));
+  /* diamonds: opposite positions per edge side, written by the rank of that side's face */
+  PetscCall(CSLocalSumBegin(c->dmE6, &es));
+  for (PetscInt k = 0; k < 2 * m->ne; k++)
+    if (c->adj->edgeFace[k] >= 0)
+      for (int d = 0; d < 3; d++) es.a[3 * k + d] = p[3 * c->adj->edgeOpp[k] + d];
+  PetscCall(CSLocalSumShare(&es));
+  E.ea = es.a;
+  if (c->freebd) { /* boundary neighbours' positions, written by the rank of the boundary edge's face */
+    CSFaceIter F = CS_FACE_ITER_INIT;
+    PetscCall(CSLocalSumBegin(c->dmV6, &vs));
+    while (CSMeshFaceNext(m, NULL, &F))
+      for (int k = 0; k < 3; k++) {
+        PetscInt i = F.v[(k + 1) % 3], j = F.v[(k + 2) % 3];
+        if (!m->edgeBoundary[F.e[k]]) continue;
+        for (int d = 0; d < 3; d++) {
+          vs.a[6 * i + 3 + d] = p[3 * j + d];
+          vs.a[6 * j + d]     = p[3 * i + d];
+        }
+      }
+    PetscCall(CSLocalSumShare(&vs));
+    E.va = vs.a;
+  }
+  if (g) {
+    PetscCall(CSLocalSumBegin(m->dmV3, &gs));
+    E.ga = gs.a;
+  }
+  /* W is summed as sum_i W_i (each W_i = sum beta - 2 pi is small near a minimum), not as 2 sum_e beta - 2 pi V,
+     whose cancellation loses ~1e-11 on a few thousand vertices */
+  PetscCall(CSLocalSumBegin(m->dmV1, &ws));
+  E.wa = ws.a;
+  E.p  = p;
+  PetscCall(BSInteriorEdges(c, m, &E));
+  if (E.ga || K) PetscCall(BSOppositeRows(c, m, &E));
+  if (c->freebd) {
+    PetscCall(BSFreeBoundaryFaces(c, m, &E));
+    PetscCall(BSFreeBoundaryVertices(c, m, &E));
     PetscCall(CSLocalSumEnd(&vs, NULL));
   }
   PetscCall(CSLocalSumEnd(&es, NULL));
@@ -474,7 +521,7 @@ static PetscErrorCode BSEvaluate(CSEnergy en, Vec x, PetscReal *Wout, Vec Wv, Ve
       n++;
     }
     PetscCall(VecRestoreArray(Wg, &w));
-    Wloc += Winf;
+    Wloc += E.Winf;
     PetscCall(MPIU_Allreduce(&Wloc, &Wsum, 1, MPIU_REAL, MPIU_SUM, m->comm));
     if (Wout) *Wout = Wsum - (c->freebd ? 2 * PETSC_PI * (PetscReal)m->topo.boundary_loops : 0);
   }
