@@ -38,6 +38,39 @@ static inline void CSTriangleAreaVector(const PetscReal *const p[3], PetscReal a
   an[2] *= 0.5;
 }
 
+/* Unit normal N = A N / A of the triangle; returns its area A. */
+static inline PetscReal CSTriangleNormal(const PetscReal *const p[3], PetscReal N[3])
+{
+  PetscReal an[3], A;
+  CSTriangleAreaVector(p, an);
+  A = CSVecNorm(an);
+  for (int d = 0; d < 3; d++) N[d] = an[d] / A;
+  return A;
+}
+
+/* The triangle's right-handed orthonormal frame, rows F = (t1, t2, n): t1 along p1 - p0, n the unit normal,
+   t2 = n x t1; and its corners in that frame's plane with p0 at the origin: p1 = (s0, s1) = (|p1 - p0|, 0),
+   p2 = (s2, s3). The planar coordinates are what a map between two triangles is measured in (crane2011
+   Secs. 6.1 and 7.2). */
+static inline void CSTriangleFrame(const PetscReal *const p[3], PetscReal F[9], PetscReal s[4])
+{
+  PetscReal e1[3], e2[3], n[3], l1, ln;
+  CSVecSub(p[1], p[0], e1);
+  CSVecSub(p[2], p[0], e2);
+  CSVecCross(e1, e2, n);
+  l1 = CSVecNorm(e1);
+  ln = CSVecNorm(n);
+  for (int d = 0; d < 3; d++) {
+    F[d]     = e1[d] / l1;
+    F[6 + d] = n[d] / ln;
+  }
+  CSVecCross(F + 6, F, F + 3);
+  s[0] = l1;
+  s[1] = 0;
+  s[2] = CSVecDot(e2, F);
+  s[3] = CSVecDot(e2, F + 3);
+}
+
 /* cot of the interior angle at each corner: cot = (u.v)/|u x v| with u, v the two edges leaving the corner. */
 static inline void CSTriangleCotans(const PetscReal *const p[3], PetscReal cot[3])
 {
@@ -95,6 +128,13 @@ PETSC_EXTERN PetscErrorCode CSGeometryCotanWeights(CSMesh mesh, Vec x, Vec w);
 PETSC_EXTERN PetscErrorCode CSGeometryEdgeLengths(CSMesh mesh, Vec x, Vec l);
 /* Face areas (dmF1) and unit normals (3 per face, local array of length 3*nf owned by the caller). */
 PETSC_EXTERN PetscErrorCode CSGeometryFaceAreas(CSMesh mesh, Vec x, Vec area);
+/* Mean edge length sum_e l_e / E. */
+PETSC_EXTERN PetscErrorCode CSGeometryMeanEdgeLength(CSMesh mesh, Vec x, PetscReal *h);
+/* Area-weighted unit vertex normals N_i = sum_f A_f N_f / |.| (dmV3). */
+PETSC_EXTERN PetscErrorCode CSGeometryVertexNormals(CSMesh mesh, Vec x, Vec N);
+/* Unit boundary tangents (dmV3): at a boundary vertex i the direction of its outgoing boundary half-edge
+   i -> j (counter-clockwise in the only face of the edge); 0 at interior vertices. */
+PETSC_EXTERN PetscErrorCode CSGeometryBoundaryTangents(CSMesh mesh, Vec x, Vec T);
 /* Lf (dmV3; (Lf)_i = sum_j w_ij (f_i - f_j), the positive cotan Laplacian of soliman2021 Sec. 2) and the
    vertex areas *0 (dmV1) in one pass over the faces; either output may be NULL. */
 PETSC_EXTERN PetscErrorCode CSGeometryLaplacianPositions(CSMesh mesh, Vec x, Vec Lf, Vec area);

@@ -8,6 +8,7 @@
 #include "cs_meshdata.h"
 
 typedef struct _p_CSMesh *CSMesh;
+typedef struct _p_CSMeshAdjacency *CSMeshAdjacency; /* cs_mesh_adjacency.h */
 
 struct _p_CSMesh {
   MPI_Comm comm;
@@ -42,7 +43,41 @@ struct _p_CSMesh {
   Vec        natV3vec, natV1vec, natF1vec, natE1vec; /* all entries on rank 0 (length 0 elsewhere) */
 
   CSMeshData serial; /* rank 0: the validated input (faces kept for output); empty elsewhere */
+
+  CSMeshAdjacency adj; /* edge sides, diamonds, boundary neighbours: built by the first CSMeshGetAdjacency */
 };
+
+/* Face iterator: for (CSFaceIter F = CS_FACE_ITER_INIT; CSMeshFaceNext(mesh, p, &F);) visits every local face
+   F.f with its corners F.v[0..2] (counter-clockwise), the edges F.e[a] opposite them, and (p not NULL: the local
+   positions array of dmV3) the corner positions F.c[a]. */
+typedef struct {
+  PetscInt         f;
+  const PetscInt  *v, *e;
+  const PetscReal *c[3];
+} CSFaceIter;
+#define CS_FACE_ITER_INIT {-1, NULL, NULL, {NULL, NULL, NULL}}
+static inline PetscBool CSMeshFaceNext(CSMesh mesh, const PetscReal *p, CSFaceIter *F)
+{
+  if (++F->f >= mesh->nf) return PETSC_FALSE;
+  F->v = mesh->faceVert + 3 * F->f;
+  F->e = mesh->faceEdge + 3 * F->f;
+  if (p)
+    for (int a = 0; a < 3; a++) F->c[a] = p + 3 * F->v[a];
+  return PETSC_TRUE;
+}
+
+/* The local scatter-add of element-by-element assembly. CSLocalSumBegin gives a zeroed local vector of dm
+   (array s->a, ghosts included) to accumulate into; CSLocalSumEnd adds the copies of every point over the
+   ranks into the global g (g = the sum; g may be NULL) and gives the local vector back. CSLocalSumShare, in
+   between, gives every local copy the summed value (s->a stays readable; still end with CSLocalSumEnd). */
+typedef struct {
+  DM           dm;
+  Vec          l;
+  PetscScalar *a;
+} CSLocalSum;
+PETSC_EXTERN PetscErrorCode CSLocalSumBegin(DM dm, CSLocalSum *s);
+PETSC_EXTERN PetscErrorCode CSLocalSumShare(CSLocalSum *s);
+PETSC_EXTERN PetscErrorCode CSLocalSumEnd(CSLocalSum *s, Vec g);
 
 /* Reads the mesh source from the options (see CSMeshDataFromOptions), validates, distributes. */
 PETSC_EXTERN PetscErrorCode CSMeshCreateFromOptions(MPI_Comm comm, const char prefix[], CSMesh *mesh);

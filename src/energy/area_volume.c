@@ -10,20 +10,20 @@ static PetscErrorCode FaceSumGradient(CSEnergy e, Vec x, PetscReal *E, Vec g)
 {
   CSMesh           m    = e->mesh;
   FaceSum          kind = (FaceSum)(size_t)e->ctx;
-  Vec              xl, gl = NULL;
+  Vec              xl;
+  CSLocalSum       gs;
   const PetscReal *p;
   PetscScalar     *ga = NULL;
   PetscReal        s  = 0;
   PetscFunctionBeginUser;
   PetscCall(CSMeshGetLocalPositions(m, x, &xl, &p));
   if (g) {
-    PetscCall(DMGetLocalVector(m->dmV3, &gl));
-    PetscCall(VecSet(gl, 0));
-    PetscCall(VecGetArray(gl, &ga));
+    PetscCall(CSLocalSumBegin(m->dmV3, &gs));
+    ga = gs.a;
   }
-  for (PetscInt f = 0; f < m->nf; f++) {
-    const PetscInt  *v    = m->faceVert + 3 * f;
-    const PetscReal *c[3] = {p + 3 * v[0], p + 3 * v[1], p + 3 * v[2]};
+  for (CSFaceIter F = CS_FACE_ITER_INIT; CSMeshFaceNext(m, p, &F);) {
+    const PetscInt  *v = F.v;
+    const PetscReal *const *c = F.c;
     PetscReal        gf[3][3];
     if (kind == FACE_AREA) {
       PetscReal an[3], A, N[3];
@@ -45,12 +45,7 @@ static PetscErrorCode FaceSumGradient(CSEnergy e, Vec x, PetscReal *E, Vec g)
         for (int d = 0; d < 3; d++) ga[3 * v[k] + d] += gf[k][d];
   }
   PetscCall(CSMeshRestoreLocalPositions(m, x, &xl, &p));
-  if (g) {
-    PetscCall(VecRestoreArray(gl, &ga));
-    PetscCall(VecSet(g, 0));
-    PetscCall(DMLocalToGlobal(m->dmV3, gl, ADD_VALUES, g));
-    PetscCall(DMRestoreLocalVector(m->dmV3, &gl));
-  }
+  if (g) PetscCall(CSLocalSumEnd(&gs, g));
   if (E) PetscCall(MPIU_Allreduce(&s, E, 1, MPIU_REAL, MPIU_SUM, m->comm));
   PetscFunctionReturn(0);
 }

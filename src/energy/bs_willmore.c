@@ -17,15 +17,16 @@
    Hessian" of Sec. 4, and grad W = K x holds exactly at the current positions (per coordinate).
 
    Distribution (CSMesh has overlap 0): the two faces of an edge on a partition cut live on different ranks,
-   so the far opposite vertex of a diamond may not be local. Each face writes its opposite vertex into its
-   side's slot of a per-edge field (side 0: the face traversing edgeVert[0] -> edgeVert[1], i.e. t_ijl with
-   i = edgeVert[0]; side 1: t_jik); LocalToGlobal(ADD) + GlobalToLocal gives every rank holding the edge the
+   so the far opposite vertex of a diamond may not be local. The mesh adjacency (cs_mesh_adjacency.h) gives
+   the diamond's vertices in global numbering on every rank holding the edge (side 0: t_ijl with
+   i = edgeVert[0], side 1: t_jik); per evaluation each face writes the position of its opposite vertex into
+   its side's slot of a per-edge field, and LocalToGlobal(ADD) + GlobalToLocal gives every such rank the
    whole diamond. Every rank then evaluates its local diamonds; the edge owner adds the value and the rows of
    i and j, the rank of each face adds the row of that face's opposite vertex (each face is on one rank only),
-   so every term is added exactly once. K rows/columns use global vertex numbers (the far vertex's number
-   travels with it at creation). The free boundary's beta_3 needs both boundary neighbours of a boundary
+   so every term is added exactly once. K rows/columns use global vertex numbers (from the adjacency). The free boundary's beta_3 needs both boundary neighbours of a boundary
    vertex: exchanged the same way through a per-vertex field. */
 #include "cs_energy_bs.h"
+#include "cs_mesh_adjacency.h"
 #include "cs_quaternion.h"
 
 const char *const CSBSBoundaries[] = {"fixed", "free", "CSBSBoundary", "CS_BS_BOUNDARY_", NULL};
@@ -37,10 +38,8 @@ typedef struct {
   PetscBool    freebd;   /* FREE and the mesh has a boundary */
   DM           dmE6;     /* 6 dofs per edge: opposite vertex position per side */
   DM           dmV6;     /* 6 dofs per vertex: previous/next boundary neighbour position (FREE) */
-  PetscInt    *oppGid;   /* 2*ne: global number of the opposite vertex per side (-1: none) */
-  PetscInt    *oppLoc;   /* 2*ne: local number of the opposite vertex per side if its face is local, else -1 */
-  PetscBool   *oppFixed; /* 2*ne */
-  PetscInt    *bdGid;    /* 2*nv: global numbers of the previous/next boundary neighbours (FREE) */
+  CSMeshAdjacency adj;   /* the mesh's: edge sides (diamonds) and boundary neighbours, global and local */
+  PetscInt    *oppFixed; /* 2*ne: the opposite vertex per side is fixed */
   const PetscInt *gid;   /* nv: global vertex numbers (dmV1 local-to-global) */
   PetscBool   *fixed;    /* nv */
   PetscInt     nfixed;
@@ -54,7 +53,6 @@ typedef struct {
   PetscBool   *both;     /* ne: both faces of the edge are on this rank (then it is owned here and the whole
                             diamond is added in one block by the edge loop) */
   PetscInt    *nnz;      /* owned rows: preallocation bound 1 + 2 * valence */
-  ISLocalToGlobalMapping ltog;
 } BSCtx;
 
 /* ---------------------------------------------------------------- kernels */
@@ -129,72 +127,86 @@ static void BSAngle(const PetscReal *const P[3], PetscReal eps, PetscReal *theta
 
 /* ---------------------------------------------------------------- setup */
 
-/* Sum a local field over all copies (LocalToGlobal ADD) and give every copy the sum (GlobalToLocal). */
-static PetscErrorCode SumShare(DM dm, Vec l)
+/* Fixed vertices (FIXED mode): the boundary and its one-ring (Sec. 3.3), on every copy; the global counts. */
+static PetscErrorCode BSFixedSet(CSEnergy en)
 {
-  Vec g;
+  BSCtx     *c = (BSCtx *)en->ctx;
+  CSMesh     m = en->mesh;
+  CSLocalSum s;
+  PetscInt   nint = 0, nbdv = 0, N[3], Nsum[3];
   PetscFunctionBeginUser;
-  PetscCall(DMGetGlobalVector(dm, &g));
-  PetscCall(VecSet(g, 0));
-  PetscCall(DMLocalToGlobal(dm, l, ADD_VALUES, g));
-  PetscCall(DMGlobalToLocal(dm, g, INSERT_VALUES, l));
-  PetscCall(DMRestoreGlobalVector(dm, &g));
-  PetscFunctionReturn(0);
-}
-
-/* Side of face corner a's edge: 0 if the face traverses edgeVert[0] -> edgeVert[1]. */
-static inline int EdgeSide(CSMesh m, PetscInt f, int a)
-{
-  const PetscInt *v = m->faceVert + 3 * f;
-  PetscInt        e = m->faceEdge[3 * f + a];
-  return v[(a + 1) % 3] == m->edgeVert[2 * e] ? 0 : 1;
-}
-
-/* Fixed set, edge weights, the far opposite vertices' global numbers (checking that every interior edge
-   has exactly one face per side), boundary neighbours (FREE), preallocation of K. Collective. */
-static PetscErrorCode BSSetUp(CSEnergy en)
-{
-  BSCtx          *c = (BSCtx *)en->ctx;
-  CSMesh          m = en->mesh;
-  DM              dmE4, dmV4;
-  Vec             l;
-  PetscScalar    *a;
-  PetscInt        nint = 0, nbdv = 0, N[3], Nsum[3], nown = 0;
-  PetscFunctionBeginUser;
-  PetscCall(DMGetLocalToGlobalMapping(m->dmV1, &c->ltog));
-  PetscCall(ISLocalToGlobalMappingGetIndices(c->ltog, &c->gid));
-
-  /* fixed vertices (FIXED mode): the boundary and its one-ring (Sec. 3.3) */
   PetscCall(PetscCalloc1(m->nv, &c->fixed));
-  PetscCall(DMGetLocalVector(m->dmV1, &l));
-  PetscCall(VecSet(l, 0));
-  PetscCall(VecGetArray(l, &a));
+  PetscCall(CSLocalSumBegin(m->dmV1, &s));
   if (c->bc == CS_BS_BOUNDARY_FIXED) {
     for (PetscInt v = 0; v < m->nv; v++)
-      if (m->vertBoundary[v]) a[v] = 1;
+      if (m->vertBoundary[v]) s.a[v] = 1;
     for (PetscInt e = 0; e < m->ne; e++) {
       PetscInt i = m->edgeVert[2 * e], j = m->edgeVert[2 * e + 1];
-      if (m->vertBoundary[i]) a[j] = 1;
-      if (m->vertBoundary[j]) a[i] = 1;
+      if (m->vertBoundary[i]) s.a[j] = 1;
+      if (m->vertBoundary[j]) s.a[i] = 1;
     }
   }
-  PetscCall(VecRestoreArray(l, &a));
-  PetscCall(SumShare(m->dmV1, l));
-  PetscCall(VecGetArray(l, &a));
+  PetscCall(CSLocalSumShare(&s));
   N[0] = 0;
   for (PetscInt v = 0; v < m->nv; v++) {
-    c->fixed[v] = (PetscBool)(PetscRealPart(a[v]) > 0.5);
+    c->fixed[v] = (PetscBool)(PetscRealPart(s.a[v]) > 0.5);
     if (m->vertOwned[v] && c->fixed[v]) N[0]++;
     if (m->vertOwned[v] && !m->vertBoundary[v]) nint++;
     if (m->vertOwned[v] && m->vertBoundary[v]) nbdv++;
   }
-  PetscCall(VecRestoreArray(l, &a));
-  PetscCall(DMRestoreLocalVector(m->dmV1, &l));
+  PetscCall(CSLocalSumEnd(&s, NULL));
   N[1] = nint;
   N[2] = nbdv;
   PetscCall(MPIU_Allreduce(N, Nsum, 3, MPIU_INT, MPI_SUM, m->comm));
   c->nfixed = Nsum[0];
   c->freebd = (PetscBool)(c->bc == CS_BS_BOUNDARY_FREE && Nsum[2] > 0);
+  PetscFunctionReturn(0);
+}
+
+/* Preallocation bound of K: 1 + 2 valence (the 1-ring with flaps, Sec. 4: 13 for valence 6) per owned row. */
+static PetscErrorCode BSPreallocation(CSEnergy en)
+{
+  BSCtx     *c = (BSCtx *)en->ctx;
+  CSMesh     m = en->mesh;
+  CSLocalSum s;
+  Vec        g;
+  PetscInt   nown = 0, rstart;
+  PetscFunctionBeginUser;
+  PetscCall(CSLocalSumBegin(m->dmV1, &s));
+  for (PetscInt e = 0; e < m->ne; e++)
+    if (m->edgeOwned[e]) {
+      s.a[m->edgeVert[2 * e]] += 1;
+      s.a[m->edgeVert[2 * e + 1]] += 1;
+    }
+  PetscCall(CSLocalSumShare(&s));
+  for (PetscInt v = 0; v < m->nv; v++)
+    if (m->vertOwned[v]) nown++;
+  PetscCall(PetscMalloc1(nown, &c->nnz));
+  PetscCall(DMGetGlobalVector(m->dmV1, &g));
+  PetscCall(VecGetOwnershipRange(g, &rstart, NULL));
+  PetscCall(DMRestoreGlobalVector(m->dmV1, &g));
+  for (PetscInt v = 0; v < m->nv; v++)
+    if (m->vertOwned[v]) {
+      PetscInt r = c->gid[v] - rstart;
+      PetscCheck(r >= 0 && r < nown, PETSC_COMM_SELF, PETSC_ERR_PLIB, "bs_willmore: owned vertex %" PetscInt_FMT " has global number %" PetscInt_FMT " outside the local range", v, c->gid[v]);
+      /* FREE: beta_3 at a boundary neighbour couples v to the next-but-one boundary vertex on each side */
+      c->nnz[r] = PetscMin(1 + 2 * (PetscInt)PetscRealPart(s.a[v]) + (c->freebd && m->vertBoundary[v] ? 2 : 0), m->Nv);
+    }
+  PetscCall(CSLocalSumEnd(&s, NULL));
+  PetscFunctionReturn(0);
+}
+
+/* Fixed set, edge weights, the diamonds' far vertices from the mesh adjacency (global numbers, fixed flags),
+   boundary neighbours (FREE), preallocation of K. Collective. */
+static PetscErrorCode BSSetUp(CSEnergy en)
+{
+  BSCtx   *c = (BSCtx *)en->ctx;
+  CSMesh   m = en->mesh;
+  PetscInt *fx;
+  PetscFunctionBeginUser;
+  PetscCall(CSMeshGetAdjacency(m, &c->adj));
+  c->gid = c->adj->vertGlobal;
+  PetscCall(BSFixedSet(en));
   /* W = sum of W_i over the vertices that carry one: all of them (+ one infinity vertex per boundary loop)
      in FREE mode, the non-boundary ones in FIXED mode */
   PetscCall(DMCreateGlobalVector(m->dmV1, &c->Wg));
@@ -207,195 +219,43 @@ static PetscErrorCode BSSetUp(CSEnergy en)
     else c->wEdge[e] = (PetscReal)(!m->vertBoundary[i]) + (PetscReal)(!m->vertBoundary[j]);
   }
 
-  /* opposite vertices per edge side: global number, count, fixed flag (positions travel per evaluation) */
+  /* the far vertices' fixed flags (their positions travel per evaluation through dmE6) */
   PetscCall(CSMeshCreateFieldDM(m->dm, 1, 6, "bs_edge6", &c->dmE6));
-  PetscCall(CSMeshCreateFieldDM(m->dm, 1, 3, "bs_edge3", &dmE4));
-  PetscCall(DMGetLocalVector(dmE4, &l));
-  PetscCall(VecSet(l, 0));
-  PetscCall(VecGetArray(l, &a));
-  for (PetscInt f = 0; f < m->nf; f++)
-    for (int k = 0; k < 3; k++) {
-      PetscInt e = m->faceEdge[3 * f + k], o = m->faceVert[3 * f + k];
-      int      s = EdgeSide(m, f, k);
-      /* encode side s in a base-4 digit so the two sides sum without colliding: slot values
-         gid+1 (side 0 in dof 0, side 1 in dof 1) and the count in dof 2 as 1 (side 0) + 4 (side 1) */
-      a[3 * e + s] += (PetscScalar)(c->gid[o] + 1);
-      a[3 * e + 2] += s ? 4 : 1;
-    }
-  PetscCall(VecRestoreArray(l, &a));
-  PetscCall(SumShare(dmE4, l));
-  PetscCall(PetscMalloc2(2 * m->ne, &c->oppGid, 2 * m->ne, &c->oppFixed));
-  PetscCall(VecGetArray(l, &a));
-  {
-    PetscInt bad = 0, badsum;
-    for (PetscInt e = 0; e < m->ne; e++) {
-      PetscInt cnt = (PetscInt)PetscRealPart(a[3 * e + 2]);
-      if (m->edgeBoundary[e] ? !(cnt == 1 || cnt == 4) : cnt != 5) bad++;
-      for (int s = 0; s < 2; s++) c->oppGid[2 * e + s] = (PetscInt)PetscRealPart(a[3 * e + s]) - 1;
-    }
-    PetscCall(MPIU_Allreduce(&bad, &badsum, 1, MPIU_INT, MPI_SUM, m->comm));
-    PetscCheck(!badsum, m->comm, PETSC_ERR_PLIB, "bs_willmore: %" PetscInt_FMT " edges do not have one face per side (inconsistent orientation, or edge cone order differs across ranks)", badsum);
-  }
-  PetscCall(VecRestoreArray(l, &a));
-  /* fixed flag of the far vertices */
-  PetscCall(VecSet(l, 0));
-  PetscCall(VecGetArray(l, &a));
-  for (PetscInt f = 0; f < m->nf; f++)
-    for (int k = 0; k < 3; k++) {
-      PetscInt e = m->faceEdge[3 * f + k], o = m->faceVert[3 * f + k];
-      if (c->fixed[o]) a[3 * e + EdgeSide(m, f, k)] += 1;
-    }
-  PetscCall(VecRestoreArray(l, &a));
-  PetscCall(SumShare(dmE4, l));
-  PetscCall(VecGetArray(l, &a));
-  for (PetscInt e = 0; e < m->ne; e++)
-    for (int s = 0; s < 2; s++) c->oppFixed[2 * e + s] = (PetscBool)(PetscRealPart(a[3 * e + s]) > 0.5);
-  PetscCall(VecRestoreArray(l, &a));
-  PetscCall(DMRestoreLocalVector(dmE4, &l));
-  PetscCall(DMDestroy(&dmE4));
+  PetscCall(PetscMalloc1(m->nv, &fx));
+  PetscCall(PetscMalloc1(2 * m->ne, &c->oppFixed));
+  for (PetscInt v = 0; v < m->nv; v++) fx[v] = c->fixed[v] ? 1 : 0;
+  PetscCall(CSMeshAdjacencyGatherOpposite(m, fx, 0, c->oppFixed));
+  PetscCall(PetscFree(fx));
 
-  /* boundary neighbours (FREE): dof 0 = previous (the edge prev -> v), dof 1 = next (v -> next) */
   if (c->freebd) {
+    PetscCheck(c->adj->bdManifold, m->comm, PETSC_ERR_PLIB, "bs_willmore: some boundary vertices do not have one incoming and one outgoing boundary edge");
     PetscCall(CSMeshCreateFieldDM(m->dm, 0, 6, "bs_vert6", &c->dmV6));
-    PetscCall(CSMeshCreateFieldDM(m->dm, 0, 4, "bs_vert4", &dmV4));
-    PetscCall(DMGetLocalVector(dmV4, &l));
-    PetscCall(VecSet(l, 0));
-    PetscCall(VecGetArray(l, &a));
-    for (PetscInt f = 0; f < m->nf; f++)
-      for (int k = 0; k < 3; k++) {
-        PetscInt e = m->faceEdge[3 * f + k], i, j;
-        if (!m->edgeBoundary[e]) continue;
-        i = m->faceVert[3 * f + (k + 1) % 3];
-        j = m->faceVert[3 * f + (k + 2) % 3];
-        a[4 * i + 1] += (PetscScalar)(c->gid[j] + 1); /* next of i */
-        a[4 * i + 3] += 1;
-        a[4 * j + 0] += (PetscScalar)(c->gid[i] + 1); /* prev of j */
-        a[4 * j + 2] += 1;
-      }
-    PetscCall(VecRestoreArray(l, &a));
-    PetscCall(SumShare(dmV4, l));
-    PetscCall(PetscMalloc1(2 * m->nv, &c->bdGid));
-    PetscCall(VecGetArray(l, &a));
-    {
-      PetscInt bad = 0, badsum;
-      for (PetscInt v = 0; v < m->nv; v++) {
-        PetscInt cp = (PetscInt)PetscRealPart(a[4 * v + 2]), cn = (PetscInt)PetscRealPart(a[4 * v + 3]);
-        if (m->vertBoundary[v] && !(cp == 1 && cn == 1)) bad++;
-        c->bdGid[2 * v]     = (PetscInt)PetscRealPart(a[4 * v + 0]) - 1;
-        c->bdGid[2 * v + 1] = (PetscInt)PetscRealPart(a[4 * v + 1]) - 1;
-      }
-      PetscCall(MPIU_Allreduce(&bad, &badsum, 1, MPIU_INT, MPI_SUM, m->comm));
-      PetscCheck(!badsum, m->comm, PETSC_ERR_PLIB, "bs_willmore: %" PetscInt_FMT " boundary vertices do not have one incoming and one outgoing boundary edge", badsum);
-    }
-    PetscCall(VecRestoreArray(l, &a));
-    PetscCall(DMRestoreLocalVector(dmV4, &l));
-    PetscCall(DMDestroy(&dmV4));
   }
-
-  /* preallocation bound of K: 1 + 2 valence (the 1-ring with flaps, Sec. 4: 13 for valence 6) per owned row */
-  PetscCall(DMGetLocalVector(m->dmV1, &l));
-  PetscCall(VecSet(l, 0));
-  PetscCall(VecGetArray(l, &a));
-  for (PetscInt e = 0; e < m->ne; e++)
-    if (m->edgeOwned[e]) {
-      a[m->edgeVert[2 * e]] += 1;
-      a[m->edgeVert[2 * e + 1]] += 1;
-    }
-  PetscCall(VecRestoreArray(l, &a));
-  PetscCall(SumShare(m->dmV1, l));
-  for (PetscInt v = 0; v < m->nv; v++)
-    if (m->vertOwned[v]) nown++;
-  PetscCall(PetscMalloc1(nown, &c->nnz));
-  PetscCall(VecGetArray(l, &a));
-  {
-    Vec      g;
-    PetscInt rstart;
-    PetscCall(DMGetGlobalVector(m->dmV1, &g));
-    PetscCall(VecGetOwnershipRange(g, &rstart, NULL));
-    PetscCall(DMRestoreGlobalVector(m->dmV1, &g));
-    for (PetscInt v = 0; v < m->nv; v++)
-      if (m->vertOwned[v]) {
-        PetscInt r = c->gid[v] - rstart;
-        PetscCheck(r >= 0 && r < nown, PETSC_COMM_SELF, PETSC_ERR_PLIB, "bs_willmore: owned vertex %" PetscInt_FMT " has global number %" PetscInt_FMT " outside the local range", v, c->gid[v]);
-        /* FREE: beta_3 at a boundary neighbour couples v to the next-but-one boundary vertex on each side */
-        c->nnz[r] = PetscMin(1 + 2 * (PetscInt)PetscRealPart(a[v]) + (c->freebd && m->vertBoundary[v] ? 2 : 0), m->Nv);
-      }
-  }
-  PetscCall(VecRestoreArray(l, &a));
-  PetscCall(DMRestoreLocalVector(m->dmV1, &l));
+  PetscCall(BSPreallocation(en));
   PetscCall(PetscMalloc3(6 * m->ne, &c->gkl, 8 * m->ne, &c->Mkl, m->ne, &c->act));
-  {
-    PetscInt *cnt;
-    PetscCall(PetscCalloc1(m->ne, &cnt));
-    PetscCall(PetscMalloc1(m->ne, &c->both));
-    for (PetscInt k = 0; k < 3 * m->nf; k++) cnt[m->faceEdge[k]]++;
-    for (PetscInt e = 0; e < m->ne; e++) c->both[e] = (PetscBool)(cnt[e] == 2 && m->edgeOwned[e]);
-    PetscCall(PetscMalloc1(2 * m->ne, &c->oppLoc));
-    for (PetscInt k = 0; k < 2 * m->ne; k++) c->oppLoc[k] = -1;
-    for (PetscInt f = 0; f < m->nf; f++)
-      for (int k = 0; k < 3; k++) c->oppLoc[2 * m->faceEdge[3 * f + k] + EdgeSide(m, f, k)] = m->faceVert[3 * f + k];
-    PetscCall(PetscFree(cnt));
-  }
+  PetscCall(PetscMalloc1(m->ne, &c->both));
+  for (PetscInt e = 0; e < m->ne; e++) c->both[e] = (PetscBool)(c->adj->edgeFace[2 * e] >= 0 && c->adj->edgeFace[2 * e + 1] >= 0 && m->edgeOwned[e]);
   PetscFunctionReturn(0);
 }
 
 /* ---------------------------------------------------------------- evaluation */
-/* One pass: W (always), per-vertex W_i (Wv, dmV1 global, may be NULL), gradient (g, dmV3 global, may be
-   NULL), K (may be NULL, already zeroed and preallocated; assembled here with fixdiag on fixed rows). */
-static PetscErrorCode BSEvaluate(CSEnergy en, Vec x, PetscReal *Wout, Vec Wv, Vec g, Mat K, PetscReal fixdiag)
-{
-  BSCtx             *c = (BSCtx *)en->ctx;
-  CSMesh             m = en->mesh;
-  Vec                xl, el, vl = NULL, gl = NULL, wl;
-  const PetscReal   *p;
-  PetscScalar       *ea, *va = NULL, *ga = NULL, *wa;
-  PetscReal          Winf = 0, Wloc = 0, Wsum;
-  PetscFunctionBeginUser;
-  PetscCall(CSMeshGetLocalPositions(m, x, &xl, &p));
-  /* diamonds: opposite positions per edge side */
-  PetscCall(DMGetLocalVector(c->dmE6, &el));
-  PetscCall(VecSet(el, 0));
-  PetscCall(VecGetArray(el, &ea));
-  for (PetscInt f = 0; f < m->nf; f++)
-    for (int k = 0; k < 3; k++) {
-      PetscInt e = m->faceEdge[3 * f + k], o = m->faceVert[3 * f + k];
-      int      s = EdgeSide(m, f, k);
-      for (int d = 0; d < 3; d++) ea[6 * e + 3 * s + d] = p[3 * o + d];
-    }
-  PetscCall(VecRestoreArray(el, &ea));
-  PetscCall(SumShare(c->dmE6, el));
-  PetscCall(VecGetArray(el, &ea));
-  if (c->freebd) {
-    PetscCall(DMGetLocalVector(c->dmV6, &vl));
-    PetscCall(VecSet(vl, 0));
-    PetscCall(VecGetArray(vl, &va));
-    for (PetscInt f = 0; f < m->nf; f++)
-      for (int k = 0; k < 3; k++) {
-        PetscInt e = m->faceEdge[3 * f + k], i, j;
-        if (!m->edgeBoundary[e]) continue;
-        i = m->faceVert[3 * f + (k + 1) % 3];
-        j = m->faceVert[3 * f + (k + 2) % 3];
-        for (int d = 0; d < 3; d++) {
-          va[6 * i + 3 + d] = p[3 * j + d];
-          va[6 * j + d]     = p[3 * i + d];
-        }
-      }
-    PetscCall(VecRestoreArray(vl, &va));
-    PetscCall(SumShare(c->dmV6, vl));
-    PetscCall(VecGetArray(vl, &va));
-  }
-  if (g) {
-    PetscCall(DMGetLocalVector(m->dmV3, &gl));
-    PetscCall(VecSet(gl, 0));
-    PetscCall(VecGetArray(gl, &ga));
-  }
-  /* W is summed as sum_i W_i (each W_i = sum beta - 2 pi is small near a minimum), not as 2 sum_e beta - 2 pi V,
-     whose cancellation loses ~1e-11 on a few thousand vertices */
-  PetscCall(DMGetLocalVector(m->dmV1, &wl));
-  PetscCall(VecSet(wl, 0));
-  PetscCall(VecGetArray(wl, &wa));
+/* Per-evaluation arrays: local positions, the far diamond vertices per edge side (dmE6) and the boundary
+   neighbours (dmV6, FREE), the local gradient (NULL: not wanted) and W_i; K may be NULL. */
+typedef struct {
+  const PetscReal *p;
+  PetscScalar     *ea, *va, *ga, *wa;
+  Mat              K;
+  PetscReal        Winf; /* W of the vertices at infinity (FREE), this rank's part */
+} BSEval;
 
-  /* interior edges: beta_1 (Sec. 3.1), edge owner adds value and rows i, j */
+/* Interior edges: beta_1 of Sec. 3.1; the edge owner adds the value and the rows of i and j (and of k and l
+   when both faces are here); otherwise the rows of k and l wait in gkl/Mkl for BSOppositeRows. */
+static PetscErrorCode BSInteriorEdges(BSCtx *c, CSMesh m, BSEval *E)
+{
+  const PetscReal *p = E->p;
+  PetscScalar     *ea = E->ea, *ga = E->ga, *wa = E->wa;
+  Mat              K = E->K;
+  PetscFunctionBeginUser;
   for (PetscInt e = 0; e < m->ne; e++) {
     PetscInt         i = m->edgeVert[2 * e], j = m->edgeVert[2 * e + 1];
     const PetscReal *P[4];
@@ -424,7 +284,7 @@ static PetscErrorCode BSEvaluate(CSEnergy en, Vec x, PetscReal *Wout, Vec Wv, Ve
           if (!c->fixed[j]) ga[3 * j + d] += w * gr[1];
         }
         if (c->both[e]) { /* k and l are local: add their rows here */
-          PetscInt vk = c->oppLoc[2 * e + 1], vl = c->oppLoc[2 * e];
+          PetscInt vk = c->adj->edgeOpp[2 * e + 1], vl = c->adj->edgeOpp[2 * e];
           if (!c->fixed[vl]) ga[3 * vl + d] += w * gr[2];
           if (!c->fixed[vk]) ga[3 * vk + d] += w * gr[0];
         } else {
@@ -437,8 +297,8 @@ static PetscErrorCode BSEvaluate(CSEnergy en, Vec x, PetscReal *Wout, Vec Wv, Ve
       for (int r = 0; r < 4; r++)
         for (int q = 0; q < 4; q++) M[r][q] = 0;
     if (K) {
-      PetscInt    cols[4] = {c->oppGid[2 * e + 1], c->gid[j], c->oppGid[2 * e], c->gid[i]};
-      PetscBool   cfix[4] = {c->oppFixed[2 * e + 1], c->fixed[j], c->oppFixed[2 * e], c->fixed[i]};
+      PetscInt    cols[4] = {c->adj->edgeOppGlobal[2 * e + 1], c->gid[j], c->adj->edgeOppGlobal[2 * e], c->gid[i]};
+      PetscBool   cfix[4] = {(PetscBool)c->oppFixed[2 * e + 1], c->fixed[j], (PetscBool)c->oppFixed[2 * e], c->fixed[i]};
       PetscScalar vals[4];
       for (int q = 0; q < 4; q++) {
         c->Mkl[8 * e + q]     = cfix[q] ? 0 : w * M[2][q];
@@ -459,135 +319,199 @@ static PetscErrorCode BSEvaluate(CSEnergy en, Vec x, PetscReal *Wout, Vec Wv, Ve
       }
     }
   }
-  /* rows of the opposite vertices: added by the rank of the face they belong to */
-  if (ga || K) {
-    for (PetscInt f = 0; f < m->nf; f++)
-      for (int k = 0; k < 3; k++) {
-        PetscInt e = m->faceEdge[3 * f + k], o = m->faceVert[3 * f + k];
-        int      s = EdgeSide(m, f, k);
-        if (m->edgeBoundary[e] || c->both[e] || c->fixed[o] || c->wEdge[e] == 0) continue;
-        if (ga && c->act[e])
-          for (int d = 0; d < 3; d++) ga[3 * o + d] += c->gkl[6 * e + 3 * s + d];
-        if (K) {
-          PetscInt    cols[4] = {c->oppGid[2 * e + 1], c->gid[m->edgeVert[2 * e + 1]], c->oppGid[2 * e], c->gid[m->edgeVert[2 * e]]};
-          PetscScalar vals[4];
-          for (int q = 0; q < 4; q++) vals[q] = c->Mkl[8 * e + 4 * s + q];
-          PetscCall(MatSetValues(K, 1, &c->gid[o], 4, cols, vals, ADD_VALUES));
-        }
+  PetscFunctionReturn(0);
+}
+
+/* The rows of the opposite vertices k, l of diamonds split over two ranks: added by the rank of their face. */
+static PetscErrorCode BSOppositeRows(BSCtx *c, CSMesh m, BSEval *E)
+{
+  PetscScalar     *ga = E->ga;
+  Mat              K = E->K;
+  PetscFunctionBeginUser;
+  CSFaceIter F = CS_FACE_ITER_INIT;
+  while (CSMeshFaceNext(m, NULL, &F))
+    for (int k = 0; k < 3; k++) {
+      PetscInt e = F.e[k], o = F.v[k];
+      int      s = CSMeshEdgeSide(m, &F, k);
+      if (m->edgeBoundary[e] || c->both[e] || c->fixed[o] || c->wEdge[e] == 0) continue;
+      if (ga && c->act[e])
+        for (int d = 0; d < 3; d++) ga[3 * o + d] += c->gkl[6 * e + 3 * s + d];
+      if (K) {
+        PetscInt    cols[4] = {c->adj->edgeOppGlobal[2 * e + 1], c->gid[m->edgeVert[2 * e + 1]], c->adj->edgeOppGlobal[2 * e], c->gid[m->edgeVert[2 * e]]};
+        PetscScalar vals[4];
+        for (int q = 0; q < 4; q++) vals[q] = c->Mkl[8 * e + 4 * s + q];
+        PetscCall(MatSetValues(K, 1, &c->gid[o], 4, cols, vals, ADD_VALUES));
       }
-  }
+    }
+  PetscFunctionReturn(0);
+}
 
   /* free boundary (Sec. 3.3): beta_2 = pi - (angle opposite the boundary edge), beta_3 = pi - (angle of the
      boundary polygon at v_b) = the intersection angle of the two boundary lines through v_b and infinity.
      Both are limits of the diamond formula with one vertex sent to infinity (cos beta -> <D,A> resp. <C,D>).
-     Each appears at two vertices of the closed surface (for beta_3: v_b and infinity), hence weight 2. */
-  if (c->freebd) {
-    for (PetscInt f = 0; f < m->nf; f++)
-      for (int k = 0; k < 3; k++) {
-        PetscInt         e = m->faceEdge[3 * f + k], vk, i, j;
-        const PetscReal *P[3];
-        PetscReal        th, M[3][3];
-        PetscBool        active;
-        if (!m->edgeBoundary[e]) continue;
-        vk   = m->faceVert[3 * f + k];
-        i    = m->faceVert[3 * f + (k + 1) % 3];
-        j    = m->faceVert[3 * f + (k + 2) % 3];
-        /* beta_2 of edge i -> j (the boundary edge is local on this rank only, and owned here) */
-        P[0] = p + 3 * vk;
-        P[1] = p + 3 * i;
-        P[2] = p + 3 * j;
-        BSAngle(P, c->eps, &th, M, &active);
-        wa[i] += PETSC_PI - th;
-        wa[j] += PETSC_PI - th;
-        {
-          PetscInt idx[3] = {vk, i, j};
-          if (ga && active)
-            for (int r = 0; r < 3; r++)
-              for (int d = 0; d < 3; d++)
-                for (int q = 0; q < 3; q++) ga[3 * idx[r] + d] -= 2 * M[r][q] * P[q][d];
-          if (K) {
-            PetscInt    cols[3] = {c->gid[vk], c->gid[i], c->gid[j]};
-            PetscScalar vals[9];
-            for (int r = 0; r < 3; r++)
-              for (int q = 0; q < 3; q++) vals[3 * r + q] = -2 * M[r][q];
-            PetscCall(MatSetValues(K, 3, cols, 3, cols, vals, ADD_VALUES));
-          }
-        }
-        /* beta_3 at i (prev(i), i, j): this rank adds the row of j; at j (i, j, next(j)): the row of i */
-        for (int t = 0; t < 2; t++) {
-          PetscInt         b = t ? j : i, other = t ? i : j;
-          PetscInt         cols[3];
-          const PetscReal *Q[3];
-          PetscScalar      vals[3];
-          int              ro = 0;
-          Q[0]    = p + 3 * b;
-          cols[0] = c->gid[b];
-          if (!t) { /* b = i: prev(i) (slot 0), next = j */
-            Q[1]    = va + 6 * i;
-            cols[1] = c->bdGid[2 * i];
-            Q[2]    = p + 3 * j;
-            cols[2] = c->gid[j];
-            ro      = 2;
-          } else { /* b = j: prev = i, next(j) (slot 1) */
-            Q[1]    = p + 3 * i;
-            cols[1] = c->gid[i];
-            Q[2]    = va + 6 * j + 3;
-            cols[2] = c->bdGid[2 * j + 1];
-            ro      = 1;
-          }
-          BSAngle(Q, c->eps, &th, M, &active);
-          if (ga && active)
-            for (int d = 0; d < 3; d++)
-              for (int q = 0; q < 3; q++) ga[3 * other + d] -= 2 * M[ro][q] * Q[q][d];
-          if (K) {
-            for (int q = 0; q < 3; q++) vals[q] = -2 * M[ro][q];
-            PetscCall(MatSetValues(K, 1, &cols[ro], 3, cols, vals, ADD_VALUES));
-          }
-        }
-      }
-    /* beta_3 value and the row of v_b itself: the owner of v_b */
-    for (PetscInt b = 0; b < m->nv; b++) {
-      const PetscReal *Q[3];
+     Each appears at two vertices of the closed surface (for beta_3: v_b and infinity), hence weight 2.
+   This rank adds beta_2 of the boundary edges of its faces and the rows of beta_3 at their ends. */
+static PetscErrorCode BSFreeBoundaryFaces(BSCtx *c, CSMesh m, BSEval *E)
+{
+  const PetscReal *p = E->p;
+  PetscScalar     *va = E->va, *ga = E->ga, *wa = E->wa;
+  Mat              K = E->K;
+  PetscFunctionBeginUser;
+  CSFaceIter F = CS_FACE_ITER_INIT;
+  while (CSMeshFaceNext(m, NULL, &F))
+    for (int k = 0; k < 3; k++) {
+      PetscInt         vk = F.v[k], i = F.v[(k + 1) % 3], j = F.v[(k + 2) % 3];
+      const PetscReal *P[3];
       PetscReal        th, M[3][3];
       PetscBool        active;
-      if (!m->vertBoundary[b] || !m->vertOwned[b]) continue;
-      Q[0] = p + 3 * b;
-      Q[1] = va + 6 * b;
-      Q[2] = va + 6 * b + 3;
-      BSAngle(Q, c->eps, &th, M, &active);
-      wa[b] += PETSC_PI - th;
-      Winf += PETSC_PI - th; /* W of the vertex at infinity: sum of its beta_3 - 2 pi per loop */
-      if (ga && active)
-        for (int d = 0; d < 3; d++)
-          for (int q = 0; q < 3; q++) ga[3 * b + d] -= 2 * M[0][q] * Q[q][d];
-      if (K) {
-        PetscInt    cols[3] = {c->gid[b], c->bdGid[2 * b], c->bdGid[2 * b + 1]};
-        PetscScalar vals[3];
-        for (int q = 0; q < 3; q++) vals[q] = -2 * M[0][q];
-        PetscCall(MatSetValues(K, 1, &cols[0], 3, cols, vals, ADD_VALUES));
+      if (!m->edgeBoundary[F.e[k]]) continue;
+      /* beta_2 of edge i -> j (the boundary edge is local on this rank only, and owned here) */
+      P[0] = p + 3 * vk;
+      P[1] = p + 3 * i;
+      P[2] = p + 3 * j;
+      BSAngle(P, c->eps, &th, M, &active);
+      wa[i] += PETSC_PI - th;
+      wa[j] += PETSC_PI - th;
+      {
+        PetscInt idx[3] = {vk, i, j};
+        if (ga && active)
+          for (int r = 0; r < 3; r++)
+            for (int d = 0; d < 3; d++)
+              for (int q = 0; q < 3; q++) ga[3 * idx[r] + d] -= 2 * M[r][q] * P[q][d];
+        if (K) {
+          PetscInt    cols[3] = {c->gid[vk], c->gid[i], c->gid[j]};
+          PetscScalar vals[9];
+          for (int r = 0; r < 3; r++)
+            for (int q = 0; q < 3; q++) vals[3 * r + q] = -2 * M[r][q];
+          PetscCall(MatSetValues(K, 3, cols, 3, cols, vals, ADD_VALUES));
+        }
+      }
+      /* beta_3 at i (prev(i), i, j): this rank adds the row of j; at j (i, j, next(j)): the row of i */
+      for (int t = 0; t < 2; t++) {
+        PetscInt         b = t ? j : i, other = t ? i : j;
+        PetscInt         cols[3];
+        const PetscReal *Q[3];
+        PetscScalar      vals[3];
+        int              ro = 0;
+        Q[0]    = p + 3 * b;
+        cols[0] = c->gid[b];
+        if (!t) { /* b = i: prev(i) (slot 0), next = j */
+          Q[1]    = va + 6 * i;
+          cols[1] = c->adj->bdPrevGlobal[i];
+          Q[2]    = p + 3 * j;
+          cols[2] = c->gid[j];
+          ro      = 2;
+        } else { /* b = j: prev = i, next(j) (slot 1) */
+          Q[1]    = p + 3 * i;
+          cols[1] = c->gid[i];
+          Q[2]    = va + 6 * j + 3;
+          cols[2] = c->adj->bdNextGlobal[j];
+          ro      = 1;
+        }
+        BSAngle(Q, c->eps, &th, M, &active);
+        if (ga && active)
+          for (int d = 0; d < 3; d++)
+            for (int q = 0; q < 3; q++) ga[3 * other + d] -= 2 * M[ro][q] * Q[q][d];
+        if (K) {
+          for (int q = 0; q < 3; q++) vals[q] = -2 * M[ro][q];
+          PetscCall(MatSetValues(K, 1, &cols[ro], 3, cols, vals, ADD_VALUES));
+        }
       }
     }
-    PetscCall(VecRestoreArray(vl, &va));
-    PetscCall(DMRestoreLocalVector(c->dmV6, &vl));
+  PetscFunctionReturn(0);
+}
+
+/* beta_3 value and the row of v_b itself: the owner of v_b. */
+static PetscErrorCode BSFreeBoundaryVertices(BSCtx *c, CSMesh m, BSEval *E)
+{
+  const PetscReal *p = E->p;
+  PetscScalar     *va = E->va, *ga = E->ga, *wa = E->wa;
+  Mat              K = E->K;
+  PetscFunctionBeginUser;
+  for (PetscInt b = 0; b < m->nv; b++) {
+    const PetscReal *Q[3];
+    PetscReal        th, M[3][3];
+    PetscBool        active;
+    if (!m->vertBoundary[b] || !m->vertOwned[b]) continue;
+    Q[0] = p + 3 * b;
+    Q[1] = va + 6 * b;
+    Q[2] = va + 6 * b + 3;
+    BSAngle(Q, c->eps, &th, M, &active);
+    wa[b] += PETSC_PI - th;
+    E->Winf += PETSC_PI - th; /* W of the vertex at infinity: sum of its beta_3 - 2 pi per loop */
+    if (ga && active)
+      for (int d = 0; d < 3; d++)
+        for (int q = 0; q < 3; q++) ga[3 * b + d] -= 2 * M[0][q] * Q[q][d];
+    if (K) {
+      PetscInt    cols[3] = {c->gid[b], c->adj->bdPrevGlobal[b], c->adj->bdNextGlobal[b]};
+      PetscScalar vals[3];
+      for (int q = 0; q < 3; q++) vals[q] = -2 * M[0][q];
+      PetscCall(MatSetValues(K, 1, &cols[0], 3, cols, vals, ADD_VALUES));
+    }
   }
-  PetscCall(VecRestoreArray(el, &ea));
-  PetscCall(DMRestoreLocalVector(c->dmE6, &el));
+  PetscFunctionReturn(0);
+}
+
+/* One pass: W (always), per-vertex W_i (Wv, dmV1 global, may be NULL), gradient (g, dmV3 global, may be
+   NULL), K (may be NULL, already zeroed and preallocated; assembled here with fixdiag on fixed rows). */
+static PetscErrorCode BSEvaluate(CSEnergy en, Vec x, PetscReal *Wout, Vec Wv, Vec g, Mat K, PetscReal fixdiag)
+{
+  BSCtx             *c = (BSCtx *)en->ctx;
+  CSMesh             m = en->mesh;
+  Vec                xl;
+  CSLocalSum         es, vs = {NULL, NULL, NULL}, gs = {NULL, NULL, NULL}, ws;
+  const PetscReal   *p;
+  BSEval             E = {NULL, NULL, NULL, NULL, NULL, K, 0};
+  PetscReal          Wloc = 0, Wsum;
+  PetscFunctionBeginUser;
+  PetscCall(CSMeshGetLocalPositions(m, x, &xl, &p));
+  /* diamonds: opposite positions per edge side, written by the rank of that side's face */
+  PetscCall(CSLocalSumBegin(c->dmE6, &es));
+  for (PetscInt k = 0; k < 2 * m->ne; k++)
+    if (c->adj->edgeFace[k] >= 0)
+      for (int d = 0; d < 3; d++) es.a[3 * k + d] = p[3 * c->adj->edgeOpp[k] + d];
+  PetscCall(CSLocalSumShare(&es));
+  E.ea = es.a;
+  if (c->freebd) { /* boundary neighbours' positions, written by the rank of the boundary edge's face */
+    CSFaceIter F = CS_FACE_ITER_INIT;
+    PetscCall(CSLocalSumBegin(c->dmV6, &vs));
+    while (CSMeshFaceNext(m, NULL, &F))
+      for (int k = 0; k < 3; k++) {
+        PetscInt i = F.v[(k + 1) % 3], j = F.v[(k + 2) % 3];
+        if (!m->edgeBoundary[F.e[k]]) continue;
+        for (int d = 0; d < 3; d++) {
+          vs.a[6 * i + 3 + d] = p[3 * j + d];
+          vs.a[6 * j + d]     = p[3 * i + d];
+        }
+      }
+    PetscCall(CSLocalSumShare(&vs));
+    E.va = vs.a;
+  }
+  if (g) {
+    PetscCall(CSLocalSumBegin(m->dmV3, &gs));
+    E.ga = gs.a;
+  }
+  /* W is summed as sum_i W_i (each W_i = sum beta - 2 pi is small near a minimum), not as 2 sum_e beta - 2 pi V,
+     whose cancellation loses ~1e-11 on a few thousand vertices */
+  PetscCall(CSLocalSumBegin(m->dmV1, &ws));
+  E.wa = ws.a;
+  E.p  = p;
+  PetscCall(BSInteriorEdges(c, m, &E));
+  if (E.ga || K) PetscCall(BSOppositeRows(c, m, &E));
+  if (c->freebd) {
+    PetscCall(BSFreeBoundaryFaces(c, m, &E));
+    PetscCall(BSFreeBoundaryVertices(c, m, &E));
+    PetscCall(CSLocalSumEnd(&vs, NULL));
+  }
+  PetscCall(CSLocalSumEnd(&es, NULL));
   PetscCall(CSMeshRestoreLocalPositions(m, x, &xl, &p));
 
-  if (g) {
-    PetscCall(VecRestoreArray(gl, &ga));
-    PetscCall(VecSet(g, 0));
-    PetscCall(DMLocalToGlobal(m->dmV3, gl, ADD_VALUES, g));
-    PetscCall(DMRestoreLocalVector(m->dmV3, &gl));
-  }
+  if (g) PetscCall(CSLocalSumEnd(&gs, g));
   {
     PetscScalar *w;
     PetscInt     n = 0;
     Vec          Wg = Wv ? Wv : c->Wg;
-    PetscCall(VecRestoreArray(wl, &wa));
-    PetscCall(VecSet(Wg, 0));
-    PetscCall(DMLocalToGlobal(m->dmV1, wl, ADD_VALUES, Wg));
-    PetscCall(DMRestoreLocalVector(m->dmV1, &wl));
+    PetscCall(CSLocalSumEnd(&ws, Wg));
     PetscCall(VecGetArray(Wg, &w));
     for (PetscInt v = 0; v < m->nv; v++) {
       if (!m->vertOwned[v]) continue;
@@ -597,7 +521,7 @@ static PetscErrorCode BSEvaluate(CSEnergy en, Vec x, PetscReal *Wout, Vec Wv, Ve
       n++;
     }
     PetscCall(VecRestoreArray(Wg, &w));
-    Wloc += Winf;
+    Wloc += E.Winf;
     PetscCall(MPIU_Allreduce(&Wloc, &Wsum, 1, MPIU_REAL, MPIU_SUM, m->comm));
     if (Wout) *Wout = Wsum - (c->freebd ? 2 * PETSC_PI * (PetscReal)m->topo.boundary_loops : 0);
   }
@@ -629,18 +553,15 @@ static PetscErrorCode BSDestroy(CSEnergy e)
 {
   BSCtx *c = (BSCtx *)e->ctx;
   PetscFunctionBeginUser;
-  if (c->gid) PetscCall(ISLocalToGlobalMappingRestoreIndices(c->ltog, &c->gid));
   PetscCall(DMDestroy(&c->dmE6));
   PetscCall(VecDestroy(&c->Wg));
   PetscCall(DMDestroy(&c->dmV6));
-  PetscCall(PetscFree2(c->oppGid, c->oppFixed));
-  PetscCall(PetscFree(c->bdGid));
+  PetscCall(PetscFree(c->oppFixed));
   PetscCall(PetscFree(c->fixed));
   PetscCall(PetscFree(c->wEdge));
   PetscCall(PetscFree(c->nnz));
   PetscCall(PetscFree3(c->gkl, c->Mkl, c->act));
   PetscCall(PetscFree(c->both));
-  PetscCall(PetscFree(c->oppLoc));
   PetscCall(PetscFree(c));
   PetscFunctionReturn(0);
 }

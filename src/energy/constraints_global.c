@@ -117,16 +117,10 @@ static PetscErrorCode PointsEvaluate(CSGlobalConstraint g, Vec x, PetscReal c[],
   if (rows) {
     for (PetscInt k = 0; k < ctx->n; k++)
       for (int d = 0; d < 3; d++) {
-        Vec          r = rows[3 * k + d], rl;
-        PetscScalar *a;
-        PetscCall(DMGetLocalVector(m->dmV3, &rl));
-        PetscCall(VecSet(rl, 0));
-        PetscCall(VecGetArray(rl, &a));
-        if (ctx->vloc[k] >= 0) a[3 * ctx->vloc[k] + d] = 1.0;
-        PetscCall(VecRestoreArray(rl, &a));
-        PetscCall(VecSet(r, 0));
-        PetscCall(DMLocalToGlobal(m->dmV3, rl, ADD_VALUES, r));
-        PetscCall(DMRestoreLocalVector(m->dmV3, &rl));
+        CSLocalSum s;
+        PetscCall(CSLocalSumBegin(m->dmV3, &s));
+        if (ctx->vloc[k] >= 0) s.a[3 * ctx->vloc[k] + d] = 1.0;
+        PetscCall(CSLocalSumEnd(&s, rows[3 * k + d]));
       }
   }
   PetscFunctionReturn(0);
@@ -253,21 +247,17 @@ static PetscErrorCode MobiusEvaluate(CSGlobalConstraint g, Vec x, PetscReal c[],
 {
   MobiusCtx       *ctx = (MobiusCtx *)g->ctx;
   CSMesh           m   = g->mesh;
-  Vec              xl, rl[3];
+  Vec              xl;
+  CSLocalSum       rs[3];
   const PetscReal *p;
-  PetscScalar     *ra[3];
   PetscReal        cl[3] = {0, 0, 0};
   PetscFunctionBeginUser;
   PetscCall(CSMeshGetLocalPositions(m, x, &xl, &p));
   if (rows)
-    for (int d = 0; d < 3; d++) {
-      PetscCall(DMGetLocalVector(m->dmV3, &rl[d]));
-      PetscCall(VecSet(rl[d], 0));
-      PetscCall(VecGetArray(rl[d], &ra[d]));
-    }
-  for (PetscInt f = 0; f < m->nf; f++) { /* every face lives on exactly one rank */
-    const PetscInt  *v    = m->faceVert + 3 * f;
-    const PetscReal *q[3] = {p + 3 * v[0], p + 3 * v[1], p + 3 * v[2]};
+    for (int d = 0; d < 3; d++) PetscCall(CSLocalSumBegin(m->dmV3, &rs[d]));
+  for (CSFaceIter F = CS_FACE_ITER_INIT; CSMeshFaceNext(m, p, &F);) { /* every face lives on exactly one rank */
+    const PetscInt  *v = F.v;
+    const PetscReal *const *q = F.c;
     PetscReal        an[3], A, N[3], ybar[3], dA[3][3];
     CSTriangleAreaVector(q, an);
     A = CSVecNorm(an);
@@ -278,17 +268,12 @@ static PetscErrorCode MobiusEvaluate(CSGlobalConstraint g, Vec x, PetscReal c[],
     CSTriangleAreaGradient(q, N, dA);
     for (int k = 0; k < 3; k++)
       for (int d = 0; d < 3; d++)
-        for (int e = 0; e < 3; e++) ra[d][3 * v[k] + e] += ybar[d] * dA[k][e];
+        for (int e = 0; e < 3; e++) rs[d].a[3 * v[k] + e] += ybar[d] * dA[k][e];
   }
   PetscCall(CSMeshRestoreLocalPositions(m, x, &xl, &p));
   PetscCall(MPIU_Allreduce(cl, c, 3, MPIU_REAL, MPIU_SUM, m->comm));
   if (rows)
-    for (int d = 0; d < 3; d++) {
-      PetscCall(VecRestoreArray(rl[d], &ra[d]));
-      PetscCall(VecSet(rows[d], 0));
-      PetscCall(DMLocalToGlobal(m->dmV3, rl[d], ADD_VALUES, rows[d]));
-      PetscCall(DMRestoreLocalVector(m->dmV3, &rl[d]));
-    }
+    for (int d = 0; d < 3; d++) PetscCall(CSLocalSumEnd(&rs[d], rows[d]));
   PetscFunctionReturn(0);
 }
 
@@ -309,14 +294,12 @@ PetscErrorCode CSConstraintCreateMobiusBalance(CSMesh mesh, Vec x0, CSGlobalCons
   PetscReal        s[4] = {0, 0, 0, 0}, t[4], c0[3], scale;
   PetscFunctionBeginUser;
   PetscCall(CSMeshGetLocalPositions(mesh, x0, &xl, &p));
-  for (PetscInt f = 0; f < mesh->nf; f++) {
-    const PetscInt  *v    = mesh->faceVert + 3 * f;
-    const PetscReal *q[3] = {p + 3 * v[0], p + 3 * v[1], p + 3 * v[2]};
-    PetscReal        an[3], A;
-    CSTriangleAreaVector(q, an);
+  for (CSFaceIter F = CS_FACE_ITER_INIT; CSMeshFaceNext(mesh, p, &F);) {
+    PetscReal an[3], A;
+    CSTriangleAreaVector(F.c, an);
     A = CSVecNorm(an);
     s[3] += A;
-    for (int d = 0; d < 3; d++) s[d] += A * (q[0][d] + q[1][d] + q[2][d]) / 3;
+    for (int d = 0; d < 3; d++) s[d] += A * (F.c[0][d] + F.c[1][d] + F.c[2][d]) / 3;
   }
   PetscCall(MPIU_Allreduce(s, t, 4, MPIU_REAL, MPIU_SUM, mesh->comm));
   PetscCheck(t[3] > 0, mesh->comm, PETSC_ERR_ARG_WRONG, "-constraint_mobius: the input mesh %s has zero area", mesh->name);

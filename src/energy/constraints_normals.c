@@ -12,11 +12,8 @@ PetscErrorCode CSNormalConstraintCreate(CSMesh m, Vec x0, const PetscBool fixed[
   nc->mesh  = m;
   nc->fixed = fixed;
   PetscCall(PetscMalloc1(m->nf, &nc->faces));
-  for (PetscInt f = 0; f < m->nf; f++) {
-    PetscBool b = PETSC_FALSE;
-    for (int k = 0; k < 3; k++) b = (PetscBool)(b || m->edgeBoundary[m->faceEdge[3 * f + k]]);
-    if (b) nc->faces[nb++] = f;
-  }
+  for (CSFaceIter F = CS_FACE_ITER_INIT; CSMeshFaceNext(m, NULL, &F);)
+    if (m->edgeBoundary[F.e[0]] || m->edgeBoundary[F.e[1]] || m->edgeBoundary[F.e[2]]) nc->faces[nb++] = F.f;
   nc->nb = nb;
   PetscCall(VecCreateMPI(m->comm, 3 * nb, PETSC_DETERMINE, &nc->N0));
   PetscCall(VecSet(nc->N0, 0));
@@ -56,13 +53,8 @@ PetscErrorCode CSNormalConstraintEvaluate(CSNormalConstraint *nc, Vec x, Vec c, 
   for (PetscInt b = 0; b < nc->nb; b++) {
     const PetscInt  *v     = m->faceVert + 3 * nc->faces[b];
     const PetscReal *pc[3] = {p + 3 * v[0], p + 3 * v[1], p + 3 * v[2]};
-    PetscReal        an[3], A, N[3];
-    CSTriangleAreaVector(pc, an);
-    A = CSVecNorm(an);
-    for (int d = 0; d < 3; d++) {
-      N[d]             = an[d] / A;
-      ca[3 * b + d] = N[d] - n0[3 * b + d];
-    }
+    PetscReal        N[3], A = CSTriangleNormal(pc, N);
+    for (int d = 0; d < 3; d++) ca[3 * b + d] = N[d] - n0[3 * b + d];
     if (wantJ) {
       for (int i = 0; i < 3; i++) {
         PetscReal   e[3], w[3];

@@ -43,9 +43,10 @@ static PetscErrorCode WillmoreGradient(CSEnergy e, Vec x, PetscReal *W, Vec g)
   WillmoreCtx     *c = (WillmoreCtx *)e->ctx;
   CSMesh           m = e->mesh;
   PetscReal        Wv;
-  Vec              hl, gl, xl;
+  Vec              hl, xl;
+  CSLocalSum       gs;
   const PetscReal *p, *h;
-  PetscScalar     *ga, *ya;
+  PetscScalar     *ya;
   const PetscScalar *aa;
   PetscInt         n;
   PetscFunctionBeginUser;
@@ -61,14 +62,12 @@ static PetscErrorCode WillmoreGradient(CSEnergy e, Vec x, PetscReal *W, Vec g)
   PetscCall(VecRestoreArray(c->y, &ya));
   PetscCall(DMGetLocalVector(m->dmV3, &hl));
   PetscCall(DMGlobalToLocal(m->dmV3, c->y, INSERT_VALUES, hl));
-  PetscCall(DMGetLocalVector(m->dmV3, &gl));
-  PetscCall(VecSet(gl, 0));
+  PetscCall(CSLocalSumBegin(m->dmV3, &gs));
   PetscCall(CSMeshGetLocalPositions(m, x, &xl, &p));
   PetscCall(VecGetArrayRead(hl, (const PetscScalar **)&h));
-  PetscCall(VecGetArray(gl, &ga));
-  for (PetscInt f = 0; f < m->nf; f++) {
-    const PetscInt  *v     = m->faceVert + 3 * f;
-    const PetscReal *pc[3] = {p + 3 * v[0], p + 3 * v[1], p + 3 * v[2]};
+  for (CSFaceIter F = CS_FACE_ITER_INIT; CSMeshFaceNext(m, p, &F);) {
+    const PetscInt  *v     = F.v;
+    const PetscReal *const *pc = F.c;
     const PetscReal *hc[3] = {h + 3 * v[0], h + 3 * v[1], h + 3 * v[2]};
     PetscReal        cot[3], an[3], A, N[3], dA[3][3], hh = 0, gf[3][3] = {{0}};
     CSTriangleCotans(pc, cot);
@@ -93,14 +92,11 @@ static PetscErrorCode WillmoreGradient(CSEnergy e, Vec x, PetscReal *W, Vec g)
     for (int q = 0; q < 3; q++)
       for (int d = 0; d < 3; d++) gf[q][d] -= hh / 3 * dA[q][d]; /* vertex-area derivative */
     for (int q = 0; q < 3; q++)
-      for (int d = 0; d < 3; d++) ga[3 * v[q] + d] += gf[q][d];
+      for (int d = 0; d < 3; d++) gs.a[3 * v[q] + d] += gf[q][d];
   }
-  PetscCall(VecRestoreArray(gl, &ga));
   PetscCall(VecRestoreArrayRead(hl, (const PetscScalar **)&h));
   PetscCall(CSMeshRestoreLocalPositions(m, x, &xl, &p));
-  PetscCall(VecSet(g, 0));
-  PetscCall(DMLocalToGlobal(m->dmV3, gl, ADD_VALUES, g));
-  PetscCall(DMRestoreLocalVector(m->dmV3, &gl));
+  PetscCall(CSLocalSumEnd(&gs, g));
   PetscCall(DMRestoreLocalVector(m->dmV3, &hl));
   PetscFunctionReturn(0);
 }

@@ -8,14 +8,12 @@ PetscErrorCode CSGeometryAreaVolume(CSMesh m, Vec x, PetscReal *area, PetscReal 
   PetscReal        s[2] = {0, 0}, g[2];
   PetscFunctionBeginUser;
   PetscCall(CSMeshGetLocalPositions(m, x, &xl, &p));
-  for (PetscInt f = 0; f < m->nf; f++) {
-    const PetscInt  *v    = m->faceVert + 3 * f;
-    const PetscReal *c[3] = {p + 3 * v[0], p + 3 * v[1], p + 3 * v[2]};
-    PetscReal        an[3], jk[3];
-    CSTriangleAreaVector(c, an);
+  for (CSFaceIter F = CS_FACE_ITER_INIT; CSMeshFaceNext(m, p, &F);) {
+    PetscReal an[3], jk[3];
+    CSTriangleAreaVector(F.c, an);
     s[0] += CSVecNorm(an);
-    CSVecCross(c[1], c[2], jk);
-    s[1] += CSVecDot(c[0], jk) / 6; /* soliman2021 App. B.2 */
+    CSVecCross(F.c[1], F.c[2], jk);
+    s[1] += CSVecDot(F.c[0], jk) / 6; /* soliman2021 App. B.2 */
   }
   PetscCall(CSMeshRestoreLocalPositions(m, x, &xl, &p));
   PetscCall(MPIU_Allreduce(s, g, 2, MPIU_REAL, MPIU_SUM, m->comm));

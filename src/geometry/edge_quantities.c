@@ -22,29 +22,35 @@ PetscErrorCode CSGeometryEdgeLengths(CSMesh m, Vec x, Vec l)
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode CSGeometryMeanEdgeLength(CSMesh m, Vec x, PetscReal *h)
+{
+  Vec         l;
+  PetscScalar s;
+  PetscFunctionBeginUser;
+  PetscCall(DMCreateGlobalVector(m->dmE1, &l));
+  PetscCall(CSGeometryEdgeLengths(m, x, l));
+  PetscCall(VecSum(l, &s));
+  *h = PetscRealPart(s) / (PetscReal)m->Ne;
+  PetscCall(VecDestroy(&l));
+  PetscFunctionReturn(0);
+}
+
 /* w_ij = (cot alpha + cot beta)/2: each face adds half the cotan of the corner opposite the edge. Faces of an
    edge may sit on two ranks, hence the additive local-to-global assembly. */
 PetscErrorCode CSGeometryCotanWeights(CSMesh m, Vec x, Vec w)
 {
-  Vec              xl, wl;
+  Vec              xl;
   const PetscReal *p;
-  PetscScalar     *a;
+  CSLocalSum       s;
   PetscFunctionBeginUser;
   PetscCall(CSMeshGetLocalPositions(m, x, &xl, &p));
-  PetscCall(DMGetLocalVector(m->dmE1, &wl));
-  PetscCall(VecSet(wl, 0));
-  PetscCall(VecGetArray(wl, &a));
-  for (PetscInt f = 0; f < m->nf; f++) {
-    const PetscInt  *v    = m->faceVert + 3 * f;
-    const PetscReal *c[3] = {p + 3 * v[0], p + 3 * v[1], p + 3 * v[2]};
-    PetscReal        cot[3];
-    CSTriangleCotans(c, cot);
-    for (int k = 0; k < 3; k++) a[m->faceEdge[3 * f + k]] += 0.5 * cot[k];
+  PetscCall(CSLocalSumBegin(m->dmE1, &s));
+  for (CSFaceIter F = CS_FACE_ITER_INIT; CSMeshFaceNext(m, p, &F);) {
+    PetscReal cot[3];
+    CSTriangleCotans(F.c, cot);
+    for (int k = 0; k < 3; k++) s.a[F.e[k]] += 0.5 * cot[k];
   }
-  PetscCall(VecRestoreArray(wl, &a));
-  PetscCall(VecSet(w, 0));
-  PetscCall(DMLocalToGlobal(m->dmE1, wl, ADD_VALUES, w));
-  PetscCall(DMRestoreLocalVector(m->dmE1, &wl));
+  PetscCall(CSLocalSumEnd(&s, w));
   PetscCall(CSMeshRestoreLocalPositions(m, x, &xl, &p));
   PetscFunctionReturn(0);
 }

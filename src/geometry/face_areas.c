@@ -9,12 +9,10 @@ PetscErrorCode CSGeometryFaceAreas(CSMesh m, Vec x, Vec area)
   PetscFunctionBeginUser;
   PetscCall(CSMeshGetLocalPositions(m, x, &xl, &p));
   PetscCall(VecGetArray(area, &a));
-  for (PetscInt f = 0; f < m->nf; f++) {
-    const PetscInt  *v    = m->faceVert + 3 * f;
-    const PetscReal *c[3] = {p + 3 * v[0], p + 3 * v[1], p + 3 * v[2]};
-    PetscReal        an[3];
-    CSTriangleAreaVector(c, an);
-    a[f] = CSVecNorm(an);
+  for (CSFaceIter F = CS_FACE_ITER_INIT; CSMeshFaceNext(m, p, &F);) {
+    PetscReal an[3];
+    CSTriangleAreaVector(F.c, an);
+    a[F.f] = CSVecNorm(an);
   }
   PetscCall(VecRestoreArray(area, &a));
   PetscCall(CSMeshRestoreLocalPositions(m, x, &xl, &p));

@@ -3,21 +3,18 @@
 
 PetscErrorCode CSGeometryLaplacianPositions(CSMesh m, Vec x, Vec Lf, Vec area)
 {
-  Vec              xl, yl, al;
+  Vec              xl;
+  CSLocalSum       ys, as;
   const PetscReal *p;
-  PetscScalar     *y, *a;
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(CS_EVENT_Geometry, 0, 0, 0, 0));
   PetscCall(CSMeshGetLocalPositions(m, x, &xl, &p));
-  PetscCall(DMGetLocalVector(m->dmV3, &yl));
-  PetscCall(DMGetLocalVector(m->dmV1, &al));
-  PetscCall(VecSet(yl, 0));
-  PetscCall(VecSet(al, 0));
-  PetscCall(VecGetArray(yl, &y));
-  PetscCall(VecGetArray(al, &a));
-  for (PetscInt f = 0; f < m->nf; f++) {
-    const PetscInt  *v    = m->faceVert + 3 * f;
-    const PetscReal *c[3] = {p + 3 * v[0], p + 3 * v[1], p + 3 * v[2]};
+  PetscCall(CSLocalSumBegin(m->dmV3, &ys));
+  PetscCall(CSLocalSumBegin(m->dmV1, &as));
+  for (CSFaceIter F = CS_FACE_ITER_INIT; CSMeshFaceNext(m, p, &F);) {
+    const PetscInt  *v = F.v;
+    const PetscReal *const *c = F.c;
+    PetscScalar     *y = ys.a, *a = as.a;
     PetscReal        cot[3], an[3], A;
     CSTriangleCotans(c, cot);
     CSTriangleAreaVector(c, an);
@@ -33,18 +30,8 @@ PetscErrorCode CSGeometryLaplacianPositions(CSMesh m, Vec x, Vec Lf, Vec area)
       a[v[k]] += A / 3;
     }
   }
-  PetscCall(VecRestoreArray(yl, &y));
-  PetscCall(VecRestoreArray(al, &a));
-  if (Lf) {
-    PetscCall(VecSet(Lf, 0));
-    PetscCall(DMLocalToGlobal(m->dmV3, yl, ADD_VALUES, Lf));
-  }
-  if (area) {
-    PetscCall(VecSet(area, 0));
-    PetscCall(DMLocalToGlobal(m->dmV1, al, ADD_VALUES, area));
-  }
-  PetscCall(DMRestoreLocalVector(m->dmV3, &yl));
-  PetscCall(DMRestoreLocalVector(m->dmV1, &al));
+  PetscCall(CSLocalSumEnd(&ys, Lf));
+  PetscCall(CSLocalSumEnd(&as, area));
   PetscCall(CSMeshRestoreLocalPositions(m, x, &xl, &p));
   PetscCall(PetscLogEventEnd(CS_EVENT_Geometry, 0, 0, 0, 0));
   PetscFunctionReturn(0);

@@ -2,26 +2,6 @@
    taking the reference triangle to the current one (1 for a similarity). */
 #include "cs_geometry.h"
 
-/* Edge vectors of a triangle in an orthonormal frame of its own plane: columns (e1, e2) of a 2x2 matrix. */
-static void TriangleFrame(const PetscReal *const c[3], PetscReal E[2][2])
-{
-  PetscReal u[3], v[3], t1[3], n[3], t2[3], lu;
-  CSVecSub(c[1], c[0], u);
-  CSVecSub(c[2], c[0], v);
-  lu = CSVecNorm(u);
-  for (int d = 0; d < 3; d++) t1[d] = u[d] / lu;
-  CSVecCross(u, v, n);
-  CSVecCross(n, t1, t2);
-  {
-    PetscReal ln = CSVecNorm(t2);
-    for (int d = 0; d < 3; d++) t2[d] /= ln;
-  }
-  E[0][0] = lu;
-  E[1][0] = 0;
-  E[0][1] = CSVecDot(v, t1);
-  E[1][1] = CSVecDot(v, t2);
-}
-
 PetscErrorCode CSGeometryQuasiConformal(CSMesh m, Vec xref, Vec x, Vec q, PetscReal *qmean, PetscReal *qmax)
 {
   Vec              xl, rl;
@@ -32,13 +12,20 @@ PetscErrorCode CSGeometryQuasiConformal(CSMesh m, Vec xref, Vec x, Vec q, PetscR
   PetscCall(CSMeshGetLocalPositions(m, x, &xl, &p));
   PetscCall(CSMeshGetLocalPositions(m, xref, &rl, &r));
   if (q) PetscCall(VecGetArray(q, &qa));
-  for (PetscInt f = 0; f < m->nf; f++) {
-    const PetscInt  *v     = m->faceVert + 3 * f;
-    const PetscReal *c[3]  = {p + 3 * v[0], p + 3 * v[1], p + 3 * v[2]};
-    const PetscReal *c0[3] = {r + 3 * v[0], r + 3 * v[1], r + 3 * v[2]};
-    PetscReal        E[2][2], E0[2][2], det0, A[2][2], Em, Fm, smax, smin, Q, an[3];
-    TriangleFrame(c, E);
-    TriangleFrame(c0, E0);
+  for (CSFaceIter F = CS_FACE_ITER_INIT; CSMeshFaceNext(m, p, &F);) {
+    const PetscReal *c0[3] = {r + 3 * F.v[0], r + 3 * F.v[1], r + 3 * F.v[2]};
+    PetscReal        fr[9], t[4], t0[4], E[2][2], E0[2][2], det0, A[2][2], Em, Fm, smax, smin, Q, an[3];
+    /* edge vectors in the triangle's own plane: columns of E (current) and E0 (reference) */
+    CSTriangleFrame(F.c, fr, t);
+    CSTriangleFrame(c0, fr, t0);
+    E[0][0]  = t[0];
+    E[1][0]  = t[1];
+    E[0][1]  = t[2];
+    E[1][1]  = t[3];
+    E0[0][0] = t0[0];
+    E0[1][0] = t0[1];
+    E0[0][1] = t0[2];
+    E0[1][1] = t0[3];
     /* A = E E0^{-1} */
     det0    = E0[0][0] * E0[1][1] - E0[0][1] * E0[1][0];
     A[0][0] = (E[0][0] * E0[1][1] - E[0][1] * E0[1][0]) / det0;
@@ -52,7 +39,7 @@ PetscErrorCode CSGeometryQuasiConformal(CSMesh m, Vec xref, Vec x, Vec q, PetscR
     smax = Em + Fm;
     smin = PetscAbsReal(Em - Fm);
     Q    = smax / smin;
-    if (qa) qa[f] = Q;
+    if (qa) qa[F.f] = Q;
     CSTriangleAreaVector(c0, an);
     s[0] += CSVecNorm(an) * Q;
     s[1] += CSVecNorm(an);

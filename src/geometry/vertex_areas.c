@@ -3,27 +3,20 @@
 
 PetscErrorCode CSGeometryVertexAreas(CSMesh m, Vec x, Vec area)
 {
-  Vec              xl, al;
+  Vec              xl;
+  CSLocalSum       s;
   const PetscReal *p;
-  PetscScalar     *a;
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(CS_EVENT_Geometry, 0, 0, 0, 0));
   PetscCall(CSMeshGetLocalPositions(m, x, &xl, &p));
-  PetscCall(DMGetLocalVector(m->dmV1, &al));
-  PetscCall(VecSet(al, 0));
-  PetscCall(VecGetArray(al, &a));
-  for (PetscInt f = 0; f < m->nf; f++) {
-    const PetscInt  *v    = m->faceVert + 3 * f;
-    const PetscReal *c[3] = {p + 3 * v[0], p + 3 * v[1], p + 3 * v[2]};
-    PetscReal        an[3], A;
-    CSTriangleAreaVector(c, an);
+  PetscCall(CSLocalSumBegin(m->dmV1, &s));
+  for (CSFaceIter F = CS_FACE_ITER_INIT; CSMeshFaceNext(m, p, &F);) {
+    PetscReal an[3], A;
+    CSTriangleAreaVector(F.c, an);
     A = CSVecNorm(an);
-    for (int k = 0; k < 3; k++) a[v[k]] += A / 3;
+    for (int k = 0; k < 3; k++) s.a[F.v[k]] += A / 3;
   }
-  PetscCall(VecRestoreArray(al, &a));
-  PetscCall(VecSet(area, 0));
-  PetscCall(DMLocalToGlobal(m->dmV1, al, ADD_VALUES, area));
-  PetscCall(DMRestoreLocalVector(m->dmV1, &al));
+  PetscCall(CSLocalSumEnd(&s, area));
   PetscCall(CSMeshRestoreLocalPositions(m, x, &xl, &p));
   PetscCall(PetscLogEventEnd(CS_EVENT_Geometry, 0, 0, 0, 0));
   PetscFunctionReturn(0);

@@ -1,6 +1,6 @@
 /* From validated serial data on rank 0 to a distributed, interpolated DMPlex with its dof layouts and the
    local connectivity tables the kernels loop over. */
-#include "cs_mesh.h"
+#include "cs_mesh_adjacency.h"
 #include "cs_util.h"
 
 PetscLogEvent CS_EVENT_MeshRead, CS_EVENT_MeshDistribute, CS_EVENT_Geometry, CS_EVENT_Energy, CS_EVENT_Gradient, CS_EVENT_Assemble;
@@ -147,8 +147,7 @@ static PetscErrorCode BuildOwnershipAndBoundary(CSMesh m)
   PetscSF         sf;
   PetscInt        nleaves, vS, vE, eS, eE;
   const PetscInt *ilocal;
-  Vec             cl, cg;
-  PetscScalar    *c;
+  CSLocalSum      c;
   PetscFunctionBeginUser;
   PetscCall(DMPlexGetDepthStratum(m->dm, 0, &vS, &vE));
   PetscCall(DMPlexGetDepthStratum(m->dm, 1, &eS, &eE));
@@ -162,24 +161,15 @@ static PetscErrorCode BuildOwnershipAndBoundary(CSMesh m)
     if (p >= vS && p < vE) m->vertOwned[p - vS] = PETSC_FALSE;
     if (p >= eS && p < eE) m->edgeOwned[p - eS] = PETSC_FALSE;
   }
-  PetscCall(DMGetLocalVector(m->dmE1, &cl));
-  PetscCall(DMGetGlobalVector(m->dmE1, &cg));
-  PetscCall(VecSet(cl, 0));
-  PetscCall(VecSet(cg, 0));
-  PetscCall(VecGetArray(cl, &c));
-  for (PetscInt k = 0; k < 3 * m->nf; k++) c[m->faceEdge[k]] += 1;
-  PetscCall(VecRestoreArray(cl, &c));
-  PetscCall(DMLocalToGlobal(m->dmE1, cl, ADD_VALUES, cg));
-  PetscCall(DMGlobalToLocal(m->dmE1, cg, INSERT_VALUES, cl));
-  PetscCall(VecGetArray(cl, &c));
+  PetscCall(CSLocalSumBegin(m->dmE1, &c));
+  for (PetscInt k = 0; k < 3 * m->nf; k++) c.a[m->faceEdge[k]] += 1;
+  PetscCall(CSLocalSumShare(&c));
   for (PetscInt i = 0; i < m->nv; i++) m->vertBoundary[i] = PETSC_FALSE;
   for (PetscInt e = 0; e < m->ne; e++) {
-    m->edgeBoundary[e] = (PetscBool)(PetscRealPart(c[e]) < 1.5);
+    m->edgeBoundary[e] = (PetscBool)(PetscRealPart(c.a[e]) < 1.5);
     if (m->edgeBoundary[e]) m->vertBoundary[m->edgeVert[2 * e]] = m->vertBoundary[m->edgeVert[2 * e + 1]] = PETSC_TRUE;
   }
-  PetscCall(VecRestoreArray(cl, &c));
-  PetscCall(DMRestoreLocalVector(m->dmE1, &cl));
-  PetscCall(DMRestoreGlobalVector(m->dmE1, &cg));
+  PetscCall(CSLocalSumEnd(&c, NULL));
   PetscFunctionReturn(0);
 }
 
@@ -371,6 +361,7 @@ PetscErrorCode CSMeshDestroy(CSMesh *mesh)
   CSMesh m = *mesh;
   PetscFunctionBeginUser;
   if (!m) PetscFunctionReturn(0);
+  PetscCall(CSMeshAdjacencyDestroy(&m->adj));
   PetscCall(VecDestroy(&m->x));
   PetscCall(VecScatterDestroy(&m->natV3));
   PetscCall(VecScatterDestroy(&m->natV1));

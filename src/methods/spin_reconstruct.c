@@ -24,7 +24,8 @@ static inline void TransformedEdge(const PetscReal li[4], const PetscReal lj[4],
 static PetscErrorCode PoissonRHS(CSSpin s, Vec x, Vec lambda, Vec b)
 {
   CSMesh             mesh = s->mesh;
-  Vec                xl, ll, bl;
+  Vec                xl, ll;
+  CSLocalSum         bs;
   const PetscReal   *p;
   const PetscScalar *l;
   PetscScalar       *ba;
@@ -32,15 +33,13 @@ static PetscErrorCode PoissonRHS(CSSpin s, Vec x, Vec lambda, Vec b)
   PetscCall(CSMeshGetLocalPositions(mesh, x, &xl, &p));
   PetscCall(DMGetLocalVector(s->dm, &ll));
   PetscCall(DMGlobalToLocal(s->dm, lambda, INSERT_VALUES, ll));
-  PetscCall(DMGetLocalVector(mesh->dmV3, &bl));
-  PetscCall(VecSet(bl, 0));
+  PetscCall(CSLocalSumBegin(mesh->dmV3, &bs));
+  ba = bs.a;
   PetscCall(VecGetArrayRead(ll, &l));
-  PetscCall(VecGetArray(bl, &ba));
-  for (PetscInt f = 0; f < mesh->nf; f++) {
-    const PetscInt  *v    = mesh->faceVert + 3 * f;
-    const PetscReal *c[3] = {p + 3 * v[0], p + 3 * v[1], p + 3 * v[2]};
-    PetscReal        cot[3];
-    CSTriangleCotans(c, cot);
+  for (CSFaceIter F = CS_FACE_ITER_INIT; CSMeshFaceNext(mesh, p, &F);) {
+    const PetscInt *v = F.v;
+    PetscReal       cot[3];
+    CSTriangleCotans(F.c, cot);
     for (int k = 0; k < 3; k++) {
       PetscInt  i = v[(k + 1) % 3], j = v[(k + 2) % 3];
       PetscReal e[3], et[3], li[4], lj[4], w = 0.5 * cot[k];
@@ -57,10 +56,7 @@ static PetscErrorCode PoissonRHS(CSSpin s, Vec x, Vec lambda, Vec b)
     }
   }
   PetscCall(VecRestoreArrayRead(ll, &l));
-  PetscCall(VecRestoreArray(bl, &ba));
-  PetscCall(VecSet(b, 0));
-  PetscCall(DMLocalToGlobal(mesh->dmV3, bl, ADD_VALUES, b));
-  PetscCall(DMRestoreLocalVector(mesh->dmV3, &bl));
+  PetscCall(CSLocalSumEnd(&bs, b));
   PetscCall(DMRestoreLocalVector(s->dm, &ll));
   PetscCall(CSMeshRestoreLocalPositions(mesh, x, &xl, &p));
   PetscFunctionReturn(0);

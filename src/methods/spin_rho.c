@@ -1,6 +1,6 @@
 /* Where rho comes from: a file (one value per vertex or per face, in file order), a painted bump, the mean
    curvature (rho = s H; crane2011 Sec. 7.3 uses rho = -H for minimal surfaces), or the nearest spin
-   transformation of an arbitrary deformation (crane2011 Sec. 7.2). Also the boundary tangents of Sec. 5.7. */
+   transformation of an arbitrary deformation (crane2011 Sec. 7.2). */
 #include "cs_methods_spin.h"
 #include "cs_util.h"
 
@@ -59,41 +59,6 @@ static PetscErrorCode ReadField(CSMesh mesh, const char option[], const char pat
   PetscFunctionReturn(0);
 }
 
-/* Area-weighted vertex normals (global dmV3, unit length). */
-static PetscErrorCode VertexNormals(CSMesh mesh, Vec x, Vec N)
-{
-  Vec              xl, nl;
-  const PetscReal *p;
-  PetscScalar     *na;
-  PetscInt         n;
-  PetscFunctionBeginUser;
-  PetscCall(CSMeshGetLocalPositions(mesh, x, &xl, &p));
-  PetscCall(DMGetLocalVector(mesh->dmV3, &nl));
-  PetscCall(VecSet(nl, 0));
-  PetscCall(VecGetArray(nl, &na));
-  for (PetscInt f = 0; f < mesh->nf; f++) {
-    const PetscInt  *v    = mesh->faceVert + 3 * f;
-    const PetscReal *c[3] = {p + 3 * v[0], p + 3 * v[1], p + 3 * v[2]};
-    PetscReal        an[3];
-    CSTriangleAreaVector(c, an);
-    for (int k = 0; k < 3; k++)
-      for (int d = 0; d < 3; d++) na[3 * v[k] + d] += an[d];
-  }
-  PetscCall(VecRestoreArray(nl, &na));
-  PetscCall(VecSet(N, 0));
-  PetscCall(DMLocalToGlobal(mesh->dmV3, nl, ADD_VALUES, N));
-  PetscCall(DMRestoreLocalVector(mesh->dmV3, &nl));
-  PetscCall(CSMeshRestoreLocalPositions(mesh, x, &xl, &p));
-  PetscCall(VecGetLocalSize(N, &n));
-  PetscCall(VecGetArray(N, &na));
-  for (PetscInt i = 0; i < n / 3; i++) {
-    PetscReal l = PetscSqrtReal(PetscSqr(PetscRealPart(na[3 * i])) + PetscSqr(PetscRealPart(na[3 * i + 1])) + PetscSqr(PetscRealPart(na[3 * i + 2])));
-    for (int d = 0; d < 3; d++) na[3 * i + d] /= (l > 0 ? l : 1);
-  }
-  PetscCall(VecRestoreArray(N, &na));
-  PetscFunctionReturn(0);
-}
-
 /* rho += s H with the signed pointwise mean curvature H_i = (L f)_i . N_i / (2 M_i) (positive on a sphere with
    outward normals; (L f)_i ~ 2 H N M_i for the positive cotan Laplacian). crane2011 Sec. 7.3 takes |HN| = |Lf|,
    which loses the sign on saddle-shaped regions; the projection on the vertex normal keeps it. */
@@ -108,7 +73,7 @@ static PetscErrorCode AddMeanCurvature(CSMesh mesh, Vec x, PetscReal s, Vec rho)
   PetscCall(DMCreateGlobalVector(mesh->dmV3, &N));
   PetscCall(DMCreateGlobalVector(mesh->dmV1, &M));
   PetscCall(CSGeometryLaplacianPositions(mesh, x, Lf, M));
-  PetscCall(VertexNormals(mesh, x, N));
+  PetscCall(CSGeometryVertexNormals(mesh, x, N));
   PetscCall(VecGetLocalSize(M, &n));
   PetscCall(VecGetArrayRead(Lf, &l));
   PetscCall(VecGetArrayRead(N, &nn));
@@ -129,60 +94,12 @@ static PetscErrorCode AddMeanCurvature(CSMesh mesh, Vec x, PetscReal s, Vec rho)
   PetscFunctionReturn(0);
 }
 
+/* Kept for spin_solve.c until it calls CSGeometryBoundaryTangents (crane2011 Sec. 5.7) itself. */
 PetscErrorCode CSSpinBoundaryTangents(CSMesh mesh, Vec x, Vec T)
 {
-  Vec              xl, tl;
-  const PetscReal *p;
-  PetscScalar     *ta;
-  PetscInt         n;
   PetscFunctionBeginUser;
-  PetscCall(CSMeshGetLocalPositions(mesh, x, &xl, &p));
-  PetscCall(DMGetLocalVector(mesh->dmV3, &tl));
-  PetscCall(VecSet(tl, 0));
-  PetscCall(VecGetArray(tl, &ta));
-  for (PetscInt f = 0; f < mesh->nf; f++) {
-    const PetscInt *v = mesh->faceVert + 3 * f;
-    for (int a = 0; a < 3; a++) {
-      PetscInt i = v[a], j = v[(a + 1) % 3], e = mesh->faceEdge[3 * f + (a + 2) % 3];
-      /* the boundary half-edge i -> j in the counter-clockwise order of its only face: the outgoing tangent */
-      if (mesh->edgeBoundary[e])
-        for (int d = 0; d < 3; d++) ta[3 * i + d] += p[3 * j + d] - p[3 * i + d];
-    }
-  }
-  PetscCall(VecRestoreArray(tl, &ta));
-  PetscCall(VecSet(T, 0));
-  PetscCall(DMLocalToGlobal(mesh->dmV3, tl, ADD_VALUES, T));
-  PetscCall(DMRestoreLocalVector(mesh->dmV3, &tl));
-  PetscCall(CSMeshRestoreLocalPositions(mesh, x, &xl, &p));
-  PetscCall(VecGetLocalSize(T, &n));
-  PetscCall(VecGetArray(T, &ta));
-  for (PetscInt i = 0; i < n / 3; i++) {
-    PetscReal l = PetscSqrtReal(PetscSqr(PetscRealPart(ta[3 * i])) + PetscSqr(PetscRealPart(ta[3 * i + 1])) + PetscSqr(PetscRealPart(ta[3 * i + 2])));
-    if (l > 0)
-      for (int d = 0; d < 3; d++) ta[3 * i + d] /= l;
-  }
-  PetscCall(VecRestoreArray(T, &ta));
+  PetscCall(CSGeometryBoundaryTangents(mesh, x, T));
   PetscFunctionReturn(0);
-}
-
-/* Right-handed orthonormal frame of a triangle (rows u1, u2, n) and its planar corner coordinates. */
-static void TriangleFrame(const PetscReal *c[3], PetscReal F[9], PetscReal s[4])
-{
-  PetscReal e1[3], e2[3], n[3], l1, ln;
-  CSVecSub(c[1], c[0], e1);
-  CSVecSub(c[2], c[0], e2);
-  CSVecCross(e1, e2, n);
-  l1 = CSVecNorm(e1);
-  ln = CSVecNorm(n);
-  for (int d = 0; d < 3; d++) {
-    F[d]     = e1[d] / l1;
-    F[6 + d] = n[d] / ln;
-  }
-  CSVecCross(F + 6, F, F + 3);
-  s[0] = l1; /* planar coordinates: corner 1 = (s0, s1), corner 2 = (s2, s3) */
-  s[1] = 0;
-  s[2] = CSVecDot(e2, F);
-  s[3] = CSVecDot(e2, F + 3);
 }
 
 /* crane2011 Sec. 7.2: per face the best-fit similarity S = sqrt(det Y) A2^{-1} R A1 (B = R Y the polar
@@ -192,32 +109,23 @@ static void TriangleFrame(const PetscReal *c[3], PetscReal F[9], PetscReal s[4])
 PetscErrorCode CSSpinBestFitSimilarities(CSSpin spin, Vec x, Vec xt, Vec mu)
 {
   CSMesh             mesh = spin->mesh;
-  Vec                xl, tl, ml, wl, w;
-  const PetscScalar *pa, *qa;
-  PetscScalar       *ma, *wa;
+  Vec                xl, tl, w;
+  CSLocalSum         ms, ws;
+  const PetscReal   *pa, *qa;
   const PetscScalar *wg;
   PetscScalar       *mg;
   PetscInt           n, nflip = 0;
   PetscFunctionBeginUser;
-  PetscCall(DMGetLocalVector(mesh->dmV3, &xl));
-  PetscCall(DMGetLocalVector(mesh->dmV3, &tl));
-  PetscCall(DMGlobalToLocal(mesh->dmV3, x, INSERT_VALUES, xl));
-  PetscCall(DMGlobalToLocal(mesh->dmV3, xt, INSERT_VALUES, tl));
-  PetscCall(DMGetLocalVector(spin->dm, &ml));
-  PetscCall(DMGetLocalVector(mesh->dmV1, &wl));
-  PetscCall(VecSet(ml, 0));
-  PetscCall(VecSet(wl, 0));
-  PetscCall(VecGetArrayRead(xl, &pa));
-  PetscCall(VecGetArrayRead(tl, &qa));
-  PetscCall(VecGetArray(ml, &ma));
-  PetscCall(VecGetArray(wl, &wa));
-  for (PetscInt f = 0; f < mesh->nf; f++) {
-    const PetscInt  *v    = mesh->faceVert + 3 * f;
-    const PetscReal *c[3] = {pa + 3 * v[0], pa + 3 * v[1], pa + 3 * v[2]};
+  PetscCall(CSMeshGetLocalPositions(mesh, x, &xl, &pa));
+  PetscCall(CSMeshGetLocalPositions(mesh, xt, &tl, &qa));
+  PetscCall(CSLocalSumBegin(spin->dm, &ms));
+  PetscCall(CSLocalSumBegin(mesh->dmV1, &ws));
+  for (CSFaceIter F = CS_FACE_ITER_INIT; CSMeshFaceNext(mesh, pa, &F);) {
+    const PetscInt  *v    = F.v;
     const PetscReal *d[3] = {qa + 3 * v[0], qa + 3 * v[1], qa + 3 * v[2]};
     PetscReal        A1[9], A2[9], s[4], t[4], B[4], detS, detB, phi, R2[9], R3[9], q[4], l[4], scale, an[3], area;
-    TriangleFrame(c, A1, s);
-    TriangleFrame(d, A2, t);
+    CSTriangleFrame(F.c, A1, s);
+    CSTriangleFrame(d, A2, t);
     /* B [s1 s2] = [t1 t2] */
     detS = s[0] * s[3] - s[2] * s[1];
     B[0] = (t[0] * s[3] - t[2] * s[1]) / detS;
@@ -247,25 +155,18 @@ PetscErrorCode CSSpinBestFitSimilarities(CSSpin spin, Vec x, Vec xt, Vec mu)
     CSQuatConj(q, l);
     if (l[0] < 0)
       for (int k = 0; k < 4; k++) l[k] = -l[k];
-    CSTriangleAreaVector(c, an);
+    CSTriangleAreaVector(F.c, an);
     area = CSVecNorm(an);
     for (int k = 0; k < 3; k++) {
-      for (int m = 0; m < 4; m++) ma[4 * v[k] + m] += area * PetscSqrtReal(scale) * l[m];
-      wa[v[k]] += area;
+      for (int m = 0; m < 4; m++) ms.a[4 * v[k] + m] += area * PetscSqrtReal(scale) * l[m];
+      ws.a[v[k]] += area;
     }
   }
-  PetscCall(VecRestoreArrayRead(xl, &pa));
-  PetscCall(VecRestoreArrayRead(tl, &qa));
-  PetscCall(VecRestoreArray(ml, &ma));
-  PetscCall(VecRestoreArray(wl, &wa));
-  PetscCall(DMRestoreLocalVector(mesh->dmV3, &xl));
-  PetscCall(DMRestoreLocalVector(mesh->dmV3, &tl));
+  PetscCall(CSMeshRestoreLocalPositions(mesh, xt, &tl, &qa));
+  PetscCall(CSMeshRestoreLocalPositions(mesh, x, &xl, &pa));
   PetscCall(DMCreateGlobalVector(mesh->dmV1, &w));
-  PetscCall(VecSet(mu, 0));
-  PetscCall(DMLocalToGlobal(spin->dm, ml, ADD_VALUES, mu));
-  PetscCall(DMLocalToGlobal(mesh->dmV1, wl, ADD_VALUES, w));
-  PetscCall(DMRestoreLocalVector(spin->dm, &ml));
-  PetscCall(DMRestoreLocalVector(mesh->dmV1, &wl));
+  PetscCall(CSLocalSumEnd(&ms, mu));
+  PetscCall(CSLocalSumEnd(&ws, w));
   PetscCall(VecGetLocalSize(w, &n));
   PetscCall(VecGetArrayRead(w, &wg));
   PetscCall(VecGetArray(mu, &mg));
@@ -388,7 +289,7 @@ PetscErrorCode CSSpinBoundaryFromOptions(CSSpin spin, Vec xtarget, Vec *Tt)
   case CS_SPIN_BOUNDARY_TARGET:
     PetscCheck(xtarget, mesh->comm, PETSC_ERR_ARG_WRONG, "-spin_boundary target needs -target_mesh FILE");
     PetscCall(DMCreateGlobalVector(mesh->dmV3, Tt));
-    PetscCall(CSSpinBoundaryTangents(mesh, xtarget, *Tt));
+    PetscCall(CSGeometryBoundaryTangents(mesh, xtarget, *Tt));
     break;
   default:
     break;

@@ -28,8 +28,8 @@ PetscErrorCode CSOperatorCrossRatio(CSMesh m, PetscBool interior_only, Mat *C)
   PetscCall(PetscLogEventBegin(CS_EVENT_Assemble, 0, 0, 0, 0));
   PetscCall(DMCreateMatrix(m->dmE1, C));
   PetscCall(MatSetOption(*C, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE));
-  for (PetscInt f = 0; f < m->nf; f++) {
-    const PetscInt *fe = m->faceEdge + 3 * f;
+  for (CSFaceIter F = CS_FACE_ITER_INIT; CSMeshFaceNext(m, NULL, &F);) {
+    const PetscInt *fe = F.e;
     for (int k = 0; k < 3; k++) {
       PetscInt    row = fe[k], cols[2] = {fe[(k + 1) % 3], fe[(k + 2) % 3]};
       PetscScalar v[2] = {1.0, -1.0};

@@ -194,8 +194,8 @@ static PetscErrorCode AssembleBlocks(CSMesh mesh, DM dm, Vec x, CSRhoLocation lo
   }
   PetscCall(CSMeshGetLocalPositions(mesh, x, &xl, &p));
   PetscCall(CSDiracGetRho(mesh, loc, rho, &rl, &r));
-  for (PetscInt f = 0; f < mesh->nf; f++) {
-    const PetscInt *v = mesh->faceVert + 3 * f;
+  for (CSFaceIter F = CS_FACE_ITER_INIT; CSMeshFaceNext(mesh, NULL, &F);) {
+    const PetscInt  f = F.f, *v = F.v;
     PetscReal       a[3][4], A;
     PetscScalar     K[144];
     CSDiracFaceCoefficients(mesh, p, loc, r, f, a, &A);
@@ -335,8 +335,8 @@ PetscErrorCode CSDiracFaceApply(CSMesh mesh, DM dm, Vec x, Vec mu, PetscReal Dmu
   PetscCall(DMGetLocalVector(dm, &ml));
   PetscCall(DMGlobalToLocal(dm, mu, INSERT_VALUES, ml));
   PetscCall(VecGetArrayRead(ml, &m));
-  for (PetscInt f = 0; f < mesh->nf; f++) {
-    const PetscInt *v = mesh->faceVert + 3 * f;
+  for (CSFaceIter F = CS_FACE_ITER_INIT; CSMeshFaceNext(mesh, NULL, &F);) {
+    const PetscInt  f = F.f, *v = F.v;
     PetscReal       a[3][4], A;
     CSDiracFaceCoefficients(mesh, p, CS_RHO_NONE, NULL, f, a, &A);
     for (int c = 0; c < 4; c++) Dmu[4 * f + c] = Bmu[4 * f + c] = 0;

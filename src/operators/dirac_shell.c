@@ -13,20 +13,18 @@ typedef struct {
 static PetscErrorCode DiracShellMult(Mat X, Vec x, Vec y)
 {
   DiracShell        *ctx;
-  Vec                xl, yl;
+  Vec                xl;
+  CSLocalSum         ys;
   const PetscScalar *xa;
-  PetscScalar       *ya;
   PetscFunctionBeginUser;
   PetscCall(MatShellGetContext(X, &ctx));
   PetscCall(DMGetLocalVector(ctx->dm, &xl));
-  PetscCall(DMGetLocalVector(ctx->dm, &yl));
   PetscCall(DMGlobalToLocal(ctx->dm, x, INSERT_VALUES, xl));
-  PetscCall(VecSet(yl, 0));
+  PetscCall(CSLocalSumBegin(ctx->dm, &ys));
   PetscCall(VecGetArrayRead(xl, &xa));
-  PetscCall(VecGetArray(yl, &ya));
-  for (PetscInt f = 0; f < ctx->mesh->nf; f++) {
-    const PetscInt  *v = ctx->mesh->faceVert + 3 * f;
-    const PetscReal *a = ctx->coef + 12 * f;
+  for (CSFaceIter F = CS_FACE_ITER_INIT; CSMeshFaceNext(ctx->mesh, NULL, &F);) {
+    const PetscInt  *v = F.v;
+    const PetscReal *a = ctx->coef + 12 * F.f;
     PetscReal        s[4] = {0, 0, 0, 0};
     for (int j = 0; j < 3; j++) {
       PetscReal q[4], t[4];
@@ -37,15 +35,12 @@ static PetscErrorCode DiracShellMult(Mat X, Vec x, Vec y)
     for (int i = 0; i < 3; i++) {
       PetscReal t[4];
       CSQuatConjMul(a + 4 * i, s, t);
-      for (int c = 0; c < 4; c++) ya[4 * v[i] + c] += ctx->area[f] * t[c];
+      for (int c = 0; c < 4; c++) ys.a[4 * v[i] + c] += ctx->area[F.f] * t[c];
     }
   }
   PetscCall(VecRestoreArrayRead(xl, &xa));
-  PetscCall(VecRestoreArray(yl, &ya));
-  PetscCall(VecSet(y, 0));
-  PetscCall(DMLocalToGlobal(ctx->dm, yl, ADD_VALUES, y));
+  PetscCall(CSLocalSumEnd(&ys, y));
   PetscCall(DMRestoreLocalVector(ctx->dm, &xl));
-  PetscCall(DMRestoreLocalVector(ctx->dm, &yl));
   PetscFunctionReturn(0);
 }
 
@@ -53,24 +48,16 @@ static PetscErrorCode DiracShellMult(Mat X, Vec x, Vec y)
 static PetscErrorCode DiracShellGetDiagonal(Mat X, Vec d)
 {
   DiracShell  *ctx;
-  Vec          dl;
-  PetscScalar *da;
+  CSLocalSum   ds;
   PetscFunctionBeginUser;
   PetscCall(MatShellGetContext(X, &ctx));
-  PetscCall(DMGetLocalVector(ctx->dm, &dl));
-  PetscCall(VecSet(dl, 0));
-  PetscCall(VecGetArray(dl, &da));
-  for (PetscInt f = 0; f < ctx->mesh->nf; f++) {
-    const PetscInt *v = ctx->mesh->faceVert + 3 * f;
+  PetscCall(CSLocalSumBegin(ctx->dm, &ds));
+  for (CSFaceIter F = CS_FACE_ITER_INIT; CSMeshFaceNext(ctx->mesh, NULL, &F);)
     for (int i = 0; i < 3; i++) {
-      PetscReal n2 = CSQuatNorm2(ctx->coef + 12 * f + 4 * i);
-      for (int c = 0; c < 4; c++) da[4 * v[i] + c] += ctx->area[f] * n2;
+      PetscReal n2 = CSQuatNorm2(ctx->coef + 12 * F.f + 4 * i);
+      for (int c = 0; c < 4; c++) ds.a[4 * F.v[i] + c] += ctx->area[F.f] * n2;
     }
-  }
-  PetscCall(VecRestoreArray(dl, &da));
-  PetscCall(VecSet(d, 0));
-  PetscCall(DMLocalToGlobal(ctx->dm, dl, ADD_VALUES, d));
-  PetscCall(DMRestoreLocalVector(ctx->dm, &dl));
+  PetscCall(CSLocalSumEnd(&ds, d));
   PetscFunctionReturn(0);
 }
 

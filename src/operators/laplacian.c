@@ -13,12 +13,11 @@ static PetscErrorCode AssembleCotanLaplacian(CSMesh m, Vec x, DM dmX, PetscInt b
     PetscCall(MatSetOption(*A, MAT_SYMMETRIC, PETSC_TRUE));
   } else PetscCall(MatZeroEntries(*A));
   PetscCall(CSMeshGetLocalPositions(m, x, &xl, &p));
-  for (PetscInt f = 0; f < m->nf; f++) {
-    const PetscInt  *v    = m->faceVert + 3 * f;
-    const PetscReal *c[3] = {p + 3 * v[0], p + 3 * v[1], p + 3 * v[2]};
-    PetscReal        cot[3];
-    PetscScalar      K[9] = {0};
-    CSTriangleCotans(c, cot);
+  for (CSFaceIter F = CS_FACE_ITER_INIT; CSMeshFaceNext(m, p, &F);) {
+    const PetscInt *v = F.v;
+    PetscReal       cot[3];
+    PetscScalar     K[9] = {0};
+    CSTriangleCotans(F.c, cot);
     for (int k = 0; k < 3; k++) {
       int       i = (k + 1) % 3, j = (k + 2) % 3;
       PetscReal w = 0.5 * cot[k];

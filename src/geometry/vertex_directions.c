@@ -1,0 +1,61 @@
+/* Per-vertex unit directions: area-weighted vertex normals (the sum of the area vectors A_f N_f of the incident
+   faces, normalised) and the boundary tangents of crane2011 Sec. 5.7. */
+#include "cs_geometry.h"
+
+/* Normalises every 3-block of the global dmV3 vector v that is not zero. */
+static PetscErrorCode NormaliseBlocks(Vec v)
+{
+  PetscScalar *a;
+  PetscInt     n;
+  PetscFunctionBeginUser;
+  PetscCall(VecGetLocalSize(v, &n));
+  PetscCall(VecGetArray(v, &a));
+  for (PetscInt i = 0; i < n / 3; i++) {
+    PetscReal l = PetscSqrtReal(PetscSqr(PetscRealPart(a[3 * i])) + PetscSqr(PetscRealPart(a[3 * i + 1])) + PetscSqr(PetscRealPart(a[3 * i + 2])));
+    if (l > 0)
+      for (int d = 0; d < 3; d++) a[3 * i + d] /= l;
+  }
+  PetscCall(VecRestoreArray(v, &a));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSGeometryVertexNormals(CSMesh m, Vec x, Vec N)
+{
+  Vec              xl;
+  const PetscReal *p;
+  CSLocalSum       s;
+  PetscFunctionBeginUser;
+  PetscCall(CSMeshGetLocalPositions(m, x, &xl, &p));
+  PetscCall(CSLocalSumBegin(m->dmV3, &s));
+  for (CSFaceIter F = CS_FACE_ITER_INIT; CSMeshFaceNext(m, p, &F);) {
+    PetscReal an[3];
+    CSTriangleAreaVector(F.c, an);
+    for (int k = 0; k < 3; k++)
+      for (int d = 0; d < 3; d++) s.a[3 * F.v[k] + d] += an[d];
+  }
+  PetscCall(CSLocalSumEnd(&s, N));
+  PetscCall(CSMeshRestoreLocalPositions(m, x, &xl, &p));
+  PetscCall(NormaliseBlocks(N));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSGeometryBoundaryTangents(CSMesh m, Vec x, Vec T)
+{
+  Vec              xl;
+  const PetscReal *p;
+  CSLocalSum       s;
+  PetscFunctionBeginUser;
+  PetscCall(CSMeshGetLocalPositions(m, x, &xl, &p));
+  PetscCall(CSLocalSumBegin(m->dmV3, &s));
+  for (CSFaceIter F = CS_FACE_ITER_INIT; CSMeshFaceNext(m, p, &F);)
+    for (int a = 0; a < 3; a++) {
+      PetscInt i = F.v[a], j = F.v[(a + 1) % 3];
+      /* the boundary half-edge i -> j in the counter-clockwise order of its only face: the outgoing tangent */
+      if (m->edgeBoundary[F.e[(a + 2) % 3]])
+        for (int d = 0; d < 3; d++) s.a[3 * i + d] += p[3 * j + d] - p[3 * i + d];
+    }
+  PetscCall(CSLocalSumEnd(&s, T));
+  PetscCall(CSMeshRestoreLocalPositions(m, x, &xl, &p));
+  PetscCall(NormaliseBlocks(T));
+  PetscFunctionReturn(0);
+}
