@@ -1,9 +1,14 @@
-/* The driver bin/confsurf: its tasks (the methods register theirs in src/driver/main.c and task_flow.c). */
+/* The driver bin/confsurf: one function per task (registered by -task name in src/driver/main.c), each
+   creating the mesh and the output from the options and handing the mesh to a method object. */
 #ifndef CS_DRIVER_H
 #define CS_DRIVER_H
 #include "cs_output.h"
 
 PETSC_EXTERN PetscErrorCode CSTaskInfo(MPI_Comm comm);
 PETSC_EXTERN PetscErrorCode CSTaskFlow(MPI_Comm comm);
+PETSC_EXTERN PetscErrorCode CSTaskSpin(MPI_Comm comm);
+PETSC_EXTERN PetscErrorCode CSTaskSpectrum(MPI_Comm comm);
+/* -task flow -flow_type bs (src/driver/task_flow_bs.c), registered in task_flow.c */
+PETSC_EXTERN PetscErrorCode CSFlowBS(MPI_Comm comm, CSOutput *out);
 
 #endif

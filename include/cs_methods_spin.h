@@ -3,7 +3,7 @@
    EPS with prefix spin_, or inverse iteration with a kept factorisation, KSP prefix spin_inverse_), then the
    Poisson problem Delta f~ = div e~ for the new positions (Sec. 5.6, KSP prefix spin_poisson_).
    Boundary conditions of Sec. 5.7 (prescribed tangent directions) and the nearest spin transformation of an
-   arbitrary deformation (Sec. 7.2). bin/confsurf -task spin and -task spectrum (Fig. 8). */
+   arbitrary deformation (Sec. 7.2). bin/confsurf -task spin and -task spectrum (Fig. 8, src/driver/task_spin.c, task_spectrum.c). */
 #ifndef CS_METHODS_SPIN_H
 #define CS_METHODS_SPIN_H
 #include <slepceps.h>
@@ -119,8 +119,5 @@ PETSC_EXTERN PetscErrorCode CSSpinOptimalRho(CSSpin spin, Vec x, Vec mu, Vec rho
 /* internal: log events of the Poisson step */
 PETSC_EXTERN PetscErrorCode CSSpinLogPoissonBegin(void);
 PETSC_EXTERN PetscErrorCode CSSpinLogPoissonEnd(void);
-
-PETSC_EXTERN PetscErrorCode CSTaskSpin(MPI_Comm comm);
-PETSC_EXTERN PetscErrorCode CSTaskSpectrum(MPI_Comm comm);
 
 #endif

@@ -6,7 +6,7 @@
 #include "cs_energy.h"
 #include "cs_util.h"
 
-/* The fixed output interface of every task (DEVELOPERS.md): -o, -viewer_dir, -summary, -history, -reference,
+/* The fixed output interface of every task (README.md): -o, -viewer_dir, -summary, -history_csv, -reference,
    and for iterative tasks -checkpoint, -checkpoint_every, -resume. */
 typedef struct {
   char      out[PETSC_MAX_PATH_LEN], viewer_dir[PETSC_MAX_PATH_LEN], summary[PETSC_MAX_PATH_LEN], history[PETSC_MAX_PATH_LEN], reference[PETSC_MAX_PATH_LEN];
@@ -22,8 +22,11 @@ typedef struct {
 
 PETSC_EXTERN PetscErrorCode CSOutputFromOptions(MPI_Comm comm, CSOutput *o);
 /* The keys every task reports: counts, topology, area, volume, willmore, (q_mean, q_max against
-   -reference or the given xref), then writes -o and -summary (adding seconds). */
+   -reference or the given xref); CSOutputFinish then writes -o and -summary (adding seconds). */
 PETSC_EXTERN PetscErrorCode CSOutputAddMeshFacts(CSOutput *o, CSMesh mesh, Vec x, Vec xref);
+/* Key willmore_bs: the circle-angle energy of bobenko-schroeder2005 with -bs_boundary fixed and beta_eps 1e-6
+   (reported by -task info; the BS flow reports its own energy under the same key). */
+PETSC_EXTERN PetscErrorCode CSOutputAddWillmoreBS(CSOutput *o, CSMesh mesh, Vec x);
 PETSC_EXTERN PetscErrorCode CSOutputFinish(CSOutput *o, CSMesh mesh, Vec x);
 PETSC_EXTERN PetscErrorCode CSOutputDestroy(CSOutput *o);
 
@@ -32,7 +35,7 @@ PETSC_EXTERN PetscErrorCode CSOutputDestroy(CSOutput *o);
    (the input positions, or NULL) is fingerprinted so that a resume with another input is refused.
    CSOutputResume: with -resume, overwrites it, reals, x, edgeField and sets *resumed; else a no-op.
    CSOutputCheckpoint: with -checkpoint, writes when force or it is a multiple of -checkpoint_every.
-   CSOutputHistoryCreate: -history (NULL without it); after a resume, the rows of the interrupted run with
+   CSOutputHistoryCreate: -history_csv (NULL without it); after a resume, the rows of the interrupted run with
    first column below next are kept, so the file continues as one run. */
 PETSC_EXTERN PetscErrorCode CSOutputResume(CSOutput *o, CSMesh mesh, Vec x0, PetscInt *it, PetscInt nreal, PetscReal reals[], Vec x, Vec edgeField, PetscBool *resumed);
 PETSC_EXTERN PetscErrorCode CSOutputCheckpoint(CSOutput *o, CSMesh mesh, Vec x0, PetscInt it, PetscBool force, PetscInt nreal, const PetscReal reals[], Vec x, Vec edgeField);

@@ -20,7 +20,7 @@ run() { # name src steps reps np solver-label solver-options...
   local all=() faces=0 st=0 kits=0
   for r in $(seq $reps); do
     mpirun -n $np bin/confsurf -task flow -flow_type bs $src -bs_max_it $steps -bs_atol 0 -bs_rtol 0 "$@" \
-      -summary $tmp/s.json -history $tmp/h.csv > $tmp/log
+      -summary $tmp/s.json -history_csv $tmp/h.csv > $tmp/log
     all+=($(python3 -c "import json; print('%.4f' % json.load(open('$tmp/s.json'))['seconds_per_step'])"))
   done
   read faces st kits < <(python3 - $tmp <<'PY'
@@ -34,8 +34,8 @@ PY
   med=$(printf '%s\n' "${all[@]}" | sort -g | awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}')
   echo "| $name | $faces | $np | $label | $st | $kits | $med | ${all[*]} |" | tee -a $tab
 }
-MUMPS="-bs_ksp_type preonly -bs_pc_type cholesky -bs_pc_factor_mat_solver_type mumps -bs_mat_mumps_icntl_7 0"  # the default
-HYPRE="-bs_ksp_type cg -bs_pc_type hypre -bs_ksp_rtol 1e-6"
+MUMPS="-bs_semi_ksp_type preonly -bs_semi_pc_type cholesky -bs_semi_pc_factor_mat_solver_type mumps -bs_semi_mat_mumps_icntl_7 0"  # the default solver, with AMD (the default ordering is MUMPS's choice, AMF: docs/bs_flow.md)
+HYPRE="-bs_semi_ksp_type cg -bs_semi_pc_type hypre -bs_semi_ksp_rtol 1e-6"
 run bunny_closed "-mesh $bunny" 5 $REPS 1 "cg+hypre" $HYPRE
 run bunny_closed "-mesh $bunny" 5 $REPS 2 "cg+hypre" $HYPRE
 run bunny_closed "-mesh $bunny" 5 $REPS 1 "mumps" $MUMPS

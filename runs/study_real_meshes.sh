@@ -5,7 +5,7 @@
 # reads it (the BAD INPUT files are refused by the reader) and reports boundary_loops == 0 (the open meshes are
 # skipped); skipped files and the reason are listed under the table. Meshes run in ascending face count.
 # Per mesh:
-#   bin/confsurf -task flow -mesh M -flow_max_it $MAXIT -reference M -summary S.json -history H.csv -o out.obj $EXTRA
+#   bin/confsurf -task flow -mesh M -flow_max_it $MAXIT -reference M -summary S.json -history_csv H.csv -o out.obj $EXTRA
 # (-reference M: q_mean, q_max against the input; the flow reports the same numbers without it), its outputs
 # (info.json of the input, summary.json, history.csv, out.obj, log) in runs/results/real_meshes/<mesh>/, one row in
 # runs/results/real_meshes.md (markdown, header: date, commit, MAXIT, NP, EXTRA, TIMEOUT) and
@@ -83,7 +83,7 @@ for f in "${closed[@]+"${closed[@]}"}"; do
   echo "== $b (flow, MAXIT=$MAXIT, NP=$NP)"
   t0=$(date +%s.%N); rc=0
   timeout -k 30 "$TIMEOUT" "${launch[@]+"${launch[@]}"}" "$BIN" -task flow -mesh "$f" -flow_max_it "$MAXIT" -reference "$f" \
-    -summary "$d/summary.json" -history "$d/history.csv" -o "$d/out.obj" $EXTRA > "$d/log" 2>&1 || rc=$?
+    -summary "$d/summary.json" -history_csv "$d/history.csv" -o "$d/out.obj" $EXTRA > "$d/log" 2>&1 || rc=$?
   el=$(echo "$(date +%s.%N) - $t0" | bc)
   [ "$rc" = 0 ] || { echo "   exit $rc"; tail -3 "$d/log"; }
   python3 - "$b" "$d" "$rc" "$el" "$md" "$csv" <<'PY'

@@ -25,7 +25,7 @@ PetscErrorCode CSOutputFromOptions(MPI_Comm comm, CSOutput *o)
   PetscCall(PetscOptionsString("-o", "Final mesh (.obj or .ply)", NULL, o->out, o->out, sizeof(o->out), &o->has_out));
   PetscCall(PetscOptionsString("-viewer_dir", "Directory for the ParaView series (series.pvd)", NULL, o->viewer_dir, o->viewer_dir, sizeof(o->viewer_dir), &o->has_viewer));
   PetscCall(PetscOptionsString("-summary", "JSON summary file", NULL, o->summary, o->summary, sizeof(o->summary), &o->has_summary));
-  PetscCall(PetscOptionsString("-cs_history", "-history FILE.csv: per-iteration CSV history (main renames -history, which PETSc reserves)", NULL, o->history, o->history, sizeof(o->history), &o->has_history));
+  PetscCall(PetscOptionsString("-history_csv", "Iterative tasks: per-iteration CSV history (columns in the header line)", NULL, o->history, o->history, sizeof(o->history), &o->has_history));
   PetscCall(PetscOptionsString("-reference", "Mesh with the same connectivity for the quasi-conformal error", NULL, o->reference, o->reference, sizeof(o->reference), &o->has_reference));
   o->checkpoint_every = 10;
   PetscCall(PetscOptionsString("-checkpoint", "Iterative tasks: write a checkpoint (positions and loop state) to this file", NULL, o->checkpoint, o->checkpoint, sizeof(o->checkpoint), &o->has_checkpoint));
@@ -72,15 +72,6 @@ PetscErrorCode CSOutputAddMeshFacts(CSOutput *o, CSMesh mesh, Vec x, Vec xref)
   PetscCall(CSJSONAddReal(o->json, "willmore", W));
   PetscCall(PetscPrintf(mesh->comm, "mesh %s: V=%" PetscInt_FMT " E=%" PetscInt_FMT " F=%" PetscInt_FMT " genus=%" PetscInt_FMT " boundary_loops=%" PetscInt_FMT " components=%" PetscInt_FMT "\n", mesh->name, mesh->Nv, mesh->Ne, mesh->Nf, mesh->topo.genus, mesh->topo.boundary_loops, mesh->topo.components));
   PetscCall(PetscPrintf(mesh->comm, "area=%.12g volume=%.12g willmore=%.12g (4pi=%.12g)\n", (double)area, (double)volume, (double)W, (double)(4 * PETSC_PI)));
-  { /* the circle-angle energy of bobenko-schroeder2005 (boundary vertices excluded, as with -bs_boundary fixed) */
-    CSEnergy  bs;
-    PetscReal Wbs;
-    PetscCall(CSEnergyCreateWillmoreBS(mesh, CS_BS_BOUNDARY_FIXED, 1e-6, &bs));
-    PetscCall(CSEnergyValue(bs, x, &Wbs));
-    PetscCall(CSEnergyDestroy(&bs));
-    PetscCall(CSJSONAddReal(o->json, "willmore_bs", Wbs));
-    PetscCall(PetscPrintf(mesh->comm, "willmore_bs=%.12g (bobenko-schroeder2005)\n", (double)Wbs));
-  }
   if (xref || o->has_reference) {
     Vec       r = xref;
     PetscReal qmean, qmax;
@@ -91,6 +82,20 @@ PetscErrorCode CSOutputAddMeshFacts(CSOutput *o, CSMesh mesh, Vec x, Vec xref)
     PetscCall(PetscPrintf(mesh->comm, "quasi-conformal error: q_mean=%.12g q_max=%.12g\n", (double)qmean, (double)qmax));
     if (!xref) PetscCall(VecDestroy(&r));
   }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSOutputAddWillmoreBS(CSOutput *o, CSMesh mesh, Vec x)
+{
+  CSEnergy  bs;
+  PetscReal Wbs;
+  PetscFunctionBeginUser;
+  /* the circle-angle energy of bobenko-schroeder2005 (boundary vertices excluded, as with -bs_boundary fixed) */
+  PetscCall(CSEnergyCreateWillmoreBS(mesh, CS_BS_BOUNDARY_FIXED, 1e-6, &bs));
+  PetscCall(CSEnergyValue(bs, x, &Wbs));
+  PetscCall(CSEnergyDestroy(&bs));
+  PetscCall(CSJSONAddReal(o->json, "willmore_bs", Wbs));
+  PetscCall(PetscPrintf(mesh->comm, "willmore_bs=%.12g (bobenko-schroeder2005)\n", (double)Wbs));
   PetscFunctionReturn(0);
 }
 

@@ -15,7 +15,7 @@ PetscErrorCode CSHistoryCreate(MPI_Comm comm, const char path[], const char head
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   if (!rank) {
     (*h)->fp = fopen(path, "w");
-    PetscCheck((*h)->fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-history: cannot open %s for writing", path);
+    PetscCheck((*h)->fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-history_csv: cannot open %s for writing", path);
     fprintf((*h)->fp, "%s\n", header);
     fflush((*h)->fp);
   }

@@ -5,7 +5,7 @@
 # nprocs: 1 2
 source tests/lib.sh
 $MPIEXEC "$CS_BIN" -task flow -flow_type bs -mesh tests/data/bs_cap_flat.obj -bs_boundary fixed -summary "$TMP/fix.json" -o "$TMP/fix.obj" | tail -2
-$MPIEXEC "$CS_BIN" -task flow -flow_type bs -mesh tests/data/bs_cap_noisy.obj -bs_boundary free -bs_max_it 25 -summary "$TMP/free.json" -history "$TMP/free.csv" -o "$TMP/free.obj" | tail -2
+$MPIEXEC "$CS_BIN" -task flow -flow_type bs -mesh tests/data/bs_cap_noisy.obj -bs_boundary free -bs_max_it 25 -summary "$TMP/free.json" -history_csv "$TMP/free.csv" -o "$TMP/free.obj" | tail -2
 python3 - "$TMP" <<'PY'
 import json, sys, math
 sys.path.insert(0, "tests/data")
@@ -30,7 +30,7 @@ chk(max(abs(x - 1) for x in r) < 1e-3, "fixed: every vertex back on the unit sph
 for name in ("free",):
     s = json.load(open(d + "/%s.json" % name))
     V, _ = obj(d + "/%s.obj" % name)
-    W = [float(l.split(",")[1]) for l in list(open(d + "/%s.csv" % name))[1:] if l.count(",") >= 6]  # PETSc's -history writes here too
+    W = [float(l.split(",")[1]) for l in list(open(d + "/%s.csv" % name))[1:] if l.count(",") >= 6]
     chk(s["boundary"] == "free" and s["fixed_vertices"] == 0, name + ": free boundary, nothing fixed")
     chk(all(math.isfinite(c) for v in V for c in v) and max(abs(c) for v in V for c in v) < 1e3, name + ": positions finite")
     chk(s["willmore_bs"] is not None and 0 <= W[-1] < W[0] and all(W[i + 1] <= W[i] for i in range(len(W) - 1)), name + ": W decreases %.4g -> %.4g, stays >= 0" % (W[0], W[-1]))

@@ -41,18 +41,18 @@ PY
 
 # bs, semi-implicit: converges in 5 steps, so N = 4 stops at max_it (dt has grown: the checkpoint must keep it)
 B="-task flow -flow_type bs -gen icosphere -gen_level 2 -gen_project false"
-run $MPIEXEC "$CS_BIN" $B -bs_max_it 4 -o "$TMP/bs-full.obj" -summary "$TMP/bs-full.json" -history "$TMP/bs-full.csv"
-run $MPIEXEC "$CS_BIN" $B -bs_max_it 2 -checkpoint "$TMP/bs.ck" -history "$TMP/bs-split.csv"
-run $OTHER "$CS_BIN" $B -bs_max_it 4 -resume "$TMP/bs.ck" -o "$TMP/bs-res.obj" -summary "$TMP/bs-res.json" -history "$TMP/bs-split.csv"
+run $MPIEXEC "$CS_BIN" $B -bs_max_it 4 -o "$TMP/bs-full.obj" -summary "$TMP/bs-full.json" -history_csv "$TMP/bs-full.csv"
+run $MPIEXEC "$CS_BIN" $B -bs_max_it 2 -checkpoint "$TMP/bs.ck" -history_csv "$TMP/bs-split.csv"
+run $OTHER "$CS_BIN" $B -bs_max_it 4 -resume "$TMP/bs.ck" -o "$TMP/bs-res.obj" -summary "$TMP/bs-res.json" -history_csv "$TMP/bs-split.csv"
 grep -q "resumed from checkpoint .* at iteration 2" "$TMP/run.log" || { echo "BAD: no resume line"; exit 1; }
 compare bs
 
 # cgd (conformal, edge multipliers mu in the checkpoint): not converged after 10 iterations; -checkpoint_every 2
 C="-task flow -flow_type cgd -gen icosphere -gen_level 2 -flow_init_bump 0.1"
-run $MPIEXEC "$CS_BIN" $C -flow_max_it 10 -o "$TMP/cgd-full.obj" -summary "$TMP/cgd-full.json" -history "$TMP/cgd-full.csv"
-run $MPIEXEC "$CS_BIN" $C -flow_max_it 5 -checkpoint "$TMP/cgd.ck" -checkpoint_every 2 -history "$TMP/cgd-split.csv"
+run $MPIEXEC "$CS_BIN" $C -flow_max_it 10 -o "$TMP/cgd-full.obj" -summary "$TMP/cgd-full.json" -history_csv "$TMP/cgd-full.csv"
+run $MPIEXEC "$CS_BIN" $C -flow_max_it 5 -checkpoint "$TMP/cgd.ck" -checkpoint_every 2 -history_csv "$TMP/cgd-split.csv"
 [ "$(grep -c "wrote checkpoint" "$TMP/run.log")" = 3 ] || { echo "BAD: expected checkpoints at 2, 4 and 5:"; grep checkpoint "$TMP/run.log"; exit 1; }
-run $OTHER "$CS_BIN" $C -flow_max_it 10 -resume "$TMP/cgd.ck" -o "$TMP/cgd-res.obj" -summary "$TMP/cgd-res.json" -history "$TMP/cgd-split.csv"
+run $OTHER "$CS_BIN" $C -flow_max_it 10 -resume "$TMP/cgd.ck" -o "$TMP/cgd-res.obj" -summary "$TMP/cgd-res.json" -history_csv "$TMP/cgd-split.csv"
 compare cgd
 
 # bad -resume: clear errors on every rank count

@@ -11,7 +11,7 @@ run() { timeout 120 $MPIEXEC "$CS_BIN" -task flow -flow_type gd -flow_max_it 3 -
 maxits() { python3 -c 'import csv,sys; print(max(int(r["ksp_its"]) for r in csv.DictReader(open(sys.argv[1])) if int(r["it"]) > 0))' "$1"; }
 for L in 3 5; do
   S="-gen icosphere -gen_level $L -flow_init_bump 0.2 -flow_init_stretch 1.5,1,0.8"
-  run $S -summary "$TMP/a$L.json" -history "$TMP/a$L.csv" -o "$TMP/a$L.obj"
+  run $S -summary "$TMP/a$L.json" -history_csv "$TMP/a$L.csv" -o "$TMP/a$L.obj"
   its=$(maxits "$TMP/a$L.csv"); echo "level $L: CG iterations per step (csh2) $its"
   [ "$its" -le 15 ] || { echo "BAD: more than 15 CG iterations"; exit 1; }
   [ -z "${its3:-}" ] || [ "$its" -le $((its3 + 2)) ] || { echo "BAD: iterations grow with the mesh ($its3 -> $its)"; exit 1; }

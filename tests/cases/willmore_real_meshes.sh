@@ -16,11 +16,11 @@
 # nprocs: 1 2
 source tests/lib.sh
 M=meshes/eight_cgal.obj
-timeout 300 $MPIEXEC "$CS_BIN" -task flow -mesh $M -flow_max_it 150 -summary "$TMP/a.json" -history "$TMP/a.csv" > "$TMP/a.log" 2>&1 || { tail "$TMP/a.log"; exit 1; }
+timeout 300 $MPIEXEC "$CS_BIN" -task flow -mesh $M -flow_max_it 150 -summary "$TMP/a.json" -history_csv "$TMP/a.csv" > "$TMP/a.log" 2>&1 || { tail "$TMP/a.log"; exit 1; }
 grep -q "mesh resolution collapse at iteration" "$TMP/a.log" || { echo "BAD: no guard message"; tail -3 "$TMP/a.log"; exit 1; }
-timeout 300 $MPIEXEC "$CS_BIN" -task flow -flow_type pgd -mesh $M -flow_max_it 90 -flow_max_area_ratio 0 -summary "$TMP/b.json" -history "$TMP/b.csv" > "$TMP/b.log" 2>&1 || { tail "$TMP/b.log"; exit 1; }
+timeout 300 $MPIEXEC "$CS_BIN" -task flow -flow_type pgd -mesh $M -flow_max_it 90 -flow_max_area_ratio 0 -summary "$TMP/b.json" -history_csv "$TMP/b.csv" > "$TMP/b.log" 2>&1 || { tail "$TMP/b.log"; exit 1; }
 for m in knot1_cgal elephant_cgal bunny_lowres_npm; do
-  timeout 300 $MPIEXEC "$CS_BIN" -task flow -mesh meshes/$m.obj -flow_max_it 100 -summary "$TMP/$m.json" -history "$TMP/$m.csv" > "$TMP/$m.log" 2>&1 || { tail "$TMP/$m.log"; exit 1; }
+  timeout 300 $MPIEXEC "$CS_BIN" -task flow -mesh meshes/$m.obj -flow_max_it 100 -summary "$TMP/$m.json" -history_csv "$TMP/$m.csv" > "$TMP/$m.log" 2>&1 || { tail "$TMP/$m.log"; exit 1; }
   grep -q "mesh resolution collapse at iteration" "$TMP/$m.log" || { echo "BAD: $m: no guard message"; tail -3 "$TMP/$m.log"; exit 1; }
 done
 python3 - "$TMP" <<'PY'

@@ -3,8 +3,8 @@
 # nprocs: 1 2
 source tests/lib.sh
 B="-task flow -gen torus -gen_torus_R 3 -gen_tube_r 1 -gen_n 24 -gen_m 12"
-timeout 60 $MPIEXEC "$CS_BIN" $B -flow_type cgd -flow_max_it 100 -summary "$TMP/cgd.json" -history "$TMP/cgd.csv" > "$TMP/cgd.log" 2>&1 || { tail "$TMP/cgd.log"; exit 1; }
-timeout 60 $MPIEXEC "$CS_BIN" $B -flow_type gd -flow_max_it 60 -summary "$TMP/gd.json" -history "$TMP/gd.csv" > "$TMP/gd.log" 2>&1 || { tail "$TMP/gd.log"; exit 1; }
+timeout 60 $MPIEXEC "$CS_BIN" $B -flow_type cgd -flow_max_it 100 -summary "$TMP/cgd.json" -history_csv "$TMP/cgd.csv" > "$TMP/cgd.log" 2>&1 || { tail "$TMP/cgd.log"; exit 1; }
+timeout 60 $MPIEXEC "$CS_BIN" $B -flow_type gd -flow_max_it 60 -summary "$TMP/gd.json" -history_csv "$TMP/gd.csv" > "$TMP/gd.log" 2>&1 || { tail "$TMP/gd.log"; exit 1; }
 python3 - "$TMP" <<'PY'
 import json, sys, csv, math
 d = sys.argv[1]

@@ -26,7 +26,7 @@ for t in a b; do
 done
 D="-task flow -flow_init_bump 0.2 -flow_init_bump_freq 1 -flow_init_stretch 1.1,1,0.9 -flow_max_it 400"
 for t in a b; do
-  timeout 120 $MPIEXEC "$CS_BIN" $D -mesh "$TMP/$t.obj" -summary "$TMP/$t.json" -history "$TMP/$t.csv" -o "$TMP/${t}_min.obj" > "$TMP/$t.log" 2>&1 || { tail "$TMP/$t.log"; exit 1; }
+  timeout 120 $MPIEXEC "$CS_BIN" $D -mesh "$TMP/$t.obj" -summary "$TMP/$t.json" -history_csv "$TMP/$t.csv" -o "$TMP/${t}_min.obj" > "$TMP/$t.log" 2>&1 || { tail "$TMP/$t.log"; exit 1; }
 done
 read -r haus diam bound < <(python3 "$tools" hausdorff "$TMP/a_min.obj" "$TMP/b_min.obj")
 python3 - "$TMP" "$haus" "$diam" "$bound" <<'PY'

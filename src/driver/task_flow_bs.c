@@ -1,0 +1,91 @@
+/* -task flow -flow_type bs: the Bobenko-Schroeder flow (bobenko-schroeder2005 Sec. 4) on the mesh of -mesh/-gen,
+   with the monitors of src/output/bs_monitors.c. Summary keys: willmore_bs (the flow's energy, with the
+   infinity terms for -bs_boundary free), iterations, converged, stop_reason, rejected, fixed_vertices,
+   dt_final, seconds_per_step (stepping wall time over accepted + rejected steps), scheme, boundary, and the
+   mesh facts (xref = the input positions). */
+#include "cs_driver.h"
+#include "cs_output_bs.h"
+
+/* -bs_viewer_every: read on every run (not only with -viewer_dir) so that the option is never "unused". */
+static PetscErrorCode SetMonitors(CSBSFlow flow, CSOutput *out)
+{
+  const char *prefix;
+  PetscInt    every = 1;
+  CSMesh      mesh;
+  PetscFunctionBeginUser;
+  PetscCall(CSBSFlowGetMesh(flow, &mesh));
+  PetscCall(CSBSFlowGetOptionsPrefix(flow, &prefix));
+  PetscOptionsBegin(mesh->comm, prefix, "Bobenko-Schroeder flow output", NULL);
+  PetscCall(PetscOptionsInt("-viewer_every", "Write a ParaView step every this many steps (with -viewer_dir)", NULL, every, &every, NULL));
+  PetscOptionsEnd();
+  PetscCheck(every >= 1, mesh->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sviewer_every %" PetscInt_FMT ": must be >= 1", prefix, every);
+  PetscCall(CSBSFlowMonitorSetHistory(flow, out));
+  PetscCall(CSBSFlowMonitorSetViewer(flow, out, every));
+  PetscCall(CSBSFlowMonitorSet(flow, CSBSFlowMonitorProgress, NULL, NULL));
+  PetscCall(CSBSFlowMonitorSetCheckpoint(flow, out));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode Report(CSBSFlow flow, CSMesh mesh, CSOutput *out)
+{
+  CSBSConvergedReason reason;
+  CSBSBoundary        bc;
+  PetscInt            it, rej, nfixed;
+  PetscReal           W, dt;
+  PetscLogDouble      t;
+  const char         *scheme;
+  Vec                 x;
+  PetscFunctionBeginUser;
+  PetscCall(CSBSFlowGetConvergedReason(flow, &reason));
+  PetscCall(CSBSFlowGetIterationNumber(flow, &it));
+  PetscCall(CSBSFlowGetRejectedSteps(flow, &rej));
+  PetscCall(CSBSFlowGetEnergyValue(flow, &W));
+  PetscCall(CSBSFlowGetTimeStep(flow, &dt));
+  PetscCall(CSBSFlowGetStepSeconds(flow, &t));
+  PetscCall(CSBSFlowGetSchemeName(flow, &scheme));
+  PetscCall(CSBSFlowGetBoundary(flow, &bc, &nfixed));
+  PetscCall(CSBSFlowGetSolution(flow, &x));
+  PetscCall(PetscPrintf(mesh->comm, "bs flow: %s after %" PetscInt_FMT " steps (%" PetscInt_FMT " rejected), willmore_bs=%.12g, %.3g s per step\n", reason > 0 ? "converged" : "NOT converged", it, rej, (double)W, (double)(it + rej ? t / (it + rej) : 0)));
+  PetscCall(CSOutputAddMeshFacts(out, mesh, x, mesh->x));
+  PetscCall(CSJSONAddReal(out->json, "willmore_bs", W));
+  PetscCall(CSJSONAddInt(out->json, "iterations", it));
+  PetscCall(CSJSONAddBool(out->json, "converged", (PetscBool)(reason > 0)));
+  PetscCall(CSJSONAddString(out->json, "stop_reason", CSBSConvergedReasons[reason]));
+  PetscCall(CSJSONAddInt(out->json, "rejected", rej));
+  PetscCall(CSJSONAddInt(out->json, "fixed_vertices", nfixed));
+  PetscCall(CSJSONAddReal(out->json, "dt_final", dt));
+  PetscCall(CSJSONAddReal(out->json, "seconds_per_step", it + rej ? (PetscReal)t / (it + rej) : 0));
+  PetscCall(CSJSONAddString(out->json, "scheme", scheme));
+  PetscCall(CSJSONAddString(out->json, "boundary", CSBSBoundaries[bc]));
+  PetscCall(CSOutputFinish(out, mesh, x));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode RunFlow(CSMesh mesh, CSOutput *out)
+{
+  CSBSFlow       flow;
+  PetscErrorCode ierr;
+  PetscFunctionBeginUser;
+  PetscCall(CSBSFlowCreate(mesh, &flow));
+  ierr = CSBSFlowSetFromOptions(flow);
+  if (!ierr) ierr = CSBSFlowSetUp(flow);
+  if (!ierr) ierr = CSBSFlowResume(flow, out); /* before the history, which continues a resumed run */
+  if (!ierr) ierr = SetMonitors(flow, out);
+  if (!ierr) ierr = CSBSFlowSolve(flow);
+  if (!ierr) ierr = Report(flow, mesh, out);
+  PetscCall(CSBSFlowDestroy(&flow)); /* on every path: no leak after an error */
+  PetscCall(ierr);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSFlowBS(MPI_Comm comm, CSOutput *out)
+{
+  CSMesh         mesh;
+  PetscErrorCode ierr;
+  PetscFunctionBeginUser;
+  PetscCall(CSMeshCreateFromOptions(comm, NULL, &mesh));
+  ierr = RunFlow(mesh, out);
+  PetscCall(CSMeshDestroy(&mesh));
+  PetscCall(ierr);
+  PetscFunctionReturn(0);
+}

@@ -1,0 +1,280 @@
+/* The Bobenko-Schroeder Willmore flow object (bobenko-schroeder2005 Sec. 4): options, set-up, the stepping
+   loop and the monitors; the schemes are in bs_semi.c and bs_tao.c. See include/cs_methods_bs.h. */
+#include "bs_flow_impl.h"
+
+const char *const CSBSSchemes[]  = {"semi", "tao", "CSBSScheme", "CS_BS_SCHEME_", NULL};
+const char *const CSBSProblems[] = {"static", "euler", "CSBSProblem", "CS_BS_PROBLEM_", NULL};
+static const char *const ReasonsShifted[] = {"not_converged", "rejections", "max_it", "iterating", "converged"};
+const char *const       *CSBSConvergedReasons = ReasonsShifted + 3;
+
+PetscErrorCode CSBSFlowCreate(CSMesh mesh, CSBSFlow *flow)
+{
+  CSBSFlow F;
+  PetscFunctionBeginUser;
+  PetscCall(PetscNew(&F));
+  F->mesh       = mesh;
+  F->scheme     = CS_BS_SCHEME_SEMI;
+  F->problem    = CS_BS_PROBLEM_STATIC;
+  F->bc         = CS_BS_BOUNDARY_FIXED;
+  F->beta_eps   = 1e-6; /* the paper's value (Sec. 3.2) */
+  F->dt_rel     = 1;
+  F->dt_grow    = 2;
+  F->atol       = 1e-8;
+  F->rtol       = 1e-9;
+  F->max_it     = 100;
+  F->max_rej    = 30;
+  F->monotone   = PETSC_TRUE;
+  PetscCall(PetscStrallocpy("bs_", &F->prefix));
+  *flow = F;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSBSFlowSetOptionsPrefix(CSBSFlow flow, const char prefix[])
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscFree(flow->prefix));
+  PetscCall(PetscStrallocpy(prefix ? prefix : "", &flow->prefix));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSBSFlowGetOptionsPrefix(CSBSFlow flow, const char *prefix[])
+{
+  PetscFunctionBeginUser;
+  *prefix = flow->prefix;
+  PetscFunctionReturn(0);
+}
+
+/* A clear one-line error naming the option (with the prefix) for every bad value. */
+static PetscErrorCode CheckOptions(CSBSFlow F)
+{
+  MPI_Comm    comm = F->mesh->comm;
+  const char *p    = F->prefix;
+  PetscFunctionBeginUser;
+  PetscCheck(F->max_rej >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%smax_rejections %" PetscInt_FMT ": must be >= 0", p, F->max_rej);
+  PetscCheck(F->max_it >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%smax_it %" PetscInt_FMT ": must be >= 0", p, F->max_it);
+  PetscCheck(!F->dt_set || F->dt_opt > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sdt %g: must be > 0", p, (double)F->dt_opt);
+  PetscCheck(F->dt_rel > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sdt_rel %g: must be > 0", p, (double)F->dt_rel);
+  PetscCheck(F->dt_grow >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sdt_grow %g: must be >= 1", p, (double)F->dt_grow);
+  PetscCheck(F->dt_max_opt >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sdt_max %g: must be > 0", p, (double)F->dt_max_opt);
+  PetscCheck(F->atol >= 0 && F->rtol >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%satol/-%srtol must be >= 0", p, p);
+  PetscCheck(F->perturb >= 0 && F->perturb < 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sperturb %g: must lie in [0, 1)", p, (double)F->perturb);
+  PetscCheck(F->beta_eps >= 0 && F->beta_eps < 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sbeta_eps %g: must lie in [0, 1)", p, (double)F->beta_eps);
+  PetscCheck(!F->hessian_eps_set || (F->hessian_eps >= F->beta_eps && F->hessian_eps < 1), comm, PETSC_ERR_ARG_OUTOFRANGE, "-%shessian_eps %g: must lie in [-%sbeta_eps, 1)", p, (double)F->hessian_eps, p);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSBSFlowSetFromOptions(CSBSFlow F)
+{
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(F->mesh->comm, F->prefix, "Bobenko-Schroeder Willmore flow (bobenko-schroeder2005)", NULL);
+  PetscCall(PetscOptionsEnum("-scheme", "semi: semi-implicit (1/dt I + K) dx = -grad W; tao: TAO (static problem or backward Euler)", "CSBSFlowSetFromOptions", CSBSSchemes, (PetscEnum)F->scheme, (PetscEnum *)&F->scheme, NULL));
+  PetscCall(PetscOptionsEnum("-boundary", "fixed: G1, boundary and one-ring fixed; free: vertex at infinity (Sec. 3.3)", "CSBSFlowSetFromOptions", CSBSBoundaries, (PetscEnum)F->bc, (PetscEnum *)&F->bc, NULL));
+  PetscCall(PetscOptionsReal("-beta_eps", "Diamonds with |sin beta| below this contribute no gradient (Sec. 3.2)", NULL, F->beta_eps, &F->beta_eps, NULL));
+  PetscCall(PetscOptionsInt("-max_it", "Maximum number of accepted steps (TAO static: iterations)", NULL, F->max_it, &F->max_it, NULL));
+  PetscCall(PetscOptionsReal("-dt", "Initial time step (units length^2); default -dt_rel times the squared mean edge length", NULL, F->dt_opt, &F->dt_opt, &F->dt_set));
+  PetscCall(PetscOptionsReal("-dt_rel", "Initial time step relative to the squared mean edge length", NULL, F->dt_rel, &F->dt_rel, NULL));
+  PetscCall(PetscOptionsReal("-dt_grow", "Factor on dt after an accepted step", NULL, F->dt_grow, &F->dt_grow, NULL));
+  PetscCall(PetscOptionsReal("-dt_max", "Largest dt (default 1e4 times the initial dt)", NULL, F->dt_max_opt, &F->dt_max_opt, NULL));
+  PetscCall(PetscOptionsInt("-max_rejections", "semi: consecutive rejected steps (each divides dt by 4) before giving up", NULL, F->max_rej, &F->max_rej, NULL));
+  PetscCall(PetscOptionsReal("-atol", "Stop when W is below this", NULL, F->atol, &F->atol, NULL));
+  PetscCall(PetscOptionsReal("-rtol", "Stop when a step decreases W by less than this fraction", NULL, F->rtol, &F->rtol, NULL));
+  PetscCall(PetscOptionsEnum("-problem", "tao: static minimises W in one TaoSolve; euler: backward Euler steps through TAO", "CSBSFlowSetFromOptions", CSBSProblems, (PetscEnum)F->problem, (PetscEnum *)&F->problem, NULL));
+  PetscCall(PetscOptionsReal("-hessian_eps", "Leave diamonds with sin beta below this out of K (default -beta_eps)", NULL, F->hessian_eps, &F->hessian_eps, &F->hessian_eps_set));
+  PetscCall(PetscOptionsReal("-perturb", "Move the free vertices randomly by this fraction of the mean edge length before flowing (breaks co-circular diamonds, beta = 0, of grid-like meshes)", NULL, F->perturb, &F->perturb, NULL));
+  PetscCall(PetscOptionsBool("-monotone", "semi: reject steps that increase W (false: accept them, as needed when many diamonds start at beta = 0)", NULL, F->monotone, &F->monotone, NULL));
+  PetscOptionsEnd();
+  PetscCall(CheckOptions(F));
+  PetscFunctionReturn(0);
+}
+
+/* x <- x with every fixed vertex set back to x0 (keeps G1 data bit-identical, Sec. 3.3). */
+PetscErrorCode CSBSFlowResetFixed(CSBSFlow F, Vec x)
+{
+  CSMesh             m = F->mesh;
+  PetscScalar       *a;
+  const PetscScalar *a0;
+  PetscInt           n = 0;
+  PetscFunctionBeginUser;
+  if (!F->nfixed) PetscFunctionReturn(0);
+  PetscCall(VecGetArray(x, &a));
+  PetscCall(VecGetArrayRead(F->x0, &a0));
+  for (PetscInt v = 0; v < m->nv; v++) {
+    if (!m->vertOwned[v]) continue;
+    if (F->fixed[v])
+      for (int d = 0; d < 3; d++) a[3 * n + d] = a0[3 * n + d];
+    n++;
+  }
+  PetscCall(VecRestoreArrayRead(F->x0, &a0));
+  PetscCall(VecRestoreArray(x, &a));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode MeanEdgeLength(CSMesh m, Vec x, PetscReal *h)
+{
+  Vec         l;
+  PetscScalar s;
+  PetscFunctionBeginUser;
+  PetscCall(DMCreateGlobalVector(m->dmE1, &l));
+  PetscCall(CSGeometryEdgeLengths(m, x, l));
+  PetscCall(VecSum(l, &s));
+  *h = PetscRealPart(s) / (PetscReal)m->Ne;
+  PetscCall(VecDestroy(&l));
+  PetscFunctionReturn(0);
+}
+
+/* -bs_perturb: fixed vertices are reset to x0, so G1 data stay untouched; seeded, so runs repeat. */
+static PetscErrorCode Perturb(CSBSFlow F)
+{
+  PetscRandom rnd;
+  Vec         d;
+  PetscFunctionBeginUser;
+  PetscCall(PetscRandomCreate(F->mesh->comm, &rnd));
+  PetscCall(PetscRandomSetInterval(rnd, -F->perturb * F->h, F->perturb * F->h));
+  PetscCall(PetscRandomSetSeed(rnd, 20050705));
+  PetscCall(PetscRandomSeed(rnd));
+  PetscCall(VecDuplicate(F->x, &d));
+  PetscCall(VecSetRandom(d, rnd));
+  PetscCall(VecAXPY(F->x, 1, d));
+  PetscCall(CSBSFlowResetFixed(F, F->x));
+  PetscCall(VecDestroy(&d));
+  PetscCall(PetscRandomDestroy(&rnd));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSBSFlowSetUp(CSBSFlow F)
+{
+  CSMesh mesh = F->mesh;
+  PetscFunctionBeginUser;
+  if (F->setupcalled) PetscFunctionReturn(0);
+  PetscCall(PetscTime(&F->t0));
+  PetscCall(CSEnergyCreateWillmoreBS(mesh, F->bc, F->beta_eps, &F->bs));
+  if (F->hessian_eps_set) PetscCall(CSEnergyWillmoreBSSetHessianEps(F->bs, F->hessian_eps));
+  PetscCall(CSEnergyWillmoreBSGetFixed(F->bs, &F->fixed, &F->nfixed));
+  PetscCall(VecDuplicate(mesh->x, &F->x0));
+  PetscCall(VecCopy(mesh->x, F->x0));
+  PetscCall(VecDuplicate(mesh->x, &F->x));
+  PetscCall(VecCopy(mesh->x, F->x));
+  F->xmon = F->x;
+  PetscCall(MeanEdgeLength(mesh, F->x, &F->h));
+  if (F->perturb > 0) PetscCall(Perturb(F));
+  F->dt     = F->dt_set ? F->dt_opt : F->dt_rel * F->h * F->h;
+  F->dt_max = F->dt_max_opt == 0 ? 1e4 * F->dt : F->dt_max_opt;
+  PetscCall(PetscPrintf(mesh->comm, "bs flow: scheme %s, boundary %s (%" PetscInt_FMT " fixed vertices), beta_eps %g, dt0 %.3e (mean edge %.3e)\n", CSBSSchemes[F->scheme], CSBSBoundaries[F->bc], F->nfixed, (double)F->beta_eps, (double)F->dt, (double)F->h));
+  F->ops = F->scheme == CS_BS_SCHEME_SEMI ? &CSBSSchemeSemi : &CSBSSchemeTao;
+  PetscCall(F->ops->setup(F));
+  F->setupcalled = PETSC_TRUE;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSBSFlowMonitor(CSBSFlow F, CSBSMonitorInfo *info)
+{
+  PetscLogDouble now;
+  PetscFunctionBeginUser;
+  PetscCall(PetscTime(&now));
+  info->row     = F->row;
+  info->resumed = (PetscBool)(info->event == CS_BS_MONITOR_START && F->resumed);
+  info->seconds = (PetscReal)(now - F->t0);
+  for (PetscInt i = 0; i < F->nmon; i++) PetscCall(F->mon[i](F, info, F->monctx[i]));
+  if (info->event == CS_BS_MONITOR_STEP || (info->event == CS_BS_MONITOR_START && !F->resumed)) F->row++;
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode Start(CSBSFlow F)
+{
+  PetscFunctionBeginUser;
+  PetscCall(CSBSFlowSetUp(F));
+  if (F->started) PetscFunctionReturn(0);
+  F->started = PETSC_TRUE;
+  PetscCall(PetscTime(&F->tstart));
+  PetscCall(F->ops->start(F));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSBSFlowStep(CSBSFlow F)
+{
+  PetscFunctionBeginUser;
+  PetscCall(Start(F));
+  if (F->reason != CS_BS_ITERATING) PetscFunctionReturn(0);
+  if (F->ops->max_it_reason != CS_BS_ITERATING && F->it >= F->max_it) F->reason = F->ops->max_it_reason;
+  else PetscCall(F->ops->step(F));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSBSFlowSolve(CSBSFlow F)
+{
+  CSBSMonitorInfo info;
+  PetscFunctionBeginUser;
+  PetscCall(Start(F));
+  while (F->reason == CS_BS_ITERATING) PetscCall(CSBSFlowStep(F));
+  if (!F->finished) { /* the stepping time stops here */
+    PetscLogDouble t;
+    PetscCall(CSBSFlowGetStepSeconds(F, &t));
+    F->tsteps0  = t;
+    F->finished = PETSC_TRUE;
+  }
+  PetscCall(PetscMemzero(&info, sizeof(info)));
+  info.event = CS_BS_MONITOR_END;
+  info.it    = F->it;
+  info.W     = F->W;
+  info.dt    = F->dt;
+  F->xmon    = F->x;
+  PetscCall(CSBSFlowMonitor(F, &info));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSBSFlowMonitorSet(CSBSFlow F, CSBSFlowMonitorFn fn, void *ctx, PetscErrorCode (*destroy)(void **))
+{
+  PetscFunctionBeginUser;
+  PetscCheck(F->nmon < 8, F->mesh->comm, PETSC_ERR_ARG_OUTOFRANGE, "CSBSFlowMonitorSet: at most 8 monitors");
+  F->mon[F->nmon]        = fn;
+  F->monctx[F->nmon]     = ctx;
+  F->mondestroy[F->nmon] = destroy;
+  F->nmon++;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSBSFlowDestroy(CSBSFlow *flow)
+{
+  CSBSFlow F = *flow;
+  PetscFunctionBeginUser;
+  if (!F) PetscFunctionReturn(0);
+  for (PetscInt i = 0; i < F->nmon; i++)
+    if (F->mondestroy[i]) PetscCall(F->mondestroy[i](&F->monctx[i]));
+  if (F->ops) PetscCall(F->ops->destroy(F));
+  PetscCall(VecDestroy(&F->x));
+  PetscCall(VecDestroy(&F->x0));
+  PetscCall(CSEnergyDestroy(&F->bs));
+  PetscCall(PetscFree(F->prefix));
+  PetscCall(PetscFree(F));
+  *flow = NULL;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSBSFlowGetCheckpointState(CSBSFlow F, PetscReal r[CS_BS_CHECKPOINT_NREAL])
+{
+  PetscLogDouble now, steps;
+  PetscFunctionBeginUser;
+  PetscCall(PetscTime(&now));
+  PetscCall(CSBSFlowGetStepSeconds(F, &steps));
+  r[0] = F->dt;
+  r[1] = (PetscReal)F->rejected;
+  r[2] = (PetscReal)(now - F->t0);
+  r[3] = (PetscReal)steps;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSBSFlowSetCheckpointState(CSBSFlow F, PetscInt it, const PetscReal r[CS_BS_CHECKPOINT_NREAL])
+{
+  PetscLogDouble now;
+  PetscFunctionBeginUser;
+  PetscCheck(F->setupcalled && !F->started, F->mesh->comm, PETSC_ERR_ORDER, "CSBSFlowSetCheckpointState: call after CSBSFlowSetUp, before the first step");
+  PetscCall(PetscTime(&now));
+  F->it       = it;
+  F->dt       = r[0];
+  F->rejected = (PetscInt)r[1];
+  F->t0       = now - r[2]; /* the history's seconds column continues */
+  F->tsteps0  = r[3];
+  F->row      = it + 1;     /* history row of the next accepted step (the row of step it is in the file) */
+  F->resumed  = PETSC_TRUE;
+  PetscFunctionReturn(0);
+}

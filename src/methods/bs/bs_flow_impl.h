@@ -1,0 +1,57 @@
+/* Private to src/methods/bs/: the Bobenko-Schroeder flow object and its scheme strategy. */
+#ifndef CS_BS_FLOW_IMPL_H
+#define CS_BS_FLOW_IMPL_H
+#include "cs_methods_bs.h"
+#include "cs_geometry.h"
+
+/* A scheme: setup after the flow's SetUp, start before the first step (after a resume), one step, destroy. */
+typedef struct {
+  PetscErrorCode (*setup)(CSBSFlow);
+  PetscErrorCode (*start)(CSBSFlow);
+  PetscErrorCode (*step)(CSBSFlow);
+  PetscErrorCode (*destroy)(CSBSFlow);
+  CSBSConvergedReason max_it_reason; /* the reason after -bs_max_it steps (ITERATING: the scheme counts) */
+} CSBSSchemeOps;
+
+/* semi (bs_semi.c); tao (bs_tao.c: backward Euler, switched to CSBSSchemeTaoStatic in its setup for the static
+   problem) */
+PETSC_INTERN const CSBSSchemeOps CSBSSchemeSemi, CSBSSchemeTao, CSBSSchemeTaoStatic;
+
+struct _p_CSBSFlow {
+  CSMesh mesh;
+  char  *prefix;
+
+  /* options */
+  CSBSScheme   scheme;
+  CSBSProblem  problem;
+  CSBSBoundary bc;
+  PetscReal    beta_eps, hessian_eps, dt_opt, dt_rel, dt_grow, dt_max_opt, atol, rtol, perturb;
+  PetscBool    hessian_eps_set, dt_set, monotone;
+  PetscInt     max_it, max_rej;
+
+  /* state */
+  CSEnergy         bs;
+  const PetscBool *fixed;
+  PetscInt         nfixed;
+  Vec              x, x0;  /* the iterate; the input positions (fixed vertices are reset to them) */
+  Vec              xmon;   /* the state the monitors see (x, or TAO's iterate with fixed vertices reset) */
+  PetscReal        h, dt, dt_max, W;
+  PetscInt         it, rejected, row;
+  PetscLogDouble   t0, tstart, tsteps0;
+  CSBSConvergedReason reason;
+  PetscBool        setupcalled, started, finished, resumed;
+
+  const CSBSSchemeOps *ops;
+  void                *data;
+
+  PetscInt          nmon;
+  CSBSFlowMonitorFn mon[8];
+  void             *monctx[8];
+  PetscErrorCode (*mondestroy[8])(void **);
+};
+
+PETSC_INTERN PetscErrorCode CSBSFlowResetFixed(CSBSFlow, Vec);
+/* Calls the monitors on flow->xmon; START and STEP advance the history row (START only when not resumed). */
+PETSC_INTERN PetscErrorCode CSBSFlowMonitor(CSBSFlow, CSBSMonitorInfo *);
+
+#endif
