@@ -10,7 +10,7 @@ static const char help[] = "confsurf: conformal geometry processing of triangle 
 #include <unistd.h>
 #include "cs_driver.h"
 #include "cs_methods_spin.h"
-#include "cs_substructured_cholesky.h"
+#include "cs_package.h"
 
 typedef struct {
   const char *name;
@@ -147,7 +147,7 @@ int main(int argc, char **argv)
   RenameHistoryOption(argc, argv);
   PetscCall(SlepcInitialize(&argc, &argv, NULL, help));
   PetscCall(CSLimitThreads(PETSC_COMM_WORLD));
-  PetscCall(CSSubCholRegister()); /* -<prefix>pc_type cssubchol for any KSP, before any options are read */
+  PetscCall(CSInitializePackage()); /* events, PCs and solver types, before any options are read */
   PetscCall(PetscOptionsHasName(NULL, NULL, "-cs_traceback", &traceback));
   if (!traceback) PetscCall(PetscPushErrorHandler(ConciseErrorHandler, NULL));
   ierr = Run(PETSC_COMM_WORLD);
