@@ -5,7 +5,7 @@
 #   torus 64x64 (4096 vertices), torus 120x120 (14400 vertices), bunny_closed_cgal.obj (37706 vertices, 75408 faces),
 # serial and 2 ranks, with
 #   default   Krylov-Schur + shift-and-invert; serially the supernodal factorisation of K - sigma in quaternion
-#             arithmetic (src/operators/quaternion_cholesky.c) and a CHOLMOD Poisson solve; in parallel the
+#             arithmetic (MatSolverType csquat, src/linalg/quaternion_cholesky.c) and a CHOLMOD Poisson solve; in parallel the
 #             substructured CHOLMOD factorisation (PC cssubchol) of the real 4V x 4V matrix and of the Poisson problem
 #   complex   the same with CHOLMOD's factorisation of the complex form (-spin_st_pc_factor_mat_solver_type cscholmod; the
 #             previous default, cholmod_factor.c)

@@ -2,14 +2,11 @@
    is a squared Dirac operator: up to lower-order terms it acts like the cotan Laplacian on each of the four
    real components (on the unit sphere X has the spectrum n^2 against M, the Laplacian l(l+1)). So
      K = V X V  ~  V ((L + c M) (x) I_4) V,    K^{-1} ~ V^{-1} ((L + c M)^{-1} (x) I_4) V^{-1},
-   with c = 4 pi / area (one unit of the unit sphere's spectrum; -spin_lap_shift scales it: 0.01-1 gave 44-46
-   iterations at 4k vertices, 10 gave 57, 100 gave 123) plus rho^2 (the zeroth-order part of (D - rho)^2).
+   with c = 4 pi / area (one unit of the unit sphere's spectrum; -spin_lap_shift scales it) plus rho^2 (the zeroth-order part of (D - rho)^2).
    One V x V factorisation has the pattern of a single component of the 4V x 4V one, i.e. 1/16 of its
    nonzeros and about 1/64 of its flops; it is applied to the four components in turn. A preconditioned
    eigensolver (Generalised Davidson or LOBPCG, SLEPc's STPRECOND) then needs products with X instead of a
-   factorisation of K. Measured (runs/bench_spin.sh): 46-47 Davidson iterations on tori of 4k and 14k vertices,
-   134 on the bunny (its bump is 4x higher); slower than one complex-form factorisation on all of them, but it
-   never factors the 4V x 4V matrix. Inner solver: KSP prefix spin_lap_ (Cholesky: CHOLMOD serially,
+   factorisation of K; it never factors the 4V x 4V matrix (iteration counts and times: docs/solvers.md). Inner solver: KSP prefix spin_lap_ (Cholesky: CHOLMOD serially,
    MUMPS-AMD in parallel, by default). */
 #include "cs_methods_spin.h"
 

@@ -350,8 +350,7 @@ static PetscErrorCode SetupEPS(CSSpin s, Vec x, CSRhoLocation loc, Vec rho, Pets
     PetscCall(STGetKSP(st, &ksp));
     PetscCall(KSPGetPC(ksp, &pc));
     if (precond) {
-      /* Generalised Davidson: 46 iterations at 4k vertices against LOBPCG's 61 with block size 4 or 54 with
-         block size 1, and the cheapest per iteration (runs/bench_spin.sh) */
+      /* Generalised Davidson: fewer and cheaper iterations than LOBPCG (docs/solvers.md) */
       PetscCall(EPSSetType(s->eps, EPSGD));
       PetscCall(STSetType(st, STPRECOND));
       PetscCall(KSPSetType(ksp, KSPPREONLY));
@@ -368,8 +367,7 @@ static PetscErrorCode SetupEPS(CSSpin s, Vec x, CSRhoLocation loc, Vec rho, Pets
       PetscCall(SetDefaultFactor(s, pc, s->generalized, (PetscBool)!s->shell));
       PetscCall(EPSSetWhichEigenpairs(s->eps, EPS_TARGET_MAGNITUDE));
       PetscCall(EPSSetTarget(s->eps, sigma));
-      /* nev = 1: 6 basis vectors (6 shifted solves, converged without restart on the meshes of
-         runs/bench_spin.sh; 8 solves with 8, SLEPc's default is 16) */
+      /* nev = 1: 6 basis vectors, enough to converge without restart (docs/solvers.md) */
       PetscCall(EPSSetDimensions(s->eps, nev, nev == 1 ? 6 : PETSC_DEFAULT, PETSC_DEFAULT));
     }
     PetscCall(EPSSetProblemType(s->eps, s->generalized ? EPS_GNHEP : EPS_HEP));
@@ -378,7 +376,7 @@ static PetscErrorCode SetupEPS(CSSpin s, Vec x, CSRhoLocation loc, Vec rho, Pets
     if (precond) PetscCall(CSSpinSetUpScalarPC(s, x, loc, rho, pc));
     PetscCall(EPSSetFromOptions(s->eps));
     PetscCall(KSPGetPC(ksp, &pc));
-    PetscCall(CSSpinMumpsDefaultOrdering(pc, s->K));
+    PetscCall(CSSpinMumpsDefaultOrdering(pc, s->shell ? s->X : s->K)); /* the shell's PC factors a copy of X */
   } else {
     PetscCall(EPSSetOperators(s->eps, s->K, s->generalized ? s->Y : NULL));
     PetscCall(EPSGetST(s->eps, &st));
