@@ -75,6 +75,9 @@ struct _p_CSSpin {
 
 /* Sets pc to the scalar preconditioner V^-1 ((L + c M)^-1 (x) I_4) V^-1 of K (spin_precond.c). */
 PETSC_EXTERN PetscErrorCode CSSpinSetUpScalarPC(CSSpin spin, Vec x, CSRhoLocation loc, Vec rho, PC pc);
+/* PC type "csspinlap" (spin_precond.c): the scalar preconditioner of -spin_solver precond; registered by CSInitializePackage */
+#define PCCSSPINLAP "csspinlap"
+PETSC_EXTERN PetscErrorCode PCCreate_CSSpinLap(PC);
 /* If pc is a MUMPS factorisation without a user ordering, choose AMD (cleared again at CSSpinDestroy). */
 PETSC_EXTERN PetscErrorCode CSSpinMumpsDefaultOrdering(PC pc, Mat A);
 PETSC_EXTERN PetscErrorCode CSSpinCreate(CSMesh mesh, CSSpin *spin);

@@ -1,10 +1,11 @@
 /* The package initialiser (include/cs_package.h). It lives in the methods layer, the lowest layer that sees every
-   object it registers (the csh2 PC of operators/, the PC and solver types of linalg/); the event ids live in
+   object it registers (the csh2 PC of operators/, the PC and solver types of linalg/, the spin method's csspinlap PC); the event ids live in
    util/ (include/cs_log.h) so that the lower layers can log without calling up. docs/solvers.md. */
 #include <petscksp.h>
 #include "cs_package.h"
 #include "cs_linalg.h"
 #include "cs_operators_conformal.h"
+#include "cs_methods_spin.h"
 
 static PetscBool CSPackageInitialized = PETSC_FALSE;
 
@@ -56,6 +57,7 @@ PetscErrorCode CSInitializePackage(void)
   PetscCall(RegisterEvents());
   PetscCall(PCRegister(PCCSSUBCHOL, PCCreate_CSSubChol));
   PetscCall(CSH2PCRegister());
+  PetscCall(PCRegister(PCCSSPINLAP, PCCreate_CSSpinLap));
   PetscCall(MatSolverTypeRegister(MATSOLVERCSQUAT, MATSEQAIJ, MAT_FACTOR_CHOLESKY, MatGetFactor_SeqAIJ_CSQuat));
   PetscCall(MatSolverTypeRegister(MATSOLVERCSCHOLMOD, MATSEQAIJ, MAT_FACTOR_CHOLESKY, MatGetFactor_SeqAIJ_CSCholmod));
   PetscCall(PetscRegisterFinalize(CSFinalizePackage));

@@ -8,6 +8,7 @@
    eigensolver (Generalised Davidson or LOBPCG, SLEPc's STPRECOND) then needs products with X instead of a
    factorisation of K; it never factors the 4V x 4V matrix (iteration counts and times: docs/solvers.md). Inner solver: KSP prefix spin_lap_ (Cholesky: CHOLMOD serially,
    MUMPS-AMD in parallel, by default). */
+#include <petsc/private/pcimpl.h> /* a PC type of our own (PCRegister) */
 #include "cs_methods_spin.h"
 
 /* Ls = L + M diag(c + rho_i^2) on dmV1 (rho per face: the area-weighted mean of the faces around i). */
@@ -57,15 +58,15 @@ static PetscErrorCode AssembleScalarOperator(CSSpin s, Vec x, CSRhoLocation loc,
 
 /* y = V^{-1} (Ls^{-1} (x) I_4) V^{-1} x. The component loops are written out: the vectors SLEPc passes here
    carry no block size. */
-static PetscErrorCode ApplyScalarPC(PC pc, Vec x, Vec y)
+static PetscErrorCode PCApply_CSSpinLap(PC pc, Vec x, Vec y)
 {
-  CSSpin             s;
+  CSSpin             s = (CSSpin)pc->data;
   Vec                b, u;
   const PetscScalar *xa, *va, *ua;
   PetscScalar       *ya, *ba;
   PetscInt           n;
   PetscFunctionBeginUser;
-  PetscCall(PCShellGetContext(pc, &s));
+  PetscCheck(s && s->klap, PetscObjectComm((PetscObject)pc), PETSC_ERR_ARG_WRONGSTATE, "PC %s is the spin method's own (-spin_solver precond); it has no spin transformation to precondition here", PCCSSPINLAP);
   PetscCall(DMGetGlobalVector(s->mesh->dmV1, &b));
   PetscCall(DMGetGlobalVector(s->mesh->dmV1, &u));
   PetscCall(VecGetLocalSize(b, &n));
@@ -95,8 +96,46 @@ static PetscErrorCode ApplyScalarPC(PC pc, Vec x, Vec y)
   PetscFunctionReturn(0);
 }
 
+static PetscErrorCode PCView_CSSpinLap(PC pc, PetscViewer viewer)
+{
+  PetscBool ascii;
+  PetscFunctionBeginUser;
+  PetscCall(PetscObjectTypeCompare((PetscObject)viewer, PETSCVIEWERASCII, &ascii));
+  if (ascii) PetscCall(PetscViewerASCIIPrintf(viewer, "  scalar Laplacian (L + c M)^{-1} per quaternion component (KSP prefix spin_lap_)\n"));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode PCSetSpin_CSSpinLap(PC pc, CSSpin s)
+{
+  PetscFunctionBeginUser;
+  pc->data = s; /* not owned */
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode PCDestroy_CSSpinLap(PC pc)
+{
+  PetscFunctionBeginUser;
+  pc->data = NULL;
+  PetscCall(PetscObjectComposeFunction((PetscObject)pc, "CSSpinLapSetSpin_C", NULL));
+  PetscFunctionReturn(0);
+}
+
+/* PC type "csspinlap" (registered by CSInitializePackage) */
+PetscErrorCode PCCreate_CSSpinLap(PC pc)
+{
+  PetscFunctionBeginUser;
+  pc->data         = NULL;
+  pc->ops->apply   = PCApply_CSSpinLap;
+  pc->ops->view    = PCView_CSSpinLap;
+  pc->ops->destroy = PCDestroy_CSSpinLap;
+  PetscCall(PetscObjectComposeFunction((PetscObject)pc, "CSSpinLapSetSpin_C", PCSetSpin_CSSpinLap));
+  PetscFunctionReturn(0);
+}
+
+/* Assembles L + c M and factors it; pc becomes (first call, before its SetFromOptions) or stays a csspinlap PC for s. */
 PetscErrorCode CSSpinSetUpScalarPC(CSSpin s, Vec x, CSRhoLocation loc, Vec rho, PC pc)
 {
+  PetscBool first = (PetscBool)!s->klap;
   PetscFunctionBeginUser;
   PetscCall(AssembleScalarOperator(s, x, loc, rho));
   if (!s->klap) {
@@ -111,9 +150,7 @@ PetscErrorCode CSSpinSetUpScalarPC(CSSpin s, Vec x, CSRhoLocation loc, Vec rho, 
   }
   PetscCall(KSPSetOperators(s->klap, s->Ls, s->Ls));
   PetscCall(KSPSetUp(s->klap));
-  PetscCall(PCSetType(pc, PCSHELL));
-  PetscCall(PCShellSetContext(pc, s));
-  PetscCall(PCShellSetApply(pc, ApplyScalarPC));
-  PetscCall(PCShellSetName(pc, "confsurf scalar Laplacian (L + c M) per quaternion component"));
+  if (first) PetscCall(PCSetType(pc, PCCSSPINLAP)); /* the default, set before the PC's SetFromOptions */
+  PetscTryMethod(pc, "CSSpinLapSetSpin_C", (PC, CSSpin), (pc, s));
   PetscFunctionReturn(0);
 }
