@@ -1,7 +1,12 @@
 # confsurf: `make` builds, `make run` runs the default experiment, `make test` runs the test suite,
-# `make bench` runs the benchmarks in runs/. Missing system packages are installed by scripts/install-deps.sh.
+# `make bench` runs the benchmarks in runs/ (runs/run-all.sh), `make deps` installs the system packages
+# (scripts/install-deps.sh; the other goals do it too when packages are missing). `make WERROR=` builds without -Werror.
 .DEFAULT_GOAL := all
 GOALS := all run test test-serial bench clean
+WERROR ?= -Werror
+
+deps:
+	bash scripts/install-deps.sh
 
 HAVE_DEPS := $(shell bash scripts/install-deps.sh --check >/dev/null 2>&1 && pkg-config --exists petsc slepc 2>/dev/null && echo yes)
 
@@ -14,7 +19,7 @@ else
 CC       := $(shell pkg-config --variable=ccompiler petsc)
 CPPFLAGS := -Iinclude $(shell pkg-config --cflags slepc petsc)
 CFLAGS   ?= -O2 -g
-CFLAGS   += -std=gnu11 -Wall -Wextra -Wno-unused-parameter -Werror -MMD -MP
+CFLAGS   += -std=gnu11 -Wall -Wextra -Wno-unused-parameter $(WERROR) -MMD -MP
 LDLIBS   := $(shell pkg-config --libs slepc petsc) -lcholmod -llapack -lblas -lm
 
 LIB_SRC  := $(sort $(wildcard src/*/*.c src/*/*/*.c))
@@ -31,7 +36,7 @@ LIB      := build/libconfsurf.a
 all: bin/confsurf $(TESTS) $(BENCHES)
 
 # the quaternion Cholesky's dense loops need -O3 to be vectorised (gcc 12 does not at -O2)
-build/obj/src/operators/quaternion_cholesky.o: CFLAGS += -O3
+build/obj/src/linalg/quaternion_cholesky.o: CFLAGS += -O3
 
 build/obj/%.o: %.c
 	@mkdir -p $(dir $@)
@@ -71,4 +76,4 @@ clean:
 -include $(LIB_OBJ:.o=.d) $(DRV_OBJ:.o=.d) $(TESTS:=.d) $(BENCHES:=.d)
 endif
 
-.PHONY: $(GOALS)
+.PHONY: $(GOALS) deps

@@ -20,15 +20,6 @@ PETSC_EXTERN PetscErrorCode CSCholmodDestroy(CSCholmod *f);
 struct cholmod_common_struct;
 PETSC_EXTERN PetscErrorCode CSCholmodStartCommon(const char ordering[], struct cholmod_common_struct *c);
 
-/* CHOLMOD supernodal factorisation of A into the symbolic factor L (cholmod_factorize), except for the last
-   ntrail columns when they end the last supernode and it is a root (no rows below): their diagonal block is left
-   as the Schur complement of A on them (lower triangle, not factored; *kept = PETSC_TRUE). Otherwise, or if that
-   could not be done, a normal factorisation (*kept = PETSC_FALSE). CHOLMOD's status is left in c.
-   src/operators/cholmod_last_supernode.c */
-struct cholmod_sparse_struct;
-struct cholmod_factor_struct;
-PETSC_EXTERN PetscErrorCode CSCholmodFactorKeepLast(struct cholmod_sparse_struct *A, struct cholmod_factor_struct *L, PetscInt ntrail, struct cholmod_common_struct *c, PetscBool *kept);
-
 /* The project's default sparse Cholesky for an SPD operator: CHOLMOD on one rank, the substructured CHOLMOD
    factorisation (PC cssubchol) on several. */
 PETSC_EXTERN PetscErrorCode CSSetDefaultCholesky(PC pc);

@@ -122,8 +122,7 @@ PETSC_EXTERN PetscErrorCode CSViewerAddFaceField(CSViewer v, const char name[], 
 PETSC_EXTERN PetscErrorCode CSViewerWriteStep(CSViewer v, Vec x, PetscReal time); /* writes and clears the fields */
 PETSC_EXTERN PetscErrorCode CSViewerDestroy(CSViewer *v);
 
-/* Logging */
-PETSC_EXTERN PetscLogEvent CS_EVENT_MeshRead, CS_EVENT_MeshDistribute, CS_EVENT_Geometry, CS_EVENT_Energy, CS_EVENT_Gradient, CS_EVENT_Assemble;
-PETSC_EXTERN PetscErrorCode CSRegisterEvents(void);
+/* Logging: the event ids, registered by CSInitializePackage */
+#include "cs_log.h"
 
 #endif

@@ -39,9 +39,7 @@ struct _p_CSSpin {
   PetscBool      inverse;     /* inverse iteration instead of EPS */
   PetscBool      scalar_pc;   /* EPS with STPRECOND and the scalar Laplacian preconditioner (spin_precond.c) */
   PetscBool      solver_set;  /* -spin_solver given */
-  PetscBool      direct_chol; /* factor K - sigma directly, outside PETSc (serial, standard problem, no boundary map) */
-  PetscBool      quat_chol;    /* ... in quaternion arithmetic (else CHOLMOD's complex form) */
-  char           chol_ordering[16]; /* its CHOLMOD ordering */
+  PetscBool      quat_factor; /* K - sigma is quaternionic and serial: csquat is the default factorisation */
   PetscInt       inverse_its;
   PetscBool      keep_factor; /* inverse iteration: keep the numeric factorisation across solves */
   PetscBool      pin;         /* Poisson: pin one vertex instead of mean-zero */
@@ -61,16 +59,11 @@ struct _p_CSSpin {
   Mat       Kinv;    /* K - sigma I for the inverse iteration */
   KSP       kpois;
   Mat       L;
-  CSCholmod cf;      /* K - sigma in complex form (cholmod_factor.c), when direct_chol and not quat_chol */
-  CSQuatCholesky qc; /* K - sigma in quaternion arithmetic (quaternion_cholesky.c), when direct_chol and quat_chol */
   Mat       Ls;      /* L + c M (dmV1), the scalar preconditioner of spin_precond.c */
   KSP       klap;    /* its solver, prefix spin_lap_ */
   PetscInt  lap_its;
   PetscReal lap_shift; /* c in units of 4 pi / area */
   Vec       start;   /* initial vector of the eigensolver (reduced space), kept between solves */
-
-  char    *mumps_option[2]; /* option names set by default (cleared again at destroy) */
-  PetscInt n_mumps_option;
 
   /* results */
   PetscReal gamma;    /* the eigenvalue, in the units of A^* A lambda = gamma M_V lambda (Eq. 7) or Eq. 6 */
@@ -82,8 +75,11 @@ struct _p_CSSpin {
 
 /* Sets pc to the scalar preconditioner V^-1 ((L + c M)^-1 (x) I_4) V^-1 of K (spin_precond.c). */
 PETSC_EXTERN PetscErrorCode CSSpinSetUpScalarPC(CSSpin spin, Vec x, CSRhoLocation loc, Vec rho, PC pc);
+/* PC type "csspinlap" (spin_precond.c): the scalar preconditioner of -spin_solver precond; registered by CSInitializePackage */
+#define PCCSSPINLAP "csspinlap"
+PETSC_EXTERN PetscErrorCode PCCreate_CSSpinLap(PC);
 /* If pc is a MUMPS factorisation without a user ordering, choose AMD (cleared again at CSSpinDestroy). */
-PETSC_EXTERN PetscErrorCode CSSpinMumpsDefaultOrdering(CSSpin spin, PC pc);
+PETSC_EXTERN PetscErrorCode CSSpinMumpsDefaultOrdering(PC pc, Mat A);
 PETSC_EXTERN PetscErrorCode CSSpinCreate(CSMesh mesh, CSSpin *spin);
 PETSC_EXTERN PetscErrorCode CSSpinSetFromOptions(CSSpin spin);
 /* Boundary tangents (Sec. 5.7): Ttarget is a dmV3 global vector (read on boundary vertices), NULL for "keep". */

@@ -17,12 +17,6 @@ PETSC_EXTERN PetscErrorCode CSOperatorLaplacian3(CSMesh mesh, Vec x, MatReuse re
 /* Vertex mass *0 = diag(barycentric dual areas) as a dmV1 vector (create with DMCreateGlobalVector). */
 PETSC_EXTERN PetscErrorCode CSOperatorMass(CSMesh mesh, Vec x, Vec mass);
 
-/* Y += a X for AIJ matrices (Seq or MPI, same layout) whose nonzero patterns stay fixed, X's within Y's: the
-   position of each of X's entries in Y is found once (*map, created at the first call, freed with
-   CSMatAddMapDestroy), later calls are one pass over the values. MatAXPY with SUBSET_NONZERO_PATTERN searches every
-   row again (PETSc 3.18 MatAXPY_Basic): 60 ms per call at 82k faces. Increases Y's state. */
-typedef struct _p_CSMatAddMap *CSMatAddMap;
-PETSC_EXTERN PetscErrorCode CSMatAddFixedPattern(Mat Y, PetscScalar a, Mat X, CSMatAddMap *map);
-PETSC_EXTERN PetscErrorCode CSMatAddMapDestroy(CSMatAddMap *map);
+#include "cs_linalg.h" /* CSMatAddFixedPattern (src/linalg/mat_add_fixed.c) */
 
 #endif

@@ -1,5 +1,5 @@
 /* Sparse Cholesky factorisation K - sigma = L L^H of a quaternionic Hermitian positive definite matrix in
-   quaternion arithmetic (src/operators/quaternion_cholesky.c): supernodal multifrontal, on the V x V pattern
+   quaternion arithmetic (src/linalg/quaternion_cholesky.c): supernodal multifrontal, on the V x V pattern
    analysed by CHOLMOD (ordering and relaxed supernodes), with the dense kernels as real BLAS products.
    A quaternion multiply-add is 32 real flops against 64 for the 2 x 2 complex block of the complex form
    (cholmod_factor.c) and 128 for the 4 x 4 real block: half the flops and half the memory of the complex form.

@@ -5,12 +5,12 @@
 #   torus 64x64 (4096 vertices), torus 120x120 (14400 vertices), bunny_closed_cgal.obj (37706 vertices, 75408 faces),
 # serial and 2 ranks, with
 #   default   Krylov-Schur + shift-and-invert; serially the supernodal factorisation of K - sigma in quaternion
-#             arithmetic (src/operators/quaternion_cholesky.c) and a CHOLMOD Poisson solve; in parallel the
+#             arithmetic (MatSolverType csquat, src/linalg/quaternion_cholesky.c) and a CHOLMOD Poisson solve; in parallel the
 #             substructured CHOLMOD factorisation (PC cssubchol) of the real 4V x 4V matrix and of the Poisson problem
-#   complex   the same with CHOLMOD's factorisation of the complex form (-spin_cholesky_arithmetic complex; the
+#   complex   the same with CHOLMOD's factorisation of the complex form (-spin_st_pc_factor_mat_solver_type cscholmod; the
 #             previous default, cholmod_factor.c)
 #   default_2threads  the same serial run with 2 BLAS/OpenMP threads (CHOLMOD's supernodal BLAS; one process)
-#   real4V    the same with the real 4V x 4V CHOLMOD factorisation (-spin_complex_cholesky 0; the default before the complex form)
+#   real4V    the same with the real 4V x 4V CHOLMOD factorisation (-spin_st_pc_factor_mat_solver_type cholmod; the default before the complex form)
 #   inverse1  one step of inverse iteration with the same factorisation (-spin_solver inverse)
 #   precond   iterative: LOBPCG preconditioned by the scalar Laplacian L + cM per quaternion component
 #             (-spin_solver precond; no 4V factorisation at all)
@@ -33,8 +33,8 @@ declare -A MESH=(
 declare -A CONF=(
   [default]=""
   [default_2threads]=""
-  [complex]="-spin_cholesky_arithmetic complex"
-  [real4V]="-spin_complex_cholesky 0"
+  [complex]="-spin_st_pc_factor_mat_solver_type cscholmod"
+  [real4V]="-spin_st_pc_factor_mat_solver_type cholmod"
   [inverse1]="-spin_solver inverse"
   [precond]="-spin_solver precond"
 )

@@ -6,7 +6,7 @@ static const char help[] = "confsurf: conformal geometry processing of triangle 
 
 #include <slepcsys.h>
 #include "cs_driver.h"
-#include "cs_substructured_cholesky.h"
+#include "cs_package.h"
 
 /* Every task of bin/confsurf, by -task name (like KSPSetType); later issues register theirs here. */
 static PetscErrorCode RegisterTasks(PetscFunctionList *tasks)
@@ -84,7 +84,7 @@ int main(int argc, char **argv)
 
   PetscCall(SlepcInitialize(&argc, &argv, NULL, help));
   PetscCall(CSLimitThreads(PETSC_COMM_WORLD));
-  PetscCall(CSSubCholRegister()); /* -<prefix>pc_type cssubchol for any KSP, before any options are read */
+  PetscCall(CSInitializePackage()); /* events, PCs and solver types, before any options are read */
   PetscCall(PetscOptionsHasName(NULL, NULL, "-cs_traceback", &traceback));
   if (!traceback) PetscCall(PetscPushErrorHandler(ConciseErrorHandler, NULL));
   ierr = Run(PETSC_COMM_WORLD);

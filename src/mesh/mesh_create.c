@@ -3,25 +3,6 @@
 #include "cs_mesh_adjacency.h"
 #include "cs_util.h"
 
-PetscLogEvent CS_EVENT_MeshRead, CS_EVENT_MeshDistribute, CS_EVENT_Geometry, CS_EVENT_Energy, CS_EVENT_Gradient, CS_EVENT_Assemble;
-
-PetscErrorCode CSRegisterEvents(void)
-{
-  static PetscBool done = PETSC_FALSE;
-  PetscClassId     id;
-  PetscFunctionBeginUser;
-  if (done) PetscFunctionReturn(0);
-  done = PETSC_TRUE;
-  PetscCall(PetscClassIdRegister("confsurf", &id));
-  PetscCall(PetscLogEventRegister("CSMeshRead", id, &CS_EVENT_MeshRead));
-  PetscCall(PetscLogEventRegister("CSMeshDistribute", id, &CS_EVENT_MeshDistribute));
-  PetscCall(PetscLogEventRegister("CSGeometry", id, &CS_EVENT_Geometry));
-  PetscCall(PetscLogEventRegister("CSEnergy", id, &CS_EVENT_Energy));
-  PetscCall(PetscLogEventRegister("CSGradient", id, &CS_EVENT_Gradient));
-  PetscCall(PetscLogEventRegister("CSAssemble", id, &CS_EVENT_Assemble));
-  PetscFunctionReturn(0);
-}
-
 /* A clone of the plex with `dof` unknowns on every point of depth `depth` (0 vertices, 1 edges, 2 faces). */
 PetscErrorCode CSMeshCreateFieldDM(DM dm, PetscInt depth, PetscInt dof, const char name[], DM *out)
 {
@@ -243,7 +224,6 @@ PetscErrorCode CSMeshCreateFromData(MPI_Comm comm, CSMeshData *md, const CSTopol
   PetscMPIInt      rank;
   PetscInt         counts[2];
   PetscFunctionBeginUser;
-  PetscCall(CSRegisterEvents());
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   PetscCall(PetscNew(&m));
   m->comm = comm;
@@ -341,7 +321,6 @@ PetscErrorCode CSMeshCreateFromOptions(MPI_Comm comm, const char prefix[], CSMes
   PetscBool   keep = PETSC_FALSE;
   PetscMPIInt rank;
   PetscFunctionBeginUser;
-  PetscCall(CSRegisterEvents());
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   PetscCall(PetscMemzero(&md, sizeof(md)));
   PetscCall(PetscMemzero(&topo, sizeof(topo)));

@@ -108,7 +108,6 @@ PetscErrorCode CSSaddleCreate(CSMesh mesh, PetscBool edges, PetscBool h2, PetscI
   PetscCall(PetscOptionsString("-flow_saddle_mat", "nest|aij: the saddle matrix as MATNEST (fieldsplit) or converted to AIJ (monolithic direct solvers)", NULL, type, type, sizeof(type), NULL));
   PetscCall(PetscOptionsInt("-flow_pc_reuse_its", "Keep the preconditioner (factorisation) of an earlier step while the last solve needed at most this many Krylov iterations (0: refactor every step; default 10 with the conformal constraint, else 0; ignored with -flow_ksp_type preonly)", NULL, s->reuse_its, &s->reuse_its, NULL));
   PetscOptionsEnd();
-  PetscCall(CSSubCholRegister());
   PetscCheck(s->reuse_its >= 0, mesh->comm, PETSC_ERR_ARG_OUTOFRANGE, "-flow_pc_reuse_its %" PetscInt_FMT ": use 0 (refactor every step) or a positive iteration count", s->reuse_its);
   PetscCall(PetscStrcmp(type, "aij", &aij));
   s->monolithic = aij;

@@ -2,15 +2,13 @@
    is a squared Dirac operator: up to lower-order terms it acts like the cotan Laplacian on each of the four
    real components (on the unit sphere X has the spectrum n^2 against M, the Laplacian l(l+1)). So
      K = V X V  ~  V ((L + c M) (x) I_4) V,    K^{-1} ~ V^{-1} ((L + c M)^{-1} (x) I_4) V^{-1},
-   with c = 4 pi / area (one unit of the unit sphere's spectrum; -spin_lap_shift scales it: 0.01-1 gave 44-46
-   iterations at 4k vertices, 10 gave 57, 100 gave 123) plus rho^2 (the zeroth-order part of (D - rho)^2).
+   with c = 4 pi / area (one unit of the unit sphere's spectrum; -spin_lap_shift scales it) plus rho^2 (the zeroth-order part of (D - rho)^2).
    One V x V factorisation has the pattern of a single component of the 4V x 4V one, i.e. 1/16 of its
    nonzeros and about 1/64 of its flops; it is applied to the four components in turn. A preconditioned
    eigensolver (Generalised Davidson or LOBPCG, SLEPc's STPRECOND) then needs products with X instead of a
-   factorisation of K. Measured (runs/bench_spin.sh): 46-47 Davidson iterations on tori of 4k and 14k vertices,
-   134 on the bunny (its bump is 4x higher); slower than one complex-form factorisation on all of them, but it
-   never factors the 4V x 4V matrix. Inner solver: KSP prefix spin_lap_ (Cholesky: CHOLMOD serially,
+   factorisation of K; it never factors the 4V x 4V matrix (iteration counts and times: docs/solvers.md). Inner solver: KSP prefix spin_lap_ (Cholesky: CHOLMOD serially,
    MUMPS-AMD in parallel, by default). */
+#include <petsc/private/pcimpl.h> /* a PC type of our own (PCRegister) */
 #include "cs_methods_spin.h"
 
 /* Ls = L + M diag(c + rho_i^2) on dmV1 (rho per face: the area-weighted mean of the faces around i). */
@@ -60,15 +58,15 @@ static PetscErrorCode AssembleScalarOperator(CSSpin s, Vec x, CSRhoLocation loc,
 
 /* y = V^{-1} (Ls^{-1} (x) I_4) V^{-1} x. The component loops are written out: the vectors SLEPc passes here
    carry no block size. */
-static PetscErrorCode ApplyScalarPC(PC pc, Vec x, Vec y)
+static PetscErrorCode PCApply_CSSpinLap(PC pc, Vec x, Vec y)
 {
-  CSSpin             s;
+  CSSpin             s = (CSSpin)pc->data;
   Vec                b, u;
   const PetscScalar *xa, *va, *ua;
   PetscScalar       *ya, *ba;
   PetscInt           n;
   PetscFunctionBeginUser;
-  PetscCall(PCShellGetContext(pc, &s));
+  PetscCheck(s && s->klap, PetscObjectComm((PetscObject)pc), PETSC_ERR_ARG_WRONGSTATE, "PC %s is the spin method's own (-spin_solver precond); it has no spin transformation to precondition here", PCCSSPINLAP);
   PetscCall(DMGetGlobalVector(s->mesh->dmV1, &b));
   PetscCall(DMGetGlobalVector(s->mesh->dmV1, &u));
   PetscCall(VecGetLocalSize(b, &n));
@@ -98,8 +96,46 @@ static PetscErrorCode ApplyScalarPC(PC pc, Vec x, Vec y)
   PetscFunctionReturn(0);
 }
 
+static PetscErrorCode PCView_CSSpinLap(PC pc, PetscViewer viewer)
+{
+  PetscBool ascii;
+  PetscFunctionBeginUser;
+  PetscCall(PetscObjectTypeCompare((PetscObject)viewer, PETSCVIEWERASCII, &ascii));
+  if (ascii) PetscCall(PetscViewerASCIIPrintf(viewer, "  scalar Laplacian (L + c M)^{-1} per quaternion component (KSP prefix spin_lap_)\n"));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode PCSetSpin_CSSpinLap(PC pc, CSSpin s)
+{
+  PetscFunctionBeginUser;
+  pc->data = s; /* not owned */
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode PCDestroy_CSSpinLap(PC pc)
+{
+  PetscFunctionBeginUser;
+  pc->data = NULL;
+  PetscCall(PetscObjectComposeFunction((PetscObject)pc, "CSSpinLapSetSpin_C", NULL));
+  PetscFunctionReturn(0);
+}
+
+/* PC type "csspinlap" (registered by CSInitializePackage) */
+PetscErrorCode PCCreate_CSSpinLap(PC pc)
+{
+  PetscFunctionBeginUser;
+  pc->data         = NULL;
+  pc->ops->apply   = PCApply_CSSpinLap;
+  pc->ops->view    = PCView_CSSpinLap;
+  pc->ops->destroy = PCDestroy_CSSpinLap;
+  PetscCall(PetscObjectComposeFunction((PetscObject)pc, "CSSpinLapSetSpin_C", PCSetSpin_CSSpinLap));
+  PetscFunctionReturn(0);
+}
+
+/* Assembles L + c M and factors it; pc becomes (first call, before its SetFromOptions) or stays a csspinlap PC for s. */
 PetscErrorCode CSSpinSetUpScalarPC(CSSpin s, Vec x, CSRhoLocation loc, Vec rho, PC pc)
 {
+  PetscBool first = (PetscBool)!s->klap;
   PetscFunctionBeginUser;
   PetscCall(AssembleScalarOperator(s, x, loc, rho));
   if (!s->klap) {
@@ -110,13 +146,11 @@ PetscErrorCode CSSpinSetUpScalarPC(CSSpin s, Vec x, CSRhoLocation loc, Vec rho, 
     PetscCall(KSPGetPC(s->klap, &lpc));
     PetscCall(CSSetDefaultCholesky(lpc));
     PetscCall(KSPSetFromOptions(s->klap));
-    PetscCall(CSSpinMumpsDefaultOrdering(s, lpc));
+    PetscCall(CSSpinMumpsDefaultOrdering(lpc, s->Ls));
   }
   PetscCall(KSPSetOperators(s->klap, s->Ls, s->Ls));
   PetscCall(KSPSetUp(s->klap));
-  PetscCall(PCSetType(pc, PCSHELL));
-  PetscCall(PCShellSetContext(pc, s));
-  PetscCall(PCShellSetApply(pc, ApplyScalarPC));
-  PetscCall(PCShellSetName(pc, "confsurf scalar Laplacian (L + c M) per quaternion component"));
+  if (first) PetscCall(PCSetType(pc, PCCSSPINLAP)); /* the default, set before the PC's SetFromOptions */
+  PetscTryMethod(pc, "CSSpinLapSetSpin_C", (PC, CSSpin), (pc, s));
   PetscFunctionReturn(0);
 }

@@ -3,31 +3,25 @@
      A^* A lam = gamma B^* A lam            (Eq. 6, generalised, -spin_problem generalized),
    optionally restricted to lam = V U lam^ with the boundary parametrisation U of Sec. 5.7.
    Solved with SLEPc EPS (prefix spin_: shift-and-invert toward a small negative target with a Cholesky
-   factorisation by default; every part selectable by -spin_eps_*, -spin_st_*) or by inverse iteration with a
-   kept factorisation (-spin_solver inverse, KSP prefix spin_inverse_; crane2013 Sec. 6.4.2). */
+   factorisation by default; every part selectable by -spin_eps_*, -spin_st_*, the factorisation by
+   -spin_st_pc_factor_mat_solver_type csquat|cscholmod|cholmod|mumps) or by inverse iteration with a kept
+   factorisation (-spin_solver inverse, KSP prefix spin_inverse_; crane2013 Sec. 6.4.2). The default solvers and
+   why: docs/solvers.md. */
 #include "cs_methods_spin.h"
-
-static PetscLogEvent CS_EVENT_SpinEigen = 0, CS_EVENT_SpinPoisson = 0;
+#include "cs_linalg.h"
+#include "cs_package.h"
 
 PetscErrorCode CSSpinCreate(CSMesh mesh, CSSpin *spin)
 {
   CSSpin s;
   PetscFunctionBeginUser;
-  if (!CS_EVENT_SpinEigen) {
-    PetscClassId id;
-    PetscCall(PetscClassIdRegister("confsurf spin", &id));
-    PetscCall(PetscLogEventRegister("CSSpinEigen", id, &CS_EVENT_SpinEigen));
-    PetscCall(PetscLogEventRegister("CSSpinPoisson", id, &CS_EVENT_SpinPoisson));
-  }
+  PetscCall(CSInitializePackage());
   PetscCall(PetscNew(&s));
   s->mesh        = mesh;
   s->inverse_its = 1;
   s->target      = 1e-2;
   s->scalar_pc    = PETSC_FALSE;
   s->lap_shift    = 1;
-  s->direct_chol = PETSC_TRUE;
-  s->quat_chol    = PETSC_TRUE;
-  PetscCall(PetscStrncpy(s->chol_ordering, "amd", sizeof(s->chol_ordering)));
   PetscCall(CSDiracCreateDM(mesh, NULL, &s->dm));
   *spin = s;
   PetscFunctionReturn(0);
@@ -38,9 +32,7 @@ PetscErrorCode CSSpinSetFromOptions(CSSpin s)
   const char *problems[] = {"standard", "generalized"}, *types[] = {"aij", "shell"}, *solvers[] = {"precond", "sinvert", "inverse"};
   const char *bnames[] = {"none", "keep", "file", "target"};
   PetscInt    ip = s->generalized, it = s->shell, is = s->inverse ? 2 : (s->scalar_pc ? 0 : 1), ib = (PetscInt)s->boundary;
-  const char *orderings[] = {"amd", "metis", "nesdis", "auto"}, *arith[] = {"quaternion", "complex"};
-  PetscInt    iord = 0, iar = 0;
-  PetscBool   solver_set, complex_set, ord_set, ar_set;
+  PetscBool   solver_set;
   PetscMPIInt size;
   /* crane2011 Sec. 4.3: with a boundary, (D - rho) lambda = 0 needs boundary conditions; with a free boundary
      the kernel of D holds every discrete conformal-affine map (rho = 0 is then not the identity). So an open
@@ -54,9 +46,6 @@ PetscErrorCode CSSpinSetFromOptions(CSSpin s)
   PetscCall(PetscOptionsInt("-spin_inverse_its", "Inverse iteration steps", NULL, s->inverse_its, &s->inverse_its, NULL));
   PetscCall(PetscOptionsBool("-spin_inverse_keep_factor", "Inverse iteration: keep the first factorisation as preconditioner for later solves", NULL, s->keep_factor, &s->keep_factor, NULL));
   PetscCall(PetscOptionsReal("-spin_shift", "Shift toward 0 (negative target), in units of the unit sphere's spectrum", NULL, s->target, &s->target, &s->target_set));
-  PetscCall(PetscOptionsBool("-spin_complex_cholesky", "Serial shift-and-invert and inverse iteration: factor K - sigma as a quaternionic matrix (-spin_cholesky_arithmetic; a quarter of the flops of the real 4V x 4V factorisation); 0 for the real factorisation and any -spin_st_pc_*/-spin_inverse_pc_* choice", NULL, s->direct_chol, &s->direct_chol, &complex_set));
-  PetscCall(PetscOptionsEList("-spin_cholesky_arithmetic", "That factorisation in quaternion arithmetic (quaternion_cholesky.c: half the flops of the complex form) or in CHOLMOD's complex form", NULL, arith, 2, arith[s->quat_chol ? 0 : 1], &iar, &ar_set));
-  PetscCall(PetscOptionsEList("-spin_complex_cholesky_ordering", "Its fill-reducing ordering, by CHOLMOD (auto: CHOLMOD tries several)", NULL, orderings, 4, s->chol_ordering, &iord, &ord_set));
   PetscCall(PetscOptionsReal("-spin_lap_shift", "-spin_solver precond: the mass shift c of L + c M, in units of 4 pi / area", NULL, s->lap_shift, &s->lap_shift, NULL));
   PetscCall(PetscOptionsBool("-spin_poisson_pin", "Fix the translation by pinning the first vertex instead of matching the mean", NULL, s->pin, &s->pin, NULL));
   PetscCall(PetscOptionsEList("-spin_boundary", "Boundary condition (Sec. 5.7): none (free), keep tangents, tangents from -spin_boundary_file, or from -target_mesh", NULL, bnames, 4, bnames[ib], &ib, NULL));
@@ -65,26 +54,15 @@ PetscErrorCode CSSpinSetFromOptions(CSSpin s)
   s->shell       = (PetscBool)(it == 1);
   s->inverse     = (PetscBool)(is == 2);
   s->boundary    = (CSSpinBoundary)ib;
-  if (ord_set) PetscCall(PetscStrncpy(s->chol_ordering, orderings[iord], sizeof(s->chol_ordering)));
-  if (ar_set) s->quat_chol = (PetscBool)(iar == 0);
   PetscCheck(s->lap_shift > 0, s->mesh->comm, PETSC_ERR_ARG_OUTOFRANGE, "-spin_lap_shift %g: must be positive (L + c M must be definite)", (double)s->lap_shift);
   /* the scalar preconditioner (spin_precond.c) is made for the standard problem on the full space: elsewhere
      the default stays shift-and-invert */
   s->scalar_pc  = (PetscBool)(is == 0);
   s->solver_set = solver_set;
-  /* the quaternionic factorisation needs quaternionic blocks (not the reduced boundary space, not Eq. 6's non-Hermitian
-     pencil), an assembled matrix and one rank */
+  /* the default factorisation of K - sigma is the quaternion Cholesky (csquat) where K has quaternionic blocks (not
+     the reduced boundary space, not Eq. 6's non-Hermitian pencil), is assembled, and lives on one rank */
   PetscCallMPI(MPI_Comm_size(s->mesh->comm, &size));
-  if (size > 1 || s->generalized || s->boundary != CS_SPIN_BOUNDARY_NONE || s->shell || s->scalar_pc) s->direct_chol = PETSC_FALSE;
-  if (s->direct_chol && !complex_set) {
-    /* a user's choice of the inner solver means the real matrix: the quaternionic factorisation replaces that solver */
-    PetscBool a, b, c, d;
-    PetscCall(PetscOptionsHasName(NULL, NULL, "-spin_st_pc_type", &a));
-    PetscCall(PetscOptionsHasName(NULL, NULL, "-spin_st_ksp_type", &b));
-    PetscCall(PetscOptionsHasName(NULL, NULL, "-spin_inverse_pc_type", &c));
-    PetscCall(PetscOptionsHasName(NULL, NULL, "-spin_inverse_ksp_type", &d));
-    if (a || b || c || d) s->direct_chol = PETSC_FALSE;
-  }
+  s->quat_factor = (PetscBool)(size == 1 && !s->generalized && s->boundary == CS_SPIN_BOUNDARY_NONE && !s->shell);
   PetscCheck(!(s->scalar_pc && s->generalized), s->mesh->comm, PETSC_ERR_SUP, "-spin_solver precond supports only -spin_problem standard");
   PetscCheck(!(s->scalar_pc && s->boundary != CS_SPIN_BOUNDARY_NONE), s->mesh->comm, PETSC_ERR_SUP, "-spin_solver precond does not support -spin_boundary (use -spin_solver sinvert)");
   PetscCheck(s->inverse_its >= 1, s->mesh->comm, PETSC_ERR_ARG_OUTOFRANGE, "-spin_inverse_its %" PetscInt_FMT ": need at least 1", s->inverse_its);
@@ -131,7 +109,7 @@ static PetscErrorCode ComputeScaling(CSSpin s, Vec x)
    similarity lam -> conj(lam) v lam: W_i = cos(theta/2) - sin(theta/2) w with w = T x T~ / sin(theta).
    NOTE: the paper writes cos(theta/2) + w sin(theta/2); with its own convention d f~ = conj(lam) df lam (Eq. 1)
    conj(W) T W is T rotated by -theta about w, away from T~, so the sign of the sine term is flipped here
-   (checked in tests/unit/test_spin_boundary.c). */
+   (the sign check: docs/solvers.md, "Spin boundary rotation"). */
 static PetscErrorCode BuildBoundaryMap(CSSpin s, Vec x)
 {
   CSMesh                 mesh = s->mesh;
@@ -312,75 +290,46 @@ static PetscErrorCode DefaultTarget(CSSpin s, PetscReal *sigma)
   PetscFunctionReturn(0);
 }
 
-/* Default direct solver for the shifted factorisation: CHOLMOD in serial (sequential only), MUMPS in parallel
-   with the AMD ordering (PETSC-NOTES: Debian's MUMPS has no METIS/SCOTCH; PORD is slow). */
-static PetscErrorCode SetDefaultFactor(CSSpin s, PC pc, PetscBool lu)
+/* Default factorisation of K - sigma, set on pc before its SetFromOptions: LU for Eq. 6 (PETSc's serially, MUMPS in
+   parallel); else the quaternion Cholesky (csquat) where it applies and quat_ok, or the project's default Cholesky
+   (CSSetDefaultCholesky). docs/solvers.md. */
+static PetscErrorCode SetDefaultFactor(CSSpin s, PC pc, PetscBool lu, PetscBool quat_ok)
 {
   PetscMPIInt size;
   PetscFunctionBeginUser;
-  if (!lu) {
-    PetscCall(CSSetDefaultCholesky(pc));
-    PetscFunctionReturn(0);
-  }
-  PetscCallMPI(MPI_Comm_size(s->mesh->comm, &size));
-  PetscCall(PCSetType(pc, PCLU));
-  PetscCall(PCFactorSetMatSolverType(pc, size == 1 ? MATSOLVERPETSC : MATSOLVERMUMPS));
+  if (lu) {
+    PetscCallMPI(MPI_Comm_size(s->mesh->comm, &size));
+    PetscCall(PCSetType(pc, PCLU));
+    PetscCall(PCFactorSetMatSolverType(pc, size == 1 ? MATSOLVERPETSC : MATSOLVERMUMPS));
+  } else if (quat_ok && s->quat_factor) {
+    PetscCall(PCSetType(pc, PCCHOLESKY));
+    PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERCSQUAT));
+  } else PetscCall(CSSetDefaultCholesky(pc));
   PetscFunctionReturn(0);
 }
 
-/* After SetFromOptions: if the factorisation is MUMPS and the user did not choose an ordering, use AMD. */
-PetscErrorCode CSSpinMumpsDefaultOrdering(CSSpin s, PC pc)
+/* After SetFromOptions: a MUMPS factorisation orders with AMD (ICNTL(7) = 0) unless -<prefix>mat_mumps_icntl_7 is
+   given (docs/solvers.md: Debian's MUMPS has no METIS/SCOTCH, PORD is slow). Set on the factor (MatMumpsSetIcntl),
+   which needs operators: A (of the size and type of the matrix to be factored) when pc has none yet. */
+PetscErrorCode CSSpinMumpsDefaultOrdering(PC pc, Mat A)
 {
-  PetscBool   isfactor, has;
+  PetscBool     isfactor, set, has_op;
   MatSolverType st = NULL;
-  const char *prefix;
-  char        name[256];
+  const char   *prefix;
+  Mat           F;
   PetscFunctionBeginUser;
   PetscCall(PetscObjectTypeCompareAny((PetscObject)pc, &isfactor, PCLU, PCCHOLESKY, ""));
   if (!isfactor) PetscFunctionReturn(0);
   PetscCall(PCFactorGetMatSolverType(pc, &st));
   if (!st || strcmp(st, MATSOLVERMUMPS)) PetscFunctionReturn(0);
   PetscCall(PCGetOptionsPrefix(pc, &prefix));
-  PetscCall(PetscSNPrintf(name, sizeof(name), "-%smat_mumps_icntl_7", prefix ? prefix : ""));
-  PetscCall(PetscOptionsHasName(NULL, NULL, name, &has));
-  if (!has) {
-    PetscCall(PetscOptionsSetValue(NULL, name, "0"));
-    /* remember it: it is removed again at CSSpinDestroy, so that it never shows as an unused option when the
-       factorisation is not used after all (e.g. -spin_st_type shift) */
-    if (s->n_mumps_option < 2) PetscCall(PetscStrallocpy(name, &s->mumps_option[s->n_mumps_option++]));
-  }
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode DirectFactorApply(PC pc, Vec x, Vec y)
-{
-  CSSpin s;
-  PetscFunctionBeginUser;
-  PetscCall(PCShellGetContext(pc, &s));
-  if (s->quat_chol) PetscCall(CSQuatCholeskySolve(s->qc, x, y));
-  else PetscCall(CSCholmodSolve(s->cf, x, y));
-  PetscFunctionReturn(0);
-}
-
-/* factor K - sigma for DirectFactorPC, in quaternion arithmetic or in CHOLMOD's complex form */
-static PetscErrorCode DirectFactorSetUp(CSSpin s, PetscReal sigma)
-{
-  PetscFunctionBeginUser;
-  if (s->quat_chol) PetscCall(CSQuatCholeskySetUp(s->qc, s->K, sigma));
-  else PetscCall(CSCholmodSetUpQuaternion(s->cf, s->K, sigma));
-  PetscFunctionReturn(0);
-}
-
-/* pc applies (K - sigma)^{-1} through the direct factorisation (quaternion or complex form) (factored in SetupEPS / InverseIteration) */
-static PetscErrorCode DirectFactorPC(CSSpin s, PC pc)
-{
-  PetscFunctionBeginUser;
-  if (s->quat_chol && !s->qc) PetscCall(CSQuatCholeskyCreate(s->chol_ordering, &s->qc));
-  if (!s->quat_chol && !s->cf) PetscCall(CSCholmodCreate(s->chol_ordering, &s->cf));
-  PetscCall(PCSetType(pc, PCSHELL));
-  PetscCall(PCShellSetContext(pc, s));
-  PetscCall(PCShellSetApply(pc, DirectFactorApply));
-  PetscCall(PCShellSetName(pc, s->quat_chol ? "confsurf: supernodal Cholesky of K - sigma in quaternion arithmetic" : "confsurf: CHOLMOD Cholesky of K - sigma in complex form"));
+  PetscCall(PetscOptionsHasName(NULL, prefix, "-mat_mumps_icntl_7", &set));
+  if (set) PetscFunctionReturn(0);
+  PetscCall(PCGetOperatorsSet(pc, NULL, &has_op));
+  if (!has_op) PetscCall(PCSetOperators(pc, A, A));
+  PetscCall(PCFactorSetUpMatSolverType(pc));
+  PetscCall(PCFactorGetMatrix(pc, &F));
+  PetscCall(MatMumpsSetIcntl(F, 7, 0));
   PetscFunctionReturn(0);
 }
 
@@ -401,8 +350,7 @@ static PetscErrorCode SetupEPS(CSSpin s, Vec x, CSRhoLocation loc, Vec rho, Pets
     PetscCall(STGetKSP(st, &ksp));
     PetscCall(KSPGetPC(ksp, &pc));
     if (precond) {
-      /* Generalised Davidson: 46 iterations at 4k vertices against LOBPCG's 61 with block size 4 or 54 with
-         block size 1, and the cheapest per iteration (runs/bench_spin.sh) */
+      /* Generalised Davidson: fewer and cheaper iterations than LOBPCG (docs/solvers.md) */
       PetscCall(EPSSetType(s->eps, EPSGD));
       PetscCall(STSetType(st, STPRECOND));
       PetscCall(KSPSetType(ksp, KSPPREONLY));
@@ -410,22 +358,16 @@ static PetscErrorCode SetupEPS(CSSpin s, Vec x, CSRhoLocation loc, Vec rho, Pets
       PetscCall(EPSSetDimensions(s->eps, nev, PETSC_DEFAULT, PETSC_DEFAULT));
     } else {
       PetscCall(STSetType(st, STSINVERT));
-      if (s->direct_chol) {
-        /* the ST's solve is ours (quaternion_cholesky.c or cholmod_factor.c): no shifted copy of K is formed */
-        PetscCall(STSetMatMode(st, ST_MATMODE_SHELL));
-        PetscCall(KSPSetType(ksp, KSPPREONLY));
-        PetscCall(DirectFactorPC(s, pc));
-      } else if (s->shell) {
+      if (s->shell) {
         /* the shell cannot be factored: Krylov inner solve preconditioned by the factored assembled copy */
         PetscCall(STSetMatMode(st, ST_MATMODE_SHELL));
         PetscCall(KSPSetType(ksp, KSPGMRES));
         PetscCall(KSPSetTolerances(ksp, 1e-12, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
       } else PetscCall(KSPSetType(ksp, KSPPREONLY));
-      if (!s->direct_chol) PetscCall(SetDefaultFactor(s, pc, s->generalized));
+      PetscCall(SetDefaultFactor(s, pc, s->generalized, (PetscBool)!s->shell));
       PetscCall(EPSSetWhichEigenpairs(s->eps, EPS_TARGET_MAGNITUDE));
       PetscCall(EPSSetTarget(s->eps, sigma));
-      /* nev = 1: 6 basis vectors (6 shifted solves, converged without restart on the meshes of
-         runs/bench_spin.sh; 8 solves with 8, SLEPc's default is 16) */
+      /* nev = 1: 6 basis vectors, enough to converge without restart (docs/solvers.md) */
       PetscCall(EPSSetDimensions(s->eps, nev, nev == 1 ? 6 : PETSC_DEFAULT, PETSC_DEFAULT));
     }
     PetscCall(EPSSetProblemType(s->eps, s->generalized ? EPS_GNHEP : EPS_HEP));
@@ -434,7 +376,7 @@ static PetscErrorCode SetupEPS(CSSpin s, Vec x, CSRhoLocation loc, Vec rho, Pets
     if (precond) PetscCall(CSSpinSetUpScalarPC(s, x, loc, rho, pc));
     PetscCall(EPSSetFromOptions(s->eps));
     PetscCall(KSPGetPC(ksp, &pc));
-    PetscCall(CSSpinMumpsDefaultOrdering(s, pc));
+    PetscCall(CSSpinMumpsDefaultOrdering(pc, s->shell ? s->X : s->K)); /* the shell's PC factors a copy of X */
   } else {
     PetscCall(EPSSetOperators(s->eps, s->K, s->generalized ? s->Y : NULL));
     PetscCall(EPSGetST(s->eps, &st));
@@ -443,11 +385,6 @@ static PetscErrorCode SetupEPS(CSSpin s, Vec x, CSRhoLocation loc, Vec rho, Pets
       PetscCall(KSPGetPC(ksp, &pc));
       PetscCall(CSSpinSetUpScalarPC(s, x, loc, rho, pc));
     }
-  }
-  if (s->direct_chol && !precond) {
-    PetscReal tgt;
-    PetscCall(EPSGetTarget(s->eps, &tgt));
-    PetscCall(DirectFactorSetUp(s, tgt));
   }
   if (s->shell && !precond) {
     Mat       Pm;
@@ -494,14 +431,11 @@ static PetscErrorCode InverseIteration(CSSpin s, Vec xr, PetscReal *kr)
     PetscCall(KSPSetType(s->kinv, s->keep_factor ? KSPGMRES : KSPPREONLY));
     PetscCall(KSPSetTolerances(s->kinv, 1e-12, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
     PetscCall(KSPGetPC(s->kinv, &pc));
-    if (s->direct_chol) PetscCall(DirectFactorPC(s, pc));
-    else PetscCall(SetDefaultFactor(s, pc, PETSC_FALSE));
+    PetscCall(SetDefaultFactor(s, pc, PETSC_FALSE, PETSC_TRUE));
     PetscCall(KSPSetFromOptions(s->kinv));
-    PetscCall(CSSpinMumpsDefaultOrdering(s, pc));
+    PetscCall(CSSpinMumpsDefaultOrdering(pc, s->K));
     PetscCall(MatDuplicate(s->K, MAT_COPY_VALUES, &s->Kinv));
-    if (s->direct_chol) PetscCall(DirectFactorSetUp(s, sigma));
   } else {
-    if (s->direct_chol && !s->keep_factor) PetscCall(DirectFactorSetUp(s, sigma));
     PetscCall(MatCopy(s->K, s->Kinv, SAME_NONZERO_PATTERN));
     /* crane2013 Sec. 6.4.2: consecutive problems are close, so the old factorisation preconditions the new one */
     if (s->keep_factor) PetscCall(KSPSetReusePreconditioner(s->kinv, PETSC_TRUE));
@@ -717,15 +651,9 @@ PetscErrorCode CSSpinDestroy(CSSpin *spin)
   CSSpin s = *spin;
   PetscFunctionBeginUser;
   if (!s) PetscFunctionReturn(0);
-  for (PetscInt i = 0; i < s->n_mumps_option; i++) {
-    PetscCall(PetscOptionsClearValue(NULL, s->mumps_option[i]));
-    PetscCall(PetscFree(s->mumps_option[i]));
-  }
   PetscCall(EPSDestroy(&s->eps));
   PetscCall(KSPDestroy(&s->kinv));
   PetscCall(KSPDestroy(&s->klap));
-  PetscCall(CSCholmodDestroy(&s->cf));
-  PetscCall(CSQuatCholeskyDestroy(&s->qc));
   PetscCall(MatDestroy(&s->Ls));
   PetscCall(KSPDestroy(&s->kpois));
   PetscCall(MatDestroy(&s->Kinv));

@@ -17,7 +17,6 @@ PetscErrorCode CSMetricCreate(CSMesh mesh, PetscBool h2, CSMetric *m)
 {
   PetscInt n, N;
   PetscFunctionBeginUser;
-  PetscCall(CSH2PCRegister());
   PetscCall(PetscMemzero(m, sizeof(*m)));
   m->mesh = mesh;
   m->h2   = h2;

@@ -1,8 +1,8 @@
 # crane2011 Sec. 6.3 / Fig. 12: a smooth bump rho on the unit icosphere gives q_mean close to 1, decreasing
 # about linearly with the edge length (levels 2, 3, 4: q_mean - 1 halves per level); the shell and AIJ Dirac
 # operators give the same result to round-off; so do the eigensolvers (shift-and-invert with the quaternion
-# Cholesky factorisation, the default; with CHOLMOD's complex-form factorisation; with the real 4V x 4V
-# factorisation; LOBPCG preconditioned by the scalar Laplacian).
+# Cholesky factorisation csquat, the default; with CHOLMOD's complex-form factorisation cscholmod; with the real
+# 4V x 4V factorisation cholmod; LOBPCG preconditioned by the scalar Laplacian).
 # nprocs: 1
 source tests/lib.sh
 P=tests/cases/spin_tools.py
@@ -27,7 +27,7 @@ timeout 60 $MPIEXEC "$CS_BIN" -task spin -gen icosphere -gen_level 3 $B -spin_di
 check_close "$(json eigenvalue "$TMP/sh.json")" "$(json eigenvalue "$TMP/s3.json")" 1e-9 "shell vs AIJ: gamma"
 check_close "$(json q_mean "$TMP/sh.json")" "$(json q_mean "$TMP/s3.json")" 1e-9 "shell vs AIJ: q_mean"
 check_close "$(python3 $P rigid "$TMP/sh.obj" "$TMP/o3.obj")" 0 1e-8 "shell vs AIJ: positions"
-for alt in "-spin_cholesky_arithmetic complex" "-spin_complex_cholesky 0" "-spin_solver precond"; do
+for alt in "-spin_st_pc_factor_mat_solver_type cscholmod" "-spin_st_pc_factor_mat_solver_type cholmod" "-spin_solver precond"; do
   timeout 60 $MPIEXEC "$CS_BIN" -task spin -gen icosphere -gen_level 3 $B $alt -summary "$TMP/alt.json" -o "$TMP/alt.obj" > /dev/null
   check_close "$(json eigenvalue "$TMP/alt.json")" "$(json eigenvalue "$TMP/s3.json")" 1e-9 "$alt vs default: gamma"
   check_close "$(python3 $P rigid "$TMP/alt.obj" "$TMP/o3.obj")" 0 1e-8 "$alt vs default: positions"

@@ -1,16 +1,13 @@
-# The substructured CHOLMOD Cholesky (PC cssubchol, src/operators/substructured_cholesky.c), the parallel default
+# The substructured CHOLMOD Cholesky (PC cssubchol, src/linalg/substructured_cholesky.c), the parallel default
 # for the flow's Schur complement S: unit checks (tests/unit/test_subchol.c: direct-solve residual < 1e-11 on a
 # two-ring 3-dof matrix with METIS/AMD/NESDIS interiors, a refactorisation on the same pattern, the interface size,
 # an indefinite matrix ending the KSP with DIVERGED_PC_FAILED on every rank), then a cgd flow whose steps equal those
 # with the Schur complement factored by Cholesky (MUMPS on several ranks, CHOLMOD on one): positions within 1e-9,
 # one FGMRES iteration per linear solve (an exact factorisation), the same number of iterations; unknown values of
-# -pc_cssubchol_ordering / -pc_cssubchol_interface fail with an error naming the option. Before them, the serial checks
-# of the factorisation that keeps each rank's interface Schur complement as CHOLMOD assembles it
-# (tests/unit/test_keeplast.c, src/operators/cholmod_last_supernode.c).
+# -pc_cssubchol_ordering / -pc_cssubchol_interface fail with an error naming the option.
 # nprocs: 1 2 3
 source tests/lib.sh
 P=tests/cases/spin_tools.py
-if [ "$NP" = 1 ]; then "$CS_TESTS/test_keeplast"; fi
 $MPIEXEC "$CS_TESTS/test_subchol"
 S="-task flow -gen icosphere -gen_level 3 -flow_init_bump 0.2 -flow_init_stretch 1.5,1,0.8 -flow_max_it 4 -flow_rtol 0 -flow_pc_reuse_its 0"
 timeout 120 $MPIEXEC "$CS_BIN" $S -flow_fieldsplit_1_pc_type cssubchol -summary "$TMP/a.json" -o "$TMP/a.obj" > "$TMP/a.log" 2>&1 || { tail "$TMP/a.log"; exit 1; }

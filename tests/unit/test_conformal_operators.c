@@ -9,6 +9,7 @@ static const char help[] = "Checks of the conformal-constraint operators of soli
 #include "cs_constraints.h"
 #include "cs_util.h"
 #include "cs_test.h"
+#include "cs_package.h"
 
 static PetscErrorCode MakeMesh(MPI_Comm comm, PetscBool torus, PetscReal amp, CSMesh *mesh)
 {
@@ -383,7 +384,7 @@ static PetscErrorCode CheckMobius(MPI_Comm comm)
 int main(int argc, char **argv)
 {
   PetscCall(PetscInitialize(&argc, &argv, NULL, help));
-  PetscCall(CSRegisterEvents());
+  PetscCall(CSInitializePackage());
   PetscCall(RunChecks(PETSC_COMM_WORLD, PETSC_FALSE));
   PetscCall(RunChecks(PETSC_COMM_WORLD, PETSC_TRUE));
   PetscCall(CheckNormals(PETSC_COMM_WORLD));

@@ -5,6 +5,8 @@
 #include <slepcsys.h>
 #include "cs_methods_spin.h"
 #include "cs_quaternion_cholesky.h"
+#include "cs_linalg.h"
+#include "cs_package.h"
 
 static PetscInt nfail = 0;
 
@@ -327,6 +329,30 @@ static PetscErrorCode CheckOperators(CSMesh mesh, Vec x, CSRhoLocation loc, Vec 
         PetscCall(CSQuatCholeskyDestroy(&qc));
         PetscCall(VecDestroy(&y4));
       }
+      /* the same factorisations as PETSc MatSolverTypes (quaternion_factor.c): PCCHOLESKY on X - sigma I */
+      for (int t = 0; t < 2; t++) {
+        const char *type = t ? MATSOLVERCSCHOLMOD : MATSOLVERCSQUAT;
+        KSP         ksp;
+        PC          pc;
+        Mat         Xs;
+        Vec         y5;
+        PetscCall(VecDuplicate(u, &y5));
+        PetscCall(MatDuplicate(X, MAT_COPY_VALUES, &Xs));
+        PetscCall(MatShift(Xs, -sigma));
+        PetscCall(KSPCreate(mesh->comm, &ksp));
+        PetscCall(KSPSetType(ksp, KSPPREONLY));
+        PetscCall(KSPGetPC(ksp, &pc));
+        PetscCall(PCSetType(pc, PCCHOLESKY));
+        PetscCall(PCFactorSetMatSolverType(pc, type));
+        PetscCall(KSPSetOperators(ksp, Xs, Xs));
+        PetscCall(KSPSolve(ksp, u, y5));
+        PetscCall(RelDiff(y1, y5, &err));
+        PetscCall(PetscSNPrintf(what, sizeof(what), "%s: -pc_factor_mat_solver_type %s == complex-form Cholesky", label, type));
+        PetscCall(Check(mesh->comm, what, err, 1e-12));
+        PetscCall(KSPDestroy(&ksp));
+        PetscCall(MatDestroy(&Xs));
+        PetscCall(VecDestroy(&y5));
+      }
     }
   }
   /* kernel: for rho = 0 every constant quaternion field is in ker D and ker X */
@@ -375,6 +401,7 @@ int main(int argc, char **argv)
   PetscRandom r;
   MPI_Comm    comm;
   PetscCall(SlepcInitialize(&argc, &argv, NULL, NULL));
+  PetscCall(CSInitializePackage());
   comm = PETSC_COMM_WORLD;
   PetscCall(PetscOptionsSetValue(NULL, "-gen", "icosphere"));
   {

@@ -11,10 +11,8 @@
    real, so the vectors are converted on the way in and out. */
 #include <suitesparse/cholmod.h>
 #include "cs_cholmod.h"
-#include "cs_substructured_cholesky.h"
+#include "cs_linalg.h"
 #include "cs_quaternion.h"
-
-static PetscLogEvent CS_EVENT_Symbolic = 0, CS_EVENT_Numeric = 0, CS_EVENT_Solve = 0;
 
 struct _p_CSCholmod {
   cholmod_common  common;
@@ -151,13 +149,6 @@ PetscErrorCode CSCholmodCreate(const char ordering[], CSCholmod *fac)
 {
   CSCholmod f;
   PetscFunctionBeginUser;
-  if (!CS_EVENT_Symbolic) {
-    PetscClassId id;
-    PetscCall(PetscClassIdRegister("confsurf CHOLMOD", &id));
-    PetscCall(PetscLogEventRegister("CSCholmodSym", id, &CS_EVENT_Symbolic));
-    PetscCall(PetscLogEventRegister("CSCholmodNum", id, &CS_EVENT_Numeric));
-    PetscCall(PetscLogEventRegister("CSCholmodSolve", id, &CS_EVENT_Solve));
-  }
   PetscCall(PetscNew(&f));
   PetscCall(CSCholmodStartCommon(ordering, &f->common));
   *fac = f;
@@ -180,9 +171,9 @@ static PetscErrorCode Factor(CSCholmod f)
 {
   PetscFunctionBeginUser;
   if (!f->L) {
-    PetscCall(PetscLogEventBegin(CS_EVENT_Symbolic, 0, 0, 0, 0));
+    PetscCall(PetscLogEventBegin(CS_EVENT_CholmodSym, 0, 0, 0, 0));
     f->L = cholmod_analyze(f->A, &f->common);
-    PetscCall(PetscLogEventEnd(CS_EVENT_Symbolic, 0, 0, 0, 0));
+    PetscCall(PetscLogEventEnd(CS_EVENT_CholmodSym, 0, 0, 0, 0));
     PetscCall(CholmodCheck(&f->common, "analyze"));
   }
   cholmod_factorize(f->A, f->L, &f->common);
@@ -198,10 +189,10 @@ static PetscErrorCode Factor(CSCholmod f)
 PetscErrorCode CSCholmodSetUpQuaternion(CSCholmod f, Mat K, PetscReal sigma)
 {
   PetscFunctionBeginUser;
-  PetscCall(PetscLogEventBegin(CS_EVENT_Numeric, 0, 0, 0, 0));
+  PetscCall(PetscLogEventBegin(CS_EVENT_CholmodNum, 0, 0, 0, 0));
   PetscCall(BuildQuaternion(f, K, sigma));
   PetscCall(Factor(f));
-  PetscCall(PetscLogEventEnd(CS_EVENT_Numeric, 0, 0, 0, 0));
+  PetscCall(PetscLogEventEnd(CS_EVENT_CholmodNum, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
 
@@ -214,7 +205,7 @@ PetscErrorCode CSCholmodSolve(CSCholmod f, Vec x, Vec y)
   cholmod_dense     *sol;
   PetscFunctionBeginUser;
   PetscCheck(f->L, PETSC_COMM_SELF, PETSC_ERR_ORDER, "CSCholmodSolve before a SetUp");
-  PetscCall(PetscLogEventBegin(CS_EVENT_Solve, 0, 0, 0, 0));
+  PetscCall(PetscLogEventBegin(CS_EVENT_CholmodSolve, 0, 0, 0, 0));
   PetscCall(VecGetArrayRead(x, &xa));
   for (PetscInt i = 0; i < f->n; i += 4) {
     b[i]     = PetscRealPart(xa[i]);
@@ -235,7 +226,7 @@ PetscErrorCode CSCholmodSolve(CSCholmod f, Vec x, Vec y)
   }
   PetscCall(VecRestoreArray(y, &ya));
   cholmod_free_dense(&sol, &f->common);
-  PetscCall(PetscLogEventEnd(CS_EVENT_Solve, 0, 0, 0, 0));
+  PetscCall(PetscLogEventEnd(CS_EVENT_CholmodSolve, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
 
@@ -243,10 +234,9 @@ PetscErrorCode CSSetDefaultCholesky(PC pc)
 {
   PetscMPIInt size;
   PetscFunctionBeginUser;
-  PetscCall(CSSubCholRegister()); /* also for -<prefix>pc_type cssubchol on one rank */
   PetscCallMPI(MPI_Comm_size(PetscObjectComm((PetscObject)pc), &size));
   if (size > 1) { /* substructured CHOLMOD (substructured_cholesky.c): MUMPS here orders only with PORD/AMD */
-    PetscCall(PCSetType(pc, "cssubchol"));
+    PetscCall(PCSetType(pc, PCCSSUBCHOL));
     PetscFunctionReturn(0);
   }
   PetscCall(PCSetType(pc, PCCHOLESKY));

@@ -1,7 +1,7 @@
-/* Y += a X with fixed nonzero patterns (include/cs_operators.h): the flow's Schur complement
+/* Y += a X with fixed nonzero patterns (include/cs_linalg.h): the flow's Schur complement
    S = H/t + X^T D X is refilled from its two terms at every refactorisation. */
 #include <petsc/private/petscimpl.h> /* PetscObjectStateIncrease */
-#include "cs_operators.h"
+#include "cs_linalg.h"
 
 struct _p_CSMatAddMap {
   Mat              Y, X;          /* not referenced: identity check only */

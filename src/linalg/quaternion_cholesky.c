@@ -26,14 +26,13 @@
 #include "cs_quaternion.h"
 #include "cs_quaternion_cholesky.h"
 #include "cs_cholmod.h"
+#include "cs_log.h"
 #include <petscblaslapack.h>
 
 /* Column blocks (measured on the 14,400-vertex torus of runs/bench_spin.sh; 16/32/64 within noise of each other):
    NB for the panel (quaternion loops inside a block, BLAS between blocks), NBU for the update matrix. */
 #define NB  16
 #define NBU 64
-
-static PetscLogEvent CS_EVENT_QSymbolic = 0, CS_EVENT_QNumeric = 0, CS_EVENT_QSolve = 0;
 
 struct _p_CSQuatCholesky {
   cholmod_common   common;
@@ -346,7 +345,7 @@ static PetscErrorCode Numeric(CSQuatCholesky f, Mat K, PetscReal sigma)
   Update  *stack;
   PetscInt top = 0, e = 0, bad;
   PetscFunctionBeginUser;
-  PetscCall(PetscLogEventBegin(CS_EVENT_QNumeric, 0, 0, 0, 0));
+  PetscCall(PetscLogEventBegin(CS_EVENT_QuatCholNum, 0, 0, 0, 0));
   f->factored = PETSC_FALSE;
   PetscCall(PetscArrayzero(f->lx, f->lxptr[f->nsuper]));
   for (PetscInt bi = 0; bi < f->nb; bi++) { /* K's entries, one quaternion per block */
@@ -401,7 +400,7 @@ static PetscErrorCode Numeric(CSQuatCholesky f, Mat K, PetscReal sigma)
       PetscCall(PetscFree(U));
       while (top > 0) PetscCall(PetscFree(stack[--top].U));
       PetscCall(PetscFree(stack));
-      PetscCall(PetscLogEventEnd(CS_EVENT_QNumeric, 0, 0, 0, 0));
+      PetscCall(PetscLogEventEnd(CS_EVENT_QuatCholNum, 0, 0, 0, 0));
       SETERRQ(PETSC_COMM_SELF, PETSC_ERR_MAT_CH_ZRPVT, "quaternion Cholesky: the matrix is not positive definite (pivot %g at block row %" PetscInt_FMT ", elimination step %" PetscInt_FMT " of %" PetscInt_FMT ")", pivot, f->perm[f->super[s] + bad], f->super[s] + bad, f->nb);
     }
     if (m > 0) { /* U -= L21 L21^H, lower triangle by blocks of NBU columns */
@@ -418,7 +417,7 @@ static PetscErrorCode Numeric(CSQuatCholesky f, Mat K, PetscReal sigma)
   PetscCall(PetscFree(stack));
   f->factored = PETSC_TRUE;
   PetscCall(PetscLogFlops(f->flops));
-  PetscCall(PetscLogEventEnd(CS_EVENT_QNumeric, 0, 0, 0, 0));
+  PetscCall(PetscLogEventEnd(CS_EVENT_QuatCholNum, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
 
@@ -426,13 +425,6 @@ PetscErrorCode CSQuatCholeskyCreate(const char ordering[], CSQuatCholesky *fac)
 {
   CSQuatCholesky f;
   PetscFunctionBeginUser;
-  if (!CS_EVENT_QSymbolic) {
-    PetscClassId id;
-    PetscCall(PetscClassIdRegister("confsurf quaternion Cholesky", &id));
-    PetscCall(PetscLogEventRegister("CSQuatCholSym", id, &CS_EVENT_QSymbolic));
-    PetscCall(PetscLogEventRegister("CSQuatCholNum", id, &CS_EVENT_QNumeric));
-    PetscCall(PetscLogEventRegister("CSQuatCholSolve", id, &CS_EVENT_QSolve));
-  }
   PetscCall(PetscNew(&f));
   PetscCall(CSCholmodStartCommon(ordering, &f->common));
   *fac = f;
@@ -450,9 +442,9 @@ PetscErrorCode CSQuatCholeskySetUp(CSQuatCholesky f, Mat K, PetscReal sigma)
   PetscCall(PetscObjectGetId((PetscObject)K, &id));
   PetscCall(MatGetNonzeroState(K, &st));
   if (!f->nsuper || id != f->kid || st != f->kstate) {
-    PetscCall(PetscLogEventBegin(CS_EVENT_QSymbolic, 0, 0, 0, 0));
+    PetscCall(PetscLogEventBegin(CS_EVENT_QuatCholSym, 0, 0, 0, 0));
     PetscCall(Symbolic(f, K));
-    PetscCall(PetscLogEventEnd(CS_EVENT_QSymbolic, 0, 0, 0, 0));
+    PetscCall(PetscLogEventEnd(CS_EVENT_QuatCholSym, 0, 0, 0, 0));
     f->kid    = id;
     f->kstate = st;
   }
@@ -474,7 +466,7 @@ PetscErrorCode CSQuatCholeskySolve(CSQuatCholesky f, Vec x, Vec yv)
     PetscCall(VecGetLocalSize(yv, &ny));
     PetscCheck(nx == 4 * f->nb && ny == 4 * f->nb, PETSC_COMM_SELF, PETSC_ERR_ARG_SIZ, "CSQuatCholeskySolve: vectors of local sizes %" PetscInt_FMT " and %" PetscInt_FMT " for a factor of %" PetscInt_FMT " rows", nx, ny, 4 * f->nb);
   }
-  PetscCall(PetscLogEventBegin(CS_EVENT_QSolve, 0, 0, 0, 0));
+  PetscCall(PetscLogEventBegin(CS_EVENT_QuatCholSolve, 0, 0, 0, 0));
   PetscCall(VecGetArrayRead(x, &xa));
   for (PetscInt p = 0; p < f->nb; p++)
     for (int c = 0; c < 4; c++) y[4 * p + c] = PetscRealPart(xa[4 * f->perm[p] + c]);
@@ -545,7 +537,7 @@ PetscErrorCode CSQuatCholeskySolve(CSQuatCholesky f, Vec x, Vec yv)
     for (int c = 0; c < 4; c++) ya[4 * f->perm[p] + c] = y[4 * p + c];
   PetscCall(VecRestoreArray(yv, &ya));
   PetscCall(PetscLogFlops(2.0 * 32.0 * f->nnzL));
-  PetscCall(PetscLogEventEnd(CS_EVENT_QSolve, 0, 0, 0, 0));
+  PetscCall(PetscLogEventEnd(CS_EVENT_QuatCholSolve, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
 

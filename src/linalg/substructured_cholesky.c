@@ -12,10 +12,9 @@
        A_p = [ S(I_p, I_p)  S(I_p, G_p) ]      G_p = the interface dofs coupled to I_p, and its own,
              [ S(G_p, I_p)  S(G_p, G_p) ]
    (a principal submatrix of S, hence SPD) with G_p ordered after I_p (METIS on I_p). Its interface block is the
-   local Schur complement T_p = S(G_p,G_p) - C_p, C_p = S(G_p,I_p) S(I_p,I_p)^{-1} S(I_p,G_p): CHOLMOD assembles it
-   as the trailing block of its last supernode, and we take it there before CHOLMOD would factor it
-   (cholmod_last_supernode.c; -pc_cssubchol_skip_interface_cholesky 0, or an interface that is not that block,
-   lets CHOLMOD factor it, T_p = L_GG L_GG^T then by LAPACK dlauum). The Schur complement of S on the interface is
+   local Schur complement T_p = S(G_p,G_p) - C_p, C_p = S(G_p,I_p) S(I_p,I_p)^{-1} S(I_p,G_p): CHOLMOD factors the
+   whole local matrix, and T_p = L_GG L_GG^T is multiplied back from the factor's interface block (LAPACK dlauum).
+   The Schur complement of S on the interface is
        S_Gamma = S(Gamma, Gamma) - sum_p C_p,
    a dense matrix of the interface size, summed over ranks (MPI_Allreduce) and factored redundantly (LAPACK).
    The local factor's interface block is then set to the identity, L = [L_II 0; L_GI I], so a solve S x = b is:
@@ -27,24 +26,19 @@
    the next collective call (CSSyncError), so every rank raises the error or reports PC_FACTOR_NUMERIC_ZEROPIVOT
    together.
 
-   Cost: the interface has about two rows of mesh vertices along the cut (S couples two-rings); its dense
-   factorisation is small next to the two halves (level 6: 2.3k interface dofs, 3.8e9 flops for S_Gamma against
-   3.2e10 / 3.3e10 on the two ranks and 5.7e10 serially; taking T_p as assembled saves 2 x 3.8e9 on each rank:
-   1.40 instead of 1.65 s per factorisation, median of 3 alternating runs of the flow with
-   -flow_fieldsplit_1_pc_cssubchol_skip_interface_cholesky 1 / 0). The interface is redundant on every rank, so this is meant for a few ranks (memory about
-   8 (G^2 + gp^2 + G^2/2) bytes per rank, gp <= G the rank's share); on one rank it is a plain CHOLMOD factorisation. The symbolic phase (split, METIS,
-   CHOLMOD analysis) is kept while the nonzero pattern stays. */
+   Cost and measurements (the interface size, flops, the cost of multiplying T_p back): docs/solvers.md. The
+   interface is redundant on every rank, so this is meant for a few ranks; on one rank it is a plain CHOLMOD
+   factorisation. The symbolic phase (split, METIS, CHOLMOD analysis) is kept while the nonzero pattern stays. */
 #include <petsc/private/pcimpl.h> /* a PC type of our own (PCRegister) */
 #include <petscblaslapack.h>
 #include <suitesparse/cholmod.h>
 #include "cs_substructured_cholesky.h"
 #include "cs_cholmod.h"
 #include "cs_util.h"
+#include "cs_linalg.h"
 
 /* LAPACK: U U^T of an upper triangular U (not wrapped by PETSc) */
 extern void dlauum_(const char *, const PetscBLASInt *, PetscScalar *, const PetscBLASInt *, PetscBLASInt *);
-
-static PetscLogEvent EV_Sym = 0, EV_Num = 0, EV_Dense = 0, EV_Solve = 0;
 
 enum { ORDER_METIS, ORDER_AMD, ORDER_NESDIS };
 static const char *const OrderingNames[] = {"metis", "amd", "nesdis"};
@@ -71,10 +65,7 @@ typedef struct {
   PetscInt       *gpos;  /* their positions in the factor's (permuted) order, ascending */
   PetscInt       *gglob; /* their interface numbers (0..G-1), in that order */
   PetscInt       *gloc;  /* their local numbers (0..m-1), in that order */
-  PetscBool       keep_last; /* -pc_cssubchol_skip_interface_cholesky: take T_p as CHOLMOD assembles it */
-  PetscBool       gamma_trailing; /* the interface dofs are the factor's last gp columns (so their block can be kept) */
-  PetscBool       kept;       /* the last factorisation left that block assembled */
-  PetscInt        nkept, nfact; /* factorisations that kept it / all, for -ksp_view */
+  PetscInt        nfact; /* numeric factorisations, for -ksp_view */
   PetscScalar    *SG;    /* G x G: Cholesky factor of S_Gamma */
   PetscScalar    *pack;  /* G (G + 1) / 2: the lower triangle of S_Gamma, for the reduction */
   PetscScalar    *rG;    /* G: interface vector */
@@ -342,10 +333,6 @@ static PetscErrorCode SetUpAnalysis(PC_SubChol *s)
         l++;
       }
   }
-  /* CHOLMOD's postorder may move interface columns forward; the block can be kept only when they stayed last
-     (CSCholmodFactorKeepLast checks that they end a root supernode, the usual case: the local Schur complement on
-     a connected cut is dense, and the top separator of the interior shares that supernode) */
-  s->gamma_trailing = (PetscBool)(s->gp > 0 && s->gpos[0] == s->m - s->gp);
   PetscCall(PetscMalloc1(s->nown, &s->own_loc));
   for (PetscInt i = 0; i < s->nown; i++) s->own_loc[i] = pos[s->own_off + i] >= 0 ? -1 - pos[s->own_off + i] : s->own_off + i;
   PetscCall(PetscFree(pos));
@@ -365,20 +352,17 @@ static PetscErrorCode LocalFactor(PC_SubChol *s, PetscBool *notpd)
   PetscCall(MatSeqAIJGetArrayRead(s->sub[0], &a));
   PetscCall(PetscArraycpy((PetscScalar *)s->A->x, a, ((int *)s->A->p)[s->m]));
   PetscCall(MatSeqAIJRestoreArrayRead(s->sub[0], &a));
-  s->kept = PETSC_FALSE;
-  if (s->keep_last && s->gamma_trailing) PetscCall(CSCholmodFactorKeepLast(s->A, s->L, s->gp, &s->c, &s->kept));
-  else cholmod_factorize(s->A, s->L, &s->c);
+  cholmod_factorize(s->A, s->L, &s->c);
   PetscCall(CholCheck(&s->c, "factorisation"));
   s->nfact++;
-  if (s->kept) s->nkept++;
-  PetscCall(PetscLogFlops(s->kept ? s->fl - (PetscLogDouble)s->gp * s->gp * s->gp / 3 : s->fl));
+  PetscCall(PetscLogFlops(s->fl));
   *notpd = (PetscBool)(s->c.status == CHOLMOD_NOT_POSDEF);
   PetscFunctionReturn(0);
 }
 
 /* Rank-local: this rank's part of S_Gamma (lower triangle, packed): T_p - S(G_p, G_p), with T_p = the local Schur
-   complement on the interface, plus S(Gamma, Gamma) on the owned interface rows. T_p is the last supernode as
-   CHOLMOD assembled it when it was kept (s->kept), else L_GG L_GG^T from the factored block. Then L(G,G) is set
+   complement on the interface, plus S(Gamma, Gamma) on the owned interface rows. T_p = L_GG L_GG^T from the
+   factor's interface block. Then L(G,G) is set
    to the identity: the solves need only L_II and L_GI (ApplyForward, PCApply). */
 static PetscErrorCode LocalInterface(Mat S, PC_SubChol *s)
 {
@@ -411,7 +395,7 @@ static PetscErrorCode LocalInterface(Mat S, PC_SubChol *s)
         }
       }
     }
-    if (!s->kept) { /* T_p = L_GG L_GG^T by LAPACK's U U^T on the reversed L_GG: a third of the flops of a product */
+    { /* T_p = L_GG L_GG^T by LAPACK's U U^T on the reversed L_GG: a third of the flops of a product */
       PetscCall(PetscBLASIntCast(gp, &bgp));
       dlauum_("U", &bgp, U, &bgp, &info);
       PetscCheck(!info, PETSC_COMM_SELF, PETSC_ERR_LIB, "cssubchol: LAPACK dlauum info %d", (int)info);
@@ -487,7 +471,7 @@ static PetscErrorCode SetUpNumeric(PC pc, PC_SubChol *s)
       PetscFunctionReturn(0);
     }
   }
-  PetscCall(PetscLogEventBegin(EV_Dense, pc, 0, 0, 0));
+  PetscCall(PetscLogEventBegin(CS_EVENT_SubCholDense, pc, 0, 0, 0));
   CSCaptureError(ierr, LocalInterface(S, s));
   PetscCall(CSSyncError(comm, ierr));
   if (size > 1) {
@@ -512,7 +496,7 @@ static PetscErrorCode SetUpNumeric(PC pc, PC_SubChol *s)
     }
   }
 #undef PACK
-  PetscCall(PetscLogEventEnd(EV_Dense, pc, 0, 0, 0));
+  PetscCall(PetscLogEventEnd(CS_EVENT_SubCholDense, pc, 0, 0, 0));
   PetscFunctionReturn(0);
 }
 
@@ -527,18 +511,18 @@ static PetscErrorCode PCSetUp_SubChol(PC pc)
     s->started = PETSC_TRUE;
   }
   if (!pc->setupcalled || pc->flag == DIFFERENT_NONZERO_PATTERN || !s->L) {
-    PetscCall(PetscLogEventBegin(EV_Sym, pc, 0, 0, 0));
+    PetscCall(PetscLogEventBegin(CS_EVENT_SubCholSym, pc, 0, 0, 0));
     PetscCall(ResetSymbolic(s));
     PetscCall(SetUpSplit(pc, s));
     CSCaptureError(ierr, SetUpAnalysis(s));
     if (ierr) PetscCall(ResetSymbolic(s)); /* free what a half-done analysis left */
     PetscCall(CSSyncError(PetscObjectComm((PetscObject)pc), ierr));
-    PetscCall(PetscLogEventEnd(EV_Sym, pc, 0, 0, 0));
+    PetscCall(PetscLogEventEnd(CS_EVENT_SubCholSym, pc, 0, 0, 0));
   }
   PetscCall(PCSetFailedReason(pc, PC_NOERROR));
-  PetscCall(PetscLogEventBegin(EV_Num, pc, 0, 0, 0));
+  PetscCall(PetscLogEventBegin(CS_EVENT_SubCholNum, pc, 0, 0, 0));
   PetscCall(SetUpNumeric(pc, s));
-  PetscCall(PetscLogEventEnd(EV_Num, pc, 0, 0, 0));
+  PetscCall(PetscLogEventEnd(CS_EVENT_SubCholNum, pc, 0, 0, 0));
   PetscFunctionReturn(0);
 }
 
@@ -580,7 +564,7 @@ static PetscErrorCode PCApply_SubChol(PC pc, Vec b, Vec x)
     PetscCall(VecSetInf(x));
     PetscFunctionReturn(0);
   }
-  PetscCall(PetscLogEventBegin(EV_Solve, pc, b, x, 0));
+  PetscCall(PetscLogEventBegin(CS_EVENT_SubCholSolve, pc, b, x, 0));
   PetscCall(PetscObjectGetComm((PetscObject)pc, &comm));
   PetscCallMPI(MPI_Comm_size(comm, &size));
   PetscCall(VecScatterBegin(s->scat, b, s->bloc, INSERT_VALUES, SCATTER_FORWARD));
@@ -607,7 +591,7 @@ static PetscErrorCode PCApply_SubChol(PC pc, Vec b, Vec x)
   PetscCall(VecGetArray(x, &xa));
   for (PetscInt i = 0; i < s->nown; i++) xa[i] = s->own_loc[i] >= 0 ? ((PetscScalar *)s->t2->x)[s->own_loc[i]] : s->rG[-1 - s->own_loc[i]];
   PetscCall(VecRestoreArray(x, &xa));
-  PetscCall(PetscLogEventEnd(EV_Solve, pc, b, x, 0));
+  PetscCall(PetscLogEventEnd(CS_EVENT_SubCholSolve, pc, b, x, 0));
   PetscFunctionReturn(0);
 }
 
@@ -637,7 +621,6 @@ static PetscErrorCode PCSetFromOptions_SubChol(PC pc, PetscOptionItems *PetscOpt
   PetscOptionsHeadBegin(PetscOptionsObject, "Substructured CHOLMOD Cholesky (cssubchol)");
   PetscCall(PetscOptionsEList("-pc_cssubchol_ordering", "Ordering of each rank's interior", NULL, OrderingNames, 3, OrderingNames[s->ordering], &s->ordering, NULL));
   PetscCall(PetscOptionsEList("-pc_cssubchol_interface", "Side of each cut that holds the interface (auto: the smaller largest local matrix)", NULL, SideNames, 3, SideNames[s->side_opt], &s->side_opt, NULL));
-  PetscCall(PetscOptionsBool("-pc_cssubchol_skip_interface_cholesky", "Take each rank's interface Schur complement as CHOLMOD assembles it, skipping CHOLMOD's dense Cholesky of it and our product L_GG L_GG^T (cholmod_last_supernode.c)", NULL, s->keep_last, &s->keep_last, NULL));
   PetscOptionsHeadEnd();
   PetscFunctionReturn(0);
 }
@@ -651,41 +634,38 @@ static PetscErrorCode PCView_SubChol(PC pc, PetscViewer viewer)
   if (ascii) {
     PetscCall(PetscViewerASCIIPrintf(viewer, "  substructured CHOLMOD Cholesky: interior ordering %s, interface %" PetscInt_FMT " dofs (dense, redundant), on the %s side of each cut\n", OrderingNames[s->ordering], s->G, s->side ? "upper" : "lower"));
     PetscCall(PetscViewerASCIIPushSynchronized(viewer));
-    if (s->L) PetscCall(PetscViewerASCIISynchronizedPrintf(viewer, "    [local] %" PetscInt_FMT " dofs, %" PetscInt_FMT " on the interface, factor %.3g entries, %.3g flops; interface block %s (%" PetscInt_FMT " of %" PetscInt_FMT " factorisations)\n", s->m, s->gp, s->lnz, s->fl, s->kept ? "kept as assembled" : "factored", s->nkept, s->nfact));
+    if (s->L) PetscCall(PetscViewerASCIISynchronizedPrintf(viewer, "    [local] %" PetscInt_FMT " dofs, %" PetscInt_FMT " on the interface, factor %.3g entries, %.3g flops; %" PetscInt_FMT " factorisations\n", s->m, s->gp, s->lnz, s->fl, s->nfact));
     PetscCall(PetscViewerFlush(viewer));
     PetscCall(PetscViewerASCIIPopSynchronized(viewer));
   }
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode GetInfo_SubChol(PC pc, PetscInt *G, PetscInt *kept, PetscInt *factorisations)
+static PetscErrorCode GetInfo_SubChol(PC pc, PetscInt *G, PetscInt *factorisations)
 {
   PC_SubChol *s = (PC_SubChol *)pc->data;
   PetscFunctionBeginUser;
   if (G) *G = s->G;
-  if (kept) *kept = s->nkept;
   if (factorisations) *factorisations = s->nfact;
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CSSubCholGetInfo(PC pc, PetscInt *G, PetscInt *kept, PetscInt *factorisations)
+PetscErrorCode CSSubCholGetInfo(PC pc, PetscInt *G, PetscInt *factorisations)
 {
   PetscFunctionBeginUser;
   PetscValidHeaderSpecific(pc, PC_CLASSID, 1);
   if (G) *G = 0;
-  if (kept) *kept = 0;
   if (factorisations) *factorisations = 0;
-  PetscTryMethod(pc, "CSSubCholGetInfo_C", (PC, PetscInt *, PetscInt *, PetscInt *), (pc, G, kept, factorisations));
+  PetscTryMethod(pc, "CSSubCholGetInfo_C", (PC, PetscInt *, PetscInt *), (pc, G, factorisations));
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode PCCreate_SubChol(PC pc)
+PetscErrorCode PCCreate_CSSubChol(PC pc)
 {
   PC_SubChol *s;
   PetscFunctionBeginUser;
   PetscCall(PetscNew(&s));
   pc->data                 = s;
-  s->keep_last             = PETSC_TRUE;
   pc->ops->setup           = PCSetUp_SubChol;
   pc->ops->apply           = PCApply_SubChol;
   pc->ops->applytranspose  = PCApply_SubChol; /* S is symmetric */
@@ -694,19 +674,5 @@ static PetscErrorCode PCCreate_SubChol(PC pc)
   pc->ops->setfromoptions  = PCSetFromOptions_SubChol;
   pc->ops->view            = PCView_SubChol;
   PetscCall(PetscObjectComposeFunction((PetscObject)pc, "CSSubCholGetInfo_C", GetInfo_SubChol));
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSSubCholRegister(void)
-{
-  static PetscBool done = PETSC_FALSE;
-  PetscFunctionBeginUser;
-  if (done) PetscFunctionReturn(0);
-  PetscCall(PCRegister("cssubchol", PCCreate_SubChol));
-  PetscCall(PetscLogEventRegister("CSSubCholSym", PC_CLASSID, &EV_Sym));
-  PetscCall(PetscLogEventRegister("CSSubCholNum", PC_CLASSID, &EV_Num));
-  PetscCall(PetscLogEventRegister("CSSubCholDense", PC_CLASSID, &EV_Dense));
-  PetscCall(PetscLogEventRegister("CSSubCholSolve", PC_CLASSID, &EV_Solve));
-  done = PETSC_TRUE;
   PetscFunctionReturn(0);
 }

@@ -1,0 +1,26 @@
+/* src/linalg/: sparse factorisations and matrix utilities that know nothing of meshes. Registered with PETSc by
+   CSInitializePackage (include/cs_package.h): the PC "cssubchol" and the MatSolverTypes "csquat" and
+   "cscholmod" (Cholesky of a quaternionic Hermitian SeqAIJ matrix, chosen with
+   -<prefix>pc_factor_mat_solver_type). Solver notes and measurements: docs/solvers.md. */
+#ifndef CS_LINALG_H
+#define CS_LINALG_H
+#include <petscksp.h>
+#include "cs_log.h"
+
+#define PCCSSUBCHOL        "cssubchol"
+#define MATSOLVERCSQUAT    "csquat"
+#define MATSOLVERCSCHOLMOD "cscholmod"
+
+/* for CSInitializePackage: PCRegister(PCCSSUBCHOL, ...), MatSolverTypeRegister(MATSOLVERCS*, MATSEQAIJ, MAT_FACTOR_CHOLESKY, ...) */
+PETSC_EXTERN PetscErrorCode PCCreate_CSSubChol(PC);
+PETSC_EXTERN PetscErrorCode MatGetFactor_SeqAIJ_CSQuat(Mat, MatFactorType, Mat *);
+PETSC_EXTERN PetscErrorCode MatGetFactor_SeqAIJ_CSCholmod(Mat, MatFactorType, Mat *);
+
+/* Y += a X for AIJ matrices (Seq or MPI, same layout) whose nonzero patterns stay fixed, X's within Y's: the
+   position of each of X's entries in Y is found once (*map, created at the first call, freed with
+   CSMatAddMapDestroy), later calls are one pass over the values. MatAXPY with SUBSET_NONZERO_PATTERN searches every
+   row again (PETSc 3.18 MatAXPY_Basic): 60 ms per call at 82k faces. Increases Y's state. */
+typedef struct _p_CSMatAddMap *CSMatAddMap;
+PETSC_EXTERN PetscErrorCode CSMatAddFixedPattern(Mat Y, PetscScalar a, Mat X, CSMatAddMap *map);
+PETSC_EXTERN PetscErrorCode CSMatAddMapDestroy(CSMatAddMap *map);
+#endif

@@ -1,0 +1,15 @@
+/* The PetscLogEvents of confsurf (-log_view). Declared here, in the lowest layer, so that every layer can log
+   them; registered once by CSInitializePackage (include/cs_package.h, docs/solvers.md "Package initialiser"). */
+#ifndef CS_LOG_H
+#define CS_LOG_H
+#include <petsclog.h>
+
+/* mesh, geometry, energies */
+PETSC_EXTERN PetscLogEvent CS_EVENT_MeshRead, CS_EVENT_MeshDistribute, CS_EVENT_Geometry, CS_EVENT_Energy, CS_EVENT_Gradient, CS_EVENT_Assemble;
+/* linalg: CHOLMOD's complex form (cholmod_factor.c), the quaternion Cholesky, the cssubchol PC */
+PETSC_EXTERN PetscLogEvent CS_EVENT_CholmodSym, CS_EVENT_CholmodNum, CS_EVENT_CholmodSolve;
+PETSC_EXTERN PetscLogEvent CS_EVENT_QuatCholSym, CS_EVENT_QuatCholNum, CS_EVENT_QuatCholSolve;
+PETSC_EXTERN PetscLogEvent CS_EVENT_SubCholSym, CS_EVENT_SubCholNum, CS_EVENT_SubCholDense, CS_EVENT_SubCholSolve;
+/* methods: the spin transformation's eigenproblem and Poisson problem */
+PETSC_EXTERN PetscLogEvent CS_EVENT_SpinEigen, CS_EVENT_SpinPoisson;
+#endif
