@@ -17,7 +17,7 @@ CFLAGS   ?= -O2 -g
 CFLAGS   += -std=gnu11 -Wall -Wextra -Wno-unused-parameter -Werror -MMD -MP
 LDLIBS   := $(shell pkg-config --libs slepc petsc) -lcholmod -llapack -lblas -lm
 
-LIB_SRC  := $(sort $(wildcard src/*/*.c))
+LIB_SRC  := $(sort $(wildcard src/*/*.c src/*/*/*.c))
 LIB_SRC  := $(filter-out src/driver/%,$(LIB_SRC))
 DRV_SRC  := $(wildcard src/driver/*.c)
 TEST_SRC := $(wildcard tests/unit/*.c)

@@ -1,6 +1,6 @@
 /* From validated serial data on rank 0 to a distributed, interpolated DMPlex with its dof layouts and the
    local connectivity tables the kernels loop over. */
-#include "cs_mesh.h"
+#include "cs_mesh_deform.h"
 #include "cs_util.h"
 
 PetscLogEvent CS_EVENT_MeshRead, CS_EVENT_MeshDistribute, CS_EVENT_Geometry, CS_EVENT_Energy, CS_EVENT_Gradient, CS_EVENT_Assemble;
@@ -363,6 +363,7 @@ PetscErrorCode CSMeshCreateFromOptions(MPI_Comm comm, const char prefix[], CSMes
   if (!rank) PetscCall(OrientOutward(&md, &topo, keep));
   PetscCall(PetscLogEventEnd(CS_EVENT_MeshRead, 0, 0, 0, 0));
   PetscCall(CSMeshCreateFromData(comm, &md, &topo, mesh));
+  PetscCall(CSMeshDeformFromOptions(*mesh, prefix));
   PetscFunctionReturn(0);
 }
 
