@@ -8,6 +8,11 @@
    it on, and nthreads-var is 1 unless the user set OMP_NUM_THREADS.
    OpenBLAS starts one thread per core in every process: with several ranks per node that oversubscribes the
    cores, so each rank gets one BLAS thread unless OPENBLAS_NUM_THREADS is set.
+   PT-Scotch 7 (the partitioner of CSMeshCreate) starts threads too, and its multi-threaded partitioning is not
+   deterministic: the same run on 2 ranks gave different partitions, hence different summation orders and, after
+   a few iterations of a flow, different iteration counts (measured, docs/reproducibility.md). Scotch reads the
+   thread count from SCOTCH_PTHREAD_NUMBER when it creates its context; we ask for one thread unless the user
+   set it, so runs under mpirun are reproducible.
    Both libraries are reached through dlsym: the symbols are there when libcholmod / libopenblas are loaded, and
    nothing is done when they are not (another BLAS, a CHOLMOD without OpenMP). */
 #include <dlfcn.h>
@@ -25,6 +30,7 @@ PetscErrorCode CSLimitThreads(MPI_Comm comm)
   if (set_dynamic) set_dynamic(1);
   if (set_num_threads && !getenv("OMP_NUM_THREADS")) set_num_threads(1);
   if (openblas_set_threads && size > 1 && !getenv("OPENBLAS_NUM_THREADS")) openblas_set_threads(1);
+  PetscCheck(setenv("SCOTCH_PTHREAD_NUMBER", "1", 0) == 0, comm, PETSC_ERR_SYS, "setenv SCOTCH_PTHREAD_NUMBER failed");
   PetscFunctionReturn(0);
 }
 

@@ -1,0 +1,8 @@
+#!/usr/bin/env bash
+# nprocs: 1 2
+# The golden regression suite (issue #23, tests/golden/): short runs of every options/*.opts and of each test's
+# main command; their summaries and output meshes must agree with those stored from the binary before the
+# redesign to 1e-10 relative. Guards every refactor: change a stored result only with a note in
+# tests/golden/CHANGES.
+. tests/lib.sh
+python3 tests/golden/run.py --np "$NP" --bin "$CS_BIN"
