@@ -325,7 +325,8 @@ static PetscErrorCode KSolve(CSSaddle *s, Vec b, Vec z, PetscInt *its, KSPConver
   PetscFunctionReturn(0);
 }
 
-/* k x k dense solve (column-major S), Gaussian elimination with partial pivoting; k is a handful. */
+/* k x k dense solve (column-major S), Gaussian elimination with partial pivoting; k is a handful (LAPACK gesv
+   rounds differently and moves the golden results: docs/willmore_flow.md). */
 static PetscErrorCode SmallSolve(MPI_Comm comm, PetscInt k, PetscScalar *S, PetscScalar *b)
 {
   PetscReal big = 0;
