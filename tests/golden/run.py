@@ -21,6 +21,7 @@ import shlex
 import subprocess
 import sys
 import tempfile
+import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
@@ -126,7 +127,9 @@ def main():
     for name, ranks, args in cases:
         if a.np not in ranks or (a.filter and not re.search(a.filter, name)):
             continue
+        t0 = time.time()
         res, err = run_case(name, a.np, args, a.bin, tmp)
+        dt = time.time() - t0
         ref_path = os.path.join(HERE, "ref", "%s.np%s.json" % (name, a.np))
         if err:
             nfail += 1
@@ -146,7 +149,7 @@ def main():
             print("FAIL %-30s %s" % (name, "; ".join(bad[:6])))
         else:
             npass += 1
-            print("ok   %-30s" % name)
+            print("ok   %-30s %5.1f s" % (name, dt))
     subprocess.run(["rm", "-rf", tmp])
     print("%d passed, %d failed" % (npass, nfail))
     sys.exit(1 if nfail else 0)
