@@ -1,64 +1,93 @@
-/* Constrained Willmore flow (soliman2021 Sec. 4, Algorithm 1): competitive gradient descent (cgd),
-   projected gradient descent (pgd) and Sobolev gradient descent (gd) in the H^2 (or L2) metric, with the
-   exact discrete conformal constraint and area / volume / point constraints, on closed surfaces and on
-   surfaces with boundary (-task flow -flow_type cgd|pgd|gd). */
+/* Constrained Willmore flow (soliman2021 Sec. 4, Algorithm 1) as a library object on a mesh it is given:
+   competitive gradient descent (cgd), projected gradient descent (pgd) and Sobolev gradient descent (gd) in the
+   H^2 (or L2) metric, with the exact discrete conformal constraint and area / volume / point constraints, on
+   closed surfaces and on surfaces with boundary. PETSc object style:
+     CSWillmoreFlowCreate(mesh, &flow); CSWillmoreFlowSetType(flow, CSWILLMOREFLOWCGD);
+     CSWillmoreFlowSetFromOptions(flow); CSWillmoreFlowSetUp(flow); CSWillmoreFlowSolve(flow);
+     CSWillmoreFlowGetConvergedReason(flow, &reason); CSWillmoreFlowGetSolution(flow, &x);
+     CSWillmoreFlowDestroy(&flow);
+   Options are read under the prefix "flow_" (CSWillmoreFlowSetOptionsPrefix); the saddle solve's KSP under
+   "<prefix>saddle_". The flow reads no mesh and writes no output: monitors (src/output/) do. */
 #ifndef CS_METHODS_WILLMORE_H
 #define CS_METHODS_WILLMORE_H
 #include "cs_constraints.h"
-#include "cs_output.h"
 #include <petscksp.h>
 
-PETSC_EXTERN PetscErrorCode CSFlowCGD(MPI_Comm comm, CSOutput *out);
-PETSC_EXTERN PetscErrorCode CSFlowPGD(MPI_Comm comm, CSOutput *out);
-PETSC_EXTERN PetscErrorCode CSFlowGD(MPI_Comm comm, CSOutput *out);
+typedef struct _p_CSWillmoreFlow *CSWillmoreFlow;
 
-/* ---- the linear solver of every step (src/methods/saddle_solver.c) ----
-   Solves, with the KSP of prefix "flow_",
-     [ A00  X    0  ] [zE]   [rE]      A00 = -I_Q / t_mu   (multipliers of the conformal constraint, FIRST:
-     [ X^T  H/t  B  ] [zV] = [rV]                            then selfp is the exact Schur complement)
-     [ 0    B^T  -G ] [zX]   [rX]      H = metric (3V x 3V), X = C Dlambda (E x 3V),
-   B = the k dense Jacobian rows of the global constraints (area, volume, points), G = diag(g_j)/t_mu. The
-   sparse part is a MATNEST [[A00, X], [X^T, H/t]] (or its AIJ conversion with -flow_saddle_mat aij, for
-   monolithic direct solvers); the k dense rows are appended by bordering (block elimination: k+1 solves
-   with the same operator, then a k x k system), so no dense row ever enters a factorisation. Without the
-   conformal constraint the edge block is absent and the KSP solves with H/t alone. */
+typedef const char *CSWillmoreFlowType;
+#define CSWILLMOREFLOWCGD "cgd"
+#define CSWILLMOREFLOWPGD "pgd"
+#define CSWILLMOREFLOWGD  "gd"
+
+/* Why Solve stopped; CSWillmoreFlowConvergedReasons[reason] names it, CSWillmoreFlowStopReasons[reason] is the
+   summary's stop_reason. */
+typedef enum {
+  CS_WILLMORE_FLOW_ITERATING = 0,
+  CS_WILLMORE_FLOW_CONVERGED_RTOL,           /* el_residual < rtol and violation < ctol */
+  CS_WILLMORE_FLOW_DIVERGED_MAX_IT,          /* -flow_max_it reached */
+  CS_WILLMORE_FLOW_DIVERGED_REJECTIONS,      /* -flow_max_rejections consecutive rejected steps */
+  CS_WILLMORE_FLOW_DIVERGED_AREA,            /* total area beyond -flow_max_area_ratio */
+  CS_WILLMORE_FLOW_DIVERGED_MESH_DEGENERATE  /* vertex-area spread beyond -flow_max_area_ratio */
+} CSWillmoreFlowConvergedReason;
+PETSC_EXTERN const char *const CSWillmoreFlowConvergedReasons[];
+PETSC_EXTERN const char *const CSWillmoreFlowStopReasons[];
+
+/* Enumerated options (PetscOptionsEnum tables: values, then the enum name, the prefix, NULL). */
+typedef enum { CS_FLOW_METRIC_H2, CS_FLOW_METRIC_L2 } CSFlowMetricType;
+typedef enum { CS_FLOW_BOUNDARY_DIRICHLET, CS_FLOW_BOUNDARY_FREE, CS_FLOW_BOUNDARY_NORMALS } CSFlowBoundaryType;
+typedef enum { CS_SADDLE_MAT_NEST, CS_SADDLE_MAT_AIJ } CSSaddleMatType;
+PETSC_EXTERN const char *const CSFlowMetricTypes[];
+PETSC_EXTERN const char *const CSFlowBoundaryTypes[];
+PETSC_EXTERN const char *const CSSaddleMatTypes[];
+
+/* The state after the last evaluation, for monitors and reports. */
 typedef struct {
-  CSMesh    mesh;
-  KSP       ksp;
-  PetscBool edges;      /* conformal block present */
-  PetscBool monolithic; /* -flow_saddle_mat aij */
-  Mat       A00, Xt, H11, K, Kaij;
-  Mat       XtD, XtDX, S; /* the exact Schur complement S = H/t + X^T (t_mu I_Q^{-1}) X, assembled with a fixed
-                             pattern (for -flow_pc_fieldsplit_schur_precondition user) */
-  CSMatAddMap add_xtdx, add_h11; /* S refilled from its two terms (fixed patterns) */
-  IS        is[2];
-  Vec       b, z;
-  IS        fixed;      /* Dirichlet dofs of H (identity rows/cols), may be NULL */
-  PetscInt  k;
-  Vec      *B, *W;      /* k rows, k solutions (each an (E+3V) or 3V vector) */
-  PetscReal *G;
-  PetscInt  reuse_its;  /* keep the preconditioner while the last solve took <= this many its */
-  PetscInt  last_its;   /* Krylov iterations of the last solve */
-  PetscInt  setups;     /* preconditioner (factorisation) builds so far */
-  PetscInt  solves;     /* linear solves (right-hand sides) so far */
-  PetscInt  max_it;     /* the KSP's own iteration limit */
-  PetscBool reusing;    /* this step keeps an earlier preconditioner */
-  PetscBool krylov;     /* the KSP iterates (not preonly): kept preconditioners and initial guesses allowed */
-  PetscInt  backoff, wait; /* fresh steps to take before the next reuse attempt, after failed attempts */
-  Vec       iq;         /* this step's I_Q, t_mu and X (borrowed), to rebuild S when a kept one fails */
-  PetscReal tmu;
-  Mat       X;
-  PetscBool have_pc;
-  char     **preset;    /* option names inserted as defaults (cleared after the first setup) */
-  PetscInt  npreset;
-} CSSaddle;
+  PetscInt         it;                  /* accepted steps so far */
+  PetscReal        energy, area, volume, conformal_violation, constraint_violation, el_residual, t;
+  PetscInt         ksp_its;             /* Krylov iterations of the last step */
+  PetscInt         ksp_its_total, rejections, nguard, pc_setups, linear_solves;
+  PetscReal        area_spread, q_max, seconds;
+  PetscInt         k;                   /* global constraint values */
+  const PetscReal *constraint_values;
+} CSWillmoreFlowInfo;
 
-PETSC_EXTERN PetscErrorCode CSSaddleCreate(CSMesh mesh, PetscBool edges, PetscBool h2, PetscInt k, CSSaddle *s);
-/* H (3V x 3V) scaled by 1/t; iq, tmu, X ignored without the edge block; rows/g only if k > 0. */
-PETSC_EXTERN PetscErrorCode CSSaddleSetOperators(CSSaddle *s, Mat H, PetscReal t, Vec iq, PetscReal tmu, Mat X, Vec rows[], const PetscReal g[]);
-/* rE/zE may be NULL without the edge block; rX/zX without k. *its = KSP iterations (sum over the k+1
-   bordering solves). */
-PETSC_EXTERN PetscErrorCode CSSaddleSolve(CSSaddle *s, Vec rE, Vec rV, const PetscReal rX[], Vec zE, Vec zV, PetscReal zX[], PetscInt *its);
-PETSC_EXTERN PetscErrorCode CSSaddleDestroy(CSSaddle *s);
+PETSC_EXTERN PetscErrorCode CSWillmoreFlowCreate(CSMesh mesh, CSWillmoreFlow *flow);
+PETSC_EXTERN PetscErrorCode CSWillmoreFlowSetType(CSWillmoreFlow flow, CSWillmoreFlowType type);
+PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetType(CSWillmoreFlow flow, CSWillmoreFlowType *type);
+PETSC_EXTERN PetscErrorCode CSWillmoreFlowSetOptionsPrefix(CSWillmoreFlow flow, const char prefix[]);
+PETSC_EXTERN PetscErrorCode CSWillmoreFlowSetTolerances(CSWillmoreFlow flow, PetscReal rtol, PetscReal ctol, PetscInt max_it);
+PETSC_EXTERN PetscErrorCode CSWillmoreFlowSetFromOptions(CSWillmoreFlow flow);
+PETSC_EXTERN PetscErrorCode CSWillmoreFlowSetUp(CSWillmoreFlow flow);
+/* One outer iteration (a step with its rejections); *reason is ITERATING unless the flow stopped. */
+PETSC_EXTERN PetscErrorCode CSWillmoreFlowStep(CSWillmoreFlow flow, CSWillmoreFlowConvergedReason *reason);
+PETSC_EXTERN PetscErrorCode CSWillmoreFlowSolve(CSWillmoreFlow flow);
+PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetConvergedReason(CSWillmoreFlow flow, CSWillmoreFlowConvergedReason *reason);
+PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetSolution(CSWillmoreFlow flow, Vec *x);   /* borrowed */
+PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetInitial(CSWillmoreFlow flow, Vec *x0);   /* borrowed */
+PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetMesh(CSWillmoreFlow flow, CSMesh *mesh);
+PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetInfo(CSWillmoreFlow flow, CSWillmoreFlowInfo *info);
+PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetEnergyName(CSWillmoreFlow flow, const char **name);
+PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetInitialEnergy(CSWillmoreFlow flow, PetscReal *E0);
+PETSC_EXTERN PetscErrorCode CSWillmoreFlowView(CSWillmoreFlow flow, PetscViewer viewer); /* NULL: stdout */
+PETSC_EXTERN PetscErrorCode CSWillmoreFlowDestroy(CSWillmoreFlow *flow);
+
+/* Monitors, called after the evaluation at the top of every iteration (it = accepted steps so far). */
+typedef PetscErrorCode (*CSWillmoreFlowMonitorFn)(CSWillmoreFlow flow, PetscInt it, void *ctx);
+PETSC_EXTERN PetscErrorCode CSWillmoreFlowMonitorSet(CSWillmoreFlow flow, CSWillmoreFlowMonitorFn fn, void *ctx, PetscErrorCode (*destroy)(void **));
+PETSC_EXTERN PetscErrorCode CSWillmoreFlowMonitorCancel(CSWillmoreFlow flow);
+
+/* Checkpoint state (after SetUp): the loop scalars and the vectors a checkpoint stores (x, and mu or NULL
+   without the conformal constraint; borrowed, may be overwritten before Solve to resume), and the inverse.
+   CSWillmoreFlowSetState checks that the scalars were written by the same flow type. */
+PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetStateSize(CSWillmoreFlow flow, PetscInt *nreal);
+PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetState(CSWillmoreFlow flow, PetscReal reals[], Vec *x, Vec *mu);
+PETSC_EXTERN PetscErrorCode CSWillmoreFlowSetState(CSWillmoreFlow flow, PetscInt it, const PetscReal reals[]);
+
+/* Flow kinds: a strategy per file in src/methods/willmore/ (cgd.c, pgd.c, gd.c), registered by name. */
+typedef struct _CSWillmoreFlowOps *CSWillmoreFlowOps;
+PETSC_EXTERN PetscErrorCode CSWillmoreFlowRegister(const char name[], PetscErrorCode (*create)(CSWillmoreFlow));
+/* Energies of the flow (-flow_energy), registered by name: willmore, area, fairing. */
+PETSC_EXTERN PetscErrorCode CSWillmoreFlowEnergyRegister(const char name[], PetscErrorCode (*create)(CSMesh, Vec x0, PetscReal eps, CSEnergy *));
 
 #endif

@@ -12,7 +12,7 @@ cd "$(dirname "$0")/.."
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1
 LEVEL=${LEVEL:-6}; REPEAT=${REPEAT:-3}
 out=runs/bench_ceiling.md; tmp=$(mktemp -d)
-args=(-task flow -gen icosphere -gen_level "$LEVEL" -flow_init_bump 0.2 -flow_init_stretch 1.5,1,0.8 -flow_max_it 4 -flow_rtol 0 -flow_pc_reuse_its 0)
+args=(-task flow -gen icosphere -gen_level "$LEVEL" -gen_deform_bump 0.2 -gen_deform_stretch 1.5,1,0.8 -flow_max_it 4 -flow_rtol 0 -flow_factor_reuse_its 0)
 per() { # log event -> seconds per call (max over ranks, as -log_view prints)
   awk -v e="$2" '$1 == e { printf "%.6g", $4 / $2; f = 1 } END { if (!f) print "nan" }' "$1"
 }

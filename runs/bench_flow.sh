@@ -5,9 +5,9 @@
 # preconditioner, CHOLMOD Cholesky of S serially, the substructured CHOLMOD factorisation cssubchol on 2 ranks) and with the
 # monolithic MUMPS reference (options/flow_mumps.opts). Each configuration runs -flow_max_it N iterations
 # (default 5) REPEAT times (default 3); the table shows the median. Writes runs/bench_flow.md.
-# The factorisation is kept across steps while it preconditions well (-flow_pc_reuse_its): the first steps
+# The factorisation is kept across steps while it preconditions well (-flow_factor_reuse_its): the first steps
 # of a run change the surface most and refactor often, so seconds per iteration fall with N; the
-# "factorisations" column counts them (pc_setups in the summary). EXTRA="-flow_pc_reuse_its 0" refactors
+# "factorisations" column counts them (pc_setups in the summary). EXTRA="-flow_factor_reuse_its 0" refactors
 # every step (the earlier default).
 #   bash runs/bench_flow.sh                 # everything (level 7 takes a long time)
 #   LEVELS="5 6" MESHES=bunny NITER=3 REPEAT=1 bash runs/bench_flow.sh
@@ -51,7 +51,7 @@ run_input() { # label faces args...
   done; done
 }
 for L in $LEVELS; do
-  run_input "bumpy icosphere level $L" "$((20 * 4 ** L))" -gen icosphere -gen_level "$L" -flow_init_bump 0.2 -flow_init_stretch 1.5,1,0.8
+  run_input "bumpy icosphere level $L" "$((20 * 4 ** L))" -gen icosphere -gen_level "$L" -gen_deform_bump 0.2 -gen_deform_stretch 1.5,1,0.8
 done
 for M in $MESHES; do
   case $M in
@@ -59,7 +59,7 @@ for M in $MESHES; do
     # the 125k-face size: a torus of revolution R = 3, r = 1 near its constrained critical point (few
     # refactorisations), and moving from a bump (W 328 -> 32 in 20 steps, most steps refactor)
     torus) run_input "torus of revolution 354 x 177" 125316 -gen torus -gen_torus_R 3 -gen_tube_r 1 -gen_n 354 -gen_m 177 ;;
-    torus_bump) run_input "torus of revolution 354 x 177, bump 0.2" 125316 -gen torus -gen_torus_R 3 -gen_tube_r 1 -gen_n 354 -gen_m 177 -flow_init_bump 0.2 ;;
+    torus_bump) run_input "torus of revolution 354 x 177, bump 0.2" 125316 -gen torus -gen_torus_R 3 -gen_tube_r 1 -gen_n 354 -gen_m 177 -gen_deform_bump 0.2 ;;
     *) echo "unknown mesh $M (bunny, torus, torus_bump)"; exit 1 ;;
   esac
 done

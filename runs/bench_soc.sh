@@ -11,7 +11,7 @@ cd "$(dirname "$0")/.."
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OPENBLAS_NUM_THREADS=${OPENBLAS_NUM_THREADS:-1}
 LEVEL=${LEVEL:-5}; NITER=${NITER:-20}; REPEAT=${REPEAT:-3}
 mkdir -p runs/results; out=runs/results/bench_soc.md; tmp=$(mktemp -d)
-inputs=("ico|-gen icosphere -gen_level $LEVEL -flow_init_bump 0.2 -flow_init_stretch 1.5,1,0.8" "eight|-mesh meshes/eight_cgal.obj")
+inputs=("ico|-gen icosphere -gen_level $LEVEL -gen_deform_bump 0.2 -gen_deform_stretch 1.5,1,0.8" "eight|-mesh meshes/eight_cgal.obj")
 for r in $(seq "$REPEAT"); do
   for inp in "${inputs[@]}"; do
     name=${inp%%|*}; args=${inp#*|}

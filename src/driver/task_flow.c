@@ -1,45 +1,80 @@
-/* -task flow: dispatch on -flow_type to the flow methods (each registers one line below). */
+/* -task flow: -flow_type chooses a driver through a PetscFunctionList. cgd|pgd|gd (soliman2021): the mesh and
+   the output from the options, a CSWillmoreFlow on that mesh with the output's monitors; bs
+   (Bobenko-Schroeder): CSFlowBS (src/driver/task_flow_bs.c). */
 #include "cs_driver.h"
-#include "cs_methods_willmore.h"
+#include "cs_output_willmore.h"
 #include "cs_methods_bs.h"
 
-typedef struct {
-  const char *name;
-  PetscErrorCode (*run)(MPI_Comm, CSOutput *);
-} CSFlowType;
+static PetscErrorCode CSFlowWillmoreRun(CSMesh mesh, CSOutput *out)
+{
+  CSWillmoreFlow flow;
+  PetscFunctionBeginUser;
+  PetscCall(CSWillmoreFlowCreate(mesh, &flow));
+  PetscCall(CSWillmoreFlowSetFromOptions(flow));
+  PetscCall(CSWillmoreFlowSetUp(flow));
+  PetscCall(CSWillmoreFlowResume(flow, out));
+  PetscCall(CSWillmoreFlowView(flow, NULL));
+  PetscCall(CSWillmoreFlowMonitorProgressSet(flow));
+  PetscCall(CSWillmoreFlowMonitorHistorySet(flow, out));
+  PetscCall(CSWillmoreFlowMonitorCheckpointSet(flow, out));
+  PetscCall(CSWillmoreFlowSolve(flow));
+  PetscCall(CSWillmoreFlowReport(flow, out));
+  PetscCall(CSWillmoreFlowDestroy(&flow));
+  PetscFunctionReturn(0);
+}
 
-/* cgd|pgd|gd (soliman2021, issue 3) and bs (Bobenko-Schroeder, issue 5) register here. */
-static const CSFlowType flows[] = {
-  {"cgd", CSFlowCGD}, {"pgd", CSFlowPGD}, {"gd", CSFlowGD},
-  {"bs", CSFlowBS},
-  {NULL, NULL},
-};
+/* cgd, pgd, gd: the flow reads its own -flow_type */
+static PetscErrorCode CSFlowWillmore(MPI_Comm comm, CSOutput *out)
+{
+  CSMesh         mesh;
+  PetscErrorCode ierr;
+  PetscFunctionBeginUser;
+  PetscCall(CSMeshCreateFromOptions(comm, NULL, &mesh));
+  ierr = CSFlowWillmoreRun(mesh, out);
+  if (ierr) PetscCall(CSMeshDestroy(&mesh)); /* no leak on the error path */
+  PetscCall(ierr);
+  PetscCall(CSMeshDestroy(&mesh));
+  PetscFunctionReturn(0);
+}
+
+static PetscFunctionList CSFlowList = NULL;
+
+static PetscErrorCode FlowListDestroy(void)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscFunctionListDestroy(&CSFlowList));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode FlowRegisterAll(void)
+{
+  PetscFunctionBeginUser;
+  if (CSFlowList) PetscFunctionReturn(0);
+  PetscCall(PetscFunctionListAdd(&CSFlowList, "cgd", CSFlowWillmore));
+  PetscCall(PetscFunctionListAdd(&CSFlowList, "pgd", CSFlowWillmore));
+  PetscCall(PetscFunctionListAdd(&CSFlowList, "gd", CSFlowWillmore));
+  PetscCall(PetscFunctionListAdd(&CSFlowList, "bs", CSFlowBS));
+  PetscCall(PetscRegisterFinalize(FlowListDestroy));
+  PetscFunctionReturn(0);
+}
 
 PetscErrorCode CSTaskFlow(MPI_Comm comm)
 {
-  char      type[64] = "cgd", known[256] = "";
-  PetscBool found    = PETSC_FALSE;
-  CSOutput  out;
+  char           type[64] = "cgd";
+  CSOutput       out;
+  PetscErrorCode (*run)(MPI_Comm, CSOutput *) = NULL;
+  PetscErrorCode ierr;
   PetscFunctionBeginUser;
+  PetscCall(FlowRegisterAll());
   PetscOptionsBegin(comm, NULL, "confsurf flow", NULL);
-  PetscCall(PetscOptionsString("-flow_type", "cgd|pgd|gd|bs", NULL, type, type, sizeof(type), NULL));
+  PetscCall(PetscOptionsFList("-flow_type", "Flow", NULL, CSFlowList, type, type, sizeof(type), NULL));
   PetscOptionsEnd();
+  PetscCall(PetscFunctionListFind(CSFlowList, type, &run));
+  PetscCheck(run, comm, PETSC_ERR_ARG_OUTOFRANGE, "-flow_type %s: unknown flow (known: cgd pgd gd bs)", type);
   PetscCall(CSOutputFromOptions(comm, &out));
-  for (size_t i = 0; i < sizeof(flows) / sizeof(flows[0]); i++) {
-    PetscBool same;
-    if (!flows[i].name) continue;
-    PetscCall(PetscStrlcat(known, " ", sizeof(known)));
-    PetscCall(PetscStrlcat(known, flows[i].name, sizeof(known)));
-    PetscCall(PetscStrcmp(type, flows[i].name, &same));
-    if (same && !found) {
-      PetscErrorCode ierr;
-      found = PETSC_TRUE;
-      ierr  = flows[i].run(comm, &out);
-      if (ierr) PetscCall(CSOutputDestroy(&out)); /* no leak on the error path */
-      PetscCall(ierr);
-    }
-  }
+  ierr = (*run)(comm, &out);
+  if (ierr) PetscCall(CSOutputDestroy(&out)); /* no leak on the error path */
+  PetscCall(ierr);
   PetscCall(CSOutputDestroy(&out));
-  PetscCheck(found, comm, PETSC_ERR_ARG_OUTOFRANGE, "-flow_type %s: unknown flow (known:%s)", type, known);
   PetscFunctionReturn(0);
 }

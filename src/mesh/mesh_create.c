@@ -1,6 +1,7 @@
 /* From validated serial data on rank 0 to a distributed, interpolated DMPlex with its dof layouts and the
    local connectivity tables the kernels loop over. */
 #include "cs_mesh_adjacency.h"
+#include "cs_mesh_deform.h"
 #include "cs_util.h"
 
 /* A clone of the plex with `dof` unknowns on every point of depth `depth` (0 vertices, 1 edges, 2 faces). */
@@ -332,6 +333,7 @@ PetscErrorCode CSMeshCreateFromOptions(MPI_Comm comm, const char prefix[], CSMes
   if (!rank) PetscCall(OrientOutward(&md, &topo, keep));
   PetscCall(PetscLogEventEnd(CS_EVENT_MeshRead, 0, 0, 0, 0));
   PetscCall(CSMeshCreateFromData(comm, &md, &topo, mesh));
+  PetscCall(CSMeshDeformFromOptions(*mesh, prefix));
   PetscFunctionReturn(0);
 }
 

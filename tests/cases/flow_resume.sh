@@ -20,7 +20,7 @@ d = max(abs(x - y) for u, v in zip(a, b) for x, y in zip(u, v)) / size
 sa, sb = json.load(open(p + "-full.json")), json.load(open(p + "-res.json"))
 ha, hb = list(csv.reader(open(p + "-full.csv"))), list(csv.reader(open(p + "-split.csv")))
 # every column but the timings and the Krylov counts (a resumed run starts with a new factorisation, where the
-# straight run may still be reusing an earlier one: -flow_pc_reuse_its)
+# straight run may still be reusing an earlier one: -flow_factor_reuse_its)
 keep = [k for k, name in enumerate(ha[0]) if name not in ("seconds", "ksp_its")]
 hd = max(abs(float(r[k]) - float(s[k])) / max(1.0, abs(float(r[k]))) for r, s in zip(ha[1:], hb[1:]) for k in keep)
 checks = [
@@ -48,7 +48,7 @@ grep -q "resumed from checkpoint .* at iteration 2" "$TMP/run.log" || { echo "BA
 compare bs
 
 # cgd (conformal, edge multipliers mu in the checkpoint): not converged after 10 iterations; -checkpoint_every 2
-C="-task flow -flow_type cgd -gen icosphere -gen_level 2 -flow_init_bump 0.1"
+C="-task flow -flow_type cgd -gen icosphere -gen_level 2 -gen_deform_bump 0.1"
 run $MPIEXEC "$CS_BIN" $C -flow_max_it 10 -o "$TMP/cgd-full.obj" -summary "$TMP/cgd-full.json" -history_csv "$TMP/cgd-full.csv"
 run $MPIEXEC "$CS_BIN" $C -flow_max_it 5 -checkpoint "$TMP/cgd.ck" -checkpoint_every 2 -history_csv "$TMP/cgd-split.csv"
 [ "$(grep -c "wrote checkpoint" "$TMP/run.log")" = 3 ] || { echo "BAD: expected checkpoints at 2, 4 and 5:"; grep checkpoint "$TMP/run.log"; exit 1; }
@@ -58,11 +58,11 @@ compare cgd
 # bad -resume: clear errors on every rank count
 EXPECT="no such checkpoint" expect_fail $MPIEXEC "$CS_BIN" $C -resume "$TMP/missing.ck"
 EXPECT="written for 162 vertices" expect_fail $MPIEXEC "$CS_BIN" -task flow -flow_type cgd -gen icosphere -gen_level 3 -resume "$TMP/cgd.ck"
-EXPECT="other input positions" expect_fail $MPIEXEC "$CS_BIN" $C -flow_init_bump 0.2 -resume "$TMP/cgd.ck"
+EXPECT="other input positions" expect_fail $MPIEXEC "$CS_BIN" $C -gen_deform_bump 0.2 -resume "$TMP/cgd.ck"
 
 # a run that keeps failing (every linear solve stops after 1 iteration) stops cleanly: last accepted state
 # (here the input) in -o and the checkpoint, converged=false, exit 0
-run $MPIEXEC "$CS_BIN" $C -flow_ksp_max_it 1 -flow_ksp_rtol 1e-15 -flow_max_rejections 2 -checkpoint "$TMP/stop.ck" -o "$TMP/stop.obj" -summary "$TMP/stop.json"
+run $MPIEXEC "$CS_BIN" $C -flow_saddle_ksp_max_it 1 -flow_saddle_ksp_rtol 1e-15 -flow_max_rejections 2 -checkpoint "$TMP/stop.ck" -o "$TMP/stop.obj" -summary "$TMP/stop.json"
 grep -q "stopping with the last accepted state" "$TMP/run.log" || { echo "BAD: no stop message"; exit 1; }
 [ -s "$TMP/stop.obj" ] && [ -s "$TMP/stop.ck" ] || { echo "BAD: -o or -checkpoint not written"; exit 1; }
 [ "$(json converged "$TMP/stop.json")" = False ] && [ "$(json stop_reason "$TMP/stop.json")" = rejections ] || { echo "BAD: summary of the stopped run"; exit 1; }

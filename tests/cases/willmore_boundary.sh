@@ -4,7 +4,7 @@
 # converges with every constraint (interior cross ratios and normals) met to 1e-10.
 # nprocs: 1 2
 source tests/lib.sh
-B="-task flow -gen cylinder -gen_n 24 -gen_m 12 -gen_height 2 -energy area -flow_max_it 40"
+B="-task flow -gen cylinder -gen_n 24 -gen_m 12 -gen_height 2 -flow_energy area -flow_max_it 40"
 "$CS_BIN" -task info -gen cylinder -gen_n 24 -gen_m 12 -gen_height 2 -o "$TMP/in.obj" > /dev/null
 timeout 60 $MPIEXEC "$CS_BIN" $B -flow_type cgd -o "$TMP/cgd.obj" -summary "$TMP/cgd.json" > "$TMP/cgd.log" 2>&1 || { tail "$TMP/cgd.log"; exit 1; }
 timeout 60 $MPIEXEC "$CS_BIN" $B -flow_type gd -flow_max_it 20 -o "$TMP/gd.obj" -summary "$TMP/gd.json" > "$TMP/gd.log" 2>&1 || { tail "$TMP/gd.log"; exit 1; }

@@ -6,8 +6,8 @@
 # nprocs: 1 2
 source tests/lib.sh
 T="-gen torus -gen_torus_R 3 -gen_tube_r 1 -gen_n 48 -gen_m 24"
-"$CS_BIN" -task flow $T -flow_init_stretch 1,1,2 -flow_max_it 0 -o "$TMP/target.obj" > /dev/null
-timeout 120 $MPIEXEC "$CS_BIN" -task flow $T -target_mesh "$TMP/target.obj" -flow_t_mu 30 -flow_t_mu_grow 1.2 -flow_max_it 150 -summary "$TMP/s.json" -history_csv "$TMP/h.csv" > "$TMP/log" 2>&1 || { tail "$TMP/log"; exit 1; }
+"$CS_BIN" -task flow $T -gen_deform_stretch 1,1,2 -flow_max_it 0 -o "$TMP/target.obj" > /dev/null
+timeout 120 $MPIEXEC "$CS_BIN" -task flow $T -flow_target_mesh "$TMP/target.obj" -flow_t_mu 30 -flow_t_mu_grow 1.2 -flow_max_it 150 -summary "$TMP/s.json" -history_csv "$TMP/h.csv" > "$TMP/log" 2>&1 || { tail "$TMP/log"; exit 1; }
 python3 - "$TMP" <<'PY'
 import json, sys, csv, math
 d = sys.argv[1]

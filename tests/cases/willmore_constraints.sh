@@ -4,11 +4,11 @@
 source tests/lib.sh
 run() { timeout 120 $MPIEXEC "$CS_BIN" -task flow -flow_max_it 150 "$@"; }
 # (a) area (initial value) + volume 4.0 + conformal
-run -gen icosphere -gen_level 3 -flow_init_bump 0.1 -constraint_area -constraint_volume 4.0 -summary "$TMP/av.json" -history_csv "$TMP/av.csv" > "$TMP/av.log" 2>&1 || { tail "$TMP/av.log"; exit 1; }
+run -gen icosphere -gen_level 3 -gen_deform_bump 0.1 -flow_constraint_area -flow_constraint_volume 4.0 -summary "$TMP/av.json" -history_csv "$TMP/av.csv" > "$TMP/av.log" 2>&1 || { tail "$TMP/av.log"; exit 1; }
 # (a') area + volume at their initial values, cgd and pgd: the same constrained minimum (PGD's multipliers are
 #      those of the step, not of the projection's Newton corrections: before that fix pgd's el_residual stalled
 #      at ~0.7 here). (At volume 4.0 pgd passes the critical point cgd stops at and descends further: a saddle.)
-S="-gen icosphere -gen_level 3 -flow_init_bump 0.2 -flow_init_stretch 1.5,1,0.8 -constraint_area -constraint_volume"
+S="-gen icosphere -gen_level 3 -gen_deform_bump 0.2 -gen_deform_stretch 1.5,1,0.8 -flow_constraint_area -flow_constraint_volume"
 run -flow_type pgd $S -summary "$TMP/avp.json" > "$TMP/avp.log" 2>&1 || { tail "$TMP/avp.log"; exit 1; }
 run -flow_type cgd $S -summary "$TMP/avc.json" > "$TMP/avc.log" 2>&1 || { tail "$TMP/avc.log"; exit 1; }
 # (b) four point constraints on the unit icosphere, one point moved outwards by 30%
@@ -25,10 +25,10 @@ with open(sys.argv[2], 'w') as f:
     s = 1.3 if k == 0 else 1.0
     f.write('%d %.17g %.17g %.17g\n' % (i, V[i][0] * s, V[i][1] * s, V[i][2] * s))
 PY
-run -gen icosphere -gen_level 3 -constraint_points "$TMP/points.txt" -summary "$TMP/pts.json" -o "$TMP/pts.obj" > "$TMP/pts.log" 2>&1 || { tail "$TMP/pts.log"; exit 1; }
+run -gen icosphere -gen_level 3 -flow_constraint_points "$TMP/points.txt" -summary "$TMP/pts.json" -o "$TMP/pts.obj" > "$TMP/pts.log" 2>&1 || { tail "$TMP/pts.log"; exit 1; }
 # (c) prescribed class: the class of a stretched sphere, reached from the round one
-"$CS_BIN" -task flow -gen icosphere -gen_level 3 -flow_init_stretch 1.3,1,1 -flow_max_it 0 -o "$TMP/target.obj" > /dev/null
-run -gen icosphere -gen_level 3 -target_mesh "$TMP/target.obj" -summary "$TMP/cls.json" -history_csv "$TMP/cls.csv" > "$TMP/cls.log" 2>&1 || { tail "$TMP/cls.log"; exit 1; }
+"$CS_BIN" -task flow -gen icosphere -gen_level 3 -gen_deform_stretch 1.3,1,1 -flow_max_it 0 -o "$TMP/target.obj" > /dev/null
+run -gen icosphere -gen_level 3 -flow_target_mesh "$TMP/target.obj" -summary "$TMP/cls.json" -history_csv "$TMP/cls.csv" > "$TMP/cls.log" 2>&1 || { tail "$TMP/cls.log"; exit 1; }
 python3 - "$TMP" <<'PY'
 import json, sys, csv
 d = sys.argv[1]

@@ -3,7 +3,7 @@
 # and on 2 ranks the result equals the serial one (positions within 1e-6 after aligning translation).
 # nprocs: 1 2
 source tests/lib.sh
-B="-task flow -gen icosphere -gen_level 3 -flow_init_bump 0.2 -flow_init_stretch 1.5,1,0.8 -flow_max_it 100"
+B="-task flow -gen icosphere -gen_level 3 -gen_deform_bump 0.2 -gen_deform_stretch 1.5,1,0.8 -flow_max_it 100"
 for type in cgd pgd; do
   timeout 120 $MPIEXEC "$CS_BIN" $B -flow_type $type -o "$TMP/$type.obj" -summary "$TMP/$type.json" -history_csv "$TMP/$type.csv" > "$TMP/$type.log" 2>&1 || { tail -20 "$TMP/$type.log"; exit 1; }
   python3 - "$TMP/$type.json" "$TMP/$type.csv" "$TMP/$type.obj" "$type" <<'PY'

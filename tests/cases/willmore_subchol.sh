@@ -9,9 +9,9 @@
 source tests/lib.sh
 P=tests/cases/spin_tools.py
 $MPIEXEC "$CS_TESTS/test_subchol"
-S="-task flow -gen icosphere -gen_level 3 -flow_init_bump 0.2 -flow_init_stretch 1.5,1,0.8 -flow_max_it 4 -flow_rtol 0 -flow_pc_reuse_its 0"
-timeout 120 $MPIEXEC "$CS_BIN" $S -flow_fieldsplit_1_pc_type cssubchol -summary "$TMP/a.json" -o "$TMP/a.obj" > "$TMP/a.log" 2>&1 || { tail "$TMP/a.log"; exit 1; }
-timeout 120 $MPIEXEC "$CS_BIN" $S -flow_fieldsplit_1_pc_type cholesky -summary "$TMP/b.json" -o "$TMP/b.obj" > "$TMP/b.log" 2>&1 || { tail "$TMP/b.log"; exit 1; }
+S="-task flow -gen icosphere -gen_level 3 -gen_deform_bump 0.2 -gen_deform_stretch 1.5,1,0.8 -flow_max_it 4 -flow_rtol 0 -flow_factor_reuse_its 0"
+timeout 120 $MPIEXEC "$CS_BIN" $S -flow_saddle_fieldsplit_1_pc_type cssubchol -summary "$TMP/a.json" -o "$TMP/a.obj" > "$TMP/a.log" 2>&1 || { tail "$TMP/a.log"; exit 1; }
+timeout 120 $MPIEXEC "$CS_BIN" $S -flow_saddle_fieldsplit_1_pc_type cholesky -summary "$TMP/b.json" -o "$TMP/b.obj" > "$TMP/b.log" 2>&1 || { tail "$TMP/b.log"; exit 1; }
 grep -E "flow cgd: (NOT )?converged" "$TMP/a.log"
 check_close "$(python3 $P rigid "$TMP/a.obj" "$TMP/b.obj")" 0 1e-9 "cssubchol vs Cholesky of S: positions after 4 steps"
 check_close "$(json willmore "$TMP/a.json")" "$(json willmore "$TMP/b.json")" 1e-12 "W"
@@ -21,5 +21,5 @@ echo "FGMRES iterations $its for $solves linear solves"
 [ "$its" = "$solves" ] || { echo "BAD: an exact factorisation needs one FGMRES iteration per solve"; exit 1; }
 [ "$its" = "$(json ksp_iterations "$TMP/b.json")" ] || { echo "BAD: iteration counts differ from the Cholesky run"; exit 1; }
 # bad option values: a clear error naming the option, non-zero exit
-EXPECT="Unknown option foo for -flow_fieldsplit_1_pc_cssubchol_ordering" expect_fail timeout 60 $MPIEXEC "$CS_BIN" $S -flow_fieldsplit_1_pc_type cssubchol -flow_fieldsplit_1_pc_cssubchol_ordering foo
-EXPECT="Unknown option middle for -flow_fieldsplit_1_pc_cssubchol_interface" expect_fail timeout 60 $MPIEXEC "$CS_BIN" $S -flow_fieldsplit_1_pc_type cssubchol -flow_fieldsplit_1_pc_cssubchol_interface middle
+EXPECT="Unknown option foo for -flow_saddle_fieldsplit_1_pc_cssubchol_ordering" expect_fail timeout 60 $MPIEXEC "$CS_BIN" $S -flow_saddle_fieldsplit_1_pc_type cssubchol -flow_saddle_fieldsplit_1_pc_cssubchol_ordering foo
+EXPECT="Unknown option middle for -flow_saddle_fieldsplit_1_pc_cssubchol_interface" expect_fail timeout 60 $MPIEXEC "$CS_BIN" $S -flow_saddle_fieldsplit_1_pc_type cssubchol -flow_saddle_fieldsplit_1_pc_cssubchol_interface middle

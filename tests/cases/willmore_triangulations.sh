@@ -2,14 +2,14 @@
 # minimisers of the same shape. (a) the generator's torus of revolution R = sqrt 2, r = 1 (32 x 24 grid, every quad
 # split by one diagonal), (b) the same vertices with every quad's other diagonal (tests/cases/triangulation_tools.py
 # flip): same V, E, F and genus, different cotan weights and cross ratios. The default CGD flow runs on both from
-# the same deformed start (-flow_init_bump/-flow_init_stretch act on the vertex positions pointwise, so both
+# the same deformed start (-gen_deform_bump/-gen_deform_stretch act on the vertex positions pointwise, so both
 # start from identical vertices) to convergence; the two minimisers must agree: symmetric Hausdorff distance
 # below 1% of the diameter of (a)'s minimiser (largest pairwise vertex distance), W to a relative 1e-3.
 # The start is chosen so that the test is not trivial and the grid resolves it:
-#  - the stretch 1.1,1,0.9 breaks the mirror symmetries of torus + bump: with the bump alone (-flow_init_bump 0.1),
+#  - the stretch 1.1,1,0.9 breaks the mirror symmetries of torus + bump: with the bump alone (-gen_deform_bump 0.1),
 #    (b)'s problem is the mirror image (x <-> y) of (a)'s, the two W agree to 1e-10 and the minimisers are exact
 #    mirror images; the test then measures only how far (a)'s minimiser is from mirror symmetric;
-#  - -flow_init_bump_freq 1: the default frequency 3 is under-resolved (3.4 cells per wavelength at 24 x 16): with
+#  - -gen_deform_bump_freq 1: the default frequency 3 is under-resolved (3.4 cells per wavelength at 24 x 16): with
 #    it (bump 0.1, stretch 1.1,1,1) the two minimisers differed by 2.4%, 1.9%, 1.5% of the diameter at 24 x 16,
 #    32 x 24, 48 x 32 and their W by 1.7e-3, 1.8e-3, 1.6e-3 (relative).
 # Measured with this start (serial; sampled Hausdorff / diameter, W relative difference): 24 x 16 1.5%, 1.2e-4;
@@ -24,7 +24,7 @@ python3 "$tools" flip "$TMP/a.obj" "$TMP/b.obj"
 for t in a b; do
   "$CS_BIN" -task info -mesh "$TMP/$t.obj" -summary "$TMP/${t}_info.json" > "$TMP/${t}_info.log" 2>&1 || { tail "$TMP/${t}_info.log"; exit 1; }
 done
-D="-task flow -flow_init_bump 0.2 -flow_init_bump_freq 1 -flow_init_stretch 1.1,1,0.9 -flow_max_it 400"
+D="-task flow -gen_deform_bump 0.2 -gen_deform_bump_freq 1 -gen_deform_stretch 1.1,1,0.9 -flow_max_it 400"
 for t in a b; do
   timeout 120 $MPIEXEC "$CS_BIN" $D -mesh "$TMP/$t.obj" -summary "$TMP/$t.json" -history_csv "$TMP/$t.csv" -o "$TMP/${t}_min.obj" > "$TMP/$t.log" 2>&1 || { tail "$TMP/$t.log"; exit 1; }
 done

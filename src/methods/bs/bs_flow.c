@@ -1,6 +1,7 @@
 /* The Bobenko-Schroeder Willmore flow object (bobenko-schroeder2005 Sec. 4): options, set-up, the stepping
    loop and the monitors; the schemes are in bs_semi.c and bs_tao.c. See include/cs_methods_bs.h. */
 #include "bs_flow_impl.h"
+#include "cs_package.h"
 
 const char *const CSBSSchemes[]  = {"semi", "tao", "CSBSScheme", "CS_BS_SCHEME_", NULL};
 const char *const CSBSProblems[] = {"static", "euler", "CSBSProblem", "CS_BS_PROBLEM_", NULL};
@@ -11,6 +12,7 @@ PetscErrorCode CSBSFlowCreate(CSMesh mesh, CSBSFlow *flow)
 {
   CSBSFlow F;
   PetscFunctionBeginUser;
+  PetscCall(CSInitializePackage()); /* as KSPCreate does: events, PCs and solver types before any use */
   PetscCall(PetscNew(&F));
   F->mesh       = mesh;
   F->scheme     = CS_BS_SCHEME_SEMI;

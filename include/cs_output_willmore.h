@@ -1,0 +1,19 @@
+/* Output of the Willmore flow (src/output/willmore_*.c): monitors for CSWillmoreFlowMonitorSet (the progress
+   line, the -history CSV, the checkpoint writer), resume from -resume, and the report at the end (final line,
+   summary keys, ParaView output, mesh facts). */
+#ifndef CS_OUTPUT_WILLMORE_H
+#define CS_OUTPUT_WILLMORE_H
+#include "cs_output.h"
+#include "cs_methods_willmore.h"
+
+/* Each Set function creates its context and registers the monitor (destroyed with the flow). */
+PETSC_EXTERN PetscErrorCode CSWillmoreFlowMonitorProgressSet(CSWillmoreFlow flow);
+PETSC_EXTERN PetscErrorCode CSWillmoreFlowMonitorHistorySet(CSWillmoreFlow flow, CSOutput *out);
+PETSC_EXTERN PetscErrorCode CSWillmoreFlowMonitorCheckpointSet(CSWillmoreFlow flow, CSOutput *out);
+/* After SetUp, before Solve: with -resume, the state of the checkpoint. */
+PETSC_EXTERN PetscErrorCode CSWillmoreFlowResume(CSWillmoreFlow flow, CSOutput *out);
+/* After Solve: the last accepted state's checkpoint (with -checkpoint), the final line, the summary keys,
+   -viewer_dir, -o and -summary. */
+PETSC_EXTERN PetscErrorCode CSWillmoreFlowReport(CSWillmoreFlow flow, CSOutput *out);
+
+#endif

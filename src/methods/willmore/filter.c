@@ -1,0 +1,57 @@
+/* Acceptance of a trial point xt (the step control; docs/willmore_flow.md):
+     PGD:    E does not increase (after the projection back onto the constraint set).
+     CGD/GD: a two-criteria filter on the Lagrangian with the updated multipliers
+               L(f) = E(f) + <mu+dmu, c(f)> + <nu+dnu, xi(f)>   (+ rho/2 |c|^2 with -flow_merit_rho, default 0)
+             and the violation v(f) = max(||c(f)||_inf, max_j |xi_j(f)|): rejected when L increases and (v increases
+             or f was feasible, v(f) <= ctol), or v exceeds max(v(f), -flow_vmax).
+   Without step control only a non-finite state is rejected: the last good state must survive. */
+#include "willmore_impl.h"
+
+static PetscErrorCode Rejected(CSWillmoreFlow F, const char what[])
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscPrintf(F->comm, "     step rejected: %s with t = %g; halving t\n", what, (double)F->t));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSWFCheckFinite(CSWillmoreFlow F, PetscBool *accept)
+{
+  PetscReal Et;
+  PetscFunctionBeginUser;
+  PetscCall(CSEnergyValue(F->energy, F->xt, &Et));
+  *accept = (PetscBool)!PetscIsInfOrNanReal(Et);
+  if (!*accept) PetscCall(Rejected(F, "the energy is not finite"));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSWFFilterEnergy(CSWillmoreFlow F, PetscBool *accept)
+{
+  PetscReal Et, E = F->E;
+  PetscFunctionBeginUser;
+  PetscCall(CSEnergyValue(F->energy, F->xt, &Et));
+  /* a relative slack of 1e-12 lets converged iterates (changes at round-off level) pass */
+  *accept = (PetscBool)!(!(Et == Et) || Et > E + 1e-12 * PetscAbsReal(E));
+  if (!*accept) PetscCall(PetscPrintf(F->comm, "     step rejected: energy %.15g -> %.15g with t = %g; halving t\n", (double)E, (double)Et, (double)F->t));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSWFFilterLagrangian(CSWillmoreFlow F, PetscBool *accept)
+{
+  PetscReal v0, vt, ca, cb, L0, Lt, Et;
+  PetscFunctionBeginUser;
+  if (F->conformal) PetscCall(VecWAXPY(F->mun, 1.0, F->dmu, F->mu));
+  for (PetscInt j = 0; j < F->k; j++) F->nun[j] = F->nu[j] + F->dnu[j];
+  PetscCall(CSWFMerit(F, F->E, F->c, F->cx, F->nun, &L0));
+  PetscCall(CSWFViolation(F, F->c, F->cx, &ca, &cb));
+  v0 = PetscMax(ca, cb);
+  PetscCall(CSEnergyValue(F->energy, F->xt, &Et));
+  PetscCall(CSWFEvalConstraints(F, F->xt, F->ct, F->cxt, PETSC_FALSE));
+  PetscCall(CSWFMerit(F, Et, F->ct, F->cxt, F->nun, &Lt));
+  PetscCall(CSWFViolation(F, F->ct, F->cxt, &ca, &cb));
+  vt = PetscMax(ca, cb);
+  /* the relative slack 1e-12 (and ctol on v) lets converged iterates, changing at round-off level, pass */
+  *accept = PETSC_TRUE;
+  if (!(Lt == Lt) || !(vt == vt) || (Lt > L0 + 1e-12 * PetscAbsReal(L0) && (vt > v0 + F->ctol || v0 <= F->ctol)) || vt > PetscMax(v0, F->vmax)) *accept = PETSC_FALSE;
+  if (!*accept) PetscCall(PetscPrintf(F->comm, "     step rejected: Lagrangian %.15g -> %.15g, violation %.3e -> %.3e with t = %g; halving t\n", (double)L0, (double)Lt, (double)v0, (double)vt, (double)F->t));
+  PetscFunctionReturn(0);
+}

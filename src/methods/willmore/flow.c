@@ -1,0 +1,264 @@
+/* The Willmore flow object: creation, kind (PetscFunctionList of strategies), prefix, monitors, getters,
+   checkpoint state, destruction. The method itself: step.c, filter.c, projection.c, guards.c, solve.c. */
+#include "willmore_impl.h"
+#include "cs_package.h"
+
+const char *const CSWillmoreFlowConvergedReasons[] = {"ITERATING", "CONVERGED_RTOL", "DIVERGED_MAX_IT", "DIVERGED_REJECTIONS", "DIVERGED_AREA", "DIVERGED_MESH_DEGENERATE", NULL};
+/* the summary's stop_reason (unchanged from before the object) */
+const char *const CSWillmoreFlowStopReasons[] = {"iterating", "converged", "max_it", "rejections", "diverged", "mesh_degenerate", NULL};
+
+static PetscFunctionList CSWillmoreFlowList = NULL;
+
+PetscErrorCode CSWillmoreFlowRegister(const char name[], PetscErrorCode (*create)(CSWillmoreFlow))
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscFunctionListAdd(&CSWillmoreFlowList, name, create));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode ListDestroy(void)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscFunctionListDestroy(&CSWillmoreFlowList));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode RegisterAll(void)
+{
+  PetscFunctionBeginUser;
+  if (CSWillmoreFlowList) PetscFunctionReturn(0);
+  PetscCall(CSWillmoreFlowRegister(CSWILLMOREFLOWCGD, CSWillmoreFlowCreate_CGD));
+  PetscCall(CSWillmoreFlowRegister(CSWILLMOREFLOWPGD, CSWillmoreFlowCreate_PGD));
+  PetscCall(CSWillmoreFlowRegister(CSWILLMOREFLOWGD, CSWillmoreFlowCreate_GD));
+  PetscCall(PetscRegisterFinalize(ListDestroy));
+  PetscFunctionReturn(0);
+}
+
+/* Defaults of every option (SetFromOptions may change them). */
+static void SetDefaults(CSWillmoreFlow F)
+{
+  F->t               = 1.0;
+  F->tmu             = -1; /* 1e3 t */
+  F->tmax            = 2.0;
+  F->grow            = 2.0;
+  F->rtol            = 1e-6;
+  F->ctol            = 1e-10;
+  F->wmin            = 1e-2;
+  F->max_it          = 100;
+  F->max_rej         = 30;
+  F->proj_max_it     = 20;
+  F->soc_max_it      = 2;
+  F->proj_tmu        = 1e6;
+  F->step_control    = PETSC_TRUE;
+  F->vmax            = 1e-2;
+  F->restore_stalled = PETSC_TRUE;
+  F->max_area_ratio  = 200;
+  F->eps             = 1e-3;
+  F->reuse_its       = -1; /* the saddle solver's default */
+  F->metric_type     = CS_FLOW_METRIC_H2;
+  F->boundary        = CS_FLOW_BOUNDARY_DIRICHLET;
+  F->saddle_mat      = CS_SADDLE_MAT_NEST;
+}
+
+PetscErrorCode CSWillmoreFlowCreate(CSMesh mesh, CSWillmoreFlow *flow)
+{
+  CSWillmoreFlow F;
+  PetscFunctionBeginUser;
+  PetscCall(CSInitializePackage()); /* as KSPCreate does: events, PCs and solver types before any use */
+  PetscCall(RegisterAll());
+  PetscCall(PetscNew(&F));
+  F->comm = mesh->comm;
+  F->mesh = mesh;
+  SetDefaults(F);
+  PetscCall(PetscStrncpy(F->prefix, "flow_", sizeof(F->prefix)));
+  PetscCall(PetscStrncpy(F->energy_name, "willmore", sizeof(F->energy_name)));
+  PetscCall(CSWillmoreFlowSetType(F, CSWILLMOREFLOWCGD));
+  *flow = F;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSWillmoreFlowSetType(CSWillmoreFlow F, CSWillmoreFlowType type)
+{
+  PetscErrorCode (*create)(CSWillmoreFlow);
+  PetscFunctionBeginUser;
+  PetscCheck(!F->setupcalled, F->comm, PETSC_ERR_ORDER, "CSWillmoreFlowSetType after CSWillmoreFlowSetUp");
+  PetscCall(RegisterAll());
+  PetscCall(PetscFunctionListFind(CSWillmoreFlowList, type, &create));
+  PetscCheck(create, F->comm, PETSC_ERR_ARG_UNKNOWN_TYPE, "-%stype %s: unknown Willmore flow type", F->prefix, type);
+  PetscCall(PetscMemzero(&F->ops, sizeof(F->ops)));
+  PetscCall(PetscStrncpy(F->type, type, sizeof(F->type)));
+  PetscCall((*create)(F));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSWillmoreFlowGetType(CSWillmoreFlow F, CSWillmoreFlowType *type)
+{
+  PetscFunctionBeginUser;
+  *type = F->type;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSWillmoreFlowSetOptionsPrefix(CSWillmoreFlow F, const char prefix[])
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscStrncpy(F->prefix, prefix ? prefix : "", sizeof(F->prefix)));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSWillmoreFlowMonitorSet(CSWillmoreFlow F, CSWillmoreFlowMonitorFn fn, void *ctx, PetscErrorCode (*destroy)(void **))
+{
+  PetscFunctionBeginUser;
+  PetscCheck(F->nmonitor < CS_WILLMORE_FLOW_MAX_MONITORS, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "too many Willmore flow monitors (at most %d)", CS_WILLMORE_FLOW_MAX_MONITORS);
+  F->monitor[F->nmonitor].fn      = fn;
+  F->monitor[F->nmonitor].ctx     = ctx;
+  F->monitor[F->nmonitor].destroy = destroy;
+  F->nmonitor++;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSWillmoreFlowMonitorCancel(CSWillmoreFlow F)
+{
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < F->nmonitor; i++)
+    if (F->monitor[i].destroy) PetscCall((*F->monitor[i].destroy)(&F->monitor[i].ctx));
+  F->nmonitor = 0;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSWillmoreFlowGetConvergedReason(CSWillmoreFlow F, CSWillmoreFlowConvergedReason *reason)
+{
+  PetscFunctionBeginUser;
+  *reason = F->reason;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSWillmoreFlowGetSolution(CSWillmoreFlow F, Vec *x)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(F->setupcalled, F->comm, PETSC_ERR_ORDER, "CSWillmoreFlowGetSolution before CSWillmoreFlowSetUp");
+  *x = F->x;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSWillmoreFlowGetInitial(CSWillmoreFlow F, Vec *x0)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(F->setupcalled, F->comm, PETSC_ERR_ORDER, "CSWillmoreFlowGetInitial before CSWillmoreFlowSetUp");
+  *x0 = F->x0;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSWillmoreFlowGetMesh(CSWillmoreFlow F, CSMesh *mesh)
+{
+  PetscFunctionBeginUser;
+  *mesh = F->mesh;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSWillmoreFlowGetEnergyName(CSWillmoreFlow F, const char **name)
+{
+  PetscFunctionBeginUser;
+  *name = F->energy_name;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSWillmoreFlowGetInitialEnergy(CSWillmoreFlow F, PetscReal *E0)
+{
+  PetscFunctionBeginUser;
+  PetscCall(CSEnergyValue(F->energy, F->x0, E0));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSWillmoreFlowGetInfo(CSWillmoreFlow F, CSWillmoreFlowInfo *info)
+{
+  PetscLogDouble now;
+  PetscFunctionBeginUser;
+  PetscCall(PetscTime(&now));
+  info->it                   = F->it;
+  info->energy               = F->E;
+  info->area                 = F->A;
+  info->volume               = F->V;
+  info->conformal_violation  = F->conf;
+  info->constraint_violation = F->glob;
+  info->el_residual          = F->el;
+  info->t                    = F->t;
+  info->ksp_its              = F->kspits;
+  info->ksp_its_total        = F->kspits_total;
+  info->rejections           = F->rejections;
+  info->nguard               = F->nguard;
+  info->pc_setups            = F->saddle.setups;
+  info->linear_solves        = F->saddle.solves;
+  info->area_spread          = F->spread;
+  info->q_max                = F->qmax;
+  info->seconds              = now - F->t0;
+  info->k                    = F->k;
+  info->constraint_values    = F->cx;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSWillmoreFlowDestroy(CSWillmoreFlow *flow)
+{
+  CSWillmoreFlow F = *flow;
+  PetscFunctionBeginUser;
+  if (!F) PetscFunctionReturn(0);
+  PetscCall(CSWillmoreFlowMonitorCancel(F));
+  if (F->setupcalled) {
+    PetscCall(CSSaddleDestroy(&F->saddle));
+    PetscCall(CSMetricDestroy(&F->metric));
+    if (F->conformal) PetscCall(CSConformalConstraintDestroy(&F->cc));
+    if (F->normals) PetscCall(CSNormalConstraintDestroy(&F->nc));
+  }
+  for (PetscInt j = 0; j < F->ng; j++) PetscCall(CSGlobalConstraintDestroy(&F->gc[j]));
+  if (F->k) PetscCall(VecDestroyVecs(F->k, &F->rows));
+  PetscCall(PetscFree(F->dnu2));
+  PetscCall(PetscFree6(F->cx, F->cxt, F->nu, F->dnu, F->gw, F->nun));
+  if (F->energy) PetscCall(CSEnergyDestroy(&F->energy));
+  PetscCall(VecDestroy(&F->x));
+  PetscCall(VecDestroy(&F->x0));
+  PetscCall(VecDestroy(&F->area0));
+  PetscCall(VecDestroy(&F->areat));
+  PetscCall(VecDestroy(&F->g));
+  PetscCall(VecDestroy(&F->r));
+  PetscCall(VecDestroy(&F->df));
+  PetscCall(VecDestroy(&F->xt));
+  PetscCall(VecDestroy(&F->tmp));
+  PetscCall(VecDestroy(&F->c));
+  PetscCall(VecDestroy(&F->cE));
+  PetscCall(VecDestroy(&F->cN));
+  PetscCall(VecDestroy(&F->iqE));
+  PetscCall(VecDestroy(&F->iqN));
+  PetscCall(MatDestroy(&F->Xn));
+  PetscCall(MatDestroy(&F->Xext));
+  PetscCall(ISDestroy(&F->isM[0]));
+  PetscCall(ISDestroy(&F->isM[1]));
+  PetscCall(VecDestroy(&F->mu));
+  PetscCall(VecDestroy(&F->dmu));
+  PetscCall(VecDestroy(&F->iq));
+  PetscCall(VecDestroy(&F->ct));
+  PetscCall(VecDestroy(&F->mun));
+  PetscCall(ISDestroy(&F->fixedIS));
+  PetscCall(PetscFree(F->fixed));
+  PetscCall(PetscFree(*flow));
+  PetscFunctionReturn(0);
+}
+
+/* One line: the problem the flow solves. */
+PetscErrorCode CSWillmoreFlowView(CSWillmoreFlow F, PetscViewer viewer)
+{
+  CSMesh m = F->mesh;
+  PetscFunctionBeginUser;
+  if (!viewer) viewer = PETSC_VIEWER_STDOUT_(F->comm);
+  PetscCall(PetscViewerASCIIPrintf(viewer, "flow %s: mesh %s V=%" PetscInt_FMT " E=%" PetscInt_FMT " F=%" PetscInt_FMT ", energy %s, metric %s, conformal %s, %" PetscInt_FMT " global constraint rows%s, t=%g t_mu=%g\n", F->type, m->name, m->Nv, m->Ne, m->Nf, F->energy_name, CSFlowMetricTypes[F->metric_type], F->conformal ? "on" : "off", F->k, F->fixedIS ? ", Dirichlet boundary" : "", (double)F->t, (double)F->tmu));
+  PetscFunctionReturn(0);
+}
+
+/* Like KSPSetTolerances: stop when el_residual < rtol and the violation < ctol, or after max_it iterations
+   (PETSC_DEFAULT keeps a value). */
+PetscErrorCode CSWillmoreFlowSetTolerances(CSWillmoreFlow F, PetscReal rtol, PetscReal ctol, PetscInt max_it)
+{
+  PetscFunctionBeginUser;
+  if (rtol != (PetscReal)PETSC_DEFAULT) F->rtol = rtol;
+  if (ctol != (PetscReal)PETSC_DEFAULT) F->ctol = ctol;
+  if (max_it != PETSC_DEFAULT) F->max_it = max_it;
+  PetscFunctionReturn(0);
+}

@@ -1,0 +1,107 @@
+/* CSWillmoreFlowSetFromOptions: every option of the flow, under its prefix (default "flow_"). */
+#include "willmore_impl.h"
+
+const char *const CSFlowMetricTypes[]   = {"h2", "l2", "CSFlowMetricType", "CS_FLOW_METRIC_", NULL};
+const char *const CSFlowBoundaryTypes[] = {"dirichlet", "free", "normals", "CSFlowBoundaryType", "CS_FLOW_BOUNDARY_", NULL};
+const char *const CSSaddleMatTypes[]    = {"nest", "aij", "CSSaddleMatType", "CS_SADDLE_MAT_", NULL};
+
+/* "-<prefix>constraint_area [value]": no value means the initial value. */
+static PetscErrorCode OptionalTarget(const char name[], const char help[], PetscBool *set, PetscReal *value, PetscBool *given, PetscOptionItems *PetscOptionsObject)
+{
+  char s[128] = "";
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsString(name, help, NULL, s, s, sizeof(s), set));
+  *given = PETSC_FALSE;
+  if (*set && s[0]) {
+    PetscCall(PetscOptionsStringToReal(s, value));
+    *given = PETSC_TRUE;
+  }
+  PetscFunctionReturn(0);
+}
+
+/* Step sizes, step control, guards, stopping. */
+static PetscErrorCode StepOptions(CSWillmoreFlow F, PetscOptionItems *PetscOptionsObject)
+{
+  const char *p = F->prefix;
+  PetscBool   set;
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsReal("-t", "Initial primal step size t", NULL, F->t, &F->t, NULL));
+  PetscCall(PetscOptionsReal("-t_mu", "Dual step size t_mu of the multipliers (default 1e3 t)", NULL, F->tmu, &F->tmu, NULL));
+  PetscCall(PetscOptionsReal("-t_max", "Largest primal step", NULL, F->tmax, &F->tmax, NULL));
+  PetscCall(PetscOptionsReal("-t_mu_grow", "Grow t_mu by this factor after each accepted step, independently of t, up to t_mu_max (0: t_mu follows t)", NULL, F->tmu_grow, &F->tmu_grow, NULL));
+  PetscCall(PetscOptionsReal("-t_mu_max", "Largest t_mu (default: 1e3 t_max with t_mu_grow, else none; in the units of t_mu)", NULL, F->tmu_max, &F->tmu_max, NULL));
+  PetscCall(PetscOptionsReal("-t_grow", "Factor on t after an accepted step", NULL, F->grow, &F->grow, NULL));
+  PetscCall(PetscOptionsBool("-step_control", "Accept a step only if the merit function decreases (else halve t)", NULL, F->step_control, &F->step_control, NULL));
+  PetscCall(PetscOptionsInt("-max_rejections", "Consecutive rejected steps before giving up", NULL, F->max_rej, &F->max_rej, NULL));
+  PetscCall(PetscOptionsReal("-merit_rho", "Weight of the quadratic constraint penalty in the merit function, relative to |E(input)|", NULL, F->rho, &F->rho, NULL));
+  PetscCall(PetscOptionsReal("-vmax", "Step control: reject steps whose constraint violation exceeds max(v, this), v that of the current state", NULL, F->vmax, &F->vmax, NULL));
+  PetscCall(PetscOptionsReal("-restore_above", "CGD/GD: project an accepted state whose constraint violation exceeds this back onto the constraints (0: never)", NULL, F->vrestore, &F->vrestore, NULL));
+  PetscCheck(F->vrestore >= 0, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%srestore_above %g: use 0 (off) or a positive violation", p, (double)F->vrestore);
+  PetscCall(PetscOptionsBool("-restore_stalled", "CGD/GD: project an accepted state back onto the constraints when t has collapsed (t < 1e-3 t_max) with the violation above vmax / 10", NULL, F->restore_stalled, &F->restore_stalled, NULL));
+  PetscCall(PetscOptionsReal("-max_area_ratio", "Stop when max(A_i/A0_i)/min(A_i/A0_i) of the vertex areas, or the total area relative to the input, exceeds this (0: off)", NULL, F->max_area_ratio, &F->max_area_ratio, NULL));
+  PetscCheck(F->max_area_ratio == 0 || F->max_area_ratio > 1, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%smax_area_ratio %g: use 0 (off) or a ratio above 1", p, (double)F->max_area_ratio);
+  PetscCall(PetscOptionsReal("-rtol", "Stop when ||g + X^T mu||_2 is below this", NULL, F->rtol, &F->rtol, NULL));
+  PetscCall(PetscOptionsReal("-ctol", "... and the constraint violation (inf-norm) below this", NULL, F->ctol, &F->ctol, NULL));
+  PetscCall(PetscOptionsInt("-max_it", "Maximum number of iterations", NULL, F->max_it, &F->max_it, NULL));
+  PetscCall(PetscOptionsReal("-iq_wmin", "Floor on cotan weights in I_Q (Eq. 25) for non-Delaunay edges", NULL, F->wmin, &F->wmin, NULL));
+  PetscCall(PetscOptionsReal("-pgd_t_mu", "PGD: regularising dual step of the (singular) PGD system and of the projection", NULL, F->proj_tmu, &F->proj_tmu, NULL));
+  PetscCall(PetscOptionsInt("-soc_max_it", "CGD/GD: second-order corrections of each trial step toward the constraints (0: none)", NULL, F->soc_max_it, &F->soc_max_it, NULL));
+  PetscCheck(F->soc_max_it >= 0, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%ssoc_max_it %" PetscInt_FMT ": use 0 (no corrections) or a positive count", p, F->soc_max_it);
+  PetscCall(PetscOptionsInt("-pgd_projection_max_it", "PGD: Gauss-Newton iterations of the projection onto the constraint set", NULL, F->proj_max_it, &F->proj_max_it, NULL));
+  PetscCall(PetscOptionsInt("-factor_reuse_its", "Keep the preconditioner (factorisation) of an earlier step while the last solve needed at most this many Krylov iterations (0: refactor every step; default 10 with the conformal constraint, else 0; ignored with a preonly saddle KSP)", NULL, F->reuse_its, &F->reuse_its, &set));
+  PetscCheck(!set || F->reuse_its >= 0, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sfactor_reuse_its %" PetscInt_FMT ": use 0 (refactor every step) or a positive iteration count", p, F->reuse_its);
+  PetscCall(PetscOptionsEnum("-matrix_type", "The saddle matrix as MATNEST (fieldsplit) or converted to AIJ (monolithic direct solvers)", NULL, CSSaddleMatTypes, (PetscEnum)F->saddle_mat, (PetscEnum *)&F->saddle_mat, NULL));
+  PetscFunctionReturn(0);
+}
+
+/* The problem: energy, metric, constraints, boundary. */
+static PetscErrorCode ProblemOptions(CSWillmoreFlow F, PetscFunctionList energies, PetscOptionItems *PetscOptionsObject)
+{
+  PetscBool conformal = F->ops.conformal;
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsEnum("-metric", "Metric of the primal step (soliman2021 Eq. 26 or the mass)", NULL, CSFlowMetricTypes, (PetscEnum)F->metric_type, (PetscEnum *)&F->metric_type, NULL));
+  PetscCall(PetscOptionsFList("-energy", "Energy of the flow", NULL, energies, F->energy_name, F->energy_name, sizeof(F->energy_name), NULL));
+  PetscCall(PetscOptionsReal("-fairing_epsilon", "Weight of W in the fairing energy (soliman2021 Eq. 21)", NULL, F->eps, &F->eps, NULL));
+  PetscCall(PetscOptionsBool("-conformal", "Exact conformal constraint (default on for cgd and pgd)", NULL, conformal, &conformal, &F->conformal_set));
+  F->conformal = conformal;
+  PetscCall(PetscOptionsString("-target_mesh", "Mesh with the same connectivity whose conformal class is the target (soliman2021 Fig. 2)", NULL, F->target, F->target, sizeof(F->target), NULL));
+  PetscCall(OptionalTarget("-constraint_area", "Total area constraint [target value, default the initial area]", &F->area_set, &F->area_target, &F->area_given, PetscOptionsObject));
+  PetscCall(OptionalTarget("-constraint_volume", "Enclosed volume constraint [target value, default the initial volume]", &F->vol_set, &F->vol_target, &F->vol_given, PetscOptionsObject));
+  PetscCall(PetscOptionsString("-constraint_points", "File of point constraints: lines 'vertex_index x y z' (0-based)", NULL, F->points, F->points, sizeof(F->points), NULL));
+  PetscCall(PetscOptionsBool("-constraint_mobius", "Moebius balancing: fix the three Moebius boosts that the conformal constraint leaves free (closed surfaces; needs the conformal constraint)", NULL, F->mobius, &F->mobius, NULL));
+  PetscCall(PetscOptionsEnum("-boundary", "Boundary vertices fixed, free (C0 only), or fixed with fixed boundary-face normals (App. D)", NULL, CSFlowBoundaryTypes, (PetscEnum)F->boundary, (PetscEnum *)&F->boundary, &F->boundary_set));
+  PetscFunctionReturn(0);
+}
+
+/* Consistency of the options with each other and with the kind. */
+static PetscErrorCode CheckOptions(CSWillmoreFlow F)
+{
+  const char *p = F->prefix;
+  PetscFunctionBeginUser;
+  if (F->tmu <= 0) F->tmu = 1e3 * F->t;
+  PetscCheck(F->t > 0 && F->tmu > 0 && F->grow >= 1 && F->tmax >= F->t, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%st %g, -%st_mu %g, -%st_grow %g, -%st_max %g: need t > 0, t_mu > 0, grow >= 1, t_max >= t", p, (double)F->t, p, (double)F->tmu, p, (double)F->grow, p, (double)F->tmax);
+  PetscCheck(F->tmu_grow == 0 || F->tmu_grow >= 1, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%st_mu_grow %g: use 0 (t_mu follows t) or a factor >= 1", p, (double)F->tmu_grow);
+  PetscCheck(F->eps > 0, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sfairing_epsilon %g: must be positive", p, (double)F->eps);
+  PetscCheck(!F->target[0] || F->conformal, F->comm, PETSC_ERR_ARG_INCOMP, "-%starget_mesh %s needs the conformal constraint (cgd, or pgd with -%sconformal)", p, F->target, p);
+  PetscCheck(!F->boundary_set || F->boundary != CS_FLOW_BOUNDARY_NORMALS || F->conformal, F->comm, PETSC_ERR_ARG_INCOMP, "-%sboundary normals needs the conformal constraint (cgd or pgd)", p);
+  if (F->ops.setup) PetscCall((*F->ops.setup)(F));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSWillmoreFlowSetFromOptions(CSWillmoreFlow F)
+{
+  char              type[16];
+  PetscBool         set;
+  PetscFunctionList energies;
+  PetscFunctionBeginUser;
+  PetscCall(CSWillmoreFlowEnergyList(&energies));
+  PetscCall(PetscStrncpy(type, F->type, sizeof(type)));
+  PetscOptionsBegin(F->comm, F->prefix, "Constrained Willmore flow (soliman2021)", NULL);
+  PetscCall(PetscOptionsString("-type", "cgd|pgd|gd", NULL, type, type, sizeof(type), &set));
+  if (set) PetscCall(CSWillmoreFlowSetType(F, type));
+  PetscCall(StepOptions(F, PetscOptionsObject));
+  PetscCall(ProblemOptions(F, energies, PetscOptionsObject));
+  PetscOptionsEnd();
+  PetscCall(CheckOptions(F));
+  PetscFunctionReturn(0);
+}

@@ -1,0 +1,94 @@
+/* The outer iteration: evaluate at x, monitor, stop or step (trial, filter, rejections), accept. */
+#include "willmore_impl.h"
+
+/* Everything the stopping tests, the monitors and the next step need at x. */
+static PetscErrorCode Evaluate(CSWillmoreFlow F)
+{
+  PetscFunctionBeginUser;
+  PetscCall(CSEnergyGradient(F->energy, F->x, &F->E, F->g));
+  PetscCall(CSWFZeroFixed(F, F->g));
+  PetscCall(CSWFEvalConstraints(F, F->x, F->c, F->cx, PETSC_TRUE));
+  PetscCall(CSWFResidual(F, &F->el));
+  PetscCall(CSWFViolation(F, F->c, F->cx, &F->conf, &F->glob));
+  PetscCall(CSGeometryAreaVolume(F->mesh, F->x, &F->A, &F->V));
+  PetscCall(CSWFMeasureQuality(F));
+  PetscFunctionReturn(0);
+}
+
+/* The operators of the step at x: metric, I_Q (with the count of guarded weights), global weights. */
+static PetscErrorCode Operators(CSWillmoreFlow F)
+{
+  PetscFunctionBeginUser;
+  PetscCall(CSMetricUpdate(&F->metric, F->x));
+  if (F->conformal) {
+    PetscInt ng;
+    PetscCall(CSWFQuadDiffMetric(F, F->x, &ng));
+    F->nguard = PetscMax(F->nguard, ng);
+  }
+  if (F->k) PetscCall(CSWFGlobalWeights(F));
+  PetscFunctionReturn(0);
+}
+
+/* Trial steps with halved t until one is accepted (*accepted) or -flow_max_rejections is exceeded. */
+static PetscErrorCode StepWithRejections(CSWillmoreFlow F, PetscBool *accepted)
+{
+  PetscFunctionBeginUser;
+  F->kspits = 0;
+  for (PetscInt rej = 0;; rej++) {
+    PetscBool accept;
+    if (rej > F->max_rej) {
+      /* stop cleanly: x is the last accepted state, and E, el, c belong to it */
+      PetscCall(PetscPrintf(F->comm, "flow: %" PetscInt_FMT " consecutive steps rejected at iteration %" PetscInt_FMT " (t = %g, -%smax_rejections): stopping with the last accepted state\n", rej, F->it, (double)F->t, F->prefix));
+      *accepted = PETSC_FALSE;
+      PetscFunctionReturn(0);
+    }
+    PetscCall((*F->ops.trial)(F, &accept));
+    if (accept && !F->step_control) PetscCall(CSWFCheckFinite(F, &accept));
+    else if (accept) PetscCall((*F->ops.filter)(F, &accept));
+    if (accept) break;
+    F->rejections++;
+    PetscCall((*F->ops.shrink)(F));
+  }
+  *accepted = PETSC_TRUE;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSWillmoreFlowStep(CSWillmoreFlow F, CSWillmoreFlowConvergedReason *reason)
+{
+  PetscBool accepted;
+  PetscFunctionBeginUser;
+  PetscCall(CSWillmoreFlowSetUp(F));
+  if (!F->started) {
+    F->started = PETSC_TRUE;
+    if (F->ops.start && !F->resumed) PetscCall((*F->ops.start)(F)); /* a checkpoint is past the start already */
+  }
+  F->reason = CS_WILLMORE_FLOW_ITERATING;
+  PetscCall(Evaluate(F));
+  for (PetscInt i = 0; i < F->nmonitor; i++) PetscCall((*F->monitor[i].fn)(F, F->it, F->monitor[i].ctx));
+  PetscCheck(F->E == F->E && F->el == F->el, F->comm, PETSC_ERR_FP, "flow: the energy or the residual is not a number at iteration %" PetscInt_FMT " (degenerate triangles?); try a smaller -%st", F->it, F->prefix);
+  PetscCall(CSWFCheckResolution(F, &F->reason));
+  if (!F->reason && F->el < F->rtol && PetscMax(F->conf, F->glob) < F->ctol) F->reason = CS_WILLMORE_FLOW_CONVERGED_RTOL;
+  if (!F->reason && F->it >= F->max_it) F->reason = CS_WILLMORE_FLOW_DIVERGED_MAX_IT;
+  if (!F->reason) {
+    PetscCall(Operators(F));
+    PetscCall(StepWithRejections(F, &accepted));
+    if (!accepted) F->reason = CS_WILLMORE_FLOW_DIVERGED_REJECTIONS;
+  }
+  if (!F->reason) {
+    PetscCall(VecCopy(F->xt, F->x));
+    PetscCall((*F->ops.accept)(F));
+    F->kspits_total += F->kspits;
+    PetscCall((*F->ops.grow)(F));
+    F->it++;
+  }
+  *reason = F->reason;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSWillmoreFlowSolve(CSWillmoreFlow F)
+{
+  CSWillmoreFlowConvergedReason reason = CS_WILLMORE_FLOW_ITERATING;
+  PetscFunctionBeginUser;
+  while (reason == CS_WILLMORE_FLOW_ITERATING) PetscCall(CSWillmoreFlowStep(F, &reason));
+  PetscFunctionReturn(0);
+}

@@ -1,0 +1,56 @@
+/* The loop state a checkpoint keeps besides the positions and mu (the edge field): [flow kind, t, t_mu,
+   rejections, KSP its in total, KSP its of the last step, edges with guarded I_Q weight, seconds,
+   nu_1..nu_k]. The rest (g, c, X, metric, residual) is recomputed from x at the top of the loop, so a resumed
+   run continues exactly like the uninterrupted one. */
+#include "willmore_impl.h"
+
+#define FLOW_CK_NREAL 8
+
+PetscErrorCode CSWillmoreFlowGetStateSize(CSWillmoreFlow F, PetscInt *nreal)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(F->setupcalled, F->comm, PETSC_ERR_ORDER, "CSWillmoreFlowGetStateSize before CSWillmoreFlowSetUp");
+  *nreal = FLOW_CK_NREAL + F->k;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSWillmoreFlowGetState(CSWillmoreFlow F, PetscReal ck[], Vec *x, Vec *mu)
+{
+  PetscLogDouble now;
+  PetscFunctionBeginUser;
+  PetscCheck(F->setupcalled, F->comm, PETSC_ERR_ORDER, "CSWillmoreFlowGetState before CSWillmoreFlowSetUp");
+  PetscCheck(!F->normals, F->comm, PETSC_ERR_SUP, "-checkpoint/-resume with -%sboundary normals: the multipliers of the normal constraint are not stored in checkpoints", F->prefix);
+  PetscCall(PetscTime(&now));
+  if (ck) {
+    ck[0] = (PetscReal)F->ops.id;
+    ck[1] = F->t;
+    ck[2] = F->tmu;
+    ck[3] = (PetscReal)F->rejections;
+    ck[4] = (PetscReal)F->kspits_total;
+    ck[5] = (PetscReal)F->kspits;
+    ck[6] = (PetscReal)F->nguard;
+    ck[7] = (PetscReal)(now - F->t0);
+    for (PetscInt j = 0; j < F->k; j++) ck[FLOW_CK_NREAL + j] = F->nu[j];
+  }
+  if (x) *x = F->x;
+  if (mu) *mu = F->conformal ? F->mu : NULL;
+  PetscFunctionReturn(0);
+}
+
+/* After the vectors of GetState were overwritten by a checkpoint of iteration it. */
+PetscErrorCode CSWillmoreFlowSetState(CSWillmoreFlow F, PetscInt it, const PetscReal ck[])
+{
+  PetscFunctionBeginUser;
+  PetscCheck(ck[0] == (PetscReal)F->ops.id, F->comm, PETSC_ERR_ARG_INCOMP, "-resume: the checkpoint was written by another flow type (this run is %s)", F->type);
+  F->t            = ck[1];
+  F->tmu          = ck[2];
+  F->rejections   = (PetscInt)ck[3];
+  F->kspits_total = (PetscInt)ck[4];
+  F->kspits       = (PetscInt)ck[5];
+  F->nguard       = (PetscInt)ck[6];
+  F->t0          -= ck[7]; /* the seconds column of the history continues */
+  for (PetscInt j = 0; j < F->k; j++) F->nu[j] = ck[FLOW_CK_NREAL + j];
+  F->it      = it;
+  F->resumed = PETSC_TRUE;
+  PetscFunctionReturn(0);
+}

@@ -1,0 +1,177 @@
+/* Private to src/methods/willmore/: the flow object, its kind strategy and its saddle solver.
+   The method (soliman2021 Algorithm 1, step control, guards) is described in docs/willmore_flow.md. */
+#ifndef CS_WILLMORE_IMPL_H
+#define CS_WILLMORE_IMPL_H
+#include "cs_methods_willmore.h"
+
+/* ---- the linear solver of every step (saddle.c) ----
+   Solves, with the KSP of prefix "<flow prefix>saddle_",
+     [ A00  X    0  ] [zE]   [rE]      A00 = -I_Q / t_mu   (multipliers of the conformal constraint, FIRST:
+     [ X^T  H/t  B  ] [zV] = [rV]                            then selfp is the exact Schur complement)
+     [ 0    B^T  -G ] [zX]   [rX]      H = metric (3V x 3V), X = C Dlambda (E x 3V),
+   B = the k dense Jacobian rows of the global constraints (area, volume, points), G = diag(g_j)/t_mu. The
+   sparse part is a MATNEST [[A00, X], [X^T, H/t]] (or its AIJ conversion with -flow_matrix_type aij, for
+   monolithic direct solvers); the k dense rows are appended by bordering (block elimination: k+1 solves
+   with the same operator, then a k x k system), so no dense row ever enters a factorisation. Without the
+   conformal constraint the edge block is absent and the KSP solves with H/t alone. */
+typedef struct {
+  CSMesh      mesh;
+  KSP         ksp;
+  char        prefix[64]; /* of the KSP */
+  PetscBool   edges;      /* conformal block present */
+  PetscBool   h2;         /* metric H^2 (else L2): chooses the default solver without the edge block */
+  PetscBool   monolithic; /* aij */
+  Mat         A00, Xt, H11, K, Kaij;
+  Mat         XtD, XtDX, S; /* the exact Schur complement S = H/t + X^T (t_mu I_Q^{-1}) X, assembled with a fixed
+                               pattern (for the fieldsplit's schur_precondition user) */
+  CSMatAddMap add_xtdx, add_h11; /* S refilled from its two terms (fixed patterns) */
+  IS          is[2];
+  Vec         b, z;
+  IS          fixed;      /* Dirichlet dofs of H (identity rows/cols), may be NULL */
+  PetscInt    k;
+  Vec        *B, *W;      /* k rows, k solutions (each an (E+3V) or 3V vector) */
+  PetscReal  *G;
+  PetscInt    reuse_its;  /* keep the preconditioner while the last solve took <= this many its */
+  PetscInt    last_its;   /* Krylov iterations of the last solve */
+  PetscInt    setups;     /* preconditioner (factorisation) builds so far */
+  PetscInt    solves;     /* linear solves (right-hand sides) so far */
+  PetscInt    max_it;     /* the KSP's own iteration limit */
+  PetscBool   reusing;    /* this step keeps an earlier preconditioner */
+  PetscBool   krylov;     /* the KSP iterates (not preonly): kept preconditioners and initial guesses allowed */
+  PetscInt    backoff, wait; /* fresh steps to take before the next reuse attempt, after failed attempts */
+  Vec         iq;         /* this step's I_Q, t_mu and X (borrowed), to rebuild S when a kept one fails */
+  PetscReal   tmu;
+  Mat         X;
+  PetscBool   have_pc;
+} CSSaddle;
+
+/* prefix: of the KSP; reuse_its < 0: the default (10 with the edge block, else 0) */
+PETSC_INTERN PetscErrorCode CSSaddleCreate(CSMesh mesh, const char prefix[], PetscBool edges, PetscBool h2, PetscBool monolithic, PetscInt reuse_its, PetscInt k, CSSaddle *s);
+/* H (3V x 3V) scaled by 1/t; iq, tmu, X ignored without the edge block; rows/g only if k > 0. */
+PETSC_INTERN PetscErrorCode CSSaddleSetOperators(CSSaddle *s, Mat H, PetscReal t, Vec iq, PetscReal tmu, Mat X, Vec rows[], const PetscReal g[]);
+/* rE/zE may be NULL without the edge block; rX/zX without k. *its = KSP iterations (sum over the k+1
+   bordering solves); *reason = the KSP's reason of the first solve that failed, or of the last one. A solve
+   that did not converge is not an error: the flow decides (a rejected step). */
+PETSC_INTERN PetscErrorCode CSSaddleSolve(CSSaddle *s, Vec rE, Vec rV, const PetscReal rX[], Vec zE, Vec zV, PetscReal zX[], PetscInt *its, KSPConvergedReason *reason);
+PETSC_INTERN PetscErrorCode CSSaddleDestroy(CSSaddle *s);
+
+/* ---- the flow kind: a strategy struct (cgd.c, pgd.c, gd.c) ---- */
+struct _CSWillmoreFlowOps {
+  PetscInt  id;             /* stored in checkpoints (a resume must use the same kind) */
+  PetscBool conformal;      /* default of -flow_conformal */
+  PetscBool projected;      /* PGD: the constraint set is kept by projection, not by the step's filter */
+  PetscErrorCode (*setup)(CSWillmoreFlow);               /* checks of the options against the kind */
+  PetscErrorCode (*start)(CSWillmoreFlow);               /* before the first iteration (not after a resume) */
+  PetscErrorCode (*trial)(CSWillmoreFlow, PetscBool *);  /* the trial point xt of step t (false: rejected) */
+  PetscErrorCode (*filter)(CSWillmoreFlow, PetscBool *); /* acceptance of xt */
+  PetscErrorCode (*accept)(CSWillmoreFlow);              /* x = xt done: multipliers, restoration */
+  PetscErrorCode (*grow)(CSWillmoreFlow);                /* step sizes after an accepted step */
+  PetscErrorCode (*shrink)(CSWillmoreFlow);              /* step sizes after a rejected step */
+};
+
+typedef struct {
+  PetscErrorCode (*fn)(CSWillmoreFlow, PetscInt, void *);
+  void *ctx;
+  PetscErrorCode (*destroy)(void **);
+} CSWillmoreFlowMonitor;
+#define CS_WILLMORE_FLOW_MAX_MONITORS 8
+
+struct _p_CSWillmoreFlow {
+  MPI_Comm              comm;
+  CSMesh                mesh; /* given, referenced by the caller; not destroyed here */
+  char                  type[16], prefix[64];
+  struct _CSWillmoreFlowOps ops;
+  PetscBool             setupcalled;
+  CSWillmoreFlowConvergedReason reason;
+  CSWillmoreFlowMonitor monitor[CS_WILLMORE_FLOW_MAX_MONITORS];
+  PetscInt              nmonitor;
+
+  /* options */
+  char                  energy_name[32];
+  PetscReal             eps; /* fairing weight */
+  CSFlowMetricType      metric_type;
+  CSFlowBoundaryType    boundary;
+  PetscBool             boundary_set, conformal_set, mobius;
+  char                  target[PETSC_MAX_PATH_LEN], points[PETSC_MAX_PATH_LEN];
+  PetscBool             area_set, area_given, vol_set, vol_given;
+  PetscReal             area_target, vol_target;
+  CSSaddleMatType       saddle_mat;
+  PetscInt              reuse_its;
+
+  /* problem */
+  CSEnergy              energy;
+  PetscBool             conformal;
+  CSConformalConstraint cc;
+  PetscBool             normals; /* boundary-face normal constraint: its rows follow the edge rows */
+  CSNormalConstraint    nc;
+  Mat                   Xn, Xext, Xc; /* nest [X; DN], its AIJ form, and the Jacobian in use (X or Xext) */
+  IS                    isM[2];       /* edge / normal rows in the multiplier layout */
+  Vec                   cE, cN, iqE, iqN;
+  PetscInt              ng, k;
+  CSGlobalConstraint    gc[4];
+  PetscBool            *fixed;   /* local vertices held fixed (Dirichlet), or NULL */
+  IS                    fixedIS; /* global dmV3 dofs of owned fixed vertices */
+  CSMetric              metric;
+  CSSaddle              saddle;
+  Vec                   x, x0, g, r, c, mu, dmu, df, iq, xt, ct, tmp;
+  Vec                  *rows;
+  PetscReal            *cx, *cxt, *nu, *dnu, *dnu2, *gw, *nun;
+  PetscReal             t, tmu, tmax, grow, rtol, ctol, wmin, rho, vmax, vrestore;
+  PetscBool             restore_stalled, restore_failed;
+  Vec                   mun;
+  Vec                   area0, areat; /* barycentric vertex areas of the input and of the current state */
+  PetscReal             area0_total;  /* total area of the input */
+  PetscReal             max_area_ratio;
+  PetscInt              max_it, max_rej, proj_max_it, soc_max_it;
+  PetscBool             step_control;
+  PetscReal             proj_tmu;
+  PetscReal             tmu_grow, tmu_max; /* own schedule of the dual step (0: t_mu follows t) */
+  PetscReal             tmu_ratio_max;     /* following t: t_mu <= this * t (1e3 times the initial t_mu / t) */
+
+  /* loop state */
+  PetscInt              it, rejections, kspits_total, kspits, nguard;
+  PetscBool             resumed, started;
+  PetscLogDouble        t0;
+  PetscReal             E, el, conf, glob, A, V, area_ratio, spread, qmax; /* at x, from the last evaluation */
+};
+
+/* evaluate.c */
+PETSC_INTERN PetscErrorCode CSWFZeroFixed(CSWillmoreFlow F, Vec v);
+PETSC_INTERN PetscErrorCode CSWFEvalConstraints(CSWillmoreFlow F, Vec x, Vec c, PetscReal cx[], PetscBool wantJ);
+PETSC_INTERN PetscErrorCode CSWFViolation(CSWillmoreFlow F, Vec c, const PetscReal cx[], PetscReal *conf, PetscReal *glob);
+PETSC_INTERN PetscErrorCode CSWFMerit(CSWillmoreFlow F, PetscReal E, Vec c, const PetscReal cx[], const PetscReal nun[], PetscReal *phi);
+PETSC_INTERN PetscErrorCode CSWFResidual(CSWillmoreFlow F, PetscReal *el);
+PETSC_INTERN PetscErrorCode CSWFGlobalWeights(CSWillmoreFlow F);
+PETSC_INTERN PetscErrorCode CSWFQuadDiffMetric(CSWillmoreFlow F, Vec x, PetscInt *ng);
+/* step.c */
+PETSC_INTERN PetscErrorCode CSWFSetOperators(CSWillmoreFlow F, PetscReal t, PetscReal tmu);
+PETSC_INTERN PetscErrorCode CSWFTrySolve(CSWillmoreFlow F, Vec rE, Vec rV, const PetscReal rX[], Vec zE, Vec zV, PetscReal zX[], PetscInt *its, PetscBool *ok);
+PETSC_INTERN PetscErrorCode CSWFSolveCorrection(CSWillmoreFlow F, Vec zE, Vec zV, PetscInt *its, PetscBool *ok);
+PETSC_INTERN PetscErrorCode CSWFTrialCGD(CSWillmoreFlow F, PetscBool *accept);
+PETSC_INTERN PetscErrorCode CSWFTrialPGD(CSWillmoreFlow F, PetscBool *accept);
+/* filter.c */
+PETSC_INTERN PetscErrorCode CSWFFilterLagrangian(CSWillmoreFlow F, PetscBool *accept);
+PETSC_INTERN PetscErrorCode CSWFFilterEnergy(CSWillmoreFlow F, PetscBool *accept);
+PETSC_INTERN PetscErrorCode CSWFCheckFinite(CSWillmoreFlow F, PetscBool *accept);
+/* projection.c */
+PETSC_INTERN PetscErrorCode CSWFProject(CSWillmoreFlow F, Vec x, PetscBool *ok, PetscInt *kspits);
+PETSC_INTERN PetscErrorCode CSWFRestore(CSWillmoreFlow F, PetscInt *kspits);
+/* guards.c */
+PETSC_INTERN PetscErrorCode CSWFMeasureQuality(CSWillmoreFlow F);
+PETSC_INTERN PetscErrorCode CSWFCheckResolution(CSWillmoreFlow F, CSWillmoreFlowConvergedReason *reason);
+/* setup.c */
+PETSC_INTERN PetscErrorCode CSWFSetUpBoundary(CSWillmoreFlow F);
+PETSC_INTERN PetscErrorCode CSWFSetUpConstraints(CSWillmoreFlow F);
+PETSC_INTERN PetscErrorCode CSWFSetUpVectors(CSWillmoreFlow F);
+PETSC_INTERN PetscErrorCode CSWFSetUpScaling(CSWillmoreFlow F);
+PETSC_INTERN PetscErrorCode CSWFCreateEnergy(CSWillmoreFlow F);
+PETSC_INTERN PetscErrorCode CSWillmoreFlowEnergyList(PetscFunctionList *list);
+/* kinds */
+PETSC_INTERN PetscErrorCode CSWillmoreFlowCreate_CGD(CSWillmoreFlow);
+PETSC_INTERN PetscErrorCode CSWillmoreFlowCreate_PGD(CSWillmoreFlow);
+PETSC_INTERN PetscErrorCode CSWillmoreFlowCreate_GD(CSWillmoreFlow);
+PETSC_INTERN PetscErrorCode CSWFAcceptCGD(CSWillmoreFlow F);
+PETSC_INTERN PetscErrorCode CSWFGrowCGD(CSWillmoreFlow F);
+PETSC_INTERN PetscErrorCode CSWFShrinkCGD(CSWillmoreFlow F);
+
+#endif

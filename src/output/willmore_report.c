@@ -1,0 +1,65 @@
+/* The end of a Willmore flow run: the final checkpoint, the final line and the summary keys (unchanged since
+   before the flow was an object), then ParaView output, mesh facts, -o and -summary. */
+#include "cs_output_willmore.h"
+
+PETSC_INTERN PetscErrorCode CSWillmoreFlowCheckpointFinal(CSWillmoreFlow flow, CSOutput *out);
+
+static PetscErrorCode SummaryKeys(CSWillmoreFlow flow, CSOutput *out, const CSWillmoreFlowInfo *i)
+{
+  CSWillmoreFlowType            type;
+  CSWillmoreFlowConvergedReason reason;
+  const char                   *energy;
+  PetscReal                     E0;
+  PetscFunctionBeginUser;
+  PetscCall(CSWillmoreFlowGetType(flow, &type));
+  PetscCall(CSWillmoreFlowGetConvergedReason(flow, &reason));
+  PetscCall(CSWillmoreFlowGetEnergyName(flow, &energy));
+  PetscCall(CSWillmoreFlowGetInitialEnergy(flow, &E0));
+  PetscCall(CSJSONAddString(out->json, "flow_type", type));
+  PetscCall(CSJSONAddString(out->json, "energy_name", energy));
+  PetscCall(CSJSONAddInt(out->json, "iterations", i->it));
+  PetscCall(CSJSONAddBool(out->json, "converged", (PetscBool)(reason == CS_WILLMORE_FLOW_CONVERGED_RTOL)));
+  PetscCall(CSJSONAddString(out->json, "stop_reason", CSWillmoreFlowStopReasons[reason]));
+  PetscCall(CSJSONAddReal(out->json, "energy_initial", E0)); /* of the input (after any -gen_deform_*) */
+  PetscCall(CSJSONAddReal(out->json, "energy", i->energy));
+  PetscCall(CSJSONAddReal(out->json, "area_spread", i->area_spread));
+  PetscCall(CSJSONAddReal(out->json, "conformal_violation", i->conformal_violation));
+  PetscCall(CSJSONAddReal(out->json, "constraint_violation", i->constraint_violation));
+  PetscCall(CSJSONAddReal(out->json, "el_residual", i->el_residual));
+  PetscCall(CSJSONAddInt(out->json, "rejections", i->rejections));
+  PetscCall(CSJSONAddInt(out->json, "ksp_iterations", i->ksp_its_total));
+  PetscCall(CSJSONAddInt(out->json, "pc_setups", i->pc_setups));         /* preconditioner builds (factorisations) */
+  PetscCall(CSJSONAddInt(out->json, "linear_solves", i->linear_solves)); /* steps, corrections, projections, bordering */
+  PetscCall(CSJSONAddReal(out->json, "t_final", i->t));
+  PetscCall(CSJSONAddReal(out->json, "seconds_per_iteration", i->it ? i->seconds / i->it : 0));
+  if (i->k) PetscCall(CSJSONAddRealArray(out->json, "constraint_values", i->k, i->constraint_values));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSWillmoreFlowReport(CSWillmoreFlow flow, CSOutput *out)
+{
+  CSWillmoreFlowInfo            i;
+  CSWillmoreFlowType            type;
+  CSWillmoreFlowConvergedReason reason;
+  CSMesh                        mesh;
+  Vec                           x, x0;
+  PetscFunctionBeginUser;
+  PetscCall(CSWillmoreFlowCheckpointFinal(flow, out));
+  PetscCall(CSWillmoreFlowGetInfo(flow, &i));
+  PetscCall(CSWillmoreFlowGetType(flow, &type));
+  PetscCall(CSWillmoreFlowGetConvergedReason(flow, &reason));
+  PetscCall(CSWillmoreFlowGetMesh(flow, &mesh));
+  PetscCall(CSWillmoreFlowGetSolution(flow, &x));
+  PetscCall(CSWillmoreFlowGetInitial(flow, &x0));
+  PetscCall(PetscPrintf(mesh->comm, "flow %s: %s after %" PetscInt_FMT " iterations (%" PetscInt_FMT " rejected steps, %" PetscInt_FMT " KSP iterations, %" PetscInt_FMT " edges with guarded I_Q weight), %.3f s\n", type, reason == CS_WILLMORE_FLOW_CONVERGED_RTOL ? "converged" : "NOT converged", i.it, i.rejections, i.ksp_its_total, i.nguard, i.seconds));
+  PetscCall(SummaryKeys(flow, out, &i));
+  if (out->has_viewer) {
+    CSViewer v;
+    PetscCall(CSViewerCreate(mesh, out->viewer_dir, &v));
+    PetscCall(CSViewerWriteStep(v, x, (PetscReal)i.it));
+    PetscCall(CSViewerDestroy(&v));
+  }
+  PetscCall(CSOutputAddMeshFacts(out, mesh, x, x0));
+  PetscCall(CSOutputFinish(out, mesh, x));
+  PetscFunctionReturn(0);
+}
