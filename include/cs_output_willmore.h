@@ -1,5 +1,5 @@
 /* Output of the Willmore flow (src/output/willmore_*.c): monitors for CSWillmoreFlowMonitorSet (the progress
-   line, the -history CSV, the checkpoint writer), resume from -resume, and the report at the end (final line,
+   line, the -history_csv CSV, the checkpoint writer), resume from -resume, and the report at the end (final line,
    summary keys, ParaView output, mesh facts). */
 #ifndef CS_OUTPUT_WILLMORE_H
 #define CS_OUTPUT_WILLMORE_H

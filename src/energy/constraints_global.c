@@ -73,7 +73,7 @@ PetscErrorCode CSConstraintCreateArea(CSMesh mesh, PetscReal target, CSGlobalCon
 {
   CSEnergy e;
   PetscFunctionBeginUser;
-  PetscCheck(target > 0, mesh->comm, PETSC_ERR_ARG_OUTOFRANGE, "-constraint_area %g: the target area must be positive", (double)target);
+  PetscCheck(target > 0, mesh->comm, PETSC_ERR_ARG_OUTOFRANGE, "-flow_constraint_area %g: the target area must be positive", (double)target);
   PetscCall(CSEnergyCreateArea(mesh, &e));
   PetscCall(CreateEnergyConstraint(mesh, "area", e, target, g));
   PetscFunctionReturn(0);
@@ -83,8 +83,8 @@ PetscErrorCode CSConstraintCreateVolume(CSMesh mesh, PetscReal target, CSGlobalC
 {
   CSEnergy e;
   PetscFunctionBeginUser;
-  PetscCheck(mesh->topo.boundary_loops == 0, mesh->comm, PETSC_ERR_ARG_WRONG, "-constraint_volume: the mesh %s has %" PetscInt_FMT " boundary loop(s); the enclosed volume is only defined for closed surfaces", mesh->name, mesh->topo.boundary_loops);
-  PetscCheck(target > 0, mesh->comm, PETSC_ERR_ARG_OUTOFRANGE, "-constraint_volume %g: the target volume must be positive (outward-oriented surface)", (double)target);
+  PetscCheck(mesh->topo.boundary_loops == 0, mesh->comm, PETSC_ERR_ARG_WRONG, "-flow_constraint_volume: the mesh %s has %" PetscInt_FMT " boundary loop(s); the enclosed volume is only defined for closed surfaces", mesh->name, mesh->topo.boundary_loops);
+  PetscCheck(target > 0, mesh->comm, PETSC_ERR_ARG_OUTOFRANGE, "-flow_constraint_volume %g: the target volume must be positive (outward-oriented surface)", (double)target);
   PetscCall(CSEnergyCreateVolume(mesh, &e));
   PetscCall(CreateEnergyConstraint(mesh, "volume", e, target, g));
   PetscFunctionReturn(0);
@@ -302,7 +302,7 @@ PetscErrorCode CSConstraintCreateMobiusBalance(CSMesh mesh, Vec x0, CSGlobalCons
     for (int d = 0; d < 3; d++) s[d] += A * (F.c[0][d] + F.c[1][d] + F.c[2][d]) / 3;
   }
   PetscCall(MPIU_Allreduce(s, t, 4, MPIU_REAL, MPIU_SUM, mesh->comm));
-  PetscCheck(t[3] > 0, mesh->comm, PETSC_ERR_ARG_WRONG, "-constraint_mobius: the input mesh %s has zero area", mesh->name);
+  PetscCheck(t[3] > 0, mesh->comm, PETSC_ERR_ARG_WRONG, "-flow_constraint_mobius: the input mesh %s has zero area", mesh->name);
   for (int d = 0; d < 3; d++) c0[d] = t[d] / t[3];
   scale = 1.0 / (t[3] * PetscSqrtReal(t[3]));
   PetscCall(PetscNew(&ctx));

@@ -61,7 +61,7 @@ PetscErrorCode CSEnergyCreateFairing(CSMesh mesh, Vec x0, PetscReal eps, CSEnerg
   PetscScalar       *m;
   PetscInt           n;
   PetscFunctionBeginUser;
-  PetscCheck(eps > 0, mesh->comm, PETSC_ERR_ARG_OUTOFRANGE, "-fairing_epsilon %g: must be positive", (double)eps);
+  PetscCheck(eps > 0, mesh->comm, PETSC_ERR_ARG_OUTOFRANGE, "-flow_fairing_epsilon %g: must be positive", (double)eps);
   PetscCall(CSEnergyCreateShell(mesh, "fairing", e));
   PetscCall(PetscNew(&c));
   c->eps = eps;

@@ -82,7 +82,7 @@ static PetscErrorCode PCSetUp_CSH2(PC pc)
   PetscFunctionBeginUser;
   PetscCall(PCGetOperators(pc, NULL, &P));
   PetscCall(PetscObjectQuery((PetscObject)P, "CSMetric", (PetscObject *)&c));
-  PetscCheck(c, PetscObjectComm((PetscObject)pc), PETSC_ERR_ARG_WRONG, "-pc_type csh2 preconditions the H^2 metric only (use it on the metric block, e.g. -flow_pc_type csh2 for gd or -flow_fieldsplit_1_pc_type csh2)");
+  PetscCheck(c, PetscObjectComm((PetscObject)pc), PETSC_ERR_ARG_WRONG, "-pc_type csh2 preconditions the H^2 metric only (use it on the metric block, e.g. -flow_saddle_pc_type csh2 for gd or -flow_saddle_fieldsplit_1_pc_type csh2)");
   PetscCall(PetscContainerGetPointer(c, (void **)&info));
   m = info->metric;
   PetscCheck(m->h2 && m->L3, PetscObjectComm((PetscObject)pc), PETSC_ERR_ARG_WRONG, "-pc_type csh2 needs -flow_metric h2");

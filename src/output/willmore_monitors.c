@@ -1,4 +1,4 @@
-/* Monitors of the Willmore flow: the progress line, the -history CSV and the checkpoint writer. */
+/* Monitors of the Willmore flow: the progress line, the -history_csv CSV and the checkpoint writer. */
 #include "cs_output_willmore.h"
 
 static PetscErrorCode MonitorProgress(CSWillmoreFlow flow, PetscInt it, void *ctx)
