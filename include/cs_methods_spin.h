@@ -99,14 +99,12 @@ PETSC_EXTERN PetscErrorCode CSSpinReconstruct(CSSpin spin, Vec x, Vec lambda, Ve
 PETSC_EXTERN PetscErrorCode CSSpinRestoreArea(CSSpin spin, Vec xref, Vec xnew);
 PETSC_EXTERN PetscErrorCode CSSpinDestroy(CSSpin *spin);
 
-/* Inputs of rho (src/methods/spin_rho.c): -rho FILE, -rho_location vertex|face, -rho_scale, -rho_bump_*,
+/* Inputs of rho (src/methods/spin/spin_rho.c): -rho FILE, -rho_location vertex|face, -rho_scale, -rho_bump_*,
    -rho_mean_curvature s, -target_mesh FILE (Sec. 7.2). On return *loc and *rho describe rho (NULL if zero), and
    with -target_mesh *xtarget holds the target positions and *mu the averaged best-fit similarities. */
 PETSC_EXTERN PetscErrorCode CSSpinRhoFromOptions(CSSpin spin, Vec x, CSRhoLocation *loc, Vec *rho, Vec *xtarget, Vec *mu);
 /* Target tangents for -spin_boundary file|target (-spin_boundary_file FILE); *Tt = NULL for none|keep. */
 PETSC_EXTERN PetscErrorCode CSSpinBoundaryFromOptions(CSSpin spin, Vec xtarget, Vec *Tt);
-/* Outgoing unit boundary-edge vectors at boundary vertices (dmV3 global; zero elsewhere). */
-PETSC_EXTERN PetscErrorCode CSSpinBoundaryTangents(CSMesh mesh, Vec x, Vec T);
 /* Best-fit similarity per face averaged to vertices (Sec. 7.2), mu global on spin->dm. */
 PETSC_EXTERN PetscErrorCode CSSpinBestFitSimilarities(CSSpin spin, Vec x, Vec xt, Vec mu);
 /* Optimal per-face rho for mu (Sec. 7.2): rho_k = Re(conj(B mu)_k (D mu)_k) / |(B mu)_k|^2, dmF1 global. */

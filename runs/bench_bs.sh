@@ -4,7 +4,7 @@
 # meshes/bunny_closed_cgal.obj (75k faces) and the level-7 linearly subdivided icosahedron (327,680 faces),
 # serially and on 2 ranks, with the default solver, MUMPS LDL^T with the AMD ordering (symmetric indefinite;
 # CHOLMOD is no option: it stops with an error when 1/dt I + K is indefinite, which the step control must be able
-# to reject; src/methods/bs_flow.c, docs/solvers.md), and the iterative alternative CG + BoomerAMG (rtol 1e-6).
+# to reject; src/methods/bs/, docs/solvers.md), and the iterative alternative CG + BoomerAMG (rtol 1e-6).
 # Median of $REPS runs (default 5; $REPS_BIG for the 330k mesh, default 3). Writes runs/results/bench_bs.md.
 # Usage: bash runs/bench_bs.sh   (from the repository root, after make)
 set -euo pipefail

@@ -111,19 +111,6 @@ PetscErrorCode CSBSFlowResetFixed(CSBSFlow F, Vec x)
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode MeanEdgeLength(CSMesh m, Vec x, PetscReal *h)
-{
-  Vec         l;
-  PetscScalar s;
-  PetscFunctionBeginUser;
-  PetscCall(DMCreateGlobalVector(m->dmE1, &l));
-  PetscCall(CSGeometryEdgeLengths(m, x, l));
-  PetscCall(VecSum(l, &s));
-  *h = PetscRealPart(s) / (PetscReal)m->Ne;
-  PetscCall(VecDestroy(&l));
-  PetscFunctionReturn(0);
-}
-
 /* -bs_perturb: fixed vertices are reset to x0, so G1 data stay untouched; seeded, so runs repeat. */
 static PetscErrorCode Perturb(CSBSFlow F)
 {
@@ -157,7 +144,7 @@ PetscErrorCode CSBSFlowSetUp(CSBSFlow F)
   PetscCall(VecDuplicate(mesh->x, &F->x));
   PetscCall(VecCopy(mesh->x, F->x));
   F->xmon = F->x;
-  PetscCall(MeanEdgeLength(mesh, F->x, &F->h));
+  PetscCall(CSGeometryMeanEdgeLength(mesh, F->x, &F->h));
   if (F->perturb > 0) PetscCall(Perturb(F));
   F->dt     = F->dt_set ? F->dt_opt : F->dt_rel * F->h * F->h;
   F->dt_max = F->dt_max_opt == 0 ? 1e4 * F->dt : F->dt_max_opt;

@@ -8,6 +8,7 @@
    the factored H^2 preconditioner (PC csh2), or Jacobi for the L2 mass. A user who sets <prefix>pc_type
    chooses the whole solver (no defaults are applied). */
 #include "willmore_impl.h"
+#include <petscblaslapack.h>
 #include "cs_substructured_cholesky.h"
 
 /* The defaults of the outer KSP, before KSPSetFromOptions. */
@@ -326,36 +327,25 @@ static PetscErrorCode KSolve(CSSaddle *s, Vec b, Vec z, PetscInt *its, KSPConver
 
 /* k x k dense solve (column-major S), Gaussian elimination with partial pivoting; k is a handful (LAPACK gesv
    rounds differently and moves the golden results: docs/willmore_flow.md). */
+/* The k x k bordered system S y = b of the global constraints (k <= ~10), by LAPACK's LU with partial pivoting
+   (getrf + getrs = gesv). The pivots are U's diagonal: a pivot below 1e-14 max|S| means dependent constraints,
+   reported as such rather than solved. S and b are replicated on every rank, so every rank decides alike. */
 static PetscErrorCode SmallSolve(MPI_Comm comm, PetscInt k, PetscScalar *S, PetscScalar *b)
 {
-  PetscReal big = 0;
+  PetscReal    big = 0, small;
+  PetscBLASInt n, one = 1, info;
+  PetscBLASInt ipiv[64];
   PetscFunctionBeginUser;
+  PetscCheck(k <= 64, comm, PETSC_ERR_SUP, "flow: %" PetscInt_FMT " global constraints; at most 64 are supported", k);
+  PetscCall(PetscBLASIntCast(k, &n));
   for (PetscInt i = 0; i < k * k; i++) big = PetscMax(big, PetscAbsScalar(S[i]));
-  for (PetscInt c = 0; c < k; c++) {
-    PetscInt p = c;
-    for (PetscInt r = c + 1; r < k; r++)
-      if (PetscAbsScalar(S[r + c * k]) > PetscAbsScalar(S[p + c * k])) p = r;
-    PetscCheck(PetscAbsScalar(S[p + c * k]) > 1e-14 * big, comm, PETSC_ERR_MAT_LU_ZRPVT, "flow: the bordered system of the area/volume/point constraints is singular: are the constraints dependent (e.g. area + volume + points fixing the same thing)?");
-    if (p != c) {
-      for (PetscInt j = 0; j < k; j++) {
-        PetscScalar tmp = S[c + j * k];
-        S[c + j * k]    = S[p + j * k];
-        S[p + j * k]    = tmp;
-      }
-      PetscScalar tb = b[c];
-      b[c]           = b[p];
-      b[p]           = tb;
-    }
-    for (PetscInt r = c + 1; r < k; r++) {
-      PetscScalar f = S[r + c * k] / S[c + c * k];
-      for (PetscInt j = c; j < k; j++) S[r + j * k] -= f * S[c + j * k];
-      b[r] -= f * b[c];
-    }
-  }
-  for (PetscInt c = k - 1; c >= 0; c--) {
-    for (PetscInt j = c + 1; j < k; j++) b[c] -= S[c + j * k] * b[j];
-    b[c] /= S[c + c * k];
-  }
+  PetscCallBLAS("LAPACKgetrf", LAPACKgetrf_(&n, &n, S, &n, ipiv, &info));
+  PetscCheck(info >= 0, comm, PETSC_ERR_LIB, "flow: LAPACK getrf argument %d is invalid", (int)-info);
+  small = big;
+  for (PetscInt c = 0; c < k; c++) small = PetscMin(small, PetscAbsScalar(S[c + c * k]));
+  PetscCheck(info == 0 && small > 1e-14 * big, comm, PETSC_ERR_MAT_LU_ZRPVT, "flow: the bordered system of the area/volume/point constraints is singular: are the constraints dependent (e.g. area + volume + points fixing the same thing)?");
+  PetscCallBLAS("LAPACKgetrs", LAPACKgetrs_("N", &n, &one, S, &n, ipiv, b, &n, &info));
+  PetscCheck(info == 0, comm, PETSC_ERR_LIB, "flow: LAPACK getrs failed (info %d)", (int)info);
   PetscFunctionReturn(0);
 }
 

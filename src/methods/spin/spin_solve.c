@@ -138,7 +138,7 @@ static PetscErrorCode BuildBoundaryMap(CSSpin s, Vec x)
   PetscCall(DMRestoreGlobalVector(s->dmr, &g));
   PetscCall(MatCreateAIJ(mesh->comm, nrow, ncol, PETSC_DETERMINE, PETSC_DETERMINE, 4, NULL, 0, NULL, &s->P));
   PetscCall(DMCreateGlobalVector(mesh->dmV3, &T));
-  PetscCall(CSSpinBoundaryTangents(mesh, x, T));
+  PetscCall(CSGeometryBoundaryTangents(mesh, x, T));
   PetscCall(DMGetLocalVector(mesh->dmV3, &Tl));
   PetscCall(DMGetLocalVector(mesh->dmV3, &Ttl));
   PetscCall(DMGlobalToLocal(mesh->dmV3, T, INSERT_VALUES, Tl));

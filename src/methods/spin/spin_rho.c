@@ -94,14 +94,6 @@ static PetscErrorCode AddMeanCurvature(CSMesh mesh, Vec x, PetscReal s, Vec rho)
   PetscFunctionReturn(0);
 }
 
-/* Kept for spin_solve.c until it calls CSGeometryBoundaryTangents (crane2011 Sec. 5.7) itself. */
-PetscErrorCode CSSpinBoundaryTangents(CSMesh mesh, Vec x, Vec T)
-{
-  PetscFunctionBeginUser;
-  PetscCall(CSGeometryBoundaryTangents(mesh, x, T));
-  PetscFunctionReturn(0);
-}
-
 /* crane2011 Sec. 7.2: per face the best-fit similarity S = sqrt(det Y) A2^{-1} R A1 (B = R Y the polar
    decomposition of the planar map), as a quaternion l with conj(l) v l = S v, averaged to vertices with the
    source face areas. The sign of l is chosen with l_w >= 0 (rotation angles <= pi), so that neighbouring faces
