@@ -93,7 +93,7 @@ PETSC_EXTERN PetscErrorCode CSSpinSpectrum(CSSpin spin, Vec x, CSRhoLocation loc
    only a positive scale when rotation_too is false (prescribed boundary tangents must not turn). */
 PETSC_EXTERN PetscErrorCode CSSpinNormalize(CSSpin spin, Vec lambda, Vec mu, PetscBool rotation_too);
 /* New positions from Eq. 8 and the Poisson problem; the translation is fixed by matching the vertex mean of
-   xcenter (or pinning one vertex at its position in xcenter with -spin_poisson_pin). */
+   xcenter (or pinning one vertex at its position in xcenter with -spin_pin_vertex). */
 PETSC_EXTERN PetscErrorCode CSSpinReconstruct(CSSpin spin, Vec x, Vec lambda, Vec xcenter, Vec xnew);
 /* Scale xnew about its vertex mean to the area of xref (a painted rho fixes the shape, not its size). */
 PETSC_EXTERN PetscErrorCode CSSpinRestoreArea(CSSpin spin, Vec xref, Vec xnew);

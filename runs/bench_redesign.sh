@@ -26,7 +26,7 @@ trap 'rm -rf "$T"' EXIT
 
 CGD_OLD="-task flow -gen icosphere -gen_level 5 -flow_init_bump 0.2 -flow_init_stretch 1.5,1,0.8 -flow_max_it 5 -flow_rtol 0"
 CGD_NEW="-task flow -gen icosphere -gen_level 5 -gen_deform_bump 0.2 -gen_deform_stretch 1.5,1,0.8 -flow_max_it 5 -flow_rtol 0"
-SPIN="-task spin -gen torus -gen_n 64 -gen_m 64 -rho_bump_center 3,0,0 -rho_bump_radius 0.5 -rho_bump_height 3"
+SPIN="-task spin -gen torus -gen_n 64 -gen_m 64 -rho_bump_center 1.4,0,0 -rho_bump_radius 0.3 -rho_bump_height 3"
 BS="-task flow -flow_type bs -mesh meshes/bunny_closed_cgal.obj -bs_max_it 3"
 INFO="-task info -mesh meshes/bunny_closed_cgal.obj"
 

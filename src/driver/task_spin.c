@@ -85,7 +85,7 @@ static PetscErrorCode SpinReport(CSSpin spin, CSMesh mesh, const SpinRun *r, CSO
     PetscCall(VecNorm(d, NORM_INFINITY, &nd));
     PetscCall(CSGeometryAreaVolume(mesh, r->xt, &area, &vol));
     PetscCall(CSJSONAddReal(out->json, "target_distance_max", nd / PetscSqrtReal(area)));
-    PetscCall(PetscPrintf(comm, "spin: max distance to -target_mesh %.3e (relative to sqrt(area))\n", (double)(nd / PetscSqrtReal(area))));
+    PetscCall(PetscPrintf(comm, "spin: max distance to -spin_target_mesh %.3e (relative to sqrt(area))\n", (double)(nd / PetscSqrtReal(area))));
     PetscCall(VecDestroy(&d));
   }
   PetscFunctionReturn(0);

@@ -33,7 +33,7 @@ PetscErrorCode CSMetricCreate(CSMesh mesh, PetscBool h2, CSMetric *m)
 }
 
 /* The product L *0^{-1} L couples two-rings, beyond the closure adjacency of the DM, so it is formed with
-   MatMatMult (PETSC-NOTES), symbolic product reused from the second call on. */
+   MatMatMult (docs/solvers.md), symbolic product reused from the second call on. */
 PetscErrorCode CSMetricUpdate(CSMetric *m, Vec x)
 {
   CSMesh             mesh = m->mesh;

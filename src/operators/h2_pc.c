@@ -4,13 +4,13 @@
    sparse Cholesky handle well (1-ring pattern, unlike the 2-ring I_H2). On the eigenvectors of the generalised
    problem L u = k *0 u the ratio I_H2 / P = (w + k^2) / (s + k)^2 lies in [1/2, 1]: CG converges in a
    mesh-independent number of iterations (10 per flow step at rtol 1e-9, 1280 and 20480 faces: test
-   willmore_h2pc; PETSC-NOTES: 7 at levels 5-7 at its tolerance).
+   willmore_h2pc; docs/solvers.md: 7 at levels 5-7 at its tolerance).
    The complex factorisation the issue mentions, I_H2 = (L + i s *0) *0^{-1} (L - i s *0), would give I_H2^{-1}
    exactly but needs complex arithmetic (this PETSc is real); P is its real-arithmetic counterpart.
    The PC reads the metric from the operator: CSMetricUpdate composes it on the assembled H ("CSMetric"), and
    CSH2PCCompose on any scaled copy (H / t in the saddle solver). Dirichlet rows (identity rows of the operator)
    are passed through with the operator's diagonal. Inner solver: KSP with prefix <pc prefix>h2_ (default
-   Cholesky: MUMPS, CHOLMOD serially; e.g. -flow_h2_pc_type hypre for one AMG cycle per solve). */
+   Cholesky: MUMPS, CHOLMOD serially; e.g. -flow_saddle_h2_pc_type hypre for one AMG cycle per solve). */
 #include <petsc/private/pcimpl.h> /* a PC type of our own: the documented way (PCRegister) */
 #include "cs_operators_conformal.h"
 #include "cs_cholmod.h"

@@ -14,6 +14,6 @@ nothing_written() { if [ -e "$TMP/o.obj" ] || [ -e "$TMP/s.json" ]; then echo "B
 run() { timeout 60 $MPIEXEC "$CS_BIN" -task spin -mesh "$TMP/in.obj" -o "$TMP/o.obj" -summary "$TMP/s.json" "$@"; }
 EXPECT="-rho .*short.txt.*161 values, expected 162" expect_fail run -rho "$TMP/short.txt"; nothing_written
 EXPECT="-rho .*nan.txt.*line 18.*NaN" expect_fail run -rho "$TMP/nan.txt"; nothing_written
-EXPECT="-target_mesh.*small.obj.*connectivity" expect_fail run -target_mesh "$TMP/small.obj"; nothing_written
+EXPECT="-spin_target_mesh.*small.obj.*connectivity" expect_fail run -spin_target_mesh "$TMP/small.obj"; nothing_written
 EXPECT="did not converge.*-spin_eps_max_it" expect_fail run -rho_bump_center 0,0,1 -spin_st_type shift -spin_eps_max_it 2; nothing_written
 EXPECT="-spin_boundary keep: mesh .* has no boundary" expect_fail run -spin_boundary keep; nothing_written

@@ -17,6 +17,6 @@ identity() { # label mesh options...
   d=$(python3 $P rigid "$mesh" "$TMP/out.obj"); check_close "$d" 0 1e-8 "$label: distance to the input"
 }
 identity "sphere, EPS" "$TMP/in.obj"
-identity "sphere, inverse iteration, pinned" "$TMP/in.obj" -spin_solver inverse -spin_poisson_pin
+identity "sphere, inverse iteration, pinned" "$TMP/in.obj" -spin_solver inverse -spin_pin_vertex
 identity "disk, default boundary condition (kept tangents)" "$TMP/disk.obj"
 identity "disk, kept boundary tangents" "$TMP/disk.obj" -spin_boundary keep

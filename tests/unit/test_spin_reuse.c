@@ -1,6 +1,6 @@
 /* Repeated solves with one CSSpin (the pattern of a flow, crane2013 Sec. 6.4.2): a second rho after a first
    one, with (a) EPS reusing its objects and (b) inverse iteration keeping the first factorisation as the
-   preconditioner of the new operator (-spin_inverse_keep_factor) and starting from the previous eigenvector.
+   preconditioner of the new operator (-spin_keep_inverse_factor) and starting from the previous eigenvector.
    Both must give the eigenvalue of a fresh solve. Exit status = number of failures.
    Run: build/tests/test_spin_reuse   (also under mpirun -n 2) */
 #include <slepcsys.h>
@@ -48,8 +48,8 @@ static PetscErrorCode TwoSolves(CSMesh mesh, const char opts[], PetscReal h1, Pe
   PetscCall(VecDestroy(&lambda));
   PetscCall(CSSpinDestroy(&spin));
   PetscCall(PetscOptionsClearValue(NULL, "-spin_solver"));
-  PetscCall(PetscOptionsClearValue(NULL, "-spin_inverse_its"));
-  PetscCall(PetscOptionsClearValue(NULL, "-spin_inverse_keep_factor"));
+  PetscCall(PetscOptionsClearValue(NULL, "-spin_iterations"));
+  PetscCall(PetscOptionsClearValue(NULL, "-spin_keep_inverse_factor"));
   PetscFunctionReturn(0);
 }
 
@@ -75,7 +75,7 @@ int main(int argc, char **argv)
   PetscCall(TwoSolves(mesh, "", 0, 2.2, &fresh));
   PetscCall(TwoSolves(mesh, "", 2.0, 2.2, &eps2));
   PetscCall(Check(comm, "EPS, second solve with the same objects", eps2, fresh, 1e-9));
-  PetscCall(TwoSolves(mesh, "-spin_solver inverse -spin_inverse_its 4 -spin_inverse_keep_factor", 2.0, 2.2, &inv2));
+  PetscCall(TwoSolves(mesh, "-spin_solver inverse -spin_iterations 4 -spin_keep_inverse_factor", 2.0, 2.2, &inv2));
   PetscCall(Check(comm, "inverse iteration with the kept factorisation", inv2, fresh, 1e-6));
   PetscCall(CSMeshDestroy(&mesh));
   PetscCall(PetscPrintf(comm, "%" PetscInt_FMT " failure(s)\n", nfail));

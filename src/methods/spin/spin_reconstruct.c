@@ -80,7 +80,7 @@ PetscErrorCode CSSpinReconstruct(CSSpin s, Vec x, Vec lambda, Vec xcenter, Vec x
   /* L has the constants in its kernel and b _|_ 1 (every edge adds +-w e~): the system is consistent. Solve it
      with the first global vertex pinned at 0 (row and column 0 replaced by the identity), which keeps every
      other equation and makes the matrix SPD for any solver (CG + AMG, or a Cholesky factorisation), then place
-     the translation: vertex mean of xcenter (default) or vertex 0 at its xcenter position (-spin_poisson_pin). */
+     the translation: vertex mean of xcenter (default) or vertex 0 at its xcenter position (-spin_pin_vertex). */
   PetscCall(CSOperatorLaplacian(mesh, x, s->L ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX, &s->L));
   PetscCall(MatZeroRowsColumns(s->L, rank ? 0 : 1, &row, 1.0, NULL, NULL));
   if (!s->kpois) {

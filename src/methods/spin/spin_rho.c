@@ -168,7 +168,7 @@ PetscErrorCode CSSpinBestFitSimilarities(CSSpin spin, Vec x, Vec xt, Vec mu)
   PetscCall(VecRestoreArrayRead(w, &wg));
   PetscCall(VecDestroy(&w));
   PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &nflip, 1, MPIU_INT, MPI_SUM, mesh->comm));
-  if (nflip) PetscCall(PetscPrintf(mesh->comm, "Warning: -target_mesh: %" PetscInt_FMT " face(s) are flipped (orientation-reversing map); their similarity uses |det|\n", nflip));
+  if (nflip) PetscCall(PetscPrintf(mesh->comm, "Warning: -spin_target_mesh: %" PetscInt_FMT " face(s) are flipped (orientation-reversing map); their similarity uses |det|\n", nflip));
   PetscFunctionReturn(0);
 }
 
@@ -216,15 +216,15 @@ PetscErrorCode CSSpinRhoFromOptions(CSSpin spin, Vec x, CSRhoLocation *loc, Vec 
   PetscCall(PetscOptionsReal("-rho_bump_radius", "Bump radius", NULL, radius, &radius, NULL));
   PetscCall(PetscOptionsReal("-rho_bump_height", "Bump height", NULL, height, &height, NULL));
   PetscCall(PetscOptionsReal("-rho_mean_curvature", "rho += s H (s = -1: minimal surface, crane2011 Sec. 7.3)", NULL, hs, &hs, &hash));
-  PetscCall(PetscOptionsString("-target_mesh", "Nearest spin transformation of this deformation (same connectivity; crane2011 Sec. 7.2)", NULL, target, target, sizeof(target), &hastarget));
+  PetscCall(PetscOptionsString("-spin_target_mesh", "Nearest spin transformation of this deformation (same connectivity; crane2011 Sec. 7.2)", NULL, target, target, sizeof(target), &hastarget));
   PetscOptionsEnd();
   if (!hasbump) nc = 0;
   PetscCheck(nc % 3 == 0, mesh->comm, PETSC_ERR_ARG_WRONG, "-rho_bump_center: %" PetscInt_FMT " numbers; need x,y,z triples", nc);
   PetscCheck(radius > 0, mesh->comm, PETSC_ERR_ARG_OUTOFRANGE, "-rho_bump_radius %g: must be positive", (double)radius);
-  PetscCheck(!(hastarget && (hasfile || nc || hash)), mesh->comm, PETSC_ERR_ARG_INCOMP, "-target_mesh computes rho itself (crane2011 Sec. 7.2): do not combine it with -rho, -rho_bump_center or -rho_mean_curvature");
+  PetscCheck(!(hastarget && (hasfile || nc || hash)), mesh->comm, PETSC_ERR_ARG_INCOMP, "-spin_target_mesh computes rho itself (crane2011 Sec. 7.2): do not combine it with -rho, -rho_bump_center or -rho_mean_curvature");
   PetscCheck(!(hasfile && iloc == 1 && (nc || hash)), mesh->comm, PETSC_ERR_ARG_INCOMP, "-rho_location face cannot be combined with the per-vertex -rho_bump_center/-rho_mean_curvature");
   if (hastarget) {
-    PetscCall(CSMeshLoadCompatiblePositions(mesh, "-target_mesh", target, xtarget));
+    PetscCall(CSMeshLoadCompatiblePositions(mesh, "-spin_target_mesh", target, xtarget));
     PetscCall(DMCreateGlobalVector(spin->dm, mu));
     PetscCall(CSSpinBestFitSimilarities(spin, x, *xtarget, *mu));
     PetscCall(DMCreateGlobalVector(mesh->dmF1, rho));
@@ -279,7 +279,7 @@ PetscErrorCode CSSpinBoundaryFromOptions(CSSpin spin, Vec xtarget, Vec *Tt)
     PetscCall(ReadField(mesh, "-spin_boundary_file", file, 0, 3, "3 per vertex in file order", *Tt));
     break;
   case CS_SPIN_BOUNDARY_TARGET:
-    PetscCheck(xtarget, mesh->comm, PETSC_ERR_ARG_WRONG, "-spin_boundary target needs -target_mesh FILE");
+    PetscCheck(xtarget, mesh->comm, PETSC_ERR_ARG_WRONG, "-spin_boundary target needs -spin_target_mesh FILE");
     PetscCall(DMCreateGlobalVector(mesh->dmV3, Tt));
     PetscCall(CSGeometryBoundaryTangents(mesh, xtarget, *Tt));
     break;

@@ -43,12 +43,12 @@ PetscErrorCode CSSpinSetFromOptions(CSSpin s)
   PetscCall(PetscOptionsEList("-spin_problem", "Eigenvalue problem: standard (Eq. 7) or generalized (Eq. 6)", NULL, problems, 2, problems[ip], &ip, NULL));
   PetscCall(PetscOptionsEList("-spin_dirac_type", "Dirac operator: assembled AIJ (block size 4) or matrix-free shell", NULL, types, 2, types[it], &it, NULL));
   PetscCall(PetscOptionsEList("-spin_solver", "Smallest eigenpair: EPS preconditioned by the scalar Laplacian (Davidson), EPS with shift-and-invert (a factorisation of K - sigma), or inverse iteration", NULL, solvers, 3, solvers[is], &is, &solver_set));
-  PetscCall(PetscOptionsInt("-spin_inverse_its", "Inverse iteration steps", NULL, s->inverse_its, &s->inverse_its, NULL));
-  PetscCall(PetscOptionsBool("-spin_inverse_keep_factor", "Inverse iteration: keep the first factorisation as preconditioner for later solves", NULL, s->keep_factor, &s->keep_factor, NULL));
+  PetscCall(PetscOptionsInt("-spin_iterations", "Inverse iteration steps", NULL, s->inverse_its, &s->inverse_its, NULL));
+  PetscCall(PetscOptionsBool("-spin_keep_inverse_factor", "Inverse iteration: keep the first factorisation as preconditioner for later solves", NULL, s->keep_factor, &s->keep_factor, NULL));
   PetscCall(PetscOptionsReal("-spin_shift", "Shift toward 0 (negative target), in units of the unit sphere's spectrum", NULL, s->target, &s->target, &s->target_set));
   PetscCall(PetscOptionsReal("-spin_lap_shift", "-spin_solver precond: the mass shift c of L + c M, in units of 4 pi / area", NULL, s->lap_shift, &s->lap_shift, NULL));
-  PetscCall(PetscOptionsBool("-spin_poisson_pin", "Fix the translation by pinning the first vertex instead of matching the mean", NULL, s->pin, &s->pin, NULL));
-  PetscCall(PetscOptionsEList("-spin_boundary", "Boundary condition (Sec. 5.7): none (free), keep tangents, tangents from -spin_boundary_file, or from -target_mesh", NULL, bnames, 4, bnames[ib], &ib, NULL));
+  PetscCall(PetscOptionsBool("-spin_pin_vertex", "Fix the translation by pinning the first vertex instead of matching the mean", NULL, s->pin, &s->pin, NULL));
+  PetscCall(PetscOptionsEList("-spin_boundary", "Boundary condition (Sec. 5.7): none (free), keep tangents, tangents from -spin_boundary_file, or from -spin_target_mesh", NULL, bnames, 4, bnames[ib], &ib, NULL));
   PetscOptionsEnd();
   s->generalized = (PetscBool)(ip == 1);
   s->shell       = (PetscBool)(it == 1);
@@ -65,7 +65,7 @@ PetscErrorCode CSSpinSetFromOptions(CSSpin s)
   s->quat_factor = (PetscBool)(size == 1 && !s->generalized && s->boundary == CS_SPIN_BOUNDARY_NONE && !s->shell);
   PetscCheck(!(s->scalar_pc && s->generalized), s->mesh->comm, PETSC_ERR_SUP, "-spin_solver precond supports only -spin_problem standard");
   PetscCheck(!(s->scalar_pc && s->boundary != CS_SPIN_BOUNDARY_NONE), s->mesh->comm, PETSC_ERR_SUP, "-spin_solver precond does not support -spin_boundary (use -spin_solver sinvert)");
-  PetscCheck(s->inverse_its >= 1, s->mesh->comm, PETSC_ERR_ARG_OUTOFRANGE, "-spin_inverse_its %" PetscInt_FMT ": need at least 1", s->inverse_its);
+  PetscCheck(s->inverse_its >= 1, s->mesh->comm, PETSC_ERR_ARG_OUTOFRANGE, "-spin_iterations %" PetscInt_FMT ": need at least 1", s->inverse_its);
   PetscCheck(s->target > 0, s->mesh->comm, PETSC_ERR_ARG_OUTOFRANGE, "-spin_shift %g: must be positive (the target is -shift)", (double)s->target);
   PetscCheck(!(s->shell && s->generalized), s->mesh->comm, PETSC_ERR_SUP, "-spin_dirac_type shell supports only -spin_problem standard");
   PetscCheck(!(s->shell && s->inverse), s->mesh->comm, PETSC_ERR_SUP, "-spin_dirac_type shell needs -spin_solver eps (inverse iteration factors the assembled matrix)");

@@ -4,7 +4,7 @@
 /* PGD projection onto the constraint set (soliman2021 Sec. 4.1: the explicit step leaves the nonlinear
    constraint manifold): Gauss-Newton steps, each the minimal-H^2-norm correction dx with X dx = -c,
    solved as the saddle system with t = 1 and a huge t_mu (the -I_Q/t_mu block only regularises the
-   rank deficiency of X, PETSC-NOTES). */
+   rank deficiency of X, docs/solvers.md). */
 PetscErrorCode CSWFProject(CSWillmoreFlow F, Vec x, PetscBool *ok, PetscInt *kspits)
 {
   PetscReal conf, glob;

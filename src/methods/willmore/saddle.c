@@ -238,7 +238,7 @@ static PetscErrorCode ConfigureKSP(CSSaddle *s, Vec iq, PetscReal tmu, Mat X)
 static PetscErrorCode ReuseOrRebuild(CSSaddle *s, Vec iq, PetscReal tmu, Mat X)
 {
   PetscFunctionBeginUser;
-  /* an earlier factorisation is a strong preconditioner for the slightly changed matrix (PETSC-NOTES). To
+  /* an earlier factorisation is a strong preconditioner for the slightly changed matrix (docs/solvers.md). To
      keep it, S is left as it is (the Schur sub-solver refactors whenever S changes). Reuse while the last
      solve was cheap; after a failed attempt (more than reuse_its iterations with the kept factorisation)
      take 1, 2, 4, ... 16 fresh steps before trying again: early in a run the surface changes fast and every
