@@ -56,6 +56,7 @@ PETSC_EXTERN PetscErrorCode CSWillmoreFlowCreate(CSMesh mesh, CSWillmoreFlow *fl
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowSetType(CSWillmoreFlow flow, CSWillmoreFlowType type);
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetType(CSWillmoreFlow flow, CSWillmoreFlowType *type);
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowSetOptionsPrefix(CSWillmoreFlow flow, const char prefix[]);
+PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetOptionsPrefix(CSWillmoreFlow flow, const char *prefix[]);
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowSetTolerances(CSWillmoreFlow flow, PetscReal rtol, PetscReal ctol, PetscInt max_it);
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowSetFromOptions(CSWillmoreFlow flow);
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowSetUp(CSWillmoreFlow flow);

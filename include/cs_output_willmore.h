@@ -10,10 +10,15 @@
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowMonitorProgressSet(CSWillmoreFlow flow);
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowMonitorHistorySet(CSWillmoreFlow flow, CSOutput *out);
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowMonitorCheckpointSet(CSWillmoreFlow flow, CSOutput *out);
+/* The ParaView series of -viewer_dir: with every > 0 a step every `every` iterations (a monitor), and the
+   final state (CSWillmoreFlowViewerFinish, after Solve); *wv = NULL without -viewer_dir. */
+typedef struct _n_CSWillmoreViewer *CSWillmoreViewer;
+PETSC_EXTERN PetscErrorCode CSWillmoreFlowMonitorViewerSet(CSWillmoreFlow flow, CSOutput *out, PetscInt every, CSWillmoreViewer *wv);
+PETSC_EXTERN PetscErrorCode CSWillmoreFlowViewerFinish(CSWillmoreFlow flow, CSWillmoreViewer *wv);
 /* After SetUp, before Solve: with -resume, the state of the checkpoint. */
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowResume(CSWillmoreFlow flow, CSOutput *out);
 /* After Solve: the last accepted state's checkpoint (with -checkpoint), the final line, the summary keys,
-   -viewer_dir, -o and -summary. */
+   -o and -summary. */
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowReport(CSWillmoreFlow flow, CSOutput *out);
 
 #endif

@@ -1,5 +1,5 @@
 /* The end of a Willmore flow run: the final checkpoint, the final line and the summary keys (unchanged since
-   before the flow was an object), then ParaView output, mesh facts, -o and -summary. */
+   before the flow was an object), then mesh facts, -o and -summary (the ParaView series: willmore_viewer.c). */
 #include "cs_output_willmore.h"
 
 PETSC_INTERN PetscErrorCode CSWillmoreFlowCheckpointFinal(CSWillmoreFlow flow, CSOutput *out);
@@ -53,12 +53,6 @@ PetscErrorCode CSWillmoreFlowReport(CSWillmoreFlow flow, CSOutput *out)
   PetscCall(CSWillmoreFlowGetInitial(flow, &x0));
   PetscCall(PetscPrintf(mesh->comm, "flow %s: %s after %" PetscInt_FMT " iterations (%" PetscInt_FMT " rejected steps, %" PetscInt_FMT " KSP iterations, %" PetscInt_FMT " edges with guarded I_Q weight), %.3f s\n", type, reason == CS_WILLMORE_FLOW_CONVERGED_RTOL ? "converged" : "NOT converged", i.it, i.rejections, i.ksp_its_total, i.nguard, i.seconds));
   PetscCall(SummaryKeys(flow, out, &i));
-  if (out->has_viewer) {
-    CSViewer v;
-    PetscCall(CSViewerCreate(mesh, out->viewer_dir, &v));
-    PetscCall(CSViewerWriteStep(v, x, (PetscReal)i.it));
-    PetscCall(CSViewerDestroy(&v));
-  }
   PetscCall(CSOutputAddMeshFacts(out, mesh, x, x0));
   PetscCall(CSOutputFinish(out, mesh, x));
   PetscFunctionReturn(0);

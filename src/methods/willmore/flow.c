@@ -105,6 +105,13 @@ PetscErrorCode CSWillmoreFlowSetOptionsPrefix(CSWillmoreFlow F, const char prefi
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode CSWillmoreFlowGetOptionsPrefix(CSWillmoreFlow F, const char *prefix[])
+{
+  PetscFunctionBeginUser;
+  *prefix = F->prefix;
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode CSWillmoreFlowMonitorSet(CSWillmoreFlow F, CSWillmoreFlowMonitorFn fn, void *ctx, PetscErrorCode (*destroy)(void **))
 {
   PetscFunctionBeginUser;

@@ -9,16 +9,13 @@ static PetscErrorCode SetUpGD(CSWillmoreFlow F)
   PetscFunctionReturn(0);
 }
 
+/* The CGD step and its step control, without the conformal constraint. */
 PetscErrorCode CSWillmoreFlowCreate_GD(CSWillmoreFlow F)
 {
   PetscFunctionBeginUser;
+  PetscCall(CSWillmoreFlowCreate_CGD(F));
   F->ops.id        = 2;
   F->ops.conformal = PETSC_FALSE;
   F->ops.setup     = SetUpGD;
-  F->ops.trial     = CSWFTrialCGD;
-  F->ops.filter    = CSWFFilterLagrangian;
-  F->ops.accept    = CSWFAcceptCGD;
-  F->ops.grow      = CSWFGrowCGD;
-  F->ops.shrink    = CSWFShrinkCGD;
   PetscFunctionReturn(0);
 }
