@@ -84,11 +84,15 @@ PETSC_EXTERN PetscErrorCode CSBSFlowGetSolution(CSBSFlow flow, Vec *x); /* the c
 PETSC_EXTERN PetscErrorCode CSBSFlowGetInitialSolution(CSBSFlow flow, Vec *x0); /* before -bs_perturb */
 PETSC_EXTERN PetscErrorCode CSBSFlowGetMesh(CSBSFlow flow, CSMesh *mesh);
 PETSC_EXTERN PetscErrorCode CSBSFlowGetEnergy(CSBSFlow flow, CSEnergy *bs); /* the circle-angle energy */
-PETSC_EXTERN PetscErrorCode CSBSFlowGetEnergyValue(CSBSFlow flow, PetscReal *W);
-PETSC_EXTERN PetscErrorCode CSBSFlowGetIterationNumber(CSBSFlow flow, PetscInt *it);
-PETSC_EXTERN PetscErrorCode CSBSFlowGetRejectedSteps(CSBSFlow flow, PetscInt *rejected);
-PETSC_EXTERN PetscErrorCode CSBSFlowGetTimeStep(CSBSFlow flow, PetscReal *dt);
-PETSC_EXTERN PetscErrorCode CSBSFlowGetBoundary(CSBSFlow flow, CSBSBoundary *bc, PetscInt *nfixed);
+/* The state of the run: accepted steps, consecutive rejections, W, the current time step, the boundary
+   condition and its number of fixed vertices. */
+typedef struct {
+  PetscInt     it, rejected;
+  PetscReal    W, dt;
+  CSBSBoundary bc;
+  PetscInt     nfixed;
+} CSBSFlowInfo;
+PETSC_EXTERN PetscErrorCode CSBSFlowGetInfo(CSBSFlow flow, CSBSFlowInfo *info);
 /* "semi", "tao_static" or "tao_euler" */
 PETSC_EXTERN PetscErrorCode CSBSFlowGetSchemeName(CSBSFlow flow, const char *name[]);
 /* Wall time of the stepping (with the first assembly of K and grad W), continued across a resume. */

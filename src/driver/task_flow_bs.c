@@ -29,34 +29,28 @@ static PetscErrorCode SetMonitors(CSBSFlow flow, CSOutput *out)
 static PetscErrorCode Report(CSBSFlow flow, CSMesh mesh, CSOutput *out)
 {
   CSBSConvergedReason reason;
-  CSBSBoundary        bc;
-  PetscInt            it, rej, nfixed;
-  PetscReal           W, dt;
+  CSBSFlowInfo        i;
   PetscLogDouble      t;
   const char         *scheme;
   Vec                 x;
   PetscFunctionBeginUser;
   PetscCall(CSBSFlowGetConvergedReason(flow, &reason));
-  PetscCall(CSBSFlowGetIterationNumber(flow, &it));
-  PetscCall(CSBSFlowGetRejectedSteps(flow, &rej));
-  PetscCall(CSBSFlowGetEnergyValue(flow, &W));
-  PetscCall(CSBSFlowGetTimeStep(flow, &dt));
+  PetscCall(CSBSFlowGetInfo(flow, &i));
   PetscCall(CSBSFlowGetStepSeconds(flow, &t));
   PetscCall(CSBSFlowGetSchemeName(flow, &scheme));
-  PetscCall(CSBSFlowGetBoundary(flow, &bc, &nfixed));
   PetscCall(CSBSFlowGetSolution(flow, &x));
-  PetscCall(PetscPrintf(mesh->comm, "bs flow: %s after %" PetscInt_FMT " steps (%" PetscInt_FMT " rejected), willmore_bs=%.12g, %.3g s per step\n", reason > 0 ? "converged" : "NOT converged", it, rej, (double)W, (double)(it + rej ? t / (it + rej) : 0)));
+  PetscCall(PetscPrintf(mesh->comm, "bs flow: %s after %" PetscInt_FMT " steps (%" PetscInt_FMT " rejected), willmore_bs=%.12g, %.3g s per step\n", reason > 0 ? "converged" : "NOT converged", i.it, i.rejected, (double)i.W, (double)(i.it + i.rejected ? t / (i.it + i.rejected) : 0)));
   PetscCall(CSOutputAddMeshFacts(out, mesh, x, mesh->x));
-  PetscCall(CSJSONAddReal(out->json, "willmore_bs", W));
-  PetscCall(CSJSONAddInt(out->json, "iterations", it));
+  PetscCall(CSJSONAddReal(out->json, "willmore_bs", i.W));
+  PetscCall(CSJSONAddInt(out->json, "iterations", i.it));
   PetscCall(CSJSONAddBool(out->json, "converged", (PetscBool)(reason > 0)));
   PetscCall(CSJSONAddString(out->json, "stop_reason", CSBSConvergedReasons[reason]));
-  PetscCall(CSJSONAddInt(out->json, "rejected", rej));
-  PetscCall(CSJSONAddInt(out->json, "fixed_vertices", nfixed));
-  PetscCall(CSJSONAddReal(out->json, "dt_final", dt));
-  PetscCall(CSJSONAddReal(out->json, "seconds_per_step", it + rej ? (PetscReal)t / (it + rej) : 0));
+  PetscCall(CSJSONAddInt(out->json, "rejected", i.rejected));
+  PetscCall(CSJSONAddInt(out->json, "fixed_vertices", i.nfixed));
+  PetscCall(CSJSONAddReal(out->json, "dt_final", i.dt));
+  PetscCall(CSJSONAddReal(out->json, "seconds_per_step", i.it + i.rejected ? (PetscReal)t / (i.it + i.rejected) : 0));
   PetscCall(CSJSONAddString(out->json, "scheme", scheme));
-  PetscCall(CSJSONAddString(out->json, "boundary", CSBSBoundaries[bc]));
+  PetscCall(CSJSONAddString(out->json, "boundary", CSBSBoundaries[i.bc]));
   PetscCall(CSOutputFinish(out, mesh, x));
   PetscFunctionReturn(0);
 }

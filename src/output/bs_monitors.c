@@ -69,14 +69,14 @@ static PetscErrorCode HistoryDestroy(void **ctx)
 PetscErrorCode CSBSFlowMonitorSetHistory(CSBSFlow flow, CSOutput *out)
 {
   HistoryCtx *H;
-  CSMesh      mesh;
-  PetscInt    it;
+  CSMesh       mesh;
+  CSBSFlowInfo i;
   PetscFunctionBeginUser;
   if (!out->has_history) PetscFunctionReturn(0);
   PetscCall(CSBSFlowGetMesh(flow, &mesh));
-  PetscCall(CSBSFlowGetIterationNumber(flow, &it));
+  PetscCall(CSBSFlowGetInfo(flow, &i));
   PetscCall(PetscNew(&H));
-  PetscCall(CSOutputHistoryCreate(out, mesh->comm, "it,willmore_bs,willmore,area,dt,ksp_its,seconds", it + 1, &H->hist));
+  PetscCall(CSOutputHistoryCreate(out, mesh->comm, "it,willmore_bs,willmore,area,dt,ksp_its,seconds", i.it + 1, &H->hist));
   PetscCall(CSEnergyCreateWillmore(mesh, &H->will));
   PetscCall(CSBSFlowMonitorSet(flow, MonitorHistory, H, HistoryDestroy));
   PetscFunctionReturn(0);

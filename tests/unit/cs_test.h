@@ -45,4 +45,29 @@ PETSC_UNUSED static PetscErrorCode CSTestDistribute(MPI_Comm comm, CSMeshData *m
   PetscFunctionReturn(0);
 }
 
+/* The meshes of the unit tests: generated on rank 0 (a = level, n or rings; b = m), then CSTestDistribute. */
+typedef enum { CS_TEST_ICOSPHERE, CS_TEST_ICOSAHEDRON, CS_TEST_TORUS, CS_TEST_CYLINDER, CS_TEST_DISK } CSTestShape;
+typedef struct {
+  CSTestShape shape;
+  PetscInt    a, b;
+  PetscReal   R, r;
+} CSTestMeshSpec;
+
+PETSC_UNUSED static PetscErrorCode CSTestMesh(MPI_Comm comm, CSTestMeshSpec s, PetscReal amp, unsigned long seed, CSMesh *mesh)
+{
+  CSMeshData  md;
+  PetscMPIInt rank;
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCall(PetscMemzero(&md, sizeof(md)));
+  if (!rank) {
+    if (s.shape == CS_TEST_ICOSPHERE || s.shape == CS_TEST_ICOSAHEDRON) PetscCall(CSMeshDataIcosphere(s.a, 1.0, (PetscBool)(s.shape == CS_TEST_ICOSPHERE), &md));
+    else if (s.shape == CS_TEST_TORUS) PetscCall(CSMeshDataTorus(s.R, s.r, s.a, s.b, &md));
+    else if (s.shape == CS_TEST_CYLINDER) PetscCall(CSMeshDataCylinder(1.0, 2.0, s.a, s.b, &md));
+    else PetscCall(CSMeshDataDisk(1.0, s.a, &md));
+  }
+  PetscCall(CSTestDistribute(comm, &md, amp, seed, mesh));
+  PetscFunctionReturn(0);
+}
+
 #endif

@@ -8,16 +8,10 @@
 /* kind 0: icosphere (projected), 1: disk, 2: linearly subdivided icosahedron */
 static PetscErrorCode MakeMesh(MPI_Comm comm, int kind, PetscInt level, CSMesh *mesh)
 {
-  CSMeshData  md;
-  PetscMPIInt rank;
+  const CSTestShape shapes[] = {CS_TEST_ICOSPHERE, CS_TEST_DISK, CS_TEST_ICOSAHEDRON};
+  CSTestMeshSpec    spec     = {shapes[kind], level, 0, 0, 0};
   PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  PetscCall(PetscMemzero(&md, sizeof(md)));
-  if (!rank) {
-    if (kind == 1) PetscCall(CSMeshDataDisk(1.0, level, &md));
-    else PetscCall(CSMeshDataIcosphere(level, 1.0, kind == 0 ? PETSC_TRUE : PETSC_FALSE, &md));
-  }
-  PetscCall(CSTestDistribute(comm, &md, 0, 0, mesh));
+  PetscCall(CSTestMesh(comm, spec, 0, 0, mesh));
   PetscFunctionReturn(0);
 }
 

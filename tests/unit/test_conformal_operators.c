@@ -13,16 +13,9 @@ static const char help[] = "Checks of the conformal-constraint operators of soli
 
 static PetscErrorCode MakeMesh(MPI_Comm comm, PetscBool torus, PetscReal amp, CSMesh *mesh)
 {
-  CSMeshData  md;
-  PetscMPIInt rank;
+  CSTestMeshSpec ico = {CS_TEST_ICOSPHERE, 2, 0, 0, 0}, tor = {CS_TEST_TORUS, 16, 8, 3, 1};
   PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  PetscCall(PetscMemzero(&md, sizeof(md)));
-  if (!rank) {
-    if (torus) PetscCall(CSMeshDataTorus(3, 1, 16, 8, &md));
-    else PetscCall(CSMeshDataIcosphere(2, 1.0, PETSC_TRUE, &md));
-  }
-  PetscCall(CSTestDistribute(comm, &md, amp, 11, mesh));
+  PetscCall(CSTestMesh(comm, torus ? tor : ico, amp, 11, mesh));
   PetscFunctionReturn(0);
 }
 

@@ -11,28 +11,10 @@ typedef enum { GEN_ICOSPHERE, GEN_TORUS, GEN_CYLINDER, GEN_DISK } Gen;
 
 static PetscErrorCode MakeMesh(MPI_Comm comm, Gen g, PetscInt a, PetscInt b, PetscReal R, PetscReal r, PetscReal amp, CSMesh *mesh)
 {
-  CSMeshData  md;
-  PetscMPIInt rank;
+  const CSTestShape shapes[] = {CS_TEST_ICOSPHERE, CS_TEST_TORUS, CS_TEST_CYLINDER, CS_TEST_DISK};
+  CSTestMeshSpec    spec     = {shapes[g], a, b, R, r};
   PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  PetscCall(PetscMemzero(&md, sizeof(md)));
-  if (!rank) {
-    switch (g) {
-    case GEN_ICOSPHERE:
-      PetscCall(CSMeshDataIcosphere(a, 1.0, PETSC_TRUE, &md));
-      break;
-    case GEN_TORUS:
-      PetscCall(CSMeshDataTorus(R, r, a, b, &md));
-      break;
-    case GEN_CYLINDER:
-      PetscCall(CSMeshDataCylinder(1.0, 2.0, a, b, &md));
-      break;
-    case GEN_DISK:
-      PetscCall(CSMeshDataDisk(1.0, a, &md));
-      break;
-    }
-  }
-  PetscCall(CSTestDistribute(comm, &md, amp, 7, mesh));
+  PetscCall(CSTestMesh(comm, spec, amp, 7, mesh));
   PetscFunctionReturn(0);
 }
 

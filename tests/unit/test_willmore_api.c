@@ -27,16 +27,9 @@ static PetscErrorCode Bump(Vec x, PetscReal a)
 /* a bumped icosphere of level 2, or a coarse torus of revolution R = 3, r = 1 */
 static PetscErrorCode MakeMesh(MPI_Comm comm, PetscBool torus, CSMesh *mesh)
 {
-  CSMeshData  md;
-  PetscMPIInt rank;
+  CSTestMeshSpec ico = {CS_TEST_ICOSPHERE, 2, 0, 0, 0}, tor = {CS_TEST_TORUS, 16, 8, 3, 1};
   PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  PetscCall(PetscMemzero(&md, sizeof(md)));
-  if (!rank) {
-    if (torus) PetscCall(CSMeshDataTorus(3, 1, 16, 8, &md));
-    else PetscCall(CSMeshDataIcosphere(2, 1.0, PETSC_TRUE, &md));
-  }
-  PetscCall(CSTestDistribute(comm, &md, 0, 7, mesh));
+  PetscCall(CSTestMesh(comm, torus ? tor : ico, 0, 7, mesh));
   if (!torus) PetscCall(Bump((*mesh)->x, 0.1));
   PetscFunctionReturn(0);
 }

@@ -36,39 +36,15 @@ PetscErrorCode CSBSFlowGetEnergy(CSBSFlow F, CSEnergy *bs)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CSBSFlowGetEnergyValue(CSBSFlow F, PetscReal *W)
+PetscErrorCode CSBSFlowGetInfo(CSBSFlow F, CSBSFlowInfo *info)
 {
   PetscFunctionBeginUser;
-  *W = F->W;
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSBSFlowGetIterationNumber(CSBSFlow F, PetscInt *it)
-{
-  PetscFunctionBeginUser;
-  *it = F->it;
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSBSFlowGetRejectedSteps(CSBSFlow F, PetscInt *rejected)
-{
-  PetscFunctionBeginUser;
-  *rejected = F->rejected;
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSBSFlowGetTimeStep(CSBSFlow F, PetscReal *dt)
-{
-  PetscFunctionBeginUser;
-  *dt = F->dt;
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSBSFlowGetBoundary(CSBSFlow F, CSBSBoundary *bc, PetscInt *nfixed)
-{
-  PetscFunctionBeginUser;
-  if (bc) *bc = F->bc;
-  if (nfixed) *nfixed = F->nfixed;
+  info->it       = F->it;
+  info->rejected = F->rejected;
+  info->W        = F->W;
+  info->dt       = F->dt;
+  info->bc       = F->bc;
+  info->nfixed   = F->nfixed;
   PetscFunctionReturn(0);
 }
 
