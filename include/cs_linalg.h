@@ -23,4 +23,9 @@ PETSC_EXTERN PetscErrorCode MatGetFactor_SeqAIJ_CSCholmod(Mat, MatFactorType, Ma
 typedef struct _p_CSMatAddMap *CSMatAddMap;
 PETSC_EXTERN PetscErrorCode CSMatAddFixedPattern(Mat Y, PetscScalar a, Mat X, CSMatAddMap *map);
 PETSC_EXTERN PetscErrorCode CSMatAddMapDestroy(CSMatAddMap *map);
+
+/* S = A + shift I for a square SeqAIJ A storing every diagonal entry: S shares A's row structure (and
+   references A), only the values are its own; MAT_REUSE_MATRIX refills them (A's pattern unchanged). The value
+   added to each diagonal entry is exactly MatShift's. */
+PETSC_EXTERN PetscErrorCode CSMatShiftedShared(Mat A, PetscScalar shift, MatReuse reuse, Mat *S);
 #endif
