@@ -15,6 +15,9 @@
 PETSC_EXTERN PetscErrorCode PCCreate_CSSubChol(PC);
 PETSC_EXTERN PetscErrorCode MatGetFactor_SeqAIJ_CSQuat(Mat, MatFactorType, Mat *);
 PETSC_EXTERN PetscErrorCode MatGetFactor_SeqAIJ_CSCholmod(Mat, MatFactorType, Mat *);
+/* a csquat or cscholmod factor F (PCFactorGetMatrix) factors A - shift I for the matrix A it is given: the
+   shift-and-invert of the spin method hands it K itself, no shifted copy (docs/solvers.md, csquat) */
+PETSC_EXTERN PetscErrorCode MatCSQuatFactorSetShift(Mat F, PetscReal shift);
 
 /* Y += a X for AIJ matrices (Seq or MPI, same layout) whose nonzero patterns stay fixed, X's within Y's: the
    position of each of X's entries in Y is found once (*map, created at the first call, freed with

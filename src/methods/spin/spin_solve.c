@@ -333,10 +333,11 @@ PetscErrorCode CSSpinMumpsDefaultOrdering(PC pc, Mat A)
   PetscFunctionReturn(0);
 }
 
-/* Serial Eq. 7 on the full space: shift-and-invert factors K - sigma I made by CSMatShiftedShared (K's row
-   structure, own values) and given to the ST as its preconditioner matrix, the ST's operator being its shell: no
-   MatDuplicate + MatShift of K by ST_MATMODE_COPY (docs/solvers.md, csquat). The values are the same as the
-   copy's, so is the factorisation. */
+/* Serial Eq. 7 on the full space: the ST gets ST_MATMODE_SHELL and a preconditioner matrix instead of forming
+   K - sigma I by MatDuplicate + MatShift (ST_MATMODE_COPY): K itself when the factor is csquat or cscholmod, told
+   the shift (MatCSQuatFactorSetShift: subtracted as the entries are read, as the former PCSHELL did), else
+   K - sigma I from CSMatShiftedShared (K's row structure, own values). Same values, same factorisation, no copy
+   (docs/solvers.md, csquat). */
 static PetscErrorCode UseShiftedPmat(CSSpin s, PetscBool *use)
 {
   PetscMPIInt size;
@@ -348,13 +349,30 @@ static PetscErrorCode UseShiftedPmat(CSSpin s, PetscBool *use)
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode SetShiftedPmat(CSSpin s, ST st)
+/* after EPSSetFromOptions (the target and the solver type are final); again for every new K when Ks is used */
+static PetscErrorCode SetShiftedPmat(CSSpin s, ST st, PC pc)
 {
   PetscReal        tgt;
   PetscObjectId    id;
   PetscObjectState nz;
+  MatSolverType    type = NULL;
+  PetscBool        chol, ours = PETSC_FALSE;
   PetscFunctionBeginUser;
   PetscCall(EPSGetTarget(s->eps, &tgt));
+  PetscCall(PetscObjectTypeCompare((PetscObject)pc, PCCHOLESKY, &chol));
+  if (chol) PetscCall(PCFactorGetMatSolverType(pc, &type));
+  if (type) ours = (PetscBool)(!strcmp(type, MATSOLVERCSQUAT) || !strcmp(type, MATSOLVERCSCHOLMOD));
+  if (ours && !s->Ks) {
+    Mat       F;
+    PetscBool has_op;
+    PetscCall(PCGetOperatorsSet(pc, NULL, &has_op));
+    if (!has_op) PetscCall(PCSetOperators(pc, s->K, s->K));
+    PetscCall(PCFactorSetUpMatSolverType(pc));
+    PetscCall(PCFactorGetMatrix(pc, &F));
+    PetscCall(MatCSQuatFactorSetShift(F, tgt));
+    PetscCall(STSetPreconditionerMat(st, s->K)); /* K = X for the spin object's life (BuildOperators) */
+    PetscFunctionReturn(0);
+  }
   PetscCall(PetscObjectGetId((PetscObject)s->K, &id));
   PetscCall(MatGetNonzeroState(s->K, &nz));
   if (s->Ks && (id != s->ks_id || nz != s->ks_nz)) PetscCall(MatDestroy(&s->Ks)); /* a new K */
@@ -412,13 +430,17 @@ static PetscErrorCode SetupEPS(CSSpin s, Vec x, CSRhoLocation loc, Vec rho, Pets
     PetscCall(EPSSetOperators(s->eps, s->K, s->generalized ? s->Y : NULL));
     if (precond) PetscCall(CSSpinSetUpScalarPC(s, x, loc, rho, pc));
     PetscCall(EPSSetFromOptions(s->eps));
-    if (shifted) PetscCall(SetShiftedPmat(s, st));
     PetscCall(KSPGetPC(ksp, &pc));
+    if (shifted) PetscCall(SetShiftedPmat(s, st, pc));
     PetscCall(CSSpinMumpsDefaultOrdering(pc, s->shell ? s->X : (s->Ks ? s->Ks : s->K))); /* the shell's PC factors a copy of X */
   } else {
     PetscCall(EPSSetOperators(s->eps, s->K, s->generalized ? s->Y : NULL));
     PetscCall(EPSGetST(s->eps, &st));
-    if (!precond && s->Ks) PetscCall(SetShiftedPmat(s, st));
+    if (!precond && s->Ks) {
+      PetscCall(STGetKSP(st, &ksp));
+      PetscCall(KSPGetPC(ksp, &pc));
+      PetscCall(SetShiftedPmat(s, st, pc));
+    }
     if (precond) {
       PetscCall(STGetKSP(st, &ksp));
       PetscCall(KSPGetPC(ksp, &pc));
