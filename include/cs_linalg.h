@@ -15,6 +15,9 @@
 PETSC_EXTERN PetscErrorCode PCCreate_CSSubChol(PC);
 PETSC_EXTERN PetscErrorCode MatGetFactor_SeqAIJ_CSQuat(Mat, MatFactorType, Mat *);
 PETSC_EXTERN PetscErrorCode MatGetFactor_SeqAIJ_CSCholmod(Mat, MatFactorType, Mat *);
+/* a csquat or cscholmod factor F (PCFactorGetMatrix) factors A - shift I for the matrix A it is given: the
+   shift-and-invert of the spin method hands it K itself, no shifted copy (docs/solvers.md, csquat) */
+PETSC_EXTERN PetscErrorCode MatCSQuatFactorSetShift(Mat F, PetscReal shift);
 
 /* Y += a X for AIJ matrices (Seq or MPI, same layout) whose nonzero patterns stay fixed, X's within Y's: the
    position of each of X's entries in Y is found once (*map, created at the first call, freed with
@@ -23,4 +26,9 @@ PETSC_EXTERN PetscErrorCode MatGetFactor_SeqAIJ_CSCholmod(Mat, MatFactorType, Ma
 typedef struct _p_CSMatAddMap *CSMatAddMap;
 PETSC_EXTERN PetscErrorCode CSMatAddFixedPattern(Mat Y, PetscScalar a, Mat X, CSMatAddMap *map);
 PETSC_EXTERN PetscErrorCode CSMatAddMapDestroy(CSMatAddMap *map);
+
+/* S = A + shift I for a square SeqAIJ A storing every diagonal entry: S shares A's row structure (and
+   references A), only the values are its own; MAT_REUSE_MATRIX refills them (A's pattern unchanged). The value
+   added to each diagonal entry is exactly MatShift's. */
+PETSC_EXTERN PetscErrorCode CSMatShiftedShared(Mat A, PetscScalar shift, MatReuse reuse, Mat *S);
 #endif

@@ -57,6 +57,9 @@ struct _p_CSSpin {
   EPS       eps;
   KSP       kinv;
   Mat       Kinv;    /* K - sigma I for the inverse iteration */
+  Mat       Ks;      /* K - sigma I sharing K's structure, factored by shift-and-invert (serial Eq. 7), or NULL */
+  PetscObjectId    ks_id; /* the K and nonzero state Ks was made from */
+  PetscObjectState ks_nz;
   KSP       kpois;
   Mat       L;
   Mat       Ls;      /* L + c M (dmV1), the scalar preconditioner of spin_precond.c */

@@ -3,7 +3,8 @@
      cscholmod  CHOLMOD on the complex form (cholmod_factor.c)
    for MATSEQAIJ and MAT_FACTOR_CHOLESKY, so that any PCCHOLESKY takes them through
    -<prefix>pc_factor_mat_solver_type csquat|cscholmod. The matrix must be real AIJ with every 4x4 block the left
-   multiplication by a quaternion (crane2011 Sec. 5.1), e.g. K - sigma I of the spin method; the fill-reducing
+   multiplication by a quaternion (crane2011 Sec. 5.1), e.g. K of the spin method, factored as A - sigma I with the
+   shift of MatCSQuatFactorSetShift (default 0); the fill-reducing
    ordering is CHOLMOD's, chosen by -<prefix>mat_csquat_ordering / -<prefix>mat_cscholmod_ordering
    amd|metis|nesdis|auto (PETSc's ordering is not used). Which one is faster where: docs/solvers.md. */
 #include <petsc/private/matimpl.h> /* a MatSolverType of our own: the factor's ops table */
@@ -16,6 +17,7 @@ static const char *const OrderingNames[] = {"amd", "metis", "nesdis", "auto"};
 typedef struct {
   PetscBool      quat;     /* csquat, else cscholmod */
   PetscInt       ordering; /* index into OrderingNames */
+  PetscReal      shift;    /* sigma: the factor is that of A - sigma I (MatCSQuatFactorSetShift), default 0 */
   CSQuatCholesky qc;
   CSCholmod      cf;
 } Mat_CSQuatFactor;
@@ -29,13 +31,13 @@ static PetscErrorCode MatSolve_CSQuatFactor(Mat F, Vec b, Vec x)
   PetscFunctionReturn(0);
 }
 
-/* A is the whole shifted matrix (K - sigma I formed by the caller, e.g. SLEPc's ST): factored with no shift */
+/* A - shift I, the shift subtracted from the diagonal blocks as the entries are read (no shifted copy of A) */
 static PetscErrorCode MatCholeskyFactorNumeric_CSQuatFactor(Mat F, Mat A, const MatFactorInfo *info)
 {
   Mat_CSQuatFactor *q = (Mat_CSQuatFactor *)F->data;
   PetscFunctionBeginUser;
-  if (q->quat) PetscCall(CSQuatCholeskySetUp(q->qc, A, 0.0));
-  else PetscCall(CSCholmodSetUpQuaternion(q->cf, A, 0.0));
+  if (q->quat) PetscCall(CSQuatCholeskySetUp(q->qc, A, q->shift));
+  else PetscCall(CSCholmodSetUpQuaternion(q->cf, A, q->shift));
   F->ops->solve          = MatSolve_CSQuatFactor;
   F->ops->solvetranspose = MatSolve_CSQuatFactor; /* Hermitian */
   F->assembled           = PETSC_TRUE;
@@ -67,6 +69,22 @@ static PetscErrorCode MatCholeskyFactorSymbolic_CSQuatFactor(Mat F, Mat A, IS pe
   PetscFunctionReturn(0);
 }
 
+static PetscErrorCode MatCSQuatFactorSetShift_CSQuatFactor(Mat F, PetscReal shift)
+{
+  Mat_CSQuatFactor *q = (Mat_CSQuatFactor *)F->data;
+  PetscFunctionBeginUser;
+  q->shift = shift;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode MatCSQuatFactorSetShift(Mat F, PetscReal shift)
+{
+  PetscFunctionBeginUser;
+  PetscValidHeaderSpecific(F, MAT_CLASSID, 1);
+  PetscUseMethod(F, "MatCSQuatFactorSetShift_C", (Mat, PetscReal), (F, shift));
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode MatDestroy_CSQuatFactor(Mat F)
 {
   Mat_CSQuatFactor *q = (Mat_CSQuatFactor *)F->data;
@@ -75,6 +93,7 @@ static PetscErrorCode MatDestroy_CSQuatFactor(Mat F)
   PetscCall(CSCholmodDestroy(&q->cf));
   PetscCall(PetscFree(F->data));
   PetscCall(PetscObjectComposeFunction((PetscObject)F, "MatFactorGetSolverType_C", NULL));
+  PetscCall(PetscObjectComposeFunction((PetscObject)F, "MatCSQuatFactorSetShift_C", NULL));
   PetscFunctionReturn(0);
 }
 
@@ -84,7 +103,7 @@ static PetscErrorCode MatView_CSQuatFactor(Mat F, PetscViewer viewer)
   PetscBool         ascii;
   PetscFunctionBeginUser;
   PetscCall(PetscObjectTypeCompare((PetscObject)viewer, PETSCVIEWERASCII, &ascii));
-  if (ascii) PetscCall(PetscViewerASCIIPrintf(viewer, "%s, CHOLMOD ordering %s\n", q->quat ? "supernodal Cholesky in quaternion arithmetic" : "CHOLMOD Cholesky of the complex form", OrderingNames[q->ordering]));
+  if (ascii) PetscCall(PetscViewerASCIIPrintf(viewer, "%s, CHOLMOD ordering %s, shift %g\n", q->quat ? "supernodal Cholesky in quaternion arithmetic" : "CHOLMOD Cholesky of the complex form", OrderingNames[q->ordering], (double)q->shift));
   PetscFunctionReturn(0);
 }
 
@@ -126,6 +145,7 @@ static PetscErrorCode CreateFactor(Mat A, MatFactorType ftype, PetscBool quat, M
   B->ops->view                   = MatView_CSQuatFactor;
   B->ops->getinfo                = MatGetInfo_CSQuatFactor;
   PetscCall(PetscObjectComposeFunction((PetscObject)B, "MatFactorGetSolverType_C", MatFactorGetSolverType_CSQuatFactor));
+  PetscCall(PetscObjectComposeFunction((PetscObject)B, "MatCSQuatFactorSetShift_C", MatCSQuatFactorSetShift_CSQuatFactor));
   B->factortype     = MAT_FACTOR_CHOLESKY;
   B->assembled      = PETSC_TRUE;
   B->preallocated   = PETSC_TRUE;

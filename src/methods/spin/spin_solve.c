@@ -333,6 +333,56 @@ PetscErrorCode CSSpinMumpsDefaultOrdering(PC pc, Mat A)
   PetscFunctionReturn(0);
 }
 
+/* Serial Eq. 7 on the full space: the ST gets ST_MATMODE_SHELL and a preconditioner matrix instead of forming
+   K - sigma I by MatDuplicate + MatShift (ST_MATMODE_COPY): K itself when the factor is csquat or cscholmod, told
+   the shift (MatCSQuatFactorSetShift: subtracted as the entries are read, as the former PCSHELL did), else
+   K - sigma I from CSMatShiftedShared (K's row structure, own values). Same values, same factorisation, no copy
+   (docs/solvers.md, csquat). */
+static PetscErrorCode UseShiftedPmat(CSSpin s, PetscBool *use)
+{
+  PetscMPIInt size;
+  PetscBool   seq;
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_size(s->mesh->comm, &size));
+  PetscCall(PetscObjectBaseTypeCompare((PetscObject)s->K, MATSEQAIJ, &seq));
+  *use = (PetscBool)(size == 1 && seq && !s->generalized && !s->P && !s->shell);
+  PetscFunctionReturn(0);
+}
+
+/* after EPSSetFromOptions (the target and the solver type are final); again for every new K when Ks is used */
+static PetscErrorCode SetShiftedPmat(CSSpin s, ST st, PC pc)
+{
+  PetscReal        tgt;
+  PetscObjectId    id;
+  PetscObjectState nz;
+  MatSolverType    type = NULL;
+  PetscBool        chol, ours = PETSC_FALSE;
+  PetscFunctionBeginUser;
+  PetscCall(EPSGetTarget(s->eps, &tgt));
+  PetscCall(PetscObjectTypeCompare((PetscObject)pc, PCCHOLESKY, &chol));
+  if (chol) PetscCall(PCFactorGetMatSolverType(pc, &type));
+  if (type) ours = (PetscBool)(!strcmp(type, MATSOLVERCSQUAT) || !strcmp(type, MATSOLVERCSCHOLMOD));
+  if (ours && !s->Ks) {
+    Mat       F;
+    PetscBool has_op;
+    PetscCall(PCGetOperatorsSet(pc, NULL, &has_op));
+    if (!has_op) PetscCall(PCSetOperators(pc, s->K, s->K));
+    PetscCall(PCFactorSetUpMatSolverType(pc));
+    PetscCall(PCFactorGetMatrix(pc, &F));
+    PetscCall(MatCSQuatFactorSetShift(F, tgt));
+    PetscCall(STSetPreconditionerMat(st, s->K)); /* K = X for the spin object's life (BuildOperators) */
+    PetscFunctionReturn(0);
+  }
+  PetscCall(PetscObjectGetId((PetscObject)s->K, &id));
+  PetscCall(MatGetNonzeroState(s->K, &nz));
+  if (s->Ks && (id != s->ks_id || nz != s->ks_nz)) PetscCall(MatDestroy(&s->Ks)); /* a new K */
+  PetscCall(CSMatShiftedShared(s->K, -tgt, s->Ks ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX, &s->Ks));
+  s->ks_id = id;
+  s->ks_nz = nz;
+  PetscCall(STSetPreconditionerMat(st, s->Ks));
+  PetscFunctionReturn(0);
+}
+
 /* precond: Generalised Davidson (any -spin_eps_type that works with STPRECOND, e.g. lobpcg) with the scalar preconditioner of
    spin_precond.c; else Krylov-Schur with shift-and-invert toward sigma and a factorisation of K - sigma. */
 static PetscErrorCode SetupEPS(CSSpin s, Vec x, CSRhoLocation loc, Vec rho, PetscInt nev, PetscBool precond)
@@ -341,6 +391,7 @@ static PetscErrorCode SetupEPS(CSSpin s, Vec x, CSRhoLocation loc, Vec rho, Pets
   KSP       ksp;
   PC        pc;
   PetscReal sigma;
+  PetscBool shifted = PETSC_FALSE;
   PetscFunctionBeginUser;
   PetscCall(DefaultTarget(s, &sigma));
   if (!s->eps) {
@@ -363,7 +414,11 @@ static PetscErrorCode SetupEPS(CSSpin s, Vec x, CSRhoLocation loc, Vec rho, Pets
         PetscCall(STSetMatMode(st, ST_MATMODE_SHELL));
         PetscCall(KSPSetType(ksp, KSPGMRES));
         PetscCall(KSPSetTolerances(ksp, 1e-12, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
-      } else PetscCall(KSPSetType(ksp, KSPPREONLY));
+      } else {
+        PetscCall(UseShiftedPmat(s, &shifted));
+        if (shifted) PetscCall(STSetMatMode(st, ST_MATMODE_SHELL)); /* K - sigma I: SetShiftedPmat */
+        PetscCall(KSPSetType(ksp, KSPPREONLY));
+      }
       PetscCall(SetDefaultFactor(s, pc, s->generalized, (PetscBool)!s->shell));
       PetscCall(EPSSetWhichEigenpairs(s->eps, EPS_TARGET_MAGNITUDE));
       PetscCall(EPSSetTarget(s->eps, sigma));
@@ -376,10 +431,16 @@ static PetscErrorCode SetupEPS(CSSpin s, Vec x, CSRhoLocation loc, Vec rho, Pets
     if (precond) PetscCall(CSSpinSetUpScalarPC(s, x, loc, rho, pc));
     PetscCall(EPSSetFromOptions(s->eps));
     PetscCall(KSPGetPC(ksp, &pc));
-    PetscCall(CSSpinMumpsDefaultOrdering(pc, s->shell ? s->X : s->K)); /* the shell's PC factors a copy of X */
+    if (shifted) PetscCall(SetShiftedPmat(s, st, pc));
+    PetscCall(CSSpinMumpsDefaultOrdering(pc, s->shell ? s->X : (s->Ks ? s->Ks : s->K))); /* the shell's PC factors a copy of X */
   } else {
     PetscCall(EPSSetOperators(s->eps, s->K, s->generalized ? s->Y : NULL));
     PetscCall(EPSGetST(s->eps, &st));
+    if (!precond && s->Ks) {
+      PetscCall(STGetKSP(st, &ksp));
+      PetscCall(KSPGetPC(ksp, &pc));
+      PetscCall(SetShiftedPmat(s, st, pc));
+    }
     if (precond) {
       PetscCall(STGetKSP(st, &ksp));
       PetscCall(KSPGetPC(ksp, &pc));
@@ -657,6 +718,7 @@ PetscErrorCode CSSpinDestroy(CSSpin *spin)
   PetscCall(MatDestroy(&s->Ls));
   PetscCall(KSPDestroy(&s->kpois));
   PetscCall(MatDestroy(&s->Kinv));
+  PetscCall(MatDestroy(&s->Ks));
   PetscCall(MatDestroy(&s->L));
   PetscCall(MatDestroy(&s->X));
   PetscCall(MatDestroy(&s->K));
