@@ -68,7 +68,7 @@ static PetscErrorCode HistoryDestroy(void **ctx)
 
 PetscErrorCode CSBSFlowMonitorSetHistory(CSBSFlow flow, CSOutput *out)
 {
-  HistoryCtx *H;
+  HistoryCtx  *H;
   CSMesh       mesh;
   CSBSFlowInfo i;
   PetscFunctionBeginUser;

@@ -24,29 +24,22 @@ static PetscErrorCode AssembleScalarOperator(CSSpin s, Vec x, CSRhoLocation loc,
   PetscCall(DMGetGlobalVector(mesh->dmV1, &d));
   if (rho && loc == CS_RHO_VERTEX) PetscCall(VecPointwiseMult(d, rho, rho));
   else if (rho && loc == CS_RHO_FACE) { /* sum_f A_f rho_f^2 / 3 over the faces of i, divided by M_i */
-    Vec                dl, xl, rl;
+    Vec                xl, rl;
     const PetscReal   *p;
     const PetscScalar *r;
-    PetscScalar       *a;
-    PetscCall(DMGetLocalVector(mesh->dmV1, &dl));
-    PetscCall(VecSet(dl, 0));
+    CSLocalSum         sum;
     PetscCall(CSMeshGetLocalPositions(mesh, x, &xl, &p));
     PetscCall(CSDiracGetRho(mesh, loc, rho, &rl, &r));
-    PetscCall(VecGetArray(dl, &a));
-    for (PetscInt f = 0; f < mesh->nf; f++) {
-      const PetscInt  *v    = mesh->faceVert + 3 * f;
-      const PetscReal *c[3] = {p + 3 * v[0], p + 3 * v[1], p + 3 * v[2]};
-      PetscReal        an[3], rf = PetscRealPart(r[f]), w;
-      CSTriangleAreaVector(c, an);
+    PetscCall(CSLocalSumBegin(mesh->dmV1, &sum));
+    for (CSFaceIter F = CS_FACE_ITER_INIT; CSMeshFaceNext(mesh, p, &F);) {
+      PetscReal an[3], rf = PetscRealPart(r[F.f]), w;
+      CSTriangleAreaVector(F.c, an);
       w = CSVecNorm(an) / 3 * rf * rf;
-      for (int k = 0; k < 3; k++) a[v[k]] += w;
+      for (int k = 0; k < 3; k++) sum.a[F.v[k]] += w;
     }
-    PetscCall(VecRestoreArray(dl, &a));
+    PetscCall(CSLocalSumEnd(&sum, d));
     PetscCall(CSDiracRestoreRho(mesh, loc, rho, &rl, &r));
     PetscCall(CSMeshRestoreLocalPositions(mesh, x, &xl, &p));
-    PetscCall(VecSet(d, 0));
-    PetscCall(DMLocalToGlobal(mesh->dmV1, dl, ADD_VALUES, d));
-    PetscCall(DMRestoreLocalVector(mesh->dmV1, &dl));
     PetscCall(VecPointwiseDivide(d, d, s->mass));
   } else PetscCall(VecSet(d, 0));
   PetscCall(VecShift(d, shift));
