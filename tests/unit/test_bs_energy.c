@@ -23,7 +23,7 @@ static PetscErrorCode AddNoise(CSMesh mesh, PetscReal amp, unsigned long seed)
   PetscInt     n;
   PetscScalar *a;
   PetscFunctionBeginUser;
-  PetscCall(CSMeshGatherV3(mesh, mesh->x, &nat));
+  PetscCall(CSMeshGather(&mesh->natV3, mesh->x, &nat));
   PetscCall(VecGetLocalSize(nat, &n));
   PetscCall(VecGetArray(nat, &a));
   for (PetscInt k = 0; k < n; k++) {
@@ -31,7 +31,7 @@ static PetscErrorCode AddNoise(CSMesh mesh, PetscReal amp, unsigned long seed)
     a[k] += amp * (2 * (t - PetscFloorReal(t)) - 1);
   }
   PetscCall(VecRestoreArray(nat, &a));
-  PetscCall(CSMeshScatterV3(mesh, nat, mesh->x));
+  PetscCall(CSMeshScatter(&mesh->natV3, nat, mesh->x));
   PetscFunctionReturn(0);
 }
 
