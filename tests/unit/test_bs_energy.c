@@ -41,10 +41,7 @@ static PetscErrorCode CheckDiamond(MPI_Comm comm)
   PetscRandom r;
   PetscReal   worst = 0, worstsym = 0;
   PetscFunctionBeginUser;
-  PetscCall(PetscRandomCreate(PETSC_COMM_SELF, &r));
-  PetscCall(PetscRandomSetInterval(r, -1, 1));
-  PetscCall(PetscRandomSetSeed(r, 7));
-  PetscCall(PetscRandomSeed(r));
+  PetscCall(CSTestRandom(PETSC_COMM_SELF, -1, 1, 7, &r));
   for (int t = 0; t < 50; t++) {
     PetscReal        X[4][3], M[4][4], beta, h = 1e-6;
     const PetscReal *P[4] = {X[0], X[1], X[2], X[3]};

@@ -129,9 +129,7 @@ int main(int argc, char **argv)
   PetscCall(CSInitializePackage());
   PetscCall(BuildMatrix(comm, n, 1e-3, 2, 3, PETSC_FALSE, &S));
   PetscCall(MatCreateVecs(S, &b, NULL));
-  PetscCall(PetscRandomCreate(comm, &rnd));
-  PetscCall(PetscRandomSetSeed(rnd, 7));
-  PetscCall(PetscRandomSeed(rnd));
+  PetscCall(CSTestRandom(comm, 0, 1, 7, &rnd));
   PetscCall(VecSetRandom(b, rnd));
 
   PetscCall(KSPCreate(comm, &ksp));
