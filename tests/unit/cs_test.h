@@ -14,6 +14,15 @@ PETSC_UNUSED static PetscErrorCode CSTestCheck(MPI_Comm comm, PetscBool ok, cons
   PetscFunctionReturn(0);
 }
 
+/* The end of a unit program: the failure count on one line, finalize (PetscFinalize or SlepcFinalize), and the
+   count as the exit status. Use: return CSTestFinalize(comm, PetscFinalize); */
+PETSC_UNUSED static int CSTestFinalize(MPI_Comm comm, PetscErrorCode (*finalize)(void))
+{
+  PetscCall(PetscPrintf(comm, "%" PetscInt_FMT " failed\n", cs_test_failures));
+  PetscCall(finalize());
+  return (int)cs_test_failures;
+}
+
 /* A PetscRandom on comm, uniform in [lo, hi), seeded: the same numbers in every run (PetscRandomCreate's own
    interval is [0, 1)). */
 PETSC_UNUSED static PetscErrorCode CSTestRandom(MPI_Comm comm, PetscReal lo, PetscReal hi, unsigned long seed, PetscRandom *r)

@@ -314,7 +314,5 @@ int main(int argc, char **argv)
     PetscCall(CSEnergyDestroy(&e));
   }
   PetscCall(CSMeshDestroy(&disk));
-  PetscCall(PetscPrintf(comm, "%" PetscInt_FMT " failure(s)\n", cs_test_failures));
-  PetscCall(PetscFinalize());
-  return (int)cs_test_failures;
+  return CSTestFinalize(comm, PetscFinalize);
 }

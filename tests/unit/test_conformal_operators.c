@@ -375,7 +375,5 @@ int main(int argc, char **argv)
   PetscCall(RunChecks(PETSC_COMM_WORLD, PETSC_TRUE));
   PetscCall(CheckNormals(PETSC_COMM_WORLD));
   PetscCall(CheckMobius(PETSC_COMM_WORLD));
-  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%" PetscInt_FMT " failed\n", cs_test_failures));
-  PetscCall(PetscFinalize());
-  return (int)cs_test_failures;
+  return CSTestFinalize(PETSC_COMM_WORLD, PetscFinalize);
 }

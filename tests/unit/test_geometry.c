@@ -191,7 +191,5 @@ int main(int argc, char **argv)
 
   PetscCall(CheckSequence(comm, GEN_ICOSPHERE, "unit icosphere -> 4pi", 4 * PETSC_PI, 1e-5));
   PetscCall(CheckSequence(comm, GEN_TORUS, "torus R=sqrt2 r=1 -> 2pi^2", 2 * PETSC_PI * PETSC_PI, 1e-4));
-  PetscCall(PetscPrintf(comm, "%" PetscInt_FMT " failed\n", cs_test_failures));
-  PetscCall(PetscFinalize());
-  return (int)cs_test_failures;
+  return CSTestFinalize(comm, PetscFinalize);
 }

@@ -9,12 +9,10 @@
 #include "cs_package.h"
 #include "cs_test.h"
 
-static PetscInt nfail = 0;
-
 static PetscErrorCode Check(MPI_Comm comm, const char what[], PetscReal err, PetscReal tol)
 {
   PetscFunctionBeginUser;
-  if (!(err <= tol)) nfail++;
+  if (!(err <= tol)) cs_test_failures++;
   PetscCall(PetscPrintf(comm, "%s %-60s err %.3e (tol %.1e)\n", err <= tol ? "ok  " : "BAD ", what, (double)err, (double)tol));
   PetscFunctionReturn(0);
 }
@@ -430,7 +428,5 @@ int main(int argc, char **argv)
   PetscCall(VecDestroy(&rv));
   PetscCall(VecDestroy(&rf));
   PetscCall(CSMeshDestroy(&mesh));
-  PetscCall(PetscPrintf(comm, "%" PetscInt_FMT " failure(s)\n", nfail));
-  PetscCall(SlepcFinalize());
-  return (int)nfail;
+  return CSTestFinalize(comm, SlepcFinalize);
 }

@@ -197,7 +197,5 @@ int main(int argc, char **argv)
   PetscCall(VecDestroy(&b));
   PetscCall(MatDestroy(&S));
   PetscCall(PetscRandomDestroy(&rnd));
-  PetscCall(PetscPrintf(comm, "%" PetscInt_FMT " failed\n", cs_test_failures));
-  PetscCall(PetscFinalize());
-  return (int)cs_test_failures;
+  return CSTestFinalize(comm, PetscFinalize);
 }
