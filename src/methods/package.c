@@ -18,7 +18,7 @@ PetscErrorCode CSFinalizePackage(void)
 
 static PetscErrorCode RegisterEvents(void)
 {
-  PetscClassId mesh, chol, quat, spin;
+  PetscClassId mesh, chol, quat, spin, curve;
   PetscFunctionBeginUser;
   PetscCall(PetscClassIdRegister("confsurf", &mesh));
   PetscCall(PetscLogEventRegister("CSMeshRead", mesh, &CS_EVENT_MeshRead));
@@ -42,6 +42,9 @@ static PetscErrorCode RegisterEvents(void)
   PetscCall(PetscClassIdRegister("confsurf spin", &spin));
   PetscCall(PetscLogEventRegister("CSSpinEigen", spin, &CS_EVENT_SpinEigen));
   PetscCall(PetscLogEventRegister("CSSpinPoisson", spin, &CS_EVENT_SpinPoisson));
+  PetscCall(PetscClassIdRegister("confsurf curve flow", &curve));
+  PetscCall(PetscLogEventRegister("CSCurvePoissonSet", curve, &CS_EVENT_CurvePoissonSetUp));
+  PetscCall(PetscLogEventRegister("CSCurvePoisson", curve, &CS_EVENT_CurvePoisson));
   PetscFunctionReturn(0);
 }
 
