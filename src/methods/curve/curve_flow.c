@@ -126,7 +126,7 @@ static void Judge(CSCurveFlow F)
 {
   CSCurveMonitorInfo *s = &F->s;
   if (!(s->energy == s->energy) || s->energy > F->egrow * F->E0) F->reason = CS_CURVE_DIVERGED_ENERGY;
-  else if (PetscAbsReal(s->turning - (PetscReal)F->turning0) > 0.5) F->reason = CS_CURVE_DIVERGED_TURNING;
+  else if (F->curve->closed && PetscAbsReal(s->turning - (PetscReal)F->turning0) > 0.5) F->reason = CS_CURVE_DIVERGED_TURNING; /* open: total curvature is free */
   else if (s->stationarity < F->rtol && (s->it == 0 || s->change < F->rtol)) F->reason = CS_CURVE_CONVERGED_RTOL;
   else if (s->it >= F->max_it) F->reason = CS_CURVE_DIVERGED_MAX_IT;
 }

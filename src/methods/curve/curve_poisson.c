@@ -47,8 +47,15 @@ static PetscErrorCode AssembleLaplacian(CSCurveFlow F, PetscBool ground, Mat *L)
   PetscFunctionReturn(0);
 }
 
-/* a direct solve that works on any number of ranks: Cholesky, PETSc's own serially, MUMPS in parallel;
-   defaults set on the KSP before KSPSetFromOptions, so -<prefix>ksp_type etc. replace them */
+/* Serially a direct solve: Cholesky, PETSc's own (natural ordering: the cyclic tridiagonal L fills only its
+   last row). In parallel CG preconditioned by block Jacobi with an exact solve of each rank's block (ILU(0) of
+   a tridiagonal block is its LU): the blocks differ from L only by the couplings across the 2P block ends,
+   so the preconditioned operator is the identity plus a matrix of rank <= 2P and CG ends in <= 2P + 1
+   iterations in exact arithmetic: a direct solve with O(n) work and P-sized communication per iteration.
+   Measured at 2k vertices on 2 ranks (loaded machine): 0.42 ms per step, against 9-18 ms with MUMPS
+   (-<prefix>poisson_ksp_type preonly -<prefix>poisson_pc_type cholesky
+   -<prefix>poisson_pc_factor_mat_solver_type mumps) and 3.3 ms with SuperLU_dist, whose solves gather on the
+   host. Defaults set on the KSP before KSPSetFromOptions, so -<prefix>poisson_ksp_type etc. replace them. */
 static PetscErrorCode CreateDirectKSP(CSCurveFlow F, Mat A, const char suffix[], KSP *ksp)
 {
   PC          pc;
@@ -60,10 +67,15 @@ static PetscErrorCode CreateDirectKSP(CSCurveFlow F, Mat A, const char suffix[],
   PetscCall(KSPCreate(F->comm, ksp));
   PetscCall(KSPSetOptionsPrefix(*ksp, prefix));
   PetscCall(KSPSetOperators(*ksp, A, A));
-  PetscCall(KSPSetType(*ksp, KSPPREONLY));
   PetscCall(KSPGetPC(*ksp, &pc));
-  PetscCall(PCSetType(pc, PCCHOLESKY));
-  if (size > 1) PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+  if (size == 1) {
+    PetscCall(KSPSetType(*ksp, KSPPREONLY));
+    PetscCall(PCSetType(pc, PCCHOLESKY));
+  } else {
+    PetscCall(KSPSetType(*ksp, KSPCG));
+    PetscCall(PCSetType(pc, PCBJACOBI));
+    PetscCall(KSPSetTolerances(*ksp, 1e-13, 0, PETSC_DEFAULT, 20 * size + 100));
+  }
   PetscCall(KSPSetFromOptions(*ksp));
   PetscCall(KSPSetUp(*ksp)); /* the factorisation, once */
   PetscFunctionReturn(0);
