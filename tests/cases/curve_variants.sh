@@ -22,7 +22,7 @@ ok &= report(max(abs(a / b - 1) for a, b in zip(l, l0)) < 1e-10, f"open curve: l
 ok &= report(abs(math.dist(p[0], p[-1]) / sum(l) - 1) < 1e-10, f"open curve: straight, end-to-end / length - 1 = {math.dist(p[0], p[-1]) / sum(l) - 1:.1e}")
 for k in (1, 2):
     s = summary(f'{t}/f{k}.json'); e = [r['energy'] for r in history(f'{t}/f{k}.csv')]
-    ok &= report(s['converged'] and s['kappa_spread_rel'] < 1e-6, f"filter k={k}: converged after {s['iterations']} steps, spread/mean {s['kappa_spread_rel']:.1e}")
+    ok &= report(s['converged'] and s['kappa_spread_rel'] < 1e-5, f"filter k={k}: converged after {s['iterations']} steps, spread/mean {s['kappa_spread_rel']:.1e}")
     ok &= report(all(b <= a * (1 + 1e-12) for a, b in zip(e, e[1:])), f"filter k={k}: E non-increasing ({e[0]:.4g} -> {e[-1]:.10g})")
     ok &= report(s['length_distortion'] < 1e-8, f"filter k={k}: final length distortion {s['length_distortion']:.1e}")
 sys.exit(0 if ok else 1)
