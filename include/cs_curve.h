@@ -14,7 +14,7 @@
 typedef struct {
   PetscInt   m;      /* vertices (a closed curve does not repeat the first) */
   PetscReal *x;      /* 2*m coordinates */
-  PetscInt  *line;   /* file line of each vertex (NULL for generated curves), for messages */
+  PetscInt  *line;   /* file line of each vertex (0 for generated curves), for messages */
   PetscInt   lline;  /* line of the OBJ `l` element (0: none) */
   PetscBool  closed;
   char       name[PETSC_MAX_PATH_LEN];

@@ -56,6 +56,9 @@ PETSC_EXTERN PetscErrorCode CSCurveFlowCreate(CSCurve curve, CSCurveFlow *flow);
 PETSC_EXTERN PetscErrorCode CSCurveFlowSetOptionsPrefix(CSCurveFlow flow, const char prefix[]);
 PETSC_EXTERN PetscErrorCode CSCurveFlowGetOptionsPrefix(CSCurveFlow flow, const char *prefix[]);
 PETSC_EXTERN PetscErrorCode CSCurveFlowSetFromOptions(CSCurveFlow flow);
+/* The defaults in code (before SetFromOptions, which may override them): tau (> 0); rtol (>= 0) and max_it (>= 0) */
+PETSC_EXTERN PetscErrorCode CSCurveFlowSetTimeStep(CSCurveFlow flow, PetscReal tau);
+PETSC_EXTERN PetscErrorCode CSCurveFlowSetTolerances(CSCurveFlow flow, PetscReal rtol, PetscInt max_it);
 PETSC_EXTERN PetscErrorCode CSCurveFlowSetUp(CSCurveFlow flow);
 PETSC_EXTERN PetscErrorCode CSCurveFlowStep(CSCurveFlow flow);
 PETSC_EXTERN PetscErrorCode CSCurveFlowSolve(CSCurveFlow flow);

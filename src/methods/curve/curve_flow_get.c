@@ -1,4 +1,4 @@
-/* Getters of the curve flow object (include/cs_methods_curve.h). */
+/* Setters and getters of the curve flow object (include/cs_methods_curve.h). */
 #include "curve_flow_impl.h"
 
 PetscErrorCode CSCurveFlowGetConvergedReason(CSCurveFlow F, CSCurveFlowConvergedReason *reason)
@@ -45,5 +45,22 @@ PetscErrorCode CSCurveFlowGetInfo(CSCurveFlow F, CSCurveFlowInfo *info)
   info->turning_initial = F->turning0;
   info->setup_seconds   = F->t_setup;
   info->step_seconds    = F->t_steps;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSCurveFlowSetTimeStep(CSCurveFlow F, PetscReal tau)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(tau > 0, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "CSCurveFlowSetTimeStep: tau %g must be > 0", (double)tau);
+  F->tau = tau;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSCurveFlowSetTolerances(CSCurveFlow F, PetscReal rtol, PetscInt max_it)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(rtol >= 0 && max_it >= 0, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "CSCurveFlowSetTolerances: rtol %g and max_it %" PetscInt_FMT " must be >= 0", (double)rtol, max_it);
+  F->rtol   = rtol;
+  F->max_it = max_it;
   PetscFunctionReturn(0);
 }
