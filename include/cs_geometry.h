@@ -119,6 +119,11 @@ static inline void CSTriangleCotanGradient(const PetscReal *const p[3], int a, P
 /* Local (ghosted) copy of a global dmV3 positions vector; give it back with CSMeshRestoreLocalPositions. */
 PETSC_EXTERN PetscErrorCode CSMeshGetLocalPositions(CSMesh mesh, Vec x, Vec *xl, const PetscReal **p);
 PETSC_EXTERN PetscErrorCode CSMeshRestoreLocalPositions(CSMesh mesh, Vec x, Vec *xl, const PetscReal **p);
+/* Face-by-face assembly of a global vector g of dm: add(mesh, p, F, a) adds the share of face F (corners F->c
+   in the local positions p) into the local array a of dm, ghosts included; the copies over the ranks are
+   then summed into g (see CSLocalSum). */
+typedef void (*CSFaceAdd)(CSMesh mesh, const PetscReal *p, const CSFaceIter *F, PetscScalar *a);
+PETSC_EXTERN PetscErrorCode CSGeometryFaceSum(CSMesh mesh, Vec x, DM dm, CSFaceAdd add, Vec g);
 
 /* Barycentric vertex dual areas A_i = sum of one third of the incident face areas (the diagonal *0). */
 PETSC_EXTERN PetscErrorCode CSGeometryVertexAreas(CSMesh mesh, Vec x, Vec area);

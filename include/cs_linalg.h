@@ -31,4 +31,7 @@ PETSC_EXTERN PetscErrorCode CSMatAddMapDestroy(CSMatAddMap *map);
    references A), only the values are its own; MAT_REUSE_MATRIX refills them (A's pattern unchanged). The value
    added to each diagonal entry is exactly MatShift's. */
 PETSC_EXTERN PetscErrorCode CSMatShiftedShared(Mat A, PetscScalar shift, MatReuse reuse, Mat *S);
+
+/* norms_i = 2-norm of block i of x (blocks of bs consecutive entries; norms has one entry per local block) */
+PETSC_EXTERN PetscErrorCode CSVecBlockNorms(Vec x, PetscInt bs, Vec norms);
 #endif

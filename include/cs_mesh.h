@@ -10,6 +10,13 @@
 typedef struct _p_CSMesh *CSMesh;
 typedef struct _p_CSMeshAdjacency *CSMeshAdjacency; /* cs_mesh_adjacency.h */
 
+/* A field in the natural (file) order: the scatter to the global vector and the natural vector itself, all
+   entries on rank 0 (length 0 elsewhere). */
+typedef struct {
+  VecScatter sc;
+  Vec        vec;
+} CSMeshNatural;
+
 struct _p_CSMesh {
   MPI_Comm comm;
   DM       dm;   /* interpolated, distributed DMPlex; overlap 0, so every local face is owned here */
@@ -38,9 +45,8 @@ struct _p_CSMesh {
 
   Vec x; /* positions, global vector of dmV3 */
 
-  /* Natural-order scatters (rank 0 holds the whole field in file order) for I/O of vertex/face fields. */
-  VecScatter natV3, natV1, natF1, natE1;
-  Vec        natV3vec, natV1vec, natF1vec, natE1vec; /* all entries on rank 0 (length 0 elsewhere) */
+  /* Natural-order fields (rank 0 holds the whole field in file order) for I/O of vertex/face/edge fields. */
+  CSMeshNatural natV3, natV1, natF1, natE1;
 
   CSMeshData serial; /* rank 0: the validated input (faces kept for output); empty elsewhere */
 
@@ -88,16 +94,11 @@ PETSC_EXTERN PetscErrorCode CSMeshDestroy(CSMesh *mesh);
    e.g. 4 per vertex for quaternion fields. Local dof block v of its local vectors is local vertex v. */
 PETSC_EXTERN PetscErrorCode CSMeshCreateFieldDM(DM dm, PetscInt depth, PetscInt dof, const char name[], DM *out);
 
-/* Vector fields in the natural (file) order, gathered on / scattered from rank 0. A natural vector is
-   a sequential Vec on rank 0 (3*Nv, Nv or Nf long) and empty elsewhere; the returned one is owned by mesh. */
-PETSC_EXTERN PetscErrorCode CSMeshGatherV3(CSMesh mesh, Vec g, Vec *nat);
-PETSC_EXTERN PetscErrorCode CSMeshScatterV3(CSMesh mesh, Vec nat, Vec g);
-PETSC_EXTERN PetscErrorCode CSMeshGatherV1(CSMesh mesh, Vec g, Vec *nat);
-PETSC_EXTERN PetscErrorCode CSMeshScatterV1(CSMesh mesh, Vec nat, Vec g);
-PETSC_EXTERN PetscErrorCode CSMeshGatherF1(CSMesh mesh, Vec g, Vec *nat);
-PETSC_EXTERN PetscErrorCode CSMeshScatterF1(CSMesh mesh, Vec nat, Vec g);
-PETSC_EXTERN PetscErrorCode CSMeshGatherE1(CSMesh mesh, Vec g, Vec *nat);
-PETSC_EXTERN PetscErrorCode CSMeshScatterE1(CSMesh mesh, Vec nat, Vec g);
+/* Vector fields in the natural (file) order, gathered on / scattered from rank 0, for one of the mesh's
+   natural fields (&mesh->natV3, natV1, natF1 or natE1). A natural vector is a sequential Vec on rank 0
+   (3*Nv, Nv, Nf or Ne long) and empty elsewhere; the gathered one is field->vec, owned by the mesh. */
+PETSC_EXTERN PetscErrorCode CSMeshGather(CSMeshNatural *field, Vec g, Vec *nat);
+PETSC_EXTERN PetscErrorCode CSMeshScatter(CSMeshNatural *field, Vec nat, Vec g);
 
 /* Checkpoints for long runs: iteration number, a few scalars, the positions and (optionally) one per-edge
    field (e.g. Lagrange multipliers), all in natural order, so a run resumes on any number of ranks.

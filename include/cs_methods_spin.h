@@ -116,5 +116,8 @@ PETSC_EXTERN PetscErrorCode CSSpinOptimalRho(CSSpin spin, Vec x, Vec mu, Vec rho
 /* internal: log events of the Poisson step */
 PETSC_EXTERN PetscErrorCode CSSpinLogPoissonBegin(void);
 PETSC_EXTERN PetscErrorCode CSSpinLogPoissonEnd(void);
+/* internal: x = ksp^{-1} b, an error naming the solve (what) and the KSP's options if it diverges; adds the
+   Krylov iterations to *its */
+PETSC_EXTERN PetscErrorCode CSSpinKSPSolve(CSSpin spin, KSP ksp, Vec b, Vec x, const char what[], PetscInt *its);
 
 #endif

@@ -33,6 +33,15 @@ typedef enum {
 PETSC_EXTERN const char *const CSWillmoreFlowConvergedReasons[];
 PETSC_EXTERN const char *const CSWillmoreFlowStopReasons[];
 
+/* What the resolution guard measured when it stopped the flow (docs/real_meshes.md); CSWillmoreFlowDegenerations[]
+   names it (the summary's "degeneration"). FINS: a face's quasi-conformal error beyond -flow_fin_q, i.e. the
+   conformal factor jumps across faces (vertex stars blown out into large flat triangles); SQUEEZE: every face kept
+   its shape with the Moebius gauge fixed (-flow_constraint_mobius), so the area moved smoothly along a path the
+   Moebius group does not explain; SMOOTH: every face kept its shape without the gauge fixed (a Moebius slide or a
+   squeeze). */
+typedef enum { CS_WILLMORE_FLOW_DEGENERATION_NONE, CS_WILLMORE_FLOW_DEGENERATION_FINS, CS_WILLMORE_FLOW_DEGENERATION_SQUEEZE, CS_WILLMORE_FLOW_DEGENERATION_SMOOTH } CSWillmoreFlowDegeneration;
+PETSC_EXTERN const char *const CSWillmoreFlowDegenerations[];
+
 /* Enumerated options (PetscOptionsEnum tables: values, then the enum name, the prefix, NULL). */
 typedef enum { CS_FLOW_METRIC_H2, CS_FLOW_METRIC_L2 } CSFlowMetricType;
 typedef enum { CS_FLOW_BOUNDARY_DIRICHLET, CS_FLOW_BOUNDARY_FREE, CS_FLOW_BOUNDARY_NORMALS } CSFlowBoundaryType;
@@ -48,6 +57,7 @@ typedef struct {
   PetscInt         ksp_its;             /* Krylov iterations of the last step */
   PetscInt         ksp_its_total, rejections, nguard, pc_setups, linear_solves;
   PetscReal        area_spread, q_max, seconds;
+  CSWillmoreFlowDegeneration degeneration; /* set when the resolution guard stopped the flow */
   PetscInt         k;                   /* global constraint values */
   const PetscReal *constraint_values;
 } CSWillmoreFlowInfo;

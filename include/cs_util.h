@@ -49,6 +49,9 @@ PETSC_EXTERN PetscErrorCode CSHistoryAppend(CSHistory h, PetscInt n, const Petsc
 PETSC_EXTERN PetscErrorCode CSHistoryDestroy(CSHistory *h);
 
 /* Path helpers */
+/* Room for one more element in a growing array *a of n elements of size bytes, capacity *cap: when full, the
+   capacity doubles (first = initial) and the n elements move to the new storage. */
+PETSC_EXTERN PetscErrorCode CSArrayGrow(size_t size, PetscInt n, PetscInt initial, PetscInt *cap, void **a);
 PETSC_EXTERN PetscErrorCode CSPathExtension(const char path[], char ext[], size_t len); /* lower-case, without dot */
 
 #endif

@@ -6,7 +6,8 @@
 # skipped); skipped files and the reason are listed under the table. Meshes run in ascending face count.
 # Per mesh:
 #   bin/confsurf -task flow -mesh M -flow_max_it $MAXIT -reference M -summary S.json -history_csv H.csv -o out.obj $EXTRA
-# (-reference M: q_mean, q_max against the input; the flow reports the same numbers without it), its outputs
+# (-reference M: q_mean, q_max against the input; the flow reports the same numbers without it; degeneration: what
+# the resolution guard measured when it stopped the run, fins / smooth / squeeze, docs/real_meshes.md), its outputs
 # (info.json of the input, summary.json, history.csv, out.obj, log) in runs/results/real_meshes/<mesh>/, one row in
 # runs/results/real_meshes.md (markdown, header: date, commit, MAXIT, NP, EXTRA, TIMEOUT) and
 # runs/results/real_meshes.csv, appended as each mesh finishes. A run killed after TIMEOUT seconds is a row with
@@ -72,10 +73,10 @@ git diff --quiet HEAD -- src include 2>/dev/null || commit="$commit + uncommitte
   echo "$(date -u '+%Y-%m-%d %H:%M UTC'), commit $commit, MAXIT=$MAXIT, NP=$NP, EXTRA=\"$EXTRA\", TIMEOUT=$TIMEOUT s, host $(hostname) ($(nproc) cores)."
   echo "W before: energy_initial of the flow summary (else willmore of an info run on the input); q against the input."
   echo
-  echo "| mesh | V | F | genus | iterations | W before | W after | conformal violation | EL residual | q_mean | q_max | seconds | stop reason | converged |"
-  echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
+  echo "| mesh | V | F | genus | iterations | W before | W after | conformal violation | EL residual | q_mean | q_max | seconds | stop reason | degeneration | converged |"
+  echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
 } > "$md"
-echo "mesh,V,F,genus,iterations,W_before,W_after,conformal_violation,el_residual,q_mean,q_max,seconds,stop_reason,converged" > "$csv"
+echo "mesh,V,F,genus,iterations,W_before,W_after,conformal_violation,el_residual,q_mean,q_max,seconds,stop_reason,degeneration,converged" > "$csv"
 
 for f in "${closed[@]+"${closed[@]}"}"; do
   b=$(basename "$f"); name=${b%.*}; d=$dir/$name
@@ -107,7 +108,7 @@ def g(k, fmt):
 row = [b[:b.rfind('.')], str(info['vertices']), str(info['faces']), str(info['genus']), g('iterations', '%d'),
        '%.6g' % w0, g('energy', '%.6g'), g('conformal_violation', '%.2e'), g('el_residual', '%.2e'),
        g('q_mean', '%.4f'), g('q_max', '%.4f'), g('seconds', '%.1f'), str(s.get('stop_reason', '-')),
-       'yes' if s.get('converged') in (True, 1, 'true') else 'no']
+       str(s.get('degeneration', '-')), 'yes' if s.get('converged') in (True, 1, 'true') else 'no']
 with open(md, 'a') as fh: fh.write('| ' + ' | '.join(row) + ' |\n')
 with open(cf, 'a', newline='') as fh: csv.writer(fh).writerow(row)
 print('   ' + ' | '.join(row))

@@ -1,15 +1,13 @@
 /* -task info: read, validate, distribute, and report the facts of a mesh (and write it back, if asked). */
 #include "cs_driver.h"
 #include "cs_geometry.h"
+#include "cs_linalg.h"
 
 /* ParaView fields of a mesh at rest: mean curvature vector h and |h|, vertex area, face area. */
 static PetscErrorCode WriteInfoFields(CSMesh mesh, const char dir[])
 {
-  CSViewer           v;
-  Vec                h, hn, area, farea;
-  const PetscScalar *ha;
-  PetscScalar       *na;
-  PetscInt           n;
+  CSViewer v;
+  Vec      h, hn, area, farea;
   PetscFunctionBeginUser;
   PetscCall(DMCreateGlobalVector(mesh->dmV3, &h));
   PetscCall(DMCreateGlobalVector(mesh->dmV1, &hn));
@@ -18,12 +16,7 @@ static PetscErrorCode WriteInfoFields(CSMesh mesh, const char dir[])
   PetscCall(CSGeometryMeanCurvature(mesh, mesh->x, h));
   PetscCall(CSGeometryVertexAreas(mesh, mesh->x, area));
   PetscCall(CSGeometryFaceAreas(mesh, mesh->x, farea));
-  PetscCall(VecGetLocalSize(hn, &n));
-  PetscCall(VecGetArrayRead(h, &ha));
-  PetscCall(VecGetArray(hn, &na));
-  for (PetscInt i = 0; i < n; i++) na[i] = PetscSqrtReal(PetscRealPart(ha[3 * i] * ha[3 * i] + ha[3 * i + 1] * ha[3 * i + 1] + ha[3 * i + 2] * ha[3 * i + 2]));
-  PetscCall(VecRestoreArray(hn, &na));
-  PetscCall(VecRestoreArrayRead(h, &ha));
+  PetscCall(CSVecBlockNorms(h, 3, hn));
   PetscCall(CSViewerCreate(mesh, dir, &v));
   PetscCall(CSViewerAddVertexField(v, "mean_curvature_vector", h));
   PetscCall(CSViewerAddVertexField(v, "mean_curvature", hn));

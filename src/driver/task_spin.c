@@ -3,32 +3,13 @@
 #include "cs_driver.h"
 #include "cs_geometry.h"
 #include "cs_methods_spin.h"
+#include "cs_linalg.h"
 
 /* Inputs and results of one spin transformation. */
 typedef struct {
   CSRhoLocation loc;
   Vec           rho, xt, mu, Tt, lambda, xnew;
 } SpinRun;
-
-/* |lambda| per vertex (dmV1), for the viewer */
-static PetscErrorCode LambdaAbs(CSSpin s, Vec lambda, Vec a)
-{
-  const PetscScalar *l;
-  PetscScalar       *r;
-  PetscInt           n;
-  PetscFunctionBeginUser;
-  PetscCall(VecGetLocalSize(a, &n));
-  PetscCall(VecGetArrayRead(lambda, &l));
-  PetscCall(VecGetArray(a, &r));
-  for (PetscInt i = 0; i < n; i++) {
-    PetscReal q[4];
-    for (int c = 0; c < 4; c++) q[c] = PetscRealPart(l[4 * i + c]);
-    r[i] = PetscSqrtReal(CSQuatNorm2(q));
-  }
-  PetscCall(VecRestoreArray(a, &r));
-  PetscCall(VecRestoreArrayRead(lambda, &l));
-  PetscFunctionReturn(0);
-}
 
 /* rho (Sec. 5.5), boundary tangents (Sec. 5.7), the eigenproblem, the similarity and Eq. 8 + Poisson. */
 static PetscErrorCode SpinSolve(CSSpin spin, CSMesh mesh, SpinRun *r)
@@ -107,7 +88,7 @@ static PetscErrorCode SpinView(CSSpin spin, CSMesh mesh, const SpinRun *r, const
   PetscFunctionBeginUser;
   PetscCall(DMCreateGlobalVector(mesh->dmV1, &la));
   PetscCall(DMCreateGlobalVector(mesh->dmF1, &q));
-  PetscCall(LambdaAbs(spin, r->lambda, la));
+  PetscCall(CSVecBlockNorms(r->lambda, 4, la)); /* |lambda| per vertex */
   PetscCall(CSGeometryQuasiConformal(mesh, mesh->x, r->xnew, q, NULL, NULL));
   PetscCall(CSViewerCreate(mesh, dir, &v));
   PetscCall(VecDuplicate(la, &la0));

@@ -37,20 +37,16 @@ PetscErrorCode CSGeometryMeanEdgeLength(CSMesh m, Vec x, PetscReal *h)
 
 /* w_ij = (cot alpha + cot beta)/2: each face adds half the cotan of the corner opposite the edge. Faces of an
    edge may sit on two ranks, hence the additive local-to-global assembly. */
+static void AddHalfCotans(CSMesh m, const PetscReal *p, const CSFaceIter *F, PetscScalar *a)
+{
+  PetscReal cot[3];
+  CSTriangleCotans(F->c, cot);
+  for (int k = 0; k < 3; k++) a[F->e[k]] += 0.5 * cot[k];
+}
+
 PetscErrorCode CSGeometryCotanWeights(CSMesh m, Vec x, Vec w)
 {
-  Vec              xl;
-  const PetscReal *p;
-  CSLocalSum       s;
   PetscFunctionBeginUser;
-  PetscCall(CSMeshGetLocalPositions(m, x, &xl, &p));
-  PetscCall(CSLocalSumBegin(m->dmE1, &s));
-  for (CSFaceIter F = CS_FACE_ITER_INIT; CSMeshFaceNext(m, p, &F);) {
-    PetscReal cot[3];
-    CSTriangleCotans(F.c, cot);
-    for (int k = 0; k < 3; k++) s.a[F.e[k]] += 0.5 * cot[k];
-  }
-  PetscCall(CSLocalSumEnd(&s, w));
-  PetscCall(CSMeshRestoreLocalPositions(m, x, &xl, &p));
+  PetscCall(CSGeometryFaceSum(m, x, m->dmE1, AddHalfCotans, w));
   PetscFunctionReturn(0);
 }

@@ -19,43 +19,37 @@ static PetscErrorCode NormaliseBlocks(Vec v)
   PetscFunctionReturn(0);
 }
 
+/* the face's area vector to each of its corners */
+static void AddAreaVector(CSMesh m, const PetscReal *p, const CSFaceIter *F, PetscScalar *a)
+{
+  PetscReal an[3];
+  CSTriangleAreaVector(F->c, an);
+  for (int k = 0; k < 3; k++)
+    for (int d = 0; d < 3; d++) a[3 * F->v[k] + d] += an[d];
+}
+
+/* the boundary half-edge i -> j in the counter-clockwise order of its only face: the outgoing tangent at i */
+static void AddBoundaryEdge(CSMesh m, const PetscReal *p, const CSFaceIter *F, PetscScalar *a)
+{
+  for (int k = 0; k < 3; k++) {
+    PetscInt i = F->v[k], j = F->v[(k + 1) % 3];
+    if (m->edgeBoundary[F->e[(k + 2) % 3]])
+      for (int d = 0; d < 3; d++) a[3 * i + d] += p[3 * j + d] - p[3 * i + d];
+  }
+}
+
 PetscErrorCode CSGeometryVertexNormals(CSMesh m, Vec x, Vec N)
 {
-  Vec              xl;
-  const PetscReal *p;
-  CSLocalSum       s;
   PetscFunctionBeginUser;
-  PetscCall(CSMeshGetLocalPositions(m, x, &xl, &p));
-  PetscCall(CSLocalSumBegin(m->dmV3, &s));
-  for (CSFaceIter F = CS_FACE_ITER_INIT; CSMeshFaceNext(m, p, &F);) {
-    PetscReal an[3];
-    CSTriangleAreaVector(F.c, an);
-    for (int k = 0; k < 3; k++)
-      for (int d = 0; d < 3; d++) s.a[3 * F.v[k] + d] += an[d];
-  }
-  PetscCall(CSLocalSumEnd(&s, N));
-  PetscCall(CSMeshRestoreLocalPositions(m, x, &xl, &p));
+  PetscCall(CSGeometryFaceSum(m, x, m->dmV3, AddAreaVector, N));
   PetscCall(NormaliseBlocks(N));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode CSGeometryBoundaryTangents(CSMesh m, Vec x, Vec T)
 {
-  Vec              xl;
-  const PetscReal *p;
-  CSLocalSum       s;
   PetscFunctionBeginUser;
-  PetscCall(CSMeshGetLocalPositions(m, x, &xl, &p));
-  PetscCall(CSLocalSumBegin(m->dmV3, &s));
-  for (CSFaceIter F = CS_FACE_ITER_INIT; CSMeshFaceNext(m, p, &F);)
-    for (int a = 0; a < 3; a++) {
-      PetscInt i = F.v[a], j = F.v[(a + 1) % 3];
-      /* the boundary half-edge i -> j in the counter-clockwise order of its only face: the outgoing tangent */
-      if (m->edgeBoundary[F.e[(a + 2) % 3]])
-        for (int d = 0; d < 3; d++) s.a[3 * i + d] += p[3 * j + d] - p[3 * i + d];
-    }
-  PetscCall(CSLocalSumEnd(&s, T));
-  PetscCall(CSMeshRestoreLocalPositions(m, x, &xl, &p));
+  PetscCall(CSGeometryFaceSum(m, x, m->dmV3, AddBoundaryEdge, T));
   PetscCall(NormaliseBlocks(T));
   PetscFunctionReturn(0);
 }

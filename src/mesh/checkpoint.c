@@ -20,10 +20,10 @@ PetscErrorCode CSCheckpointWrite(CSMesh m, const char path[], PetscInt it, Petsc
   PetscCall(PetscViewerBinarySetSkipInfo(v, PETSC_TRUE));
   PetscCall(PetscViewerBinaryWrite(v, head, 6, PETSC_INT));
   if (nreal) PetscCall(PetscViewerBinaryWrite(v, reals, nreal, PETSC_REAL));
-  PetscCall(CSMeshGatherV3(m, x, &nat));
+  PetscCall(CSMeshGather(&m->natV3, x, &nat));
   PetscCall(VecView(nat, v));
   if (edgeField) {
-    PetscCall(CSMeshGatherE1(m, edgeField, &nat));
+    PetscCall(CSMeshGather(&m->natE1, edgeField, &nat));
     PetscCall(VecView(nat, v));
   }
   PetscCall(PetscViewerDestroy(&v));
@@ -53,11 +53,11 @@ PetscErrorCode CSCheckpointRead(CSMesh m, const char path[], PetscInt *it, Petsc
   PetscCheck(head[5] == (edgeField ? 1 : 0), m->comm, PETSC_ERR_FILE_UNEXPECTED, "-resume %s: the edge field is %s", path, head[5] ? "present but not expected" : "missing");
   *it = head[1];
   if (nreal) PetscCall(PetscViewerBinaryRead(v, reals, nreal, NULL, PETSC_REAL));
-  PetscCall(VecLoad(m->natV3vec, v));
-  PetscCall(CSMeshScatterV3(m, m->natV3vec, x));
+  PetscCall(VecLoad(m->natV3.vec, v));
+  PetscCall(CSMeshScatter(&m->natV3, m->natV3.vec, x));
   if (edgeField) {
-    PetscCall(VecLoad(m->natE1vec, v));
-    PetscCall(CSMeshScatterE1(m, m->natE1vec, edgeField));
+    PetscCall(VecLoad(m->natE1.vec, v));
+    PetscCall(CSMeshScatter(&m->natE1, m->natE1.vec, edgeField));
   }
   PetscCall(PetscViewerDestroy(&v));
   PetscFunctionReturn(0);

@@ -156,7 +156,7 @@ static PetscErrorCode BuildOwnershipAndBoundary(CSMesh m)
 }
 
 /* Scatter between a natural vector (everything on rank 0, file order) and a global vector of dmX. */
-static PetscErrorCode CreateNaturalScatter(CSMesh m, DM dmX, PetscInt depth, PetscInt bs, const PetscInt natural[], PetscInt N, Vec *nat, VecScatter *sc)
+static PetscErrorCode CreateNatural(CSMesh m, DM dmX, PetscInt depth, PetscInt bs, const PetscInt natural[], PetscInt N, CSMeshNatural *field)
 {
   PetscSection gs;
   PetscMPIInt  rank;
@@ -165,7 +165,7 @@ static PetscErrorCode CreateNaturalScatter(CSMesh m, DM dmX, PetscInt depth, Pet
   Vec          g;
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(m->comm, &rank));
-  PetscCall(VecCreateMPI(m->comm, rank ? 0 : bs * N, bs * N, nat));
+  PetscCall(VecCreateMPI(m->comm, rank ? 0 : bs * N, bs * N, &field->vec));
   PetscCall(DMGetGlobalSection(dmX, &gs));
   PetscCall(DMPlexGetDepthStratum(dmX, depth, &sS, &sE));
   PetscCall(PetscMalloc2(sE - sS, &from, sE - sS, &to));
@@ -179,7 +179,7 @@ static PetscErrorCode CreateNaturalScatter(CSMesh m, DM dmX, PetscInt depth, Pet
   PetscCall(ISCreateBlock(m->comm, bs, n, from, PETSC_COPY_VALUES, &isFrom));
   PetscCall(ISCreateBlock(m->comm, bs, n, to, PETSC_COPY_VALUES, &isTo));
   PetscCall(DMGetGlobalVector(dmX, &g));
-  PetscCall(VecScatterCreate(*nat, isFrom, g, isTo, sc));
+  PetscCall(VecScatterCreate(field->vec, isFrom, g, isTo, &field->sc));
   PetscCall(DMRestoreGlobalVector(dmX, &g));
   PetscCall(ISDestroy(&isFrom));
   PetscCall(ISDestroy(&isTo));
@@ -275,10 +275,10 @@ PetscErrorCode CSMeshCreateFromData(MPI_Comm comm, CSMeshData *md, const CSTopol
   counts[0] = m->Nv;
   counts[1] = m->Nf;
   PetscCheck(counts[0] == m->topo.vertices && counts[1] == m->topo.faces, comm, PETSC_ERR_PLIB, "distributed mesh has %" PetscInt_FMT " vertices and %" PetscInt_FMT " faces, the input %" PetscInt_FMT " and %" PetscInt_FMT, counts[0], counts[1], m->topo.vertices, m->topo.faces);
-  PetscCall(CreateNaturalScatter(m, m->dmV3, 0, 3, m->vertNatural, m->Nv, &m->natV3vec, &m->natV3));
-  PetscCall(CreateNaturalScatter(m, m->dmV1, 0, 1, m->vertNatural, m->Nv, &m->natV1vec, &m->natV1));
-  PetscCall(CreateNaturalScatter(m, m->dmF1, 2, 1, m->faceNatural, m->Nf, &m->natF1vec, &m->natF1));
-  PetscCall(CreateNaturalScatter(m, m->dmE1, 1, 1, m->edgeNatural, m->Ne, &m->natE1vec, &m->natE1));
+  PetscCall(CreateNatural(m, m->dmV3, 0, 3, m->vertNatural, m->Nv, &m->natV3));
+  PetscCall(CreateNatural(m, m->dmV1, 0, 1, m->vertNatural, m->Nv, &m->natV1));
+  PetscCall(CreateNatural(m, m->dmF1, 2, 1, m->faceNatural, m->Nf, &m->natF1));
+  PetscCall(CreateNatural(m, m->dmE1, 1, 1, m->edgeNatural, m->Ne, &m->natE1));
 
   /* rank 0 keeps the connectivity for output; the coordinates now live in the distributed vector */
   m->serial = *md;
@@ -337,6 +337,14 @@ PetscErrorCode CSMeshCreateFromOptions(MPI_Comm comm, const char prefix[], CSMes
   PetscFunctionReturn(0);
 }
 
+static PetscErrorCode NaturalDestroy(CSMeshNatural *field)
+{
+  PetscFunctionBeginUser;
+  PetscCall(VecScatterDestroy(&field->sc));
+  PetscCall(VecDestroy(&field->vec));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode CSMeshDestroy(CSMesh *mesh)
 {
   CSMesh m = *mesh;
@@ -344,15 +352,11 @@ PetscErrorCode CSMeshDestroy(CSMesh *mesh)
   if (!m) PetscFunctionReturn(0);
   PetscCall(CSMeshAdjacencyDestroy(&m->adj));
   PetscCall(VecDestroy(&m->x));
-  PetscCall(VecScatterDestroy(&m->natV3));
-  PetscCall(VecScatterDestroy(&m->natV1));
-  PetscCall(VecScatterDestroy(&m->natF1));
-  PetscCall(VecScatterDestroy(&m->natE1));
-  PetscCall(VecDestroy(&m->natE1vec));
+  PetscCall(NaturalDestroy(&m->natV3));
+  PetscCall(NaturalDestroy(&m->natV1));
+  PetscCall(NaturalDestroy(&m->natF1));
+  PetscCall(NaturalDestroy(&m->natE1));
   PetscCall(PetscFree(m->edgeNatural));
-  PetscCall(VecDestroy(&m->natV3vec));
-  PetscCall(VecDestroy(&m->natV1vec));
-  PetscCall(VecDestroy(&m->natF1vec));
   PetscCall(PetscFree3(m->faceVert, m->faceEdge, m->edgeVert));
   PetscCall(PetscFree4(m->vertOwned, m->edgeOwned, m->vertBoundary, m->edgeBoundary));
   PetscCall(PetscFree(m->vertNatural));

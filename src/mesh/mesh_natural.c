@@ -2,73 +2,20 @@
 #include "cs_mesh.h"
 #include "cs_util.h"
 
-static PetscErrorCode Gather(VecScatter sc, Vec g, Vec nat)
+PetscErrorCode CSMeshGather(CSMeshNatural *field, Vec g, Vec *nat)
 {
   PetscFunctionBeginUser;
-  PetscCall(VecScatterBegin(sc, g, nat, INSERT_VALUES, SCATTER_REVERSE));
-  PetscCall(VecScatterEnd(sc, g, nat, INSERT_VALUES, SCATTER_REVERSE));
+  PetscCall(VecScatterBegin(field->sc, g, field->vec, INSERT_VALUES, SCATTER_REVERSE));
+  PetscCall(VecScatterEnd(field->sc, g, field->vec, INSERT_VALUES, SCATTER_REVERSE));
+  *nat = field->vec;
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode Scatter(VecScatter sc, Vec nat, Vec g)
+PetscErrorCode CSMeshScatter(CSMeshNatural *field, Vec nat, Vec g)
 {
   PetscFunctionBeginUser;
-  PetscCall(VecScatterBegin(sc, nat, g, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(VecScatterEnd(sc, nat, g, INSERT_VALUES, SCATTER_FORWARD));
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSMeshGatherV3(CSMesh m, Vec g, Vec *nat)
-{
-  PetscFunctionBeginUser;
-  PetscCall(Gather(m->natV3, g, m->natV3vec));
-  *nat = m->natV3vec;
-  PetscFunctionReturn(0);
-}
-PetscErrorCode CSMeshScatterV3(CSMesh m, Vec nat, Vec g)
-{
-  PetscFunctionBeginUser;
-  PetscCall(Scatter(m->natV3, nat, g));
-  PetscFunctionReturn(0);
-}
-PetscErrorCode CSMeshGatherV1(CSMesh m, Vec g, Vec *nat)
-{
-  PetscFunctionBeginUser;
-  PetscCall(Gather(m->natV1, g, m->natV1vec));
-  *nat = m->natV1vec;
-  PetscFunctionReturn(0);
-}
-PetscErrorCode CSMeshScatterV1(CSMesh m, Vec nat, Vec g)
-{
-  PetscFunctionBeginUser;
-  PetscCall(Scatter(m->natV1, nat, g));
-  PetscFunctionReturn(0);
-}
-PetscErrorCode CSMeshGatherF1(CSMesh m, Vec g, Vec *nat)
-{
-  PetscFunctionBeginUser;
-  PetscCall(Gather(m->natF1, g, m->natF1vec));
-  *nat = m->natF1vec;
-  PetscFunctionReturn(0);
-}
-PetscErrorCode CSMeshScatterF1(CSMesh m, Vec nat, Vec g)
-{
-  PetscFunctionBeginUser;
-  PetscCall(Scatter(m->natF1, nat, g));
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSMeshGatherE1(CSMesh m, Vec g, Vec *nat)
-{
-  PetscFunctionBeginUser;
-  PetscCall(Gather(m->natE1, g, m->natE1vec));
-  *nat = m->natE1vec;
-  PetscFunctionReturn(0);
-}
-PetscErrorCode CSMeshScatterE1(CSMesh m, Vec nat, Vec g)
-{
-  PetscFunctionBeginUser;
-  PetscCall(Scatter(m->natE1, nat, g));
+  PetscCall(VecScatterBegin(field->sc, nat, g, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecScatterEnd(field->sc, nat, g, INSERT_VALUES, SCATTER_FORWARD));
   PetscFunctionReturn(0);
 }
 
@@ -78,7 +25,7 @@ PetscErrorCode CSMeshWrite(CSMesh m, Vec x, const char path[])
   PetscMPIInt rank;
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(m->comm, &rank));
-  PetscCall(CSMeshGatherV3(m, x, &nat));
+  PetscCall(CSMeshGather(&m->natV3, x, &nat));
   if (!rank) {
     CSMeshData         out = m->serial;
     const PetscScalar *a;
@@ -129,12 +76,12 @@ PetscErrorCode CSMeshLoadCompatiblePositions(CSMesh m, const char option[], cons
   CSRootCall(m->comm, ReadCompatible(m, option, path, &md));
   if (!rank) {
     PetscScalar *a;
-    PetscCall(VecGetArray(m->natV3vec, &a));
+    PetscCall(VecGetArray(m->natV3.vec, &a));
     for (PetscInt i = 0; i < 3 * md.nv; i++) a[i] = md.x[i];
-    PetscCall(VecRestoreArray(m->natV3vec, &a));
+    PetscCall(VecRestoreArray(m->natV3.vec, &a));
     PetscCall(CSMeshDataDestroy(&md));
   }
   PetscCall(DMCreateGlobalVector(m->dmV3, x));
-  PetscCall(CSMeshScatterV3(m, m->natV3vec, *x));
+  PetscCall(CSMeshScatter(&m->natV3, m->natV3.vec, *x));
   PetscFunctionReturn(0);
 }

@@ -1,6 +1,7 @@
 /* ParaView output: each rank writes its own piece (its faces and their vertices, ghosts included) as a .vtu,
    rank 0 writes the .pvtu that joins the pieces and the .pvd series index. Nothing is gathered. */
 #include "cs_mesh.h"
+#include "cs_util.h"
 #include <sys/stat.h>
 #include <errno.h>
 
@@ -166,15 +167,7 @@ PetscErrorCode CSViewerWriteStep(CSViewer v, Vec x, PetscReal time)
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(v->mesh->comm, &rank));
   PetscCallMPI(MPI_Comm_size(v->mesh->comm, &size));
-  if (v->step >= v->ntimes_alloc) {
-    PetscReal *t;
-    PetscInt   n = v->ntimes_alloc ? 2 * v->ntimes_alloc : 64;
-    PetscCall(PetscMalloc1(n, &t));
-    if (v->step) PetscCall(PetscArraycpy(t, v->times, v->step));
-    PetscCall(PetscFree(v->times));
-    v->times        = t;
-    v->ntimes_alloc = n;
-  }
+  PetscCall(CSArrayGrow(sizeof(PetscReal), v->step, 64, &v->ntimes_alloc, (void **)&v->times));
   v->times[v->step] = time;
   PetscCall(PetscSNPrintf(path, sizeof(path), "%s/surface_%04d_%d.vtu", v->dir, (int)v->step, (int)rank));
   PetscCall(WritePiece(v, x, path));

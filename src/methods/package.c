@@ -16,35 +16,63 @@ PetscErrorCode CSFinalizePackage(void)
   PetscFunctionReturn(0);
 }
 
+/* The events of each class, in the order they are registered (the ids and -log_view follow it). */
+typedef struct {
+  const char    *name;
+  PetscLogEvent *event;
+} EventName;
+
+static const EventName mesh_events[] = {
+  {"CSMeshRead",       &CS_EVENT_MeshRead      },
+  {"CSMeshDistribute", &CS_EVENT_MeshDistribute},
+  {"CSGeometry",       &CS_EVENT_Geometry      },
+  {"CSEnergy",         &CS_EVENT_Energy        },
+  {"CSGradient",       &CS_EVENT_Gradient      },
+  {"CSAssemble",       &CS_EVENT_Assemble      },
+};
+static const EventName cholmod_events[] = {
+  {"CSCholmodSym",   &CS_EVENT_CholmodSym  },
+  {"CSCholmodNum",   &CS_EVENT_CholmodNum  },
+  {"CSCholmodSolve", &CS_EVENT_CholmodSolve},
+};
+static const EventName quat_events[] = {
+  {"CSQuatCholSym",   &CS_EVENT_QuatCholSym  },
+  {"CSQuatCholNum",   &CS_EVENT_QuatCholNum  },
+  {"CSQuatCholSolve", &CS_EVENT_QuatCholSolve},
+};
+static const EventName subchol_events[] = {
+  {"CSSubCholSym",   &CS_EVENT_SubCholSym  },
+  {"CSSubCholNum",   &CS_EVENT_SubCholNum  },
+  {"CSSubCholDense", &CS_EVENT_SubCholDense},
+  {"CSSubCholSolve", &CS_EVENT_SubCholSolve},
+};
+static const EventName spin_events[] = {
+  {"CSSpinEigen",   &CS_EVENT_SpinEigen  },
+  {"CSSpinPoisson", &CS_EVENT_SpinPoisson},
+};
+static const EventName curve_events[] = {
+  {"CSCurvePoissonSet", &CS_EVENT_CurvePoissonSetUp},
+  {"CSCurvePoisson",    &CS_EVENT_CurvePoisson     },
+};
+
+/* Registers the class (unless it is an existing one: name NULL) and its n events. */
+static PetscErrorCode RegisterClassEvents(const char name[], PetscClassId classid, size_t n, const EventName events[])
+{
+  PetscFunctionBeginUser;
+  if (name) PetscCall(PetscClassIdRegister(name, &classid));
+  for (size_t i = 0; i < n; i++) PetscCall(PetscLogEventRegister(events[i].name, classid, events[i].event));
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode RegisterEvents(void)
 {
-  PetscClassId mesh, chol, quat, spin, curve;
   PetscFunctionBeginUser;
-  PetscCall(PetscClassIdRegister("confsurf", &mesh));
-  PetscCall(PetscLogEventRegister("CSMeshRead", mesh, &CS_EVENT_MeshRead));
-  PetscCall(PetscLogEventRegister("CSMeshDistribute", mesh, &CS_EVENT_MeshDistribute));
-  PetscCall(PetscLogEventRegister("CSGeometry", mesh, &CS_EVENT_Geometry));
-  PetscCall(PetscLogEventRegister("CSEnergy", mesh, &CS_EVENT_Energy));
-  PetscCall(PetscLogEventRegister("CSGradient", mesh, &CS_EVENT_Gradient));
-  PetscCall(PetscLogEventRegister("CSAssemble", mesh, &CS_EVENT_Assemble));
-  PetscCall(PetscClassIdRegister("confsurf CHOLMOD", &chol));
-  PetscCall(PetscLogEventRegister("CSCholmodSym", chol, &CS_EVENT_CholmodSym));
-  PetscCall(PetscLogEventRegister("CSCholmodNum", chol, &CS_EVENT_CholmodNum));
-  PetscCall(PetscLogEventRegister("CSCholmodSolve", chol, &CS_EVENT_CholmodSolve));
-  PetscCall(PetscClassIdRegister("confsurf quaternion Cholesky", &quat));
-  PetscCall(PetscLogEventRegister("CSQuatCholSym", quat, &CS_EVENT_QuatCholSym));
-  PetscCall(PetscLogEventRegister("CSQuatCholNum", quat, &CS_EVENT_QuatCholNum));
-  PetscCall(PetscLogEventRegister("CSQuatCholSolve", quat, &CS_EVENT_QuatCholSolve));
-  PetscCall(PetscLogEventRegister("CSSubCholSym", PC_CLASSID, &CS_EVENT_SubCholSym));
-  PetscCall(PetscLogEventRegister("CSSubCholNum", PC_CLASSID, &CS_EVENT_SubCholNum));
-  PetscCall(PetscLogEventRegister("CSSubCholDense", PC_CLASSID, &CS_EVENT_SubCholDense));
-  PetscCall(PetscLogEventRegister("CSSubCholSolve", PC_CLASSID, &CS_EVENT_SubCholSolve));
-  PetscCall(PetscClassIdRegister("confsurf spin", &spin));
-  PetscCall(PetscLogEventRegister("CSSpinEigen", spin, &CS_EVENT_SpinEigen));
-  PetscCall(PetscLogEventRegister("CSSpinPoisson", spin, &CS_EVENT_SpinPoisson));
-  PetscCall(PetscClassIdRegister("confsurf curve flow", &curve));
-  PetscCall(PetscLogEventRegister("CSCurvePoissonSet", curve, &CS_EVENT_CurvePoissonSetUp));
-  PetscCall(PetscLogEventRegister("CSCurvePoisson", curve, &CS_EVENT_CurvePoisson));
+  PetscCall(RegisterClassEvents("confsurf", 0, PETSC_STATIC_ARRAY_LENGTH(mesh_events), mesh_events));
+  PetscCall(RegisterClassEvents("confsurf CHOLMOD", 0, PETSC_STATIC_ARRAY_LENGTH(cholmod_events), cholmod_events));
+  PetscCall(RegisterClassEvents("confsurf quaternion Cholesky", 0, PETSC_STATIC_ARRAY_LENGTH(quat_events), quat_events));
+  PetscCall(RegisterClassEvents(NULL, PC_CLASSID, PETSC_STATIC_ARRAY_LENGTH(subchol_events), subchol_events));
+  PetscCall(RegisterClassEvents("confsurf spin", 0, PETSC_STATIC_ARRAY_LENGTH(spin_events), spin_events));
+  PetscCall(RegisterClassEvents("confsurf curve flow", 0, PETSC_STATIC_ARRAY_LENGTH(curve_events), curve_events));
   PetscFunctionReturn(0);
 }
 

@@ -20,6 +20,7 @@ static PetscErrorCode SummaryKeys(CSWillmoreFlow flow, CSOutput *out, const CSWi
   PetscCall(CSJSONAddInt(out->json, "iterations", i->it));
   PetscCall(CSJSONAddBool(out->json, "converged", (PetscBool)(reason == CS_WILLMORE_FLOW_CONVERGED_RTOL)));
   PetscCall(CSJSONAddString(out->json, "stop_reason", CSWillmoreFlowStopReasons[reason]));
+  PetscCall(CSJSONAddString(out->json, "degeneration", CSWillmoreFlowDegenerations[i->degeneration]));
   PetscCall(CSJSONAddReal(out->json, "energy_initial", E0)); /* of the input (after any -gen_deform_*) */
   PetscCall(CSJSONAddReal(out->json, "energy", i->energy));
   PetscCall(CSJSONAddReal(out->json, "area_spread", i->area_spread));

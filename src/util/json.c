@@ -33,15 +33,7 @@ static PetscErrorCode CSJSONPut(CSJSON js, const char key[], const char val[])
       PetscFunctionReturn(0);
     }
   }
-  if (js->n == js->cap) {
-    CSJSONEntry *ne;
-    PetscInt     cap = js->cap ? 2 * js->cap : 16;
-    PetscCall(PetscMalloc1(cap, &ne));
-    if (js->n) PetscCall(PetscArraycpy(ne, js->e, js->n));
-    PetscCall(PetscFree(js->e));
-    js->e   = ne;
-    js->cap = cap;
-  }
+  PetscCall(CSArrayGrow(sizeof(CSJSONEntry), js->n, 16, &js->cap, (void **)&js->e));
   PetscCall(PetscStrallocpy(key, &js->e[js->n].key));
   PetscCall(PetscStrallocpy(val, &js->e[js->n].val));
   js->n++;

@@ -21,4 +21,5 @@ EXPECT="-flow_max_area_ratio 0.5" expect_fail F -gen icosphere -gen_level 1 -flo
 EXPECT="-flow_factor_reuse_its -1" expect_fail F -gen icosphere -gen_level 1 -flow_factor_reuse_its -1
 EXPECT="-flow_soc_max_it -1" expect_fail F -gen icosphere -gen_level 1 -flow_soc_max_it -1
 EXPECT="-flow_restore_above -0.5" expect_fail F -gen icosphere -gen_level 1 -flow_restore_above -0.5
+EXPECT="-flow_fin_q 0.5" expect_fail F -gen icosphere -gen_level 1 -flow_fin_q 0.5
 EXPECT="-flow_constraint_mobius.*-flow_conformal" expect_fail F -gen icosphere -gen_level 1 -flow_type gd -flow_constraint_mobius

@@ -4,13 +4,34 @@
 #define CS_TEST_H
 #include "cs_mesh.h"
 
-static PetscInt cs_test_failures = 0;
+PETSC_UNUSED static PetscInt cs_test_failures = 0;
 
-static PetscErrorCode CSTestCheck(MPI_Comm comm, PetscBool ok, const char what[], PetscReal value, PetscReal bound)
+PETSC_UNUSED static PetscErrorCode CSTestCheck(MPI_Comm comm, PetscBool ok, const char what[], PetscReal value, PetscReal bound)
 {
   PetscFunctionBeginUser;
   PetscCall(PetscPrintf(comm, "%s %s: %.3e (bound %.1e)\n", ok ? "ok  " : "FAIL", what, (double)value, (double)bound));
   if (!ok) cs_test_failures++;
+  PetscFunctionReturn(0);
+}
+
+/* The end of a unit program: the failure count on one line, finalize (PetscFinalize or SlepcFinalize), and the
+   count as the exit status. Use: return CSTestFinalize(comm, PetscFinalize); */
+PETSC_UNUSED static int CSTestFinalize(MPI_Comm comm, PetscErrorCode (*finalize)(void))
+{
+  PetscCall(PetscPrintf(comm, "%" PetscInt_FMT " failed\n", cs_test_failures));
+  PetscCall(finalize());
+  return (int)cs_test_failures;
+}
+
+/* A PetscRandom on comm, uniform in [lo, hi), seeded: the same numbers in every run (PetscRandomCreate's own
+   interval is [0, 1)). */
+PETSC_UNUSED static PetscErrorCode CSTestRandom(MPI_Comm comm, PetscReal lo, PetscReal hi, unsigned long seed, PetscRandom *r)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscRandomCreate(comm, r));
+  PetscCall(PetscRandomSetInterval(*r, lo, hi));
+  PetscCall(PetscRandomSetSeed(*r, seed));
+  PetscCall(PetscRandomSeed(*r));
   PetscFunctionReturn(0);
 }
 
@@ -27,10 +48,7 @@ PETSC_UNUSED static PetscErrorCode CSTestDistribute(MPI_Comm comm, CSMeshData *m
   if (!rank) {
     if (amp > 0) {
       PetscRandom r;
-      PetscCall(PetscRandomCreate(PETSC_COMM_SELF, &r));
-      PetscCall(PetscRandomSetInterval(r, -amp, amp));
-      PetscCall(PetscRandomSetSeed(r, seed));
-      PetscCall(PetscRandomSeed(r));
+      PetscCall(CSTestRandom(PETSC_COMM_SELF, -amp, amp, seed, &r));
       for (PetscInt i = 0; i < 3 * md->nv; i++) {
         PetscReal d;
         PetscCall(PetscRandomGetValueReal(r, &d));

@@ -23,7 +23,7 @@ static PetscErrorCode AddNoise(CSMesh mesh, PetscReal amp, unsigned long seed)
   PetscInt     n;
   PetscScalar *a;
   PetscFunctionBeginUser;
-  PetscCall(CSMeshGatherV3(mesh, mesh->x, &nat));
+  PetscCall(CSMeshGather(&mesh->natV3, mesh->x, &nat));
   PetscCall(VecGetLocalSize(nat, &n));
   PetscCall(VecGetArray(nat, &a));
   for (PetscInt k = 0; k < n; k++) {
@@ -31,7 +31,7 @@ static PetscErrorCode AddNoise(CSMesh mesh, PetscReal amp, unsigned long seed)
     a[k] += amp * (2 * (t - PetscFloorReal(t)) - 1);
   }
   PetscCall(VecRestoreArray(nat, &a));
-  PetscCall(CSMeshScatterV3(mesh, nat, mesh->x));
+  PetscCall(CSMeshScatter(&mesh->natV3, nat, mesh->x));
   PetscFunctionReturn(0);
 }
 
@@ -41,10 +41,7 @@ static PetscErrorCode CheckDiamond(MPI_Comm comm)
   PetscRandom r;
   PetscReal   worst = 0, worstsym = 0;
   PetscFunctionBeginUser;
-  PetscCall(PetscRandomCreate(PETSC_COMM_SELF, &r));
-  PetscCall(PetscRandomSetInterval(r, -1, 1));
-  PetscCall(PetscRandomSetSeed(r, 7));
-  PetscCall(PetscRandomSeed(r));
+  PetscCall(CSTestRandom(PETSC_COMM_SELF, -1, 1, 7, &r));
   for (int t = 0; t < 50; t++) {
     PetscReal        X[4][3], M[4][4], beta, h = 1e-6;
     const PetscReal *P[4] = {X[0], X[1], X[2], X[3]};
@@ -159,13 +156,30 @@ static PetscErrorCode CheckKx(CSEnergy e, Vec x, PetscReal *rel, PetscReal *asym
   PetscFunctionReturn(0);
 }
 
+/* The derivatives of e at x: the gradient against central differences, K x = grad W and K symmetric. */
+static PetscErrorCode CheckDerivatives(MPI_Comm comm, CSEnergy e, Vec x, const char label[])
+{
+  PetscReal rel = 0, asym = 0;
+  char      what[160];
+  PetscFunctionBeginUser;
+  PetscCall(CSEnergyCheckGradient(e, x, 1e-6, 6, &rel));
+  PetscCall(PetscSNPrintf(what, sizeof(what), "%s: gradient vs central FD (rel)", label));
+  PetscCall(CSTestCheck(comm, (PetscBool)(rel < 1e-6), what, rel, 1e-6));
+  PetscCall(CheckKx(e, x, &rel, &asym));
+  PetscCall(PetscSNPrintf(what, sizeof(what), "%s: K x = grad W (rel)", label));
+  PetscCall(CSTestCheck(comm, (PetscBool)(rel < 1e-12), what, rel, 1e-12));
+  PetscCall(PetscSNPrintf(what, sizeof(what), "%s: K symmetric |K-K^T|/|K|", label));
+  PetscCall(CSTestCheck(comm, (PetscBool)(asym < 1e-12), what, asym, 1e-12));
+  PetscFunctionReturn(0);
+}
+
 int main(int argc, char **argv)
 {
   MPI_Comm  comm;
   CSMesh    sph, ico, disk;
   CSEnergy  e;
   Vec       Wv, y;
-  PetscReal W, W2, mn, rel;
+  PetscReal W, W2, mn;
   char      buf[128];
 
   PetscCall(PetscInitialize(&argc, &argv, NULL, NULL));
@@ -215,14 +229,7 @@ int main(int argc, char **argv)
     PetscCall(CSEnergyValue(e, y, &W2));
     PetscCall(CSTestCheck(comm, (PetscBool)(PetscAbsReal(W2 - W) < 1e-10 * W), "Moebius: inversion then scaling by 1e-3 (rel)", PetscAbsReal(W2 - W) / W, 1e-10));
   }
-  PetscCall(CSEnergyCheckGradient(e, sph->x, 1e-6, 6, &rel));
-  PetscCall(CSTestCheck(comm, (PetscBool)(rel < 1e-6), "noisy icosphere: gradient vs central FD (rel)", rel, 1e-6));
-  {
-    PetscReal asym;
-    PetscCall(CheckKx(e, sph->x, &rel, &asym));
-    PetscCall(CSTestCheck(comm, (PetscBool)(rel < 1e-12), "noisy icosphere: K x = grad W (rel)", rel, 1e-12));
-    PetscCall(CSTestCheck(comm, (PetscBool)(asym < 1e-12), "noisy icosphere: K symmetric |K-K^T|/|K|", asym, 1e-12));
-  }
+  PetscCall(CheckDerivatives(comm, e, sph->x, "noisy icosphere"));
   PetscCall(VecDestroy(&y));
   PetscCall(VecDestroy(&Wv));
   PetscCall(CSEnergyDestroy(&e));
@@ -262,14 +269,7 @@ int main(int argc, char **argv)
     PetscCall(CSEnergyCreateWillmoreBS(disk, CS_BS_BOUNDARY_FREE, 1e-6, &e));
     PetscCall(CSEnergyValue(e, disk->x, &W));
     PetscCall(CSTestCheck(comm, (PetscBool)(W > 0), "noisy cap, free boundary: W > 0", W, 0));
-    PetscCall(CSEnergyCheckGradient(e, disk->x, 1e-6, 6, &rel));
-    PetscCall(CSTestCheck(comm, (PetscBool)(rel < 1e-6), "noisy cap, free boundary: gradient vs FD (rel)", rel, 1e-6));
-    {
-      PetscReal asym;
-      PetscCall(CheckKx(e, disk->x, &rel, &asym));
-      PetscCall(CSTestCheck(comm, (PetscBool)(rel < 1e-12), "noisy cap, free boundary: K x = grad W (rel)", rel, 1e-12));
-      PetscCall(CSTestCheck(comm, (PetscBool)(asym < 1e-12), "noisy cap, free boundary: K symmetric", asym, 1e-12));
-    }
+    PetscCall(CheckDerivatives(comm, e, disk->x, "noisy cap, free boundary"));
     PetscCall(VecDuplicate(disk->x, &y));
     /* The vertex at infinity is fixed by similarities only: the free-boundary energy is invariant under
        scaling and translation, not under an inversion (which moves infinity to the center). */
@@ -314,7 +314,5 @@ int main(int argc, char **argv)
     PetscCall(CSEnergyDestroy(&e));
   }
   PetscCall(CSMeshDestroy(&disk));
-  PetscCall(PetscPrintf(comm, "%" PetscInt_FMT " failure(s)\n", cs_test_failures));
-  PetscCall(PetscFinalize());
-  return (int)cs_test_failures;
+  return CSTestFinalize(comm, PetscFinalize);
 }

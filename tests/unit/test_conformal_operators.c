@@ -65,10 +65,7 @@ static PetscErrorCode RunChecks(MPI_Comm comm, PetscBool torus)
   PetscCall(VecDuplicate(x, &d));
   PetscCall(VecDuplicate(x, &xp));
   PetscCall(VecDuplicate(x, &v));
-  PetscCall(PetscRandomCreate(comm, &rnd));
-  PetscCall(PetscRandomSetInterval(rnd, -1, 1));
-  PetscCall(PetscRandomSetSeed(rnd, 2021));
-  PetscCall(PetscRandomSeed(rnd));
+  PetscCall(CSTestRandom(comm, -1, 1, 2021, &rnd));
 
   /* c(x) = 0 at the target, and X = C Dlambda against central differences of c */
   PetscCall(CSConformalConstraintEvaluate(&cc, x, cp, PETSC_TRUE));
@@ -258,9 +255,7 @@ static PetscErrorCode CheckNormals(MPI_Comm comm)
   PetscCall(CSNormalConstraintEvaluate(&nc, m->x, cp, PETSC_TRUE));
   PetscCall(VecNorm(cp, NORM_INFINITY, &err));
   PetscCall(CSTestCheck(comm, (PetscBool)(err < 1e-14), "cylinder: N(x) - N0 = 0 at the input", err, 1e-14));
-  PetscCall(PetscRandomCreate(comm, &rnd));
-  PetscCall(PetscRandomSetSeed(rnd, 5));
-  PetscCall(PetscRandomSeed(rnd));
+  PetscCall(CSTestRandom(comm, 0, 1, 5, &rnd));
   PetscCall(VecSetRandom(d, rnd));
   PetscCall(MatMult(nc.DN, d, Jd));
   PetscCall(VecWAXPY(xp, h, d, m->x));
@@ -307,9 +302,7 @@ static PetscErrorCode CheckMobius(MPI_Comm comm)
   err = PetscMax(PetscAbsReal(c[0]), PetscMax(PetscAbsReal(c[1]), PetscAbsReal(c[2])));
   PetscCall(CSTestCheck(comm, (PetscBool)(err < 1e-15), "mobius: m(f0) = 0", err, 1e-15));
   /* rows vs central differences along a random direction */
-  PetscCall(PetscRandomCreate(comm, &rnd));
-  PetscCall(PetscRandomSetSeed(rnd, 7));
-  PetscCall(PetscRandomSeed(rnd));
+  PetscCall(CSTestRandom(comm, 0, 1, 7, &rnd));
   PetscCall(VecSetRandom(d, rnd));
   PetscCall(VecMDot(d, 3, rows, jd));
   PetscCall(VecWAXPY(xp, h, d, m->x));
@@ -382,7 +375,5 @@ int main(int argc, char **argv)
   PetscCall(RunChecks(PETSC_COMM_WORLD, PETSC_TRUE));
   PetscCall(CheckNormals(PETSC_COMM_WORLD));
   PetscCall(CheckMobius(PETSC_COMM_WORLD));
-  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%" PetscInt_FMT " failed\n", cs_test_failures));
-  PetscCall(PetscFinalize());
-  return (int)cs_test_failures;
+  return CSTestFinalize(PETSC_COMM_WORLD, PetscFinalize);
 }

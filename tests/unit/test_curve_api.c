@@ -118,8 +118,6 @@ int main(int argc, char **argv)
   PetscCall(PetscOptionsGetString(NULL, NULL, "-bad_dir", dir, sizeof(dir), &has_dir));
   PetscCall(FlowStar(comm));
   if (has_dir) PetscCall(BadFiles(comm, dir));
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &cs_test_failures, 1, MPIU_INT, MPI_SUM, comm));
-  PetscCall(PetscPrintf(comm, "%" PetscInt_FMT " failure(s)\n", cs_test_failures));
-  PetscCall(PetscFinalize());
-  return (int)cs_test_failures;
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &cs_test_failures, 1, MPIU_INT, MPI_SUM, comm)); /* the bad files are read on rank 0 */
+  return CSTestFinalize(comm, PetscFinalize);
 }

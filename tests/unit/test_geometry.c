@@ -37,7 +37,7 @@ static PetscErrorCode CheckGradients(MPI_Comm comm, CSMesh mesh, const char labe
 }
 
 /* W under x -> s Q x + t must not change (Willmore energy is scale, rotation and translation invariant). */
-static PetscErrorCode CheckInvariance(MPI_Comm comm, CSMesh mesh)
+static PetscErrorCode CheckInvariance(MPI_Comm comm, CSMesh mesh, const char label[])
 {
   CSEnergy           e;
   Vec                y;
@@ -157,34 +157,39 @@ static PetscErrorCode CheckSequence(MPI_Comm comm, Gen g, const char label[], Pe
   PetscFunctionReturn(0);
 }
 
+/* The checks that run on one mesh, in order, each on its own copy of the mesh (MakeMesh is deterministic). */
+typedef struct {
+  PetscErrorCode (*check)(MPI_Comm, CSMesh, const char[]);
+  Gen         g;
+  PetscInt    a, b;
+  PetscReal   R, r, amp;
+  const char *label;
+} MeshCheck;
+
+static const MeshCheck mesh_checks[] = {
+  {CheckGradients,  GEN_ICOSPHERE, 2,  0, 0,   0,   0.03, "perturbed icosphere"               },
+  {CheckInvariance, GEN_ICOSPHERE, 2,  0, 0,   0,   0.03, "perturbed icosphere"               },
+  {CheckGradients,  GEN_TORUS,     16, 8, 2.0, 0.7, 0.03, "perturbed torus"                   },
+  {CheckGradients,  GEN_CYLINDER,  16, 6, 0,   0,   0.03, "perturbed open cylinder (boundary)"},
+  {CheckLaplacian,  GEN_ICOSPHERE, 3,  0, 0,   0,   0,    "icosphere"                         },
+  {CheckLaplacian,  GEN_DISK,      6,  0, 0,   0,   0,    "disk (boundary)"                   },
+};
+
 int main(int argc, char **argv)
 {
   MPI_Comm comm;
-  CSMesh   mesh;
   PetscCall(PetscInitialize(&argc, &argv, NULL, help));
   comm = PETSC_COMM_WORLD;
 
-  PetscCall(MakeMesh(comm, GEN_ICOSPHERE, 2, 0, 0, 0, 0.03, &mesh));
-  PetscCall(CheckGradients(comm, mesh, "perturbed icosphere"));
-  PetscCall(CheckInvariance(comm, mesh));
-  PetscCall(CSMeshDestroy(&mesh));
-  PetscCall(MakeMesh(comm, GEN_TORUS, 16, 8, 2.0, 0.7, 0.03, &mesh));
-  PetscCall(CheckGradients(comm, mesh, "perturbed torus"));
-  PetscCall(CSMeshDestroy(&mesh));
-  PetscCall(MakeMesh(comm, GEN_CYLINDER, 16, 6, 0, 0, 0.03, &mesh));
-  PetscCall(CheckGradients(comm, mesh, "perturbed open cylinder (boundary)"));
-  PetscCall(CSMeshDestroy(&mesh));
-
-  PetscCall(MakeMesh(comm, GEN_ICOSPHERE, 3, 0, 0, 0, 0, &mesh));
-  PetscCall(CheckLaplacian(comm, mesh, "icosphere"));
-  PetscCall(CSMeshDestroy(&mesh));
-  PetscCall(MakeMesh(comm, GEN_DISK, 6, 0, 0, 0, 0, &mesh));
-  PetscCall(CheckLaplacian(comm, mesh, "disk (boundary)"));
-  PetscCall(CSMeshDestroy(&mesh));
+  for (size_t k = 0; k < sizeof(mesh_checks) / sizeof(mesh_checks[0]); k++) {
+    const MeshCheck *c = &mesh_checks[k];
+    CSMesh           mesh;
+    PetscCall(MakeMesh(comm, c->g, c->a, c->b, c->R, c->r, c->amp, &mesh));
+    PetscCall(c->check(comm, mesh, c->label));
+    PetscCall(CSMeshDestroy(&mesh));
+  }
 
   PetscCall(CheckSequence(comm, GEN_ICOSPHERE, "unit icosphere -> 4pi", 4 * PETSC_PI, 1e-5));
   PetscCall(CheckSequence(comm, GEN_TORUS, "torus R=sqrt2 r=1 -> 2pi^2", 2 * PETSC_PI * PETSC_PI, 1e-4));
-  PetscCall(PetscPrintf(comm, "%" PetscInt_FMT " failed\n", cs_test_failures));
-  PetscCall(PetscFinalize());
-  return (int)cs_test_failures;
+  return CSTestFinalize(comm, PetscFinalize);
 }

@@ -102,7 +102,5 @@ int main(int argc, char **argv)
   PetscCall(CheckSurface(comm, "perturbed icosphere", SURF_ICOSPHERE, 0.02));
   PetscCall(CheckSurface(comm, "torus 24 x 12", SURF_TORUS, 0));
   PetscCall(CheckSphereSpectrum(comm));
-  PetscCall(PetscPrintf(comm, "%" PetscInt_FMT " failure(s)\n", cs_test_failures));
-  PetscCall(SlepcFinalize());
-  return (int)cs_test_failures;
+  return CSTestFinalize(comm, SlepcFinalize);
 }

@@ -7,13 +7,12 @@
 #include "cs_quaternion_cholesky.h"
 #include "cs_linalg.h"
 #include "cs_package.h"
-
-static PetscInt nfail = 0;
+#include "cs_test.h"
 
 static PetscErrorCode Check(MPI_Comm comm, const char what[], PetscReal err, PetscReal tol)
 {
   PetscFunctionBeginUser;
-  if (!(err <= tol)) nfail++;
+  if (!(err <= tol)) cs_test_failures++;
   PetscCall(PetscPrintf(comm, "%s %-60s err %.3e (tol %.1e)\n", err <= tol ? "ok  " : "BAD ", what, (double)err, (double)tol));
   PetscFunctionReturn(0);
 }
@@ -23,10 +22,7 @@ static PetscErrorCode CheckQuaternions(MPI_Comm comm)
   PetscRandom r;
   PetscReal   e1 = 0, e2 = 0, e3 = 0, e4 = 0;
   PetscFunctionBeginUser;
-  PetscCall(PetscRandomCreate(PETSC_COMM_SELF, &r));
-  PetscCall(PetscRandomSetInterval(r, -1, 1));
-  PetscCall(PetscRandomSetSeed(r, 7));
-  PetscCall(PetscRandomSeed(r));
+  PetscCall(CSTestRandom(PETSC_COMM_SELF, -1, 1, 7, &r));
   for (int t = 0; t < 50; t++) {
     PetscReal   p[4], q[4], pq[4], cq[4], cpq[4], n[4], R[9], u[4];
     PetscScalar B[16], Bc[16];
@@ -92,10 +88,7 @@ static PetscErrorCode CheckAppendixG(MPI_Comm comm)
   PetscReal   err = 0;
   PetscRandom r;
   PetscFunctionBeginUser;
-  PetscCall(PetscRandomCreate(PETSC_COMM_SELF, &r));
-  PetscCall(PetscRandomSetInterval(r, -1, 1));
-  PetscCall(PetscRandomSetSeed(r, 5));
-  PetscCall(PetscRandomSeed(r));
+  PetscCall(CSTestRandom(PETSC_COMM_SELF, -1, 1, 5, &r));
   for (int t = 0; t < 20; t++) {
     PetscReal P[3][3], rho[3], e[3][4], an[3], A;
     for (int k = 0; k < 3; k++) {
@@ -240,9 +233,7 @@ static PetscErrorCode CheckOperators(CSMesh mesh, Vec x, CSRhoLocation loc, Vec 
   PetscCall(VecDuplicate(u, &y3));
   PetscCall(MatCreateVecs(A, NULL, &fa));
   PetscCall(VecDuplicate(fa, &fb));
-  PetscCall(PetscRandomCreate(mesh->comm, &r));
-  PetscCall(PetscRandomSetSeed(r, 11));
-  PetscCall(PetscRandomSeed(r));
+  PetscCall(CSTestRandom(mesh->comm, 0, 1, 11, &r));
   PetscCall(VecSetRandom(u, r));
   {
     PetscInt bs;
@@ -418,10 +409,7 @@ int main(int argc, char **argv)
   }
   PetscCall(CSMeshCreateFromOptions(comm, NULL, &mesh));
   /* a generic (non-round) surface: perturb the positions */
-  PetscCall(PetscRandomCreate(comm, &r));
-  PetscCall(PetscRandomSetInterval(r, -0.05, 0.05));
-  PetscCall(PetscRandomSetSeed(r, 3));
-  PetscCall(PetscRandomSeed(r));
+  PetscCall(CSTestRandom(comm, -0.05, 0.05, 3, &r));
   PetscCall(VecDuplicate(mesh->x, &x));
   PetscCall(VecDuplicate(mesh->x, &d));
   PetscCall(VecSetRandom(d, r));
@@ -440,7 +428,5 @@ int main(int argc, char **argv)
   PetscCall(VecDestroy(&rv));
   PetscCall(VecDestroy(&rf));
   PetscCall(CSMeshDestroy(&mesh));
-  PetscCall(PetscPrintf(comm, "%" PetscInt_FMT " failure(s)\n", nfail));
-  PetscCall(SlepcFinalize());
-  return (int)nfail;
+  return CSTestFinalize(comm, SlepcFinalize);
 }

@@ -129,9 +129,7 @@ int main(int argc, char **argv)
   PetscCall(CSInitializePackage());
   PetscCall(BuildMatrix(comm, n, 1e-3, 2, 3, PETSC_FALSE, &S));
   PetscCall(MatCreateVecs(S, &b, NULL));
-  PetscCall(PetscRandomCreate(comm, &rnd));
-  PetscCall(PetscRandomSetSeed(rnd, 7));
-  PetscCall(PetscRandomSeed(rnd));
+  PetscCall(CSTestRandom(comm, 0, 1, 7, &rnd));
   PetscCall(VecSetRandom(b, rnd));
 
   PetscCall(KSPCreate(comm, &ksp));
@@ -199,7 +197,5 @@ int main(int argc, char **argv)
   PetscCall(VecDestroy(&b));
   PetscCall(MatDestroy(&S));
   PetscCall(PetscRandomDestroy(&rnd));
-  PetscCall(PetscPrintf(comm, "%" PetscInt_FMT " failed\n", cs_test_failures));
-  PetscCall(PetscFinalize());
-  return (int)cs_test_failures;
+  return CSTestFinalize(comm, PetscFinalize);
 }

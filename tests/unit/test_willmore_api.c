@@ -128,7 +128,5 @@ int main(int argc, char **argv)
   PetscCall(CSInitializePackage());
   PetscCall(CheckSteps(PETSC_COMM_WORLD));
   PetscCall(CheckConverges(PETSC_COMM_WORLD));
-  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%" PetscInt_FMT " failed\n", cs_test_failures));
-  PetscCall(PetscFinalize());
-  return (int)cs_test_failures;
+  return CSTestFinalize(PETSC_COMM_WORLD, PetscFinalize);
 }

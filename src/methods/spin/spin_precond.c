@@ -65,18 +65,12 @@ static PetscErrorCode PCApply_CSSpinLap(PC pc, Vec x, Vec y)
   PetscCall(VecGetLocalSize(b, &n));
   PetscCall(VecGetArrayRead(s->v4, &va));
   for (PetscInt c = 0; c < 4; c++) {
-    KSPConvergedReason reason;
-    PetscInt           its;
     PetscCall(VecGetArrayRead(x, &xa));
     PetscCall(VecGetArray(b, &ba));
     for (PetscInt i = 0; i < n; i++) ba[i] = xa[4 * i + c] / va[4 * i + c];
     PetscCall(VecRestoreArray(b, &ba));
     PetscCall(VecRestoreArrayRead(x, &xa));
-    PetscCall(KSPSolve(s->klap, b, u));
-    PetscCall(KSPGetConvergedReason(s->klap, &reason));
-    PetscCheck(reason >= 0, s->mesh->comm, PETSC_ERR_NOT_CONVERGED, "spin: the scalar preconditioner solve failed (KSP reason %s; options -spin_lap_ksp_*, -spin_lap_pc_*)", KSPConvergedReasons[reason]);
-    PetscCall(KSPGetIterationNumber(s->klap, &its));
-    s->lap_its += its;
+    PetscCall(CSSpinKSPSolve(s, s->klap, b, u, "the scalar preconditioner solve", &s->lap_its));
     PetscCall(VecGetArrayRead(u, &ua));
     PetscCall(VecGetArray(y, &ya));
     for (PetscInt i = 0; i < n; i++) ya[4 * i + c] = ua[i] / va[4 * i + c];

@@ -46,16 +46,14 @@ static PetscErrorCode ReadValuesFile(const char option[], const char path[], Pet
 /* Reads a per-vertex (ncomp 1 or 3) or per-face field in file order into the global vector g. */
 static PetscErrorCode ReadField(CSMesh mesh, const char option[], const char path[], PetscInt depth, PetscInt ncomp, const char what[], Vec g)
 {
-  Vec          nat = depth == 2 ? mesh->natF1vec : (ncomp == 3 ? mesh->natV3vec : mesh->natV1vec);
-  PetscScalar *a;
-  PetscInt     n = depth == 2 ? mesh->Nf : mesh->Nv;
+  CSMeshNatural *field = depth == 2 ? &mesh->natF1 : (ncomp == 3 ? &mesh->natV3 : &mesh->natV1);
+  PetscScalar   *a;
+  PetscInt       n = depth == 2 ? mesh->Nf : mesh->Nv;
   PetscFunctionBeginUser;
-  PetscCall(VecGetArray(nat, &a));
+  PetscCall(VecGetArray(field->vec, &a));
   CSRootCall(mesh->comm, ReadValuesFile(option, path, n, ncomp, what, a));
-  PetscCall(VecRestoreArray(nat, &a));
-  if (depth == 2) PetscCall(CSMeshScatterF1(mesh, nat, g));
-  else if (ncomp == 3) PetscCall(CSMeshScatterV3(mesh, nat, g));
-  else PetscCall(CSMeshScatterV1(mesh, nat, g));
+  PetscCall(VecRestoreArray(field->vec, &a));
+  PetscCall(CSMeshScatter(field, field->vec, g));
   PetscFunctionReturn(0);
 }
 

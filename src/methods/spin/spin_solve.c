@@ -478,6 +478,21 @@ static PetscErrorCode DefaultStart(CSSpin s, Vec start)
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode CSSpinKSPSolve(CSSpin s, KSP ksp, Vec b, Vec x, const char what[], PetscInt *its)
+{
+  KSPConvergedReason reason;
+  const char        *prefix;
+  PetscInt           n;
+  PetscFunctionBeginUser;
+  PetscCall(KSPSolve(ksp, b, x));
+  PetscCall(KSPGetConvergedReason(ksp, &reason));
+  PetscCall(KSPGetOptionsPrefix(ksp, &prefix));
+  PetscCheck(reason >= 0, s->mesh->comm, PETSC_ERR_NOT_CONVERGED, "spin: %s failed (KSP reason %s; options -%sksp_*, -%spc_*)", what, KSPConvergedReasons[reason], prefix, prefix);
+  PetscCall(KSPGetIterationNumber(ksp, &n));
+  *its += n;
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode InverseIteration(CSSpin s, Vec xr, PetscReal *kr)
 {
   PetscReal sigma, nrm, xKx;
@@ -508,13 +523,7 @@ static PetscErrorCode InverseIteration(CSSpin s, Vec xr, PetscReal *kr)
   PetscCall(VecNormalize(xr, NULL));
   s->inner_its = 0;
   for (PetscInt it = 0; it < s->inverse_its; it++) {
-    KSPConvergedReason reason;
-    PetscInt           kits;
-    PetscCall(KSPSolve(s->kinv, xr, y));
-    PetscCall(KSPGetConvergedReason(s->kinv, &reason));
-    PetscCheck(reason >= 0, s->mesh->comm, PETSC_ERR_NOT_CONVERGED, "spin: inverse iteration solve failed (KSP reason %s; options -spin_inverse_ksp_*, -spin_inverse_pc_*)", KSPConvergedReasons[reason]);
-    PetscCall(KSPGetIterationNumber(s->kinv, &kits));
-    s->inner_its += kits;
+    PetscCall(CSSpinKSPSolve(s, s->kinv, xr, y, "inverse iteration solve", &s->inner_its));
     PetscCall(VecNormalize(y, &nrm));
     PetscCall(VecCopy(y, xr));
   }

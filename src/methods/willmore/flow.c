@@ -5,6 +5,7 @@
 
 const char *const CSWillmoreFlowConvergedReasons[] = {"ITERATING", "CONVERGED_RTOL", "DIVERGED_MAX_IT", "DIVERGED_REJECTIONS", "DIVERGED_AREA", "DIVERGED_MESH_DEGENERATE", NULL};
 /* the summary's stop_reason (unchanged from before the object) */
+const char *const CSWillmoreFlowDegenerations[] = {"none", "fins", "squeeze", "smooth", NULL};
 const char *const CSWillmoreFlowStopReasons[] = {"iterating", "converged", "max_it", "rejections", "diverged", "mesh_degenerate", NULL};
 
 static PetscFunctionList CSWillmoreFlowList = NULL;
@@ -53,6 +54,8 @@ static void SetDefaults(CSWillmoreFlow F)
   F->vmax            = 1e-2;
   F->restore_stalled = PETSC_TRUE;
   F->max_area_ratio  = 200;
+  F->project_at_stop = PETSC_TRUE;
+  F->fin_q           = 3; /* measured at the guard's stop: smooth squeezes 1.15-2.4, eight_cgal's fins 4.9 and growing */
   F->eps             = 1e-3;
   F->reuse_its       = -1; /* the saddle solver's default */
   F->metric_type     = CS_FLOW_METRIC_H2;
@@ -197,6 +200,7 @@ PetscErrorCode CSWillmoreFlowGetInfo(CSWillmoreFlow F, CSWillmoreFlowInfo *info)
   info->linear_solves        = F->saddle.solves;
   info->area_spread          = F->spread;
   info->q_max                = F->qmax;
+  info->degeneration         = F->degeneration;
   info->seconds              = now - F->t0;
   info->k                    = F->k;
   info->constraint_values    = F->cx;

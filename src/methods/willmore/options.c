@@ -40,6 +40,9 @@ static PetscErrorCode StepOptions(CSWillmoreFlow F, PetscOptionItems *PetscOptio
   PetscCall(PetscOptionsBool("-restore_stalled", "CGD/GD: project an accepted state back onto the constraints when t has collapsed (t < 1e-3 t_max) with the violation above vmax / 10", NULL, F->restore_stalled, &F->restore_stalled, NULL));
   PetscCall(PetscOptionsReal("-max_area_ratio", "Stop when max(A_i/A0_i)/min(A_i/A0_i) of the vertex areas, or the total area relative to the input, exceeds this (0: off)", NULL, F->max_area_ratio, &F->max_area_ratio, NULL));
   PetscCheck(F->max_area_ratio == 0 || F->max_area_ratio > 1, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%smax_area_ratio %g: use 0 (off) or a ratio above 1", p, (double)F->max_area_ratio);
+  PetscCall(PetscOptionsBool("-project_at_stop", "When the resolution guard stops the flow, project the state onto the constraints (PGD's projection) so the result lies in the prescribed conformal class", NULL, F->project_at_stop, &F->project_at_stop, NULL));
+  PetscCall(PetscOptionsReal("-fin_q", "Resolution guard: a stop with the largest quasi-conformal error of a face above this is reported as fins (a jump of the conformal factor across faces), below it as a smooth concentration", NULL, F->fin_q, &F->fin_q, NULL));
+  PetscCheck(F->fin_q >= 1, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sfin_q %g: a quasi-conformal error is at least 1", p, (double)F->fin_q);
   PetscCall(PetscOptionsReal("-rtol", "Stop when ||g + X^T mu||_2 is below this", NULL, F->rtol, &F->rtol, NULL));
   PetscCall(PetscOptionsReal("-ctol", "... and the constraint violation (inf-norm) below this", NULL, F->ctol, &F->ctol, NULL));
   PetscCall(PetscOptionsInt("-max_it", "Maximum number of iterations", NULL, F->max_it, &F->max_it, NULL));

@@ -349,20 +349,31 @@ static PetscErrorCode SmallSolve(MPI_Comm comm, PetscInt k, PetscScalar *S, Pets
   PetscFunctionReturn(0);
 }
 
+/* Copies between a saddle vector w = [E; V] (w = V without edge unknowns) and its parts: into w if in, else
+   out of it. */
+static PetscErrorCode CopyParts(CSSaddle *s, Vec w, Vec E, Vec V, PetscBool in)
+{
+  Vec part[2] = {E, V};
+  PetscFunctionBeginUser;
+  if (!s->edges) {
+    PetscCall(in ? VecCopy(V, w) : VecCopy(w, V));
+    PetscFunctionReturn(0);
+  }
+  for (PetscInt i = 0; i < 2; i++) {
+    Vec sub;
+    PetscCall(VecGetSubVector(w, s->is[i], &sub));
+    PetscCall(in ? VecCopy(part[i], sub) : VecCopy(sub, part[i]));
+    PetscCall(VecRestoreSubVector(w, s->is[i], &sub));
+  }
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode CSSaddleSolve(CSSaddle *s, Vec rE, Vec rV, const PetscReal rX[], Vec zE, Vec zV, PetscReal zX[], PetscInt *its, KSPConvergedReason *reason)
 {
   PetscInt n = 0, nfirst;
   PetscFunctionBeginUser;
   *its = 0;
-  if (s->edges) {
-    Vec sub;
-    PetscCall(VecGetSubVector(s->b, s->is[0], &sub));
-    PetscCall(VecCopy(rE, sub));
-    PetscCall(VecRestoreSubVector(s->b, s->is[0], &sub));
-    PetscCall(VecGetSubVector(s->b, s->is[1], &sub));
-    PetscCall(VecCopy(rV, sub));
-    PetscCall(VecRestoreSubVector(s->b, s->is[1], &sub));
-  } else PetscCall(VecCopy(rV, s->b));
+  PetscCall(CopyParts(s, s->b, rE, rV, PETSC_TRUE));
   PetscCall(KSPSetInitialGuessNonzero(s->ksp, PETSC_FALSE));
   PetscCall(KSolve(s, s->b, s->z, &n, reason));
   if (*reason <= 0) PetscFunctionReturn(0);
@@ -397,15 +408,7 @@ PetscErrorCode CSSaddleSolve(CSSaddle *s, Vec rE, Vec rV, const PetscReal rX[], 
     }
     PetscCall(PetscFree2(S, rhs));
   }
-  if (s->edges) {
-    Vec sub;
-    PetscCall(VecGetSubVector(s->z, s->is[0], &sub));
-    PetscCall(VecCopy(sub, zE));
-    PetscCall(VecRestoreSubVector(s->z, s->is[0], &sub));
-    PetscCall(VecGetSubVector(s->z, s->is[1], &sub));
-    PetscCall(VecCopy(sub, zV));
-    PetscCall(VecRestoreSubVector(s->z, s->is[1], &sub));
-  } else PetscCall(VecCopy(s->z, zV));
+  PetscCall(CopyParts(s, s->z, zE, zV, PETSC_FALSE));
   s->last_its = nfirst;
   *its        = n;
   PetscFunctionReturn(0);

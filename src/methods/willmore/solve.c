@@ -53,6 +53,29 @@ static PetscErrorCode StepWithRejections(CSWillmoreFlow F, PetscBool *accepted)
   PetscFunctionReturn(0);
 }
 
+/* The state the resolution guard stopped at is not a critical point, but it can at least be exactly in the
+   constraint set: PGD's projection puts it there (-flow_project_at_stop, on), so the result written is a surface
+   in the prescribed conformal class with a lower W than the input (docs/real_meshes.md). If the projection fails
+   the state is kept as it was. */
+static PetscErrorCode ProjectAtStop(CSWillmoreFlow F)
+{
+  PetscReal v = PetscMax(F->conf, F->glob), E = F->E;
+  PetscInt  its = 0;
+  PetscBool ok;
+  Vec       keep;
+  PetscFunctionBeginUser;
+  if (!F->project_at_stop || (!F->conformal && !F->k) || v < F->ctol) PetscFunctionReturn(0);
+  PetscCall(VecDuplicate(F->x, &keep));
+  PetscCall(VecCopy(F->x, keep));
+  PetscCall(CSWFProject(F, F->x, &ok, &its));
+  if (ok) PetscCall(Evaluate(F));
+  else PetscCall(VecCopy(keep, F->x));
+  PetscCall(VecDestroy(&keep));
+  if (ok) PetscCall(PetscPrintf(F->comm, "flow: the stopped state is projected onto the constraints (-%sproject_at_stop): violation %.2e -> %.2e, W %.10g -> %.10g, largest quasi-conformal error %.3g\n", F->prefix, (double)v, (double)PetscMax(F->conf, F->glob), (double)E, (double)F->E, (double)F->qmax));
+  else PetscCall(PetscPrintf(F->comm, "flow: the projection of the stopped state onto the constraints failed (-%sproject_at_stop); the state is kept, violation %.2e\n", F->prefix, (double)v));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode CSWillmoreFlowStep(CSWillmoreFlow F, CSWillmoreFlowConvergedReason *reason)
 {
   PetscBool accepted;
@@ -67,6 +90,7 @@ PetscErrorCode CSWillmoreFlowStep(CSWillmoreFlow F, CSWillmoreFlowConvergedReaso
   for (PetscInt i = 0; i < F->nmonitor; i++) PetscCall((*F->monitor[i].fn)(F, F->it, F->monitor[i].ctx));
   PetscCheck(F->E == F->E && F->el == F->el, F->comm, PETSC_ERR_FP, "flow: the energy or the residual is not a number at iteration %" PetscInt_FMT " (degenerate triangles?); try a smaller -%st", F->it, F->prefix);
   PetscCall(CSWFCheckResolution(F, &F->reason));
+  if (F->reason == CS_WILLMORE_FLOW_DIVERGED_MESH_DEGENERATE) PetscCall(ProjectAtStop(F));
   if (!F->reason && F->el < F->rtol && PetscMax(F->conf, F->glob) < F->ctol) F->reason = CS_WILLMORE_FLOW_CONVERGED_RTOL;
   if (!F->reason && F->it >= F->max_it) F->reason = CS_WILLMORE_FLOW_DIVERGED_MAX_IT;
   if (!F->reason) {

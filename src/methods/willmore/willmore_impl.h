@@ -122,6 +122,9 @@ struct _p_CSWillmoreFlow {
   Vec                   area0, areat; /* barycentric vertex areas of the input and of the current state */
   PetscReal             area0_total;  /* total area of the input */
   PetscReal             max_area_ratio;
+  PetscBool             project_at_stop; /* project the state the guard stopped at onto the constraints */
+  PetscReal             fin_q;        /* q_max above which the guard reports fins rather than a smooth concentration */
+  CSWillmoreFlowDegeneration degeneration;
   PetscInt              max_it, max_rej, proj_max_it, soc_max_it;
   PetscBool             step_control;
   PetscReal             proj_tmu;

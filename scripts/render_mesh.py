@@ -1,0 +1,94 @@
+#!/usr/bin/env python3
+"""Pictures of flow results against their input, for docs and for looking at a run (headless matplotlib).
+
+  /usr/bin/python3 scripts/render_mesh.py OUT.png INPUT.obj RESULT.obj [RESULT2.obj ...] [--views 3] [--title T]
+
+Each RESULT (same connectivity as INPUT, e.g. the -o of a flow) is drawn from a few view directions, its faces
+coloured by log10 of (face area / input face area), centred on the median: blue faces have shrunk, red ones have
+grown, relative to the rest; a discrete conformal map keeps neighbouring colours close, fins show as isolated red
+stars, squeezes as smooth blue regions (docs/real_meshes.md). Shading by the face normal. OBJ only (v and
+triangular f lines). Needs Debian's python3-matplotlib and python3-numpy (/usr/bin/python3)."""
+import argparse
+import sys
+
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+from mpl_toolkits.mplot3d.art3d import Poly3DCollection  # noqa: E402
+
+VIEWS = [(20, 30), (70, -60), (-10, 120)]
+
+
+def read_obj(path):
+    verts, faces = [], []
+    with open(path) as fh:
+        for line in fh:
+            s = line.split()
+            if not s:
+                continue
+            if s[0] == "v":
+                verts.append([float(x) for x in s[1:4]])
+            elif s[0] == "f":
+                if len(s) != 4:
+                    sys.exit("%s: only triangles are drawn" % path)
+                faces.append([int(x.split("/")[0]) - 1 for x in s[1:4]])
+    if not verts or not faces:
+        sys.exit("%s: no vertices or faces" % path)
+    return np.array(verts), np.array(faces)
+
+
+def face_geometry(V, F):
+    T = V[F]
+    n = np.cross(T[:, 1] - T[:, 0], T[:, 2] - T[:, 0])
+    a = np.linalg.norm(n, axis=1)
+    return T, n / (a[:, None] + 1e-300), a
+
+
+def draw(ax, V, F, ratio, view, title):
+    T, n, _ = face_geometry(V, F)
+    light = np.array([0.3, 0.3, 1.0]) / np.linalg.norm([0.3, 0.3, 1.0])
+    shade = 0.35 + 0.65 * np.abs(n @ light)
+    col = plt.cm.coolwarm(np.clip(ratio / 4 + 0.5, 0, 1))
+    col[:, :3] *= shade[:, None]
+    ax.add_collection3d(Poly3DCollection(T, facecolors=col, edgecolor="k", linewidths=0.03))
+    lo, hi = V.min(0), V.max(0)
+    c, r = (lo + hi) / 2, (hi - lo).max() / 2
+    ax.set_xlim(c[0] - r, c[0] + r)
+    ax.set_ylim(c[1] - r, c[1] + r)
+    ax.set_zlim(c[2] - r, c[2] + r)
+    ax.view_init(*view)
+    ax.set_axis_off()
+    ax.set_title(title, fontsize=8)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("out")
+    ap.add_argument("input")
+    ap.add_argument("results", nargs="+")
+    ap.add_argument("--views", type=int, default=3, choices=[1, 2, 3])
+    ap.add_argument("--title", default="")
+    a = ap.parse_args()
+    V0, F = read_obj(a.input)
+    _, _, A0 = face_geometry(V0, F)
+    views = VIEWS[: a.views]
+    fig = plt.figure(figsize=(4.5 * len(a.results), 4.5 * len(views)))
+    for col, path in enumerate(a.results):
+        V, F1 = read_obj(path)
+        if F1.shape != F.shape or (F1 != F).any():
+            sys.exit("%s: not the connectivity of %s" % (path, a.input))
+        _, _, A = face_geometry(V, F)
+        ratio = np.log10(np.maximum(A, 1e-300) / A0)
+        ratio -= np.median(ratio)
+        for row, view in enumerate(views):
+            ax = fig.add_subplot(len(views), len(a.results), row * len(a.results) + col + 1, projection="3d")
+            draw(ax, V, F, ratio, view, (a.title + " " if a.title else "") + path.split("/")[-1])
+    fig.suptitle("face area / input face area, log10 (blue -2 ... red +2, median 0)", fontsize=9)
+    plt.tight_layout()
+    plt.savefig(a.out, dpi=70)
+    print("wrote %s" % a.out)
+
+
+if __name__ == "__main__":
+    main()
