@@ -12,4 +12,6 @@ PETSC_EXTERN PetscLogEvent CS_EVENT_QuatCholSym, CS_EVENT_QuatCholNum, CS_EVENT_
 PETSC_EXTERN PetscLogEvent CS_EVENT_SubCholSym, CS_EVENT_SubCholNum, CS_EVENT_SubCholDense, CS_EVENT_SubCholSolve;
 /* methods: the spin transformation's eigenproblem and Poisson problem */
 PETSC_EXTERN PetscLogEvent CS_EVENT_SpinEigen, CS_EVENT_SpinPoisson;
+/* methods: the curve flow's Poisson matrix and factorisation (once), its per-step Poisson solves */
+PETSC_EXTERN PetscLogEvent CS_EVENT_CurvePoissonSetUp, CS_EVENT_CurvePoisson;
 #endif

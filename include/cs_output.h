@@ -21,6 +21,8 @@ typedef struct {
 } CSOutput;
 
 PETSC_EXTERN PetscErrorCode CSOutputFromOptions(MPI_Comm comm, CSOutput *o);
+/* the same with the -o extensions a task writes (NULL-terminated, lower case) and the message for others */
+PETSC_EXTERN PetscErrorCode CSOutputFromOptionsFormats(MPI_Comm comm, const char *const exts[], const char what[], CSOutput *o);
 /* The keys every task reports: counts, topology, area, volume, willmore, (q_mean, q_max against
    -reference or the given xref); CSOutputFinish then writes -o and -summary (adding seconds). */
 PETSC_EXTERN PetscErrorCode CSOutputAddMeshFacts(CSOutput *o, CSMesh mesh, Vec x, Vec xref);

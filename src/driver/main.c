@@ -1,6 +1,7 @@
 static const char help[] = "confsurf: conformal geometry processing of triangle meshes on PETSc/SLEPc.\n"
-                           "  -task info|flow|spin|spectrum   what to do (default info)\n"
+                           "  -task info|flow|spin|spectrum|curveflow   what to do (default info)\n"
                            "  -mesh FILE (.obj .off .ply) or -gen icosphere|torus|flattorus|cylinder|disk\n"
+                           "  curveflow: -curve FILE (.obj or text x y) or -gen_curve circle|ellipse|star|noisy|limacon\n"
                            "  -o FILE -viewer_dir DIR -summary FILE.json -history_csv FILE.csv -reference FILE\n"
                            "Unknown options are an error (they are listed at the end of the run).\n";
 
@@ -16,6 +17,7 @@ static PetscErrorCode RegisterTasks(PetscFunctionList *tasks)
   PetscCall(PetscFunctionListAdd(tasks, "flow", CSTaskFlow));
   PetscCall(PetscFunctionListAdd(tasks, "spin", CSTaskSpin));
   PetscCall(PetscFunctionListAdd(tasks, "spectrum", CSTaskSpectrum));
+  PetscCall(PetscFunctionListAdd(tasks, "curveflow", CSTaskCurveFlow));
   PetscFunctionReturn(0);
 }
 
@@ -72,7 +74,7 @@ static PetscErrorCode Run(MPI_Comm comm)
   PetscOptionsEnd();
   PetscCall(PetscFunctionListFind(tasks, task, &run));
   PetscCall(PetscFunctionListDestroy(&tasks));
-  PetscCheck(run, comm, PETSC_ERR_ARG_UNKNOWN_TYPE, "-task %s: unknown task (known: info flow spin spectrum)", task);
+  PetscCheck(run, comm, PETSC_ERR_ARG_UNKNOWN_TYPE, "-task %s: unknown task (known: info flow spin spectrum curveflow)", task);
   PetscCall((*run)(comm));
   PetscFunctionReturn(0);
 }

@@ -50,6 +50,10 @@ static const EventName spin_events[] = {
   {"CSSpinEigen",   &CS_EVENT_SpinEigen  },
   {"CSSpinPoisson", &CS_EVENT_SpinPoisson},
 };
+static const EventName curve_events[] = {
+  {"CSCurvePoissonSet", &CS_EVENT_CurvePoissonSetUp},
+  {"CSCurvePoisson",    &CS_EVENT_CurvePoisson     },
+};
 
 /* Registers the class (unless it is an existing one: name NULL) and its n events. */
 static PetscErrorCode RegisterClassEvents(const char name[], PetscClassId classid, size_t n, const EventName events[])
@@ -68,6 +72,7 @@ static PetscErrorCode RegisterEvents(void)
   PetscCall(RegisterClassEvents("confsurf quaternion Cholesky", 0, PETSC_STATIC_ARRAY_LENGTH(quat_events), quat_events));
   PetscCall(RegisterClassEvents(NULL, PC_CLASSID, PETSC_STATIC_ARRAY_LENGTH(subchol_events), subchol_events));
   PetscCall(RegisterClassEvents("confsurf spin", 0, PETSC_STATIC_ARRAY_LENGTH(spin_events), spin_events));
+  PetscCall(RegisterClassEvents("confsurf curve flow", 0, PETSC_STATIC_ARRAY_LENGTH(curve_events), curve_events));
   PetscFunctionReturn(0);
 }
 

@@ -18,6 +18,14 @@ static PetscErrorCode CheckWritable(const char path[])
 
 PetscErrorCode CSOutputFromOptions(MPI_Comm comm, CSOutput *o)
 {
+  const char *const exts[] = {"obj", "ply", NULL};
+  PetscFunctionBeginUser;
+  PetscCall(CSOutputFromOptionsFormats(comm, exts, "the final mesh is written as .obj or .ply", o));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSOutputFromOptionsFormats(MPI_Comm comm, const char *const exts[], const char what[], CSOutput *o)
+{
   PetscFunctionBeginUser;
   PetscCall(PetscMemzero(o, sizeof(*o)));
   PetscCall(PetscTime(&o->t0));
@@ -36,9 +44,11 @@ PetscErrorCode CSOutputFromOptions(MPI_Comm comm, CSOutput *o)
   /* fail now rather than after hours of iterations (and on every rank: the checkpoint is written by rank 0) */
   if (o->has_checkpoint) CSRootCall(comm, CheckWritable(o->checkpoint));
   if (o->has_out) {
-    char ext[16];
+    char      ext[16];
+    PetscBool ok = PETSC_FALSE;
     PetscCall(CSPathExtension(o->out, ext, sizeof(ext)));
-    PetscCheck(!strcmp(ext, "obj") || !strcmp(ext, "ply"), comm, PETSC_ERR_ARG_WRONG, "-o %s: the final mesh is written as .obj or .ply", o->out);
+    for (PetscInt k = 0; exts[k]; k++) ok = (PetscBool)(ok || !strcmp(ext, exts[k]));
+    PetscCheck(ok, comm, PETSC_ERR_ARG_WRONG, "-o %s: %s", o->out, what);
   }
   PetscCall(CSJSONCreate(comm, &o->json));
   { /* the threads of rank 0 (src/util/threads.c); "ranks" comes with CSOutputFinish */

@@ -1,0 +1,72 @@
+/* CSCurveCreateFromOptions: -curve FILE or -gen_curve SHAPE, read/generated and validated on rank 0, errors
+   raised on every rank (include/cs_curve.h). */
+#include "cs_curve.h"
+#include "cs_util.h"
+#include "cs_log.h"
+
+typedef struct {
+  char             file[PETSC_MAX_PATH_LEN], shape[32];
+  PetscBool        has_file, has_gen, open, close;
+  CSCurveGenParams p;
+} CurveOptions;
+
+static PetscErrorCode ReadOptions(MPI_Comm comm, CurveOptions *o)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscMemzero(o, sizeof(*o)));
+  o->p.n         = 200;
+  o->p.r         = 1;
+  o->p.a         = 2;
+  o->p.b         = 1;
+  o->p.amplitude = 0.3;
+  o->p.petals    = 5;
+  o->p.noise     = 0.05;
+  o->p.seed      = 1;
+  PetscOptionsBegin(comm, NULL, "confsurf curve input", NULL);
+  PetscCall(PetscOptionsString("-curve", "Closed planar polyline: .obj (v x y [z], one l element) or text (x y per line)", NULL, o->file, o->file, sizeof(o->file), &o->has_file));
+  PetscCall(PetscOptionsString("-gen_curve", "Generated curve: circle|ellipse|star|noisy|limacon", NULL, o->shape, o->shape, sizeof(o->shape), &o->has_gen));
+  PetscCall(PetscOptionsInt("-gen_curve_n", "Vertices of the generated curve", NULL, o->p.n, &o->p.n, NULL));
+  PetscCall(PetscOptionsReal("-gen_curve_radius", "Radius (circle, star, noisy)", NULL, o->p.r, &o->p.r, NULL));
+  PetscCall(PetscOptionsReal("-gen_curve_a", "Ellipse semi-axis a; limacon r = b + a cos t", NULL, o->p.a, &o->p.a, NULL));
+  PetscCall(PetscOptionsReal("-gen_curve_b", "Ellipse semi-axis b; limacon r = b + a cos t", NULL, o->p.b, &o->p.b, NULL));
+  PetscCall(PetscOptionsReal("-gen_curve_amplitude", "Star: r (1 + amplitude cos(petals t))", NULL, o->p.amplitude, &o->p.amplitude, NULL));
+  PetscCall(PetscOptionsInt("-gen_curve_petals", "Star: number of petals", NULL, o->p.petals, &o->p.petals, NULL));
+  PetscCall(PetscOptionsReal("-gen_curve_noise", "Noisy circle: relative radial noise amplitude", NULL, o->p.noise, &o->p.noise, NULL));
+  PetscCall(PetscOptionsInt("-gen_curve_seed", "Noisy circle: random seed", NULL, o->p.seed, &o->p.seed, NULL));
+  PetscCall(PetscOptionsBool("-curve_open", "Treat the input as an open curve (no closure constraints)", NULL, o->open, &o->open, NULL));
+  PetscCall(PetscOptionsBool("-curve_close", "Close an open input line with the edge last -> first", NULL, o->close, &o->close, NULL));
+  PetscOptionsEnd();
+  PetscCheck(o->has_file != o->has_gen, comm, PETSC_ERR_ARG_WRONG, "give exactly one of -curve FILE and -gen_curve circle|ellipse|star|noisy|limacon");
+  PetscCheck(!(o->open && o->close), comm, PETSC_ERR_ARG_INCOMP, "-curve_open and -curve_close exclude each other");
+  PetscFunctionReturn(0);
+}
+
+/* rank 0: read or generate, apply -curve_open/-curve_close, validate */
+static PetscErrorCode Load(const CurveOptions *o, CSCurveData *cd)
+{
+  PetscErrorCode ierr;
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(CS_EVENT_MeshRead, 0, 0, 0, 0));
+  if (o->has_file) PetscCall(CSCurveDataRead(o->file, cd));
+  else PetscCall(CSCurveDataGenerate(o->shape, &o->p, cd));
+  if (o->close) cd->closed = PETSC_TRUE;
+  if (o->open) cd->closed = PETSC_FALSE;
+  ierr = CSCurveDataValidate(cd, o->open);
+  if (ierr) PetscCall(CSCurveDataDestroy(cd));
+  PetscCall(PetscLogEventEnd(CS_EVENT_MeshRead, 0, 0, 0, 0));
+  PetscCall(ierr);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSCurveCreateFromOptions(MPI_Comm comm, CSCurve *curve)
+{
+  CurveOptions o;
+  CSCurveData  cd;
+  PetscFunctionBeginUser;
+  PetscCall(PetscMemzero(&cd, sizeof(cd)));
+  PetscCall(ReadOptions(comm, &o));
+  CSRootCall(comm, Load(&o, &cd));
+  PetscCall(CSCurveCreate(comm, &cd, curve));
+  PetscCall(CSCurveDataDestroy(&cd));
+  PetscFunctionReturn(0);
+}

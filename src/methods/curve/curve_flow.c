@@ -1,0 +1,211 @@
+/* The isometric curve flow object (crane2013 Sec. 5): options, set-up, the stepping loop, monitors and
+   getters. The step's parts: curve_direction.c (Eq. 1, the filter, the constraints), curve_integrate.c
+   (Eq. 2, Sec. 5.1-5.2 angles and tangents), curve_poisson.c (Sec. 5.2 positions). */
+#include "curve_flow_impl.h"
+#include "cs_package.h"
+
+static const char *const ReasonsShifted[]         = {"turning_changed", "energy_growth", "max_it", "iterating", "converged"};
+const char *const       *CSCurveFlowConvergedReasons = ReasonsShifted + 3;
+
+PetscErrorCode CSCurveFlowCreate(CSCurve curve, CSCurveFlow *flow)
+{
+  CSCurveFlow F;
+  PetscFunctionBeginUser;
+  PetscCall(CSInitializePackage());
+  PetscCall(PetscNew(&F));
+  F->curve  = curve;
+  F->comm   = curve->comm;
+  F->tau    = 0.95; /* the default; stable for tau < 1 (Sec. 5: |1 - 2 tau| < 1) */
+  F->max_it = 100;
+  F->rtol   = 1e-9;
+  F->sigma  = 1;
+  F->fk     = 2;
+  F->egrow  = 1e6;
+  PetscCall(PetscStrallocpy("curve_", &F->prefix));
+  *flow = F;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSCurveFlowSetOptionsPrefix(CSCurveFlow F, const char prefix[])
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscFree(F->prefix));
+  PetscCall(PetscStrallocpy(prefix ? prefix : "", &F->prefix));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSCurveFlowGetOptionsPrefix(CSCurveFlow F, const char *prefix[])
+{
+  PetscFunctionBeginUser;
+  *prefix = F->prefix;
+  PetscFunctionReturn(0);
+}
+
+/* a clear one-line error naming the option (with the prefix) for every bad value */
+static PetscErrorCode CheckOptions(CSCurveFlow F)
+{
+  const char *p = F->prefix;
+  PetscFunctionBeginUser;
+  PetscCheck(F->tau > 0 && !PetscIsInfOrNanReal(F->tau), F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%stau %g: must be > 0", p, (double)F->tau);
+  PetscCheck(F->max_it >= 0, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%smax_it %" PetscInt_FMT ": must be >= 0", p, F->max_it);
+  PetscCheck(F->rtol >= 0, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%srtol %g: must be >= 0", p, (double)F->rtol);
+  PetscCheck(F->sigma > 0, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sfilter_sigma %g: must be > 0", p, (double)F->sigma);
+  PetscCheck(F->fk >= 0 && F->fk <= 4, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sfilter_k %" PetscInt_FMT ": must lie in 0..4", p, F->fk);
+  PetscCheck(F->egrow > 1, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%smax_energy_growth %g: must be > 1", p, (double)F->egrow);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSCurveFlowSetFromOptions(CSCurveFlow F)
+{
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(F->comm, F->prefix, "Isometric curve flow (crane2013 Sec. 5)", NULL);
+  PetscCall(PetscOptionsReal("-tau", "Time step of the forward Euler step kappa <- kappa - 2 tau kappa (Eq. 2); stable for tau < 1", NULL, F->tau, &F->tau, NULL));
+  PetscCall(PetscOptionsInt("-max_it", "Maximum number of steps", NULL, F->max_it, &F->max_it, NULL));
+  PetscCall(PetscOptionsReal("-rtol", "Stop when |v|_d sqrt(length)/2pi (v: the constrained direction) and the last step's max |f - f_old| / (length/2pi) are below this", NULL, F->rtol, &F->rtol, NULL));
+  PetscCall(PetscOptionsBool("-filter", "Spectral filter v <- v - (id + sigma A^k)^{-1} v of the direction (Sec. 4)", NULL, F->filter, &F->filter, NULL));
+  PetscCall(PetscOptionsReal("-filter_sigma", "Filter sigma in units of (length/2pi)^(2k)", NULL, F->sigma, &F->sigma, NULL));
+  PetscCall(PetscOptionsInt("-filter_k", "Filter order k (0..4)", NULL, F->fk, &F->fk, NULL));
+  PetscCall(PetscOptionsReal("-max_energy_growth", "Stop (diverged) when E exceeds this times the initial E", NULL, F->egrow, &F->egrow, NULL));
+  PetscOptionsEnd();
+  PetscCall(CheckOptions(F));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode CreateVecs(CSCurveFlow F)
+{
+  CSCurve c = F->curve;
+  PetscFunctionBeginUser;
+  PetscCall(VecDuplicate(c->x, &F->x));
+  PetscCall(VecCopy(c->x, F->x));
+  PetscCall(VecDuplicate(c->x, &F->xold));
+  PetscCall(VecDuplicate(c->x, &F->w));
+  PetscCall(CSCurveCreateScalarVec(c, &F->len));
+  {
+    Vec *vs[] = {&F->d, &F->lwork, &F->kappa, &F->v, &F->theta};
+    for (size_t k = 0; k < sizeof(vs) / sizeof(vs[0]); k++) PetscCall(VecDuplicate(F->len, vs[k]));
+  }
+  for (int k = 0; k < 3; k++) PetscCall(VecDuplicate(F->len, &F->c[k]));
+  for (int k = 0; k < 2; k++) PetscCall(VecDuplicate(F->len, &F->rhs[k]));
+  for (int k = 0; k < 2; k++) PetscCall(VecDuplicate(F->len, &F->del[k]));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSCurveFlowSetUp(CSCurveFlow F)
+{
+  PetscLogDouble t1;
+  PetscScalar    L;
+  PetscFunctionBeginUser;
+  if (F->setupcalled) PetscFunctionReturn(0);
+  PetscCall(PetscTime(&F->t0));
+  PetscCall(CreateVecs(F));
+  PetscCall(CSCurveEdgeLengths(F->curve, F->x, F->len));
+  PetscCall(CSCurveDualLengths(F->curve, F->len, F->d));
+  PetscCall(VecSum(F->len, &L));
+  F->length = PetscRealPart(L);
+  PetscCall(CSCurveFlowSetUpPoisson(F));
+  if (F->filter) PetscCall(CSCurveFlowSetUpFilter(F));
+  PetscCall(PetscTime(&t1));
+  F->t_setup     = t1 - F->t0;
+  F->setupcalled = PETSC_TRUE;
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode Monitor(CSCurveFlow F, CSCurveMonitorEvent ev)
+{
+  PetscLogDouble now;
+  PetscFunctionBeginUser;
+  PetscCall(PetscTime(&now));
+  F->s.event   = ev;
+  F->s.seconds = (PetscReal)(now - F->t0);
+  for (PetscInt i = 0; i < F->nmon; i++) PetscCall(F->mon[i](F, &F->s, F->monctx[i]));
+  PetscFunctionReturn(0);
+}
+
+/* the convergence tests of a new state */
+static void Judge(CSCurveFlow F)
+{
+  CSCurveMonitorInfo *s = &F->s;
+  if (!(s->energy == s->energy) || s->energy > F->egrow * F->E0) F->reason = CS_CURVE_DIVERGED_ENERGY;
+  else if (F->curve->closed && PetscAbsReal(s->turning - (PetscReal)F->turning0) > 0.5) F->reason = CS_CURVE_DIVERGED_TURNING; /* open: total curvature is free */
+  else if (s->stationarity < F->rtol && (s->it == 0 || s->change < F->rtol)) F->reason = CS_CURVE_CONVERGED_RTOL;
+  else if (s->it >= F->max_it) F->reason = CS_CURVE_DIVERGED_MAX_IT;
+}
+
+static PetscErrorCode Start(CSCurveFlow F)
+{
+  PetscFunctionBeginUser;
+  PetscCall(CSCurveFlowSetUp(F));
+  if (F->started) PetscFunctionReturn(0);
+  F->started = PETSC_TRUE;
+  PetscCall(CSCurveFlowEvaluate(F));
+  F->E0       = F->s.energy;
+  F->turning0 = (PetscInt)PetscFloorReal(F->s.turning + 0.5);
+  Judge(F);
+  PetscCall(Monitor(F, CS_CURVE_MONITOR_START));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSCurveFlowStep(CSCurveFlow F)
+{
+  PetscLogDouble t0, t1;
+  PetscFunctionBeginUser;
+  PetscCall(Start(F));
+  if (F->reason != CS_CURVE_ITERATING) PetscFunctionReturn(0);
+  PetscCall(PetscTime(&t0));
+  PetscCall(CSCurveFlowIntegrate(F));   /* Eq. 2 and Sec. 5.2: theta, tangents, right-hand side, gap */
+  PetscCall(CSCurveFlowReconstruct(F)); /* Sec. 5.2: L f = b, minus the mean motion */
+  F->s.it++;
+  PetscCall(CSCurveFlowEvaluate(F)); /* the new state and the next direction (Eq. 1, Sec. 4, Sec. 5) */
+  PetscCall(PetscTime(&t1));
+  F->s.step_seconds = (PetscReal)(t1 - t0);
+  F->t_steps += t1 - t0;
+  F->gap_max  = PetscMax(F->gap_max, F->s.gap);
+  F->dist_max = PetscMax(F->dist_max, F->s.distortion);
+  Judge(F);
+  PetscCall(Monitor(F, CS_CURVE_MONITOR_STEP));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSCurveFlowSolve(CSCurveFlow F)
+{
+  PetscFunctionBeginUser;
+  PetscCall(Start(F));
+  while (F->reason == CS_CURVE_ITERATING) PetscCall(CSCurveFlowStep(F));
+  PetscCall(Monitor(F, CS_CURVE_MONITOR_END));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSCurveFlowMonitorSet(CSCurveFlow F, CSCurveFlowMonitorFn fn, void *ctx, PetscErrorCode (*destroy)(void **))
+{
+  PetscFunctionBeginUser;
+  PetscCheck(F->nmon < 8, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "CSCurveFlowMonitorSet: at most 8 monitors");
+  F->mon[F->nmon]        = fn;
+  F->monctx[F->nmon]     = ctx;
+  F->mondestroy[F->nmon] = destroy;
+  F->nmon++;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSCurveFlowDestroy(CSCurveFlow *flow)
+{
+  CSCurveFlow F = *flow;
+  PetscFunctionBeginUser;
+  if (!F) PetscFunctionReturn(0);
+  for (PetscInt i = 0; i < F->nmon; i++)
+    if (F->mondestroy[i]) PetscCall(F->mondestroy[i](&F->monctx[i]));
+  {
+    Vec *vs[] = {&F->x, &F->xold, &F->w, &F->len, &F->d, &F->lwork, &F->kappa, &F->v, &F->theta};
+    for (size_t k = 0; k < sizeof(vs) / sizeof(vs[0]); k++) PetscCall(VecDestroy(vs[k]));
+  }
+  for (int k = 0; k < 3; k++) PetscCall(VecDestroy(&F->c[k]));
+  for (int k = 0; k < 2; k++) PetscCall(VecDestroy(&F->rhs[k]));
+  for (int k = 0; k < 2; k++) PetscCall(VecDestroy(&F->del[k]));
+  PetscCall(MatDestroy(&F->L));
+  PetscCall(MatDestroy(&F->Lf));
+  PetscCall(KSPDestroy(&F->ksp));
+  PetscCall(KSPDestroy(&F->kspf));
+  PetscCall(PetscFree(F->prefix));
+  PetscCall(PetscFree(F));
+  *flow = NULL;
+  PetscFunctionReturn(0);
+}
