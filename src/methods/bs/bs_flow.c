@@ -14,6 +14,7 @@ PetscErrorCode CSBSFlowCreate(CSMesh mesh, CSBSFlow *flow)
   PetscFunctionBeginUser;
   PetscCall(CSInitializePackage()); /* as KSPCreate does: events, PCs and solver types before any use */
   PetscCall(PetscNew(&F));
+  PetscCall(CSObjectHeaderInit(&F->hdr, mesh->comm, "bs_"));
   F->mesh       = mesh;
   F->scheme     = CS_BS_SCHEME_SEMI;
   F->problem    = CS_BS_PROBLEM_STATIC;
@@ -26,7 +27,6 @@ PetscErrorCode CSBSFlowCreate(CSMesh mesh, CSBSFlow *flow)
   F->max_it     = 100;
   F->max_rej    = 30;
   F->monotone   = PETSC_TRUE;
-  PetscCall(PetscStrallocpy("bs_", &F->prefix));
   *flow = F;
   PetscFunctionReturn(0);
 }
@@ -34,15 +34,14 @@ PetscErrorCode CSBSFlowCreate(CSMesh mesh, CSBSFlow *flow)
 PetscErrorCode CSBSFlowSetOptionsPrefix(CSBSFlow flow, const char prefix[])
 {
   PetscFunctionBeginUser;
-  PetscCall(PetscFree(flow->prefix));
-  PetscCall(PetscStrallocpy(prefix ? prefix : "", &flow->prefix));
+  PetscCall(CSObjectSetOptionsPrefix(&flow->hdr, prefix));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode CSBSFlowGetOptionsPrefix(CSBSFlow flow, const char *prefix[])
 {
   PetscFunctionBeginUser;
-  *prefix = flow->prefix;
+  PetscCall(CSObjectGetOptionsPrefix(&flow->hdr, prefix));
   PetscFunctionReturn(0);
 }
 
@@ -50,7 +49,7 @@ PetscErrorCode CSBSFlowGetOptionsPrefix(CSBSFlow flow, const char *prefix[])
 static PetscErrorCode CheckOptions(CSBSFlow F)
 {
   MPI_Comm    comm = F->mesh->comm;
-  const char *p    = F->prefix;
+  const char *p    = F->hdr.prefix;
   PetscFunctionBeginUser;
   PetscCheck(F->max_rej >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%smax_rejections %" PetscInt_FMT ": must be >= 0", p, F->max_rej);
   PetscCheck(F->max_it >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%smax_it %" PetscInt_FMT ": must be >= 0", p, F->max_it);
@@ -68,7 +67,7 @@ static PetscErrorCode CheckOptions(CSBSFlow F)
 PetscErrorCode CSBSFlowSetFromOptions(CSBSFlow F)
 {
   PetscFunctionBeginUser;
-  PetscOptionsBegin(F->mesh->comm, F->prefix, "Bobenko-Schroeder Willmore flow (bobenko-schroeder2005)", NULL);
+  PetscOptionsBegin(F->mesh->comm, F->hdr.prefix, "Bobenko-Schroeder Willmore flow (bobenko-schroeder2005)", NULL);
   PetscCall(PetscOptionsEnum("-scheme", "semi: semi-implicit (1/dt I + K) dx = -grad W; tao: TAO (static problem or backward Euler)", "CSBSFlowSetFromOptions", CSBSSchemes, (PetscEnum)F->scheme, (PetscEnum *)&F->scheme, NULL));
   PetscCall(PetscOptionsEnum("-boundary", "fixed: G1, boundary and one-ring fixed; free: vertex at infinity (Sec. 3.3)", "CSBSFlowSetFromOptions", CSBSBoundaries, (PetscEnum)F->bc, (PetscEnum *)&F->bc, NULL));
   PetscCall(PetscOptionsReal("-beta_eps", "Diamonds with |sin beta| below this contribute no gradient (Sec. 3.2)", NULL, F->beta_eps, &F->beta_eps, NULL));
@@ -163,7 +162,7 @@ PetscErrorCode CSBSFlowMonitor(CSBSFlow F, CSBSMonitorInfo *info)
   info->row     = F->row;
   info->resumed = (PetscBool)(info->event == CS_BS_MONITOR_START && F->resumed);
   info->seconds = (PetscReal)(now - F->t0);
-  for (PetscInt i = 0; i < F->nmon; i++) PetscCall(F->mon[i](F, info, F->monctx[i]));
+  for (PetscInt i = 0; i < F->hdr.monitors.n; i++) PetscCall(((CSBSFlowMonitorFn)F->hdr.monitors.fn[i])(F, info, F->hdr.monitors.ctx[i]));
   if (info->event == CS_BS_MONITOR_STEP || (info->event == CS_BS_MONITOR_START && !F->resumed)) F->row++;
   PetscFunctionReturn(0);
 }
@@ -214,11 +213,7 @@ PetscErrorCode CSBSFlowSolve(CSBSFlow F)
 PetscErrorCode CSBSFlowMonitorSet(CSBSFlow F, CSBSFlowMonitorFn fn, void *ctx, PetscErrorCode (*destroy)(void **))
 {
   PetscFunctionBeginUser;
-  PetscCheck(F->nmon < 8, F->mesh->comm, PETSC_ERR_ARG_OUTOFRANGE, "CSBSFlowMonitorSet: at most 8 monitors");
-  F->mon[F->nmon]        = fn;
-  F->monctx[F->nmon]     = ctx;
-  F->mondestroy[F->nmon] = destroy;
-  F->nmon++;
+  PetscCall(CSMonitorListAdd(&F->hdr.monitors, F->hdr.comm, "CSBSFlowMonitorSet", (PetscVoidFunction)fn, ctx, destroy));
   PetscFunctionReturn(0);
 }
 
@@ -227,13 +222,12 @@ PetscErrorCode CSBSFlowDestroy(CSBSFlow *flow)
   CSBSFlow F = *flow;
   PetscFunctionBeginUser;
   if (!F) PetscFunctionReturn(0);
-  for (PetscInt i = 0; i < F->nmon; i++)
-    if (F->mondestroy[i]) PetscCall(F->mondestroy[i](&F->monctx[i]));
+  PetscCall(CSMonitorListCancel(&F->hdr.monitors));
   if (F->ops) PetscCall(F->ops->destroy(F));
   PetscCall(VecDestroy(&F->x));
   PetscCall(VecDestroy(&F->x0));
   PetscCall(CSEnergyDestroy(&F->bs));
-  PetscCall(PetscFree(F->prefix));
+  PetscCall(CSObjectHeaderDestroy(&F->hdr));
   PetscCall(PetscFree(F));
   *flow = NULL;
   PetscFunctionReturn(0);

@@ -3,6 +3,7 @@
 #define CS_BS_FLOW_IMPL_H
 #include "cs_methods_bs.h"
 #include "cs_geometry.h"
+#include "cs_object.h"
 
 /* A scheme: setup after the flow's SetUp, start before the first step (after a resume), one step, destroy. */
 typedef struct {
@@ -18,8 +19,8 @@ typedef struct {
 PETSC_INTERN const CSBSSchemeOps CSBSSchemeSemi, CSBSSchemeTao, CSBSSchemeTaoStatic;
 
 struct _p_CSBSFlow {
-  CSMesh mesh;
-  char  *prefix;
+  CSObjectHeader hdr; /* comm (the mesh's), prefix, monitors (CSBSFlowMonitorFn) */
+  CSMesh         mesh;
 
   /* options */
   CSBSScheme   scheme;
@@ -43,11 +44,6 @@ struct _p_CSBSFlow {
 
   const CSBSSchemeOps *ops;
   void                *data;
-
-  PetscInt          nmon;
-  CSBSFlowMonitorFn mon[8];
-  void             *monctx[8];
-  PetscErrorCode (*mondestroy[8])(void **);
 };
 
 PETSC_INTERN PetscErrorCode CSBSFlowResetFixed(CSBSFlow, Vec);

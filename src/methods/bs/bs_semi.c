@@ -27,7 +27,7 @@ static PetscErrorCode SemiSetUp(CSBSFlow F)
   PetscCall(DMCreateGlobalVector(F->mesh->dmV1, &S->b1));
   PetscCall(VecDuplicate(S->b1, &S->z1));
   PetscCall(KSPCreate(F->mesh->comm, &S->ksp));
-  PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "%ssemi_", F->prefix));
+  PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "%ssemi_", F->hdr.prefix));
   PetscCall(KSPSetOptionsPrefix(S->ksp, prefix));
   PetscCall(KSPSetType(S->ksp, KSPPREONLY));
   PetscCall(KSPGetPC(S->ksp, &pc));
@@ -86,7 +86,7 @@ static PetscErrorCode SemiReject(CSBSFlow F, KSPConvergedReason reason)
   PetscCall(PetscPrintf(F->mesh->comm, "bs semi: step rejected (%s), dt %.3e -> %.3e\n", reason < 0 ? KSPConvergedReasons[reason] : "energy increased", (double)F->dt, (double)(F->dt / 4)));
   F->dt /= 4;
   if (++S->consecutive > F->max_rej) {
-    PetscCall(PetscPrintf(F->mesh->comm, "bs semi: %" PetscInt_FMT " consecutive rejected steps (-%smax_rejections), stopping with the last accepted state (step %" PetscInt_FMT ")\n", S->consecutive, F->prefix, F->it));
+    PetscCall(PetscPrintf(F->mesh->comm, "bs semi: %" PetscInt_FMT " consecutive rejected steps (-%smax_rejections), stopping with the last accepted state (step %" PetscInt_FMT ")\n", S->consecutive, F->hdr.prefix, F->it));
     F->reason = CS_BS_DIVERGED_REJECTIONS;
   }
   PetscFunctionReturn(0);

@@ -146,7 +146,7 @@ static PetscErrorCode TaoSchemeSetUp(CSBSFlow F)
   PetscCall(VecCopy(F->x, T->xn));
   PetscCall(TaoHess(NULL, F->x, NULL, NULL, F)); /* creates K and K3 */
   PetscCall(TaoCreate(F->mesh->comm, &T->tao));
-  PetscCall(TaoSetOptionsPrefix(T->tao, F->prefix));
+  PetscCall(TaoSetOptionsPrefix(T->tao, F->hdr.prefix));
   PetscCall(TaoSetType(T->tao, TAONLS));
   PetscCall(TaoGetKSP(T->tao, &tksp));
   if (tksp) {
@@ -226,7 +226,7 @@ static PetscErrorCode TaoEulerStep(CSBSFlow F)
   info.dt           = F->dt;
   info.inner_reason = TaoConvergedReasons[reason];
   PetscCall(CSBSFlowMonitor(F, &info));
-  PetscCheck(!PetscIsInfOrNanReal(F->W), F->mesh->comm, PETSC_ERR_NOT_CONVERGED, "bs tao euler: W is not finite after step %" PetscInt_FMT " (reduce -%sdt)", F->it, F->prefix);
+  PetscCheck(!PetscIsInfOrNanReal(F->W), F->mesh->comm, PETSC_ERR_NOT_CONVERGED, "bs tao euler: W is not finite after step %" PetscInt_FMT " (reduce -%sdt)", F->it, F->hdr.prefix);
   if (F->W < F->atol || PetscAbsReal(Wold - F->W) <= F->rtol * Wold) F->reason = CS_BS_CONVERGED;
   else F->dt = PetscMin(F->dt * F->dt_grow, F->dt_max);
   PetscFunctionReturn(0);

@@ -31,8 +31,8 @@ static PetscErrorCode KappaStats(CSCurveFlow F)
   }
   PetscCall(VecRestoreArrayRead(F->d, &d));
   PetscCall(VecRestoreArrayRead(F->kappa, &k));
-  PetscCallMPI(MPI_Allreduce(s, S, 2, MPIU_REAL, MPIU_SUM, F->comm));
-  PetscCallMPI(MPI_Allreduce(mm, MM, 2, MPIU_REAL, MPIU_MIN, F->comm));
+  PetscCallMPI(MPI_Allreduce(s, S, 2, MPIU_REAL, MPIU_SUM, F->hdr.comm));
+  PetscCallMPI(MPI_Allreduce(mm, MM, 2, MPIU_REAL, MPIU_MIN, F->hdr.comm));
   mean          = S[0] / F->length;
   F->s.turning  = S[0] / (2 * PETSC_PI); /* sum_i phi_i / 2 pi */
   F->s.energy   = S[1];
@@ -55,7 +55,7 @@ static PetscErrorCode Distortion(CSCurveFlow F)
     if (l0[i] > 0) dm = PetscMax(dm, PetscAbsReal(l[i] / l0[i] - 1));
   PetscCall(VecRestoreArrayRead(F->len, &l0));
   PetscCall(VecRestoreArrayRead(F->lwork, &l));
-  PetscCallMPI(MPI_Allreduce(&dm, &F->s.distortion, 1, MPIU_REAL, MPIU_MAX, F->comm));
+  PetscCallMPI(MPI_Allreduce(&dm, &F->s.distortion, 1, MPIU_REAL, MPIU_MAX, F->hdr.comm));
   PetscFunctionReturn(0);
 }
 
@@ -83,7 +83,7 @@ static PetscErrorCode Project(CSCurveFlow F)
       PetscCall(VecAXPY(F->c[j], -a, F->c[i]));
     }
     PetscCall(CSCurveDot(F->curve, F->d, F->c[j], F->c[j], &a));
-    PetscCheck(a > 0, F->comm, PETSC_ERR_PLIB, "curve flow: the constraint functions 1, f^x, f^y are linearly dependent (a straight curve?)");
+    PetscCheck(a > 0, F->hdr.comm, PETSC_ERR_PLIB, "curve flow: the constraint functions 1, f^x, f^y are linearly dependent (a straight curve?)");
     PetscCall(VecScale(F->c[j], 1 / PetscSqrtReal(a)));
   }
   for (int i = 0; i < 3; i++) {

@@ -13,15 +13,14 @@ PetscErrorCode CSCurveFlowCreate(CSCurve curve, CSCurveFlow *flow)
   PetscFunctionBeginUser;
   PetscCall(CSInitializePackage());
   PetscCall(PetscNew(&F));
+  PetscCall(CSObjectHeaderInit(&F->hdr, curve->comm, "curve_"));
   F->curve  = curve;
-  F->comm   = curve->comm;
   F->tau    = 0.95; /* the default; stable for tau < 1 (Sec. 5: |1 - 2 tau| < 1) */
   F->max_it = 100;
   F->rtol   = 1e-9;
   F->sigma  = 1;
   F->fk     = 2;
   F->egrow  = 1e6;
-  PetscCall(PetscStrallocpy("curve_", &F->prefix));
   *flow = F;
   PetscFunctionReturn(0);
 }
@@ -29,36 +28,35 @@ PetscErrorCode CSCurveFlowCreate(CSCurve curve, CSCurveFlow *flow)
 PetscErrorCode CSCurveFlowSetOptionsPrefix(CSCurveFlow F, const char prefix[])
 {
   PetscFunctionBeginUser;
-  PetscCall(PetscFree(F->prefix));
-  PetscCall(PetscStrallocpy(prefix ? prefix : "", &F->prefix));
+  PetscCall(CSObjectSetOptionsPrefix(&F->hdr, prefix));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode CSCurveFlowGetOptionsPrefix(CSCurveFlow F, const char *prefix[])
 {
   PetscFunctionBeginUser;
-  *prefix = F->prefix;
+  PetscCall(CSObjectGetOptionsPrefix(&F->hdr, prefix));
   PetscFunctionReturn(0);
 }
 
 /* a clear one-line error naming the option (with the prefix) for every bad value */
 static PetscErrorCode CheckOptions(CSCurveFlow F)
 {
-  const char *p = F->prefix;
+  const char *p = F->hdr.prefix;
   PetscFunctionBeginUser;
-  PetscCheck(F->tau > 0 && !PetscIsInfOrNanReal(F->tau), F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%stau %g: must be > 0", p, (double)F->tau);
-  PetscCheck(F->max_it >= 0, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%smax_it %" PetscInt_FMT ": must be >= 0", p, F->max_it);
-  PetscCheck(F->rtol >= 0, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%srtol %g: must be >= 0", p, (double)F->rtol);
-  PetscCheck(F->sigma > 0, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sfilter_sigma %g: must be > 0", p, (double)F->sigma);
-  PetscCheck(F->fk >= 0 && F->fk <= 4, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sfilter_k %" PetscInt_FMT ": must lie in 0..4", p, F->fk);
-  PetscCheck(F->egrow > 1, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%smax_energy_growth %g: must be > 1", p, (double)F->egrow);
+  PetscCheck(F->tau > 0 && !PetscIsInfOrNanReal(F->tau), F->hdr.comm, PETSC_ERR_ARG_OUTOFRANGE, "-%stau %g: must be > 0", p, (double)F->tau);
+  PetscCheck(F->max_it >= 0, F->hdr.comm, PETSC_ERR_ARG_OUTOFRANGE, "-%smax_it %" PetscInt_FMT ": must be >= 0", p, F->max_it);
+  PetscCheck(F->rtol >= 0, F->hdr.comm, PETSC_ERR_ARG_OUTOFRANGE, "-%srtol %g: must be >= 0", p, (double)F->rtol);
+  PetscCheck(F->sigma > 0, F->hdr.comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sfilter_sigma %g: must be > 0", p, (double)F->sigma);
+  PetscCheck(F->fk >= 0 && F->fk <= 4, F->hdr.comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sfilter_k %" PetscInt_FMT ": must lie in 0..4", p, F->fk);
+  PetscCheck(F->egrow > 1, F->hdr.comm, PETSC_ERR_ARG_OUTOFRANGE, "-%smax_energy_growth %g: must be > 1", p, (double)F->egrow);
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode CSCurveFlowSetFromOptions(CSCurveFlow F)
 {
   PetscFunctionBeginUser;
-  PetscOptionsBegin(F->comm, F->prefix, "Isometric curve flow (crane2013 Sec. 5)", NULL);
+  PetscOptionsBegin(F->hdr.comm, F->hdr.prefix, "Isometric curve flow (crane2013 Sec. 5)", NULL);
   PetscCall(PetscOptionsReal("-tau", "Time step of the forward Euler step kappa <- kappa - 2 tau kappa (Eq. 2); stable for tau < 1", NULL, F->tau, &F->tau, NULL));
   PetscCall(PetscOptionsInt("-max_it", "Maximum number of steps", NULL, F->max_it, &F->max_it, NULL));
   PetscCall(PetscOptionsReal("-rtol", "Stop when |v|_d sqrt(length)/2pi (v: the constrained direction) and the last step's max |f - f_old| / (length/2pi) are below this", NULL, F->rtol, &F->rtol, NULL));
@@ -117,7 +115,7 @@ static PetscErrorCode Monitor(CSCurveFlow F, CSCurveMonitorEvent ev)
   PetscCall(PetscTime(&now));
   F->s.event   = ev;
   F->s.seconds = (PetscReal)(now - F->t0);
-  for (PetscInt i = 0; i < F->nmon; i++) PetscCall(F->mon[i](F, &F->s, F->monctx[i]));
+  for (PetscInt i = 0; i < F->hdr.monitors.n; i++) PetscCall(((CSCurveFlowMonitorFn)F->hdr.monitors.fn[i])(F, &F->s, F->hdr.monitors.ctx[i]));
   PetscFunctionReturn(0);
 }
 
@@ -178,11 +176,7 @@ PetscErrorCode CSCurveFlowSolve(CSCurveFlow F)
 PetscErrorCode CSCurveFlowMonitorSet(CSCurveFlow F, CSCurveFlowMonitorFn fn, void *ctx, PetscErrorCode (*destroy)(void **))
 {
   PetscFunctionBeginUser;
-  PetscCheck(F->nmon < 8, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "CSCurveFlowMonitorSet: at most 8 monitors");
-  F->mon[F->nmon]        = fn;
-  F->monctx[F->nmon]     = ctx;
-  F->mondestroy[F->nmon] = destroy;
-  F->nmon++;
+  PetscCall(CSMonitorListAdd(&F->hdr.monitors, F->hdr.comm, "CSCurveFlowMonitorSet", (PetscVoidFunction)fn, ctx, destroy));
   PetscFunctionReturn(0);
 }
 
@@ -191,8 +185,7 @@ PetscErrorCode CSCurveFlowDestroy(CSCurveFlow *flow)
   CSCurveFlow F = *flow;
   PetscFunctionBeginUser;
   if (!F) PetscFunctionReturn(0);
-  for (PetscInt i = 0; i < F->nmon; i++)
-    if (F->mondestroy[i]) PetscCall(F->mondestroy[i](&F->monctx[i]));
+  PetscCall(CSObjectHeaderDestroy(&F->hdr)); /* the monitors (their contexts) and the prefix */
   {
     Vec *vs[] = {&F->x, &F->xold, &F->w, &F->len, &F->d, &F->lwork, &F->kappa, &F->v, &F->theta};
     for (size_t k = 0; k < sizeof(vs) / sizeof(vs[0]); k++) PetscCall(VecDestroy(vs[k]));
@@ -204,7 +197,6 @@ PetscErrorCode CSCurveFlowDestroy(CSCurveFlow *flow)
   PetscCall(MatDestroy(&F->Lf));
   PetscCall(KSPDestroy(&F->ksp));
   PetscCall(KSPDestroy(&F->kspf));
-  PetscCall(PetscFree(F->prefix));
   PetscCall(PetscFree(F));
   *flow = NULL;
   PetscFunctionReturn(0);

@@ -11,7 +11,7 @@ PetscErrorCode CSCurveFlowGetConvergedReason(CSCurveFlow F, CSCurveFlowConverged
 PetscErrorCode CSCurveFlowGetSolution(CSCurveFlow F, Vec *x)
 {
   PetscFunctionBeginUser;
-  PetscCheck(F->setupcalled, F->comm, PETSC_ERR_ORDER, "CSCurveFlowGetSolution: call CSCurveFlowSetUp first");
+  PetscCheck(F->setupcalled, F->hdr.comm, PETSC_ERR_ORDER, "CSCurveFlowGetSolution: call CSCurveFlowSetUp first");
   *x = F->x;
   PetscFunctionReturn(0);
 }
@@ -19,7 +19,7 @@ PetscErrorCode CSCurveFlowGetSolution(CSCurveFlow F, Vec *x)
 PetscErrorCode CSCurveFlowGetCurvature(CSCurveFlow F, Vec *kappa)
 {
   PetscFunctionBeginUser;
-  PetscCheck(F->started, F->comm, PETSC_ERR_ORDER, "CSCurveFlowGetCurvature: no state evaluated yet (call CSCurveFlowStep or Solve)");
+  PetscCheck(F->started, F->hdr.comm, PETSC_ERR_ORDER, "CSCurveFlowGetCurvature: no state evaluated yet (call CSCurveFlowStep or Solve)");
   *kappa = F->kappa;
   PetscFunctionReturn(0);
 }
@@ -51,7 +51,7 @@ PetscErrorCode CSCurveFlowGetInfo(CSCurveFlow F, CSCurveFlowInfo *info)
 PetscErrorCode CSCurveFlowSetTimeStep(CSCurveFlow F, PetscReal tau)
 {
   PetscFunctionBeginUser;
-  PetscCheck(tau > 0, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "CSCurveFlowSetTimeStep: tau %g must be > 0", (double)tau);
+  PetscCheck(tau > 0, F->hdr.comm, PETSC_ERR_ARG_OUTOFRANGE, "CSCurveFlowSetTimeStep: tau %g must be > 0", (double)tau);
   F->tau = tau;
   PetscFunctionReturn(0);
 }
@@ -59,7 +59,7 @@ PetscErrorCode CSCurveFlowSetTimeStep(CSCurveFlow F, PetscReal tau)
 PetscErrorCode CSCurveFlowSetTolerances(CSCurveFlow F, PetscReal rtol, PetscInt max_it)
 {
   PetscFunctionBeginUser;
-  PetscCheck(rtol >= 0 && max_it >= 0, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "CSCurveFlowSetTolerances: rtol %g and max_it %" PetscInt_FMT " must be >= 0", (double)rtol, max_it);
+  PetscCheck(rtol >= 0 && max_it >= 0, F->hdr.comm, PETSC_ERR_ARG_OUTOFRANGE, "CSCurveFlowSetTolerances: rtol %g and max_it %" PetscInt_FMT " must be >= 0", (double)rtol, max_it);
   F->rtol   = rtol;
   F->max_it = max_it;
   PetscFunctionReturn(0);

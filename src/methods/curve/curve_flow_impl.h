@@ -3,11 +3,11 @@
 #define CS_CURVE_FLOW_IMPL_H
 #include "cs_methods_curve.h"
 #include "cs_curve_geometry.h"
+#include "cs_object.h"
 
 struct _p_CSCurveFlow {
-  CSCurve  curve;
-  MPI_Comm comm;
-  char    *prefix;
+  CSObjectHeader hdr; /* comm (the curve's), prefix, monitors (CSCurveFlowMonitorFn) */
+  CSCurve        curve;
   /* options */
   PetscReal tau, rtol, sigma, egrow;
   PetscInt  max_it, fk;
@@ -26,11 +26,6 @@ struct _p_CSCurveFlow {
   PetscInt                   turning0;
   PetscLogDouble             t0, t_setup, t_steps;
   PetscBool                  setupcalled, started;
-  /* monitors */
-  PetscInt             nmon;
-  CSCurveFlowMonitorFn mon[8];
-  void                *monctx[8];
-  PetscErrorCode (*mondestroy[8])(void **);
 };
 
 /* curve_direction.c: kappa, E, the filtered and projected direction v and the measures of the state */

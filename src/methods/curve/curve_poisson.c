@@ -62,9 +62,9 @@ static PetscErrorCode CreateDirectKSP(CSCurveFlow F, Mat A, const char suffix[],
   PetscMPIInt size;
   char        prefix[256];
   PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Comm_size(F->comm, &size));
-  PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "%s%s", F->prefix, suffix));
-  PetscCall(KSPCreate(F->comm, ksp));
+  PetscCallMPI(MPI_Comm_size(F->hdr.comm, &size));
+  PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "%s%s", F->hdr.prefix, suffix));
+  PetscCall(KSPCreate(F->hdr.comm, ksp));
   PetscCall(KSPSetOptionsPrefix(*ksp, prefix));
   PetscCall(KSPSetOperators(*ksp, A, A));
   PetscCall(KSPGetPC(*ksp, &pc));
@@ -167,14 +167,14 @@ static PetscErrorCode RemoveRigidMotion(CSCurveFlow F)
       s[k] += d[i] * p[2 * i + k];
       s[2 + k] += d[i] * q[2 * i + k];
     }
-  PetscCallMPI(MPI_Allreduce(s, S, 4, MPIU_REAL, MPIU_SUM, F->comm));
+  PetscCallMPI(MPI_Allreduce(s, S, 4, MPIU_REAL, MPIU_SUM, F->hdr.comm));
   for (int k = 0; k < 4; k++) S[k] /= F->length;
   for (PetscInt i = 0; i < n; i++) {
     PetscReal a[2] = {p[2 * i] - S[0], p[2 * i + 1] - S[1]}, b[2] = {q[2 * i] - S[2], q[2 * i + 1] - S[3]};
     r[0] += d[i] * (a[0] * b[1] - a[1] * b[0]);
     r[1] += d[i] * (a[0] * b[0] + a[1] * b[1]);
   }
-  PetscCallMPI(MPI_Allreduce(r, R, 2, MPIU_REAL, MPIU_SUM, F->comm));
+  PetscCallMPI(MPI_Allreduce(r, R, 2, MPIU_REAL, MPIU_SUM, F->hdr.comm));
   co = PetscCosReal(PetscAtan2Real(R[0], R[1]));
   si = PetscSinReal(PetscAtan2Real(R[0], R[1]));
   for (PetscInt i = 0; i < n; i++) {
@@ -197,7 +197,7 @@ PetscErrorCode CSCurveFlowReconstruct(CSCurveFlow F)
   for (int k = 0; k < 2; k++) {
     PetscCall(KSPSolve(F->ksp, F->rhs[k], F->del[k]));
     PetscCall(KSPGetConvergedReason(F->ksp, &kr));
-    PetscCheck(kr >= 0, F->comm, PETSC_ERR_NOT_CONVERGED, "curve flow: the Poisson solve (-%spoisson_ksp_type ...) failed: %s", F->prefix, KSPConvergedReasons[kr]);
+    PetscCheck(kr >= 0, F->hdr.comm, PETSC_ERR_NOT_CONVERGED, "curve flow: the Poisson solve (-%spoisson_ksp_type ...) failed: %s", F->hdr.prefix, KSPConvergedReasons[kr]);
   }
   PetscCall(AddCorrection(F));
   PetscCall(RemoveRigidMotion(F));
