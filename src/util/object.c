@@ -1,12 +1,13 @@
 /* The common header of the method objects and their monitor list (include/cs_object.h). */
 #include "cs_object.h"
 
-PetscErrorCode CSObjectHeaderInit(CSObjectHeader *h, MPI_Comm comm, const char prefix[])
+PetscErrorCode CSObjectCreate(size_t size, MPI_Comm comm, const char prefix[], void *obj)
 {
+  CSObject *h = (CSObject *)obj;
   PetscFunctionBeginUser;
-  h->comm       = comm;
-  h->monitors.n = 0;
-  PetscCall(PetscStrallocpy(prefix ? prefix : "", &h->prefix));
+  PetscCall(PetscCalloc(size, h));
+  (*h)->comm = comm;
+  PetscCall(PetscStrallocpy(prefix ? prefix : "", &(*h)->prefix));
   PetscFunctionReturn(0);
 }
 
@@ -25,11 +26,13 @@ PetscErrorCode CSObjectGetOptionsPrefix(CSObjectHeader *h, const char *prefix[])
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CSObjectHeaderDestroy(CSObjectHeader *h)
+PetscErrorCode CSObjectDestroy(CSObject *obj)
 {
   PetscFunctionBeginUser;
-  PetscCall(CSMonitorListCancel(&h->monitors));
-  PetscCall(PetscFree(h->prefix));
+  if (!*obj) PetscFunctionReturn(0);
+  PetscCall(CSMonitorListCancel(&(*obj)->monitors));
+  PetscCall(PetscFree((*obj)->prefix));
+  PetscCall(PetscFree(*obj));
   PetscFunctionReturn(0);
 }
 

@@ -13,8 +13,7 @@ PetscErrorCode CSBSFlowCreate(CSMesh mesh, CSBSFlow *flow)
   CSBSFlow F;
   PetscFunctionBeginUser;
   PetscCall(CSInitializePackage()); /* as KSPCreate does: events, PCs and solver types before any use */
-  PetscCall(PetscNew(&F));
-  PetscCall(CSObjectHeaderInit(&F->hdr, mesh->comm, "bs_"));
+  PetscCall(CSObjectCreate(sizeof(*F), mesh->comm, "bs_", &F));
   F->mesh       = mesh;
   F->scheme     = CS_BS_SCHEME_SEMI;
   F->problem    = CS_BS_PROBLEM_STATIC;
@@ -227,9 +226,7 @@ PetscErrorCode CSBSFlowDestroy(CSBSFlow *flow)
   PetscCall(VecDestroy(&F->x));
   PetscCall(VecDestroy(&F->x0));
   PetscCall(CSEnergyDestroy(&F->bs));
-  PetscCall(CSObjectHeaderDestroy(&F->hdr));
-  PetscCall(PetscFree(F));
-  *flow = NULL;
+  PetscCall(CSObjectDestroy((CSObject *)flow));
   PetscFunctionReturn(0);
 }
 

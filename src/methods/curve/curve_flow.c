@@ -12,8 +12,7 @@ PetscErrorCode CSCurveFlowCreate(CSCurve curve, CSCurveFlow *flow)
   CSCurveFlow F;
   PetscFunctionBeginUser;
   PetscCall(CSInitializePackage());
-  PetscCall(PetscNew(&F));
-  PetscCall(CSObjectHeaderInit(&F->hdr, curve->comm, "curve_"));
+  PetscCall(CSObjectCreate(sizeof(*F), curve->comm, "curve_", &F));
   F->curve  = curve;
   F->tau    = 0.95; /* the default; stable for tau < 1 (Sec. 5: |1 - 2 tau| < 1) */
   F->max_it = 100;
@@ -185,7 +184,7 @@ PetscErrorCode CSCurveFlowDestroy(CSCurveFlow *flow)
   CSCurveFlow F = *flow;
   PetscFunctionBeginUser;
   if (!F) PetscFunctionReturn(0);
-  PetscCall(CSObjectHeaderDestroy(&F->hdr)); /* the monitors (their contexts) and the prefix */
+  PetscCall(CSMonitorListCancel(&F->hdr.monitors));
   {
     Vec *vs[] = {&F->x, &F->xold, &F->w, &F->len, &F->d, &F->lwork, &F->kappa, &F->v, &F->theta};
     for (size_t k = 0; k < sizeof(vs) / sizeof(vs[0]); k++) PetscCall(VecDestroy(vs[k]));
@@ -197,7 +196,6 @@ PetscErrorCode CSCurveFlowDestroy(CSCurveFlow *flow)
   PetscCall(MatDestroy(&F->Lf));
   PetscCall(KSPDestroy(&F->ksp));
   PetscCall(KSPDestroy(&F->kspf));
-  PetscCall(PetscFree(F));
-  *flow = NULL;
+  PetscCall(CSObjectDestroy((CSObject *)flow));
   PetscFunctionReturn(0);
 }
