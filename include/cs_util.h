@@ -47,6 +47,8 @@ typedef struct _p_CSHistory *CSHistory;
 PETSC_EXTERN PetscErrorCode CSHistoryCreate(MPI_Comm comm, const char path[], const char header[], CSHistory *h);
 PETSC_EXTERN PetscErrorCode CSHistoryAppend(CSHistory h, PetscInt n, const PetscReal row[]);
 PETSC_EXTERN PetscErrorCode CSHistoryDestroy(CSHistory *h);
+/* the destroy callback of a monitor whose context is a CSHistory (MonitorSet(flow, fn, h, CSHistoryMonitorDestroy)) */
+PETSC_EXTERN PetscErrorCode CSHistoryMonitorDestroy(void **ctx);
 
 /* Path helpers */
 /* Room for one more element in a growing array *a of n elements of size bytes, capacity *cap: when full, the

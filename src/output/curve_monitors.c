@@ -34,15 +34,6 @@ static PetscErrorCode MonitorHistory(CSCurveFlow flow, const CSCurveMonitorInfo 
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode HistoryDestroy(void **ctx)
-{
-  CSHistory h = (CSHistory)*ctx;
-  PetscFunctionBeginUser;
-  PetscCall(CSHistoryDestroy(&h));
-  *ctx = NULL;
-  PetscFunctionReturn(0);
-}
-
 PetscErrorCode CSCurveFlowMonitorSetHistory(CSCurveFlow flow, CSOutput *out)
 {
   CSCurve   curve;
@@ -51,7 +42,7 @@ PetscErrorCode CSCurveFlowMonitorSetHistory(CSCurveFlow flow, CSOutput *out)
   if (!out->has_history) PetscFunctionReturn(0);
   PetscCall(CSCurveFlowGetCurve(flow, &curve));
   PetscCall(CSOutputHistoryCreate(out, curve->comm, "it,energy,turning_number,closure_gap,length_distortion,kappa_spread,kappa_spread_rel,stationarity,change,step_seconds,seconds", 0, &h));
-  PetscCall(CSCurveFlowMonitorSet(flow, MonitorHistory, h, HistoryDestroy));
+  PetscCall(CSCurveFlowMonitorSet(flow, MonitorHistory, h, CSHistoryMonitorDestroy));
   PetscFunctionReturn(0);
 }
 

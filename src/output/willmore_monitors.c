@@ -31,15 +31,6 @@ static PetscErrorCode MonitorHistory(CSWillmoreFlow flow, PetscInt it, void *ctx
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode HistoryDestroy(void **ctx)
-{
-  CSHistory h = (CSHistory)*ctx;
-  PetscFunctionBeginUser;
-  PetscCall(CSHistoryDestroy(&h));
-  *ctx = NULL;
-  PetscFunctionReturn(0);
-}
-
 /* After CSWillmoreFlowResume: a resumed run writes the row of its first iteration again (from the same state). */
 PetscErrorCode CSWillmoreFlowMonitorHistorySet(CSWillmoreFlow flow, CSOutput *out)
 {
@@ -50,7 +41,7 @@ PetscErrorCode CSWillmoreFlowMonitorHistorySet(CSWillmoreFlow flow, CSOutput *ou
   PetscCall(CSWillmoreFlowGetInfo(flow, &i));
   PetscCall(CSWillmoreFlowGetMesh(flow, &mesh));
   PetscCall(CSOutputHistoryCreate(out, mesh->comm, "it,energy,area,volume,conformal_violation,constraint_violation,el_residual,t,ksp_its,rejections,seconds,area_spread,q_max", i.it, &h));
-  if (h) PetscCall(CSWillmoreFlowMonitorSet(flow, MonitorHistory, h, HistoryDestroy));
+  if (h) PetscCall(CSWillmoreFlowMonitorSet(flow, MonitorHistory, h, CSHistoryMonitorDestroy));
   PetscFunctionReturn(0);
 }
 

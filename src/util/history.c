@@ -40,3 +40,12 @@ PetscErrorCode CSHistoryDestroy(CSHistory *h)
   PetscCall(PetscFree(*h));
   PetscFunctionReturn(0);
 }
+
+PetscErrorCode CSHistoryMonitorDestroy(void **ctx)
+{
+  CSHistory h = (CSHistory)*ctx;
+  PetscFunctionBeginUser;
+  PetscCall(CSHistoryDestroy(&h));
+  *ctx = NULL;
+  PetscFunctionReturn(0);
+}
