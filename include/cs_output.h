@@ -23,6 +23,10 @@ typedef struct {
 PETSC_EXTERN PetscErrorCode CSOutputFromOptions(MPI_Comm comm, CSOutput *o);
 /* the same with the -o extensions a task writes (NULL-terminated, lower case) and the message for others */
 PETSC_EXTERN PetscErrorCode CSOutputFromOptionsFormats(MPI_Comm comm, const char *const exts[], const char what[], CSOutput *o);
+/* -<prefix>viewer_every of a method (title: the options group, help: the option's text), read on every run and
+   not only with -viewer_dir so that the option is never "unused". At least 1 (the default), or with zero_final
+   at least 0 (the default; 0: the final state only). */
+PETSC_EXTERN PetscErrorCode CSOutputViewerEvery(MPI_Comm comm, const char prefix[], const char title[], const char help[], PetscBool zero_final, PetscInt *every);
 /* The keys every task reports: counts, topology, area, volume, willmore, (q_mean, q_max against
    -reference or the given xref); CSOutputFinish then writes -o and -summary (adding seconds). */
 PETSC_EXTERN PetscErrorCode CSOutputAddMeshFacts(CSOutput *o, CSMesh mesh, Vec x, Vec xref);

@@ -4,19 +4,15 @@
 #include "cs_driver.h"
 #include "cs_output_curve.h"
 
-/* -curve_viewer_every: read on every run (not only with -viewer_dir) so that the option is never "unused" */
 static PetscErrorCode SetMonitors(CSCurveFlow flow, CSOutput *out)
 {
   const char *prefix;
-  PetscInt    every = 1;
+  PetscInt    every;
   CSCurve     curve;
   PetscFunctionBeginUser;
   PetscCall(CSCurveFlowGetCurve(flow, &curve));
   PetscCall(CSCurveFlowGetOptionsPrefix(flow, &prefix));
-  PetscOptionsBegin(curve->comm, prefix, "Curve flow output", NULL);
-  PetscCall(PetscOptionsInt("-viewer_every", "Write the curve of every this many states into -viewer_dir", NULL, every, &every, NULL));
-  PetscOptionsEnd();
-  PetscCheck(every >= 1, curve->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sviewer_every %" PetscInt_FMT ": must be >= 1", prefix, every);
+  PetscCall(CSOutputViewerEvery(curve->comm, prefix, "Curve flow output", "Write the curve of every this many states into -viewer_dir", PETSC_FALSE, &every));
   PetscCall(CSCurveFlowMonitorSetHistory(flow, out));
   PetscCall(CSCurveFlowMonitorSetSteps(flow, out, every));
   PetscCall(CSCurveFlowMonitorSet(flow, CSCurveFlowMonitorProgress, NULL, NULL));

@@ -5,25 +5,12 @@
 #include "cs_output_willmore.h"
 #include "cs_methods_bs.h"
 
-/* -flow_viewer_every: read on every run (not only with -viewer_dir) so that the option is never "unused". */
-static PetscErrorCode ViewerEvery(CSWillmoreFlow flow, CSMesh mesh, PetscInt *every)
-{
-  const char *prefix;
-  PetscFunctionBeginUser;
-  *every = 0;
-  PetscCall(CSWillmoreFlowGetOptionsPrefix(flow, &prefix));
-  PetscOptionsBegin(mesh->comm, prefix, "Willmore flow output", NULL);
-  PetscCall(PetscOptionsInt("-viewer_every", "With -viewer_dir: a ParaView step every this many iterations (0: the final state only)", NULL, *every, every, NULL));
-  PetscOptionsEnd();
-  PetscCheck(*every >= 0, mesh->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sviewer_every %" PetscInt_FMT ": use 0 (the final state only) or a positive count", prefix, *every);
-  PetscFunctionReturn(0);
-}
-
 static PetscErrorCode CSFlowWillmoreRun(CSMesh mesh, CSOutput *out)
 {
   CSWillmoreFlow   flow;
   CSWillmoreViewer wv;
   PetscInt         every;
+  const char      *prefix;
   PetscFunctionBeginUser;
   PetscCall(CSWillmoreFlowCreate(mesh, &flow));
   PetscCall(CSWillmoreFlowSetFromOptions(flow));
@@ -33,7 +20,8 @@ static PetscErrorCode CSFlowWillmoreRun(CSMesh mesh, CSOutput *out)
   PetscCall(CSWillmoreFlowMonitorProgressSet(flow));
   PetscCall(CSWillmoreFlowMonitorHistorySet(flow, out));
   PetscCall(CSWillmoreFlowMonitorCheckpointSet(flow, out));
-  PetscCall(ViewerEvery(flow, mesh, &every));
+  PetscCall(CSWillmoreFlowGetOptionsPrefix(flow, &prefix));
+  PetscCall(CSOutputViewerEvery(mesh->comm, prefix, "Willmore flow output", "With -viewer_dir: a ParaView step every this many iterations (0: the final state only)", PETSC_TRUE, &every));
   PetscCall(CSWillmoreFlowMonitorViewerSet(flow, out, every, &wv));
   PetscCall(CSWillmoreFlowSolve(flow));
   PetscCall(CSWillmoreFlowViewerFinish(flow, &wv));

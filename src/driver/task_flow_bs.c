@@ -6,19 +6,15 @@
 #include "cs_driver.h"
 #include "cs_output_bs.h"
 
-/* -bs_viewer_every: read on every run (not only with -viewer_dir) so that the option is never "unused". */
 static PetscErrorCode SetMonitors(CSBSFlow flow, CSOutput *out)
 {
   const char *prefix;
-  PetscInt    every = 1;
+  PetscInt    every;
   CSMesh      mesh;
   PetscFunctionBeginUser;
   PetscCall(CSBSFlowGetMesh(flow, &mesh));
   PetscCall(CSBSFlowGetOptionsPrefix(flow, &prefix));
-  PetscOptionsBegin(mesh->comm, prefix, "Bobenko-Schroeder flow output", NULL);
-  PetscCall(PetscOptionsInt("-viewer_every", "Write a ParaView step every this many steps (with -viewer_dir)", NULL, every, &every, NULL));
-  PetscOptionsEnd();
-  PetscCheck(every >= 1, mesh->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sviewer_every %" PetscInt_FMT ": must be >= 1", prefix, every);
+  PetscCall(CSOutputViewerEvery(mesh->comm, prefix, "Bobenko-Schroeder flow output", "Write a ParaView step every this many steps (with -viewer_dir)", PETSC_FALSE, &every));
   PetscCall(CSBSFlowMonitorSetHistory(flow, out));
   PetscCall(CSBSFlowMonitorSetViewer(flow, out, every));
   PetscCall(CSBSFlowMonitorSet(flow, CSBSFlowMonitorProgress, NULL, NULL));

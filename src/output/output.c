@@ -60,6 +60,18 @@ PetscErrorCode CSOutputFromOptionsFormats(MPI_Comm comm, const char *const exts[
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode CSOutputViewerEvery(MPI_Comm comm, const char prefix[], const char title[], const char help[], PetscBool zero_final, PetscInt *every)
+{
+  PetscFunctionBeginUser;
+  *every = zero_final ? 0 : 1;
+  PetscOptionsBegin(comm, prefix, title, NULL);
+  PetscCall(PetscOptionsInt("-viewer_every", help, NULL, *every, every, NULL));
+  PetscOptionsEnd();
+  if (zero_final) PetscCheck(*every >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sviewer_every %" PetscInt_FMT ": use 0 (the final state only) or a positive count", prefix, *every);
+  else PetscCheck(*every >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sviewer_every %" PetscInt_FMT ": must be >= 1", prefix, *every);
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode CSOutputAddMeshFacts(CSOutput *o, CSMesh mesh, Vec x, Vec xref)
 {
   PetscReal area, volume, W;
