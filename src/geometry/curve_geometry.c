@@ -9,23 +9,37 @@ static inline const PetscReal *Pos(const PetscReal *a, const PetscReal lr[4], Pe
   return i < 0 ? lr : (i >= n ? lr + 2 : a + 2 * i);
 }
 
-PetscErrorCode CSCurveEdgeLengths(CSCurve c, Vec x, Vec len)
+/* a value per owned vertex from the positions p, q, r of the vertices i-1, i, i+1 (gi: the global index of i) */
+typedef PetscReal (*VertexStencil)(CSCurve c, PetscInt gi, const PetscReal p[], const PetscReal q[], const PetscReal r[]);
+
+/* out[i] = f(vertex i) for every owned vertex i, the neighbours across ranks and the wrap-around from the ghosts */
+static PetscErrorCode ApplyStencil(CSCurve c, Vec x, Vec out, VertexStencil f)
 {
   const PetscScalar *a;
-  PetscScalar       *l;
+  PetscScalar       *o;
   PetscReal          lr[4];
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(CS_EVENT_Geometry, 0, 0, 0, 0));
   PetscCall(CSCurveGhosts(c, x, lr));
   PetscCall(VecGetArrayRead(x, &a));
-  PetscCall(VecGetArray(len, &l));
-  for (PetscInt i = 0; i < c->n; i++) {
-    const PetscReal *p = Pos(a, lr, i, c->n), *q = Pos(a, lr, i + 1, c->n);
-    l[i] = (!c->closed && c->rstart + i == c->N - 1) ? 0 : PetscSqrtReal(PetscSqr(q[0] - p[0]) + PetscSqr(q[1] - p[1]));
-  }
-  PetscCall(VecRestoreArray(len, &l));
+  PetscCall(VecGetArray(out, &o));
+  for (PetscInt i = 0; i < c->n; i++) o[i] = f(c, c->rstart + i, Pos(a, lr, i - 1, c->n), Pos(a, lr, i, c->n), Pos(a, lr, i + 1, c->n));
+  PetscCall(VecRestoreArray(out, &o));
   PetscCall(VecRestoreArrayRead(x, &a));
   PetscCall(PetscLogEventEnd(CS_EVENT_Geometry, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+/* edge i, from vertex i to i+1; zero for the last vertex of an open curve */
+static PetscReal EdgeLength(CSCurve c, PetscInt gi, const PetscReal p[], const PetscReal q[], const PetscReal r[])
+{
+  return (!c->closed && gi == c->N - 1) ? 0 : PetscSqrtReal(PetscSqr(r[0] - q[0]) + PetscSqr(r[1] - q[1]));
+}
+
+PetscErrorCode CSCurveEdgeLengths(CSCurve c, Vec x, Vec len)
+{
+  PetscFunctionBeginUser;
+  PetscCall(ApplyStencil(c, x, len, EdgeLength));
   PetscFunctionReturn(0);
 }
 
@@ -44,25 +58,17 @@ PetscErrorCode CSCurveDualLengths(CSCurve c, Vec len, Vec d)
   PetscFunctionReturn(0);
 }
 
+/* the signed angle from edge i-1 to edge i; zero at the ends of an open curve */
+static PetscReal TurningAngle(CSCurve c, PetscInt gi, const PetscReal p[], const PetscReal q[], const PetscReal r[])
+{
+  PetscReal u[2] = {q[0] - p[0], q[1] - p[1]}, v[2] = {r[0] - q[0], r[1] - q[1]};
+  return (!c->closed && (gi == 0 || gi == c->N - 1)) ? 0 : PetscAtan2Real(u[0] * v[1] - u[1] * v[0], u[0] * v[0] + u[1] * v[1]);
+}
+
 PetscErrorCode CSCurveTurningAngles(CSCurve c, Vec x, Vec phi)
 {
-  const PetscScalar *a;
-  PetscScalar       *t;
-  PetscReal          lr[4];
   PetscFunctionBeginUser;
-  PetscCall(PetscLogEventBegin(CS_EVENT_Geometry, 0, 0, 0, 0));
-  PetscCall(CSCurveGhosts(c, x, lr));
-  PetscCall(VecGetArrayRead(x, &a));
-  PetscCall(VecGetArray(phi, &t));
-  for (PetscInt i = 0; i < c->n; i++) {
-    const PetscReal *p = Pos(a, lr, i - 1, c->n), *q = Pos(a, lr, i, c->n), *r = Pos(a, lr, i + 1, c->n);
-    PetscReal        u[2] = {q[0] - p[0], q[1] - p[1]}, v[2] = {r[0] - q[0], r[1] - q[1]};
-    PetscInt         gi   = c->rstart + i;
-    t[i] = (!c->closed && (gi == 0 || gi == c->N - 1)) ? 0 : PetscAtan2Real(u[0] * v[1] - u[1] * v[0], u[0] * v[0] + u[1] * v[1]);
-  }
-  PetscCall(VecRestoreArray(phi, &t));
-  PetscCall(VecRestoreArrayRead(x, &a));
-  PetscCall(PetscLogEventEnd(CS_EVENT_Geometry, 0, 0, 0, 0));
+  PetscCall(ApplyStencil(c, x, phi, TurningAngle));
   PetscFunctionReturn(0);
 }
 
