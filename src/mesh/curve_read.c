@@ -12,6 +12,7 @@ typedef struct {
   PetscReal *p;         /* 3 per point (z = 0 when absent) */
   PetscInt  *pline;     /* line of each point */
   PetscInt  *idx, ni;   /* OBJ: the `l` indices (0-based) */
+  PetscInt   nvlines;   /* OBJ: the number of `v` lines (room for the `l` indices) */
   PetscInt   lline;
   PetscInt   zline;     /* first line whose z differs from the first point's */
 } CurveReader;
@@ -84,48 +85,68 @@ static PetscErrorCode ParseLine(CurveReader *c, char *s, PetscInt line, PetscInt
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode ReadOBJ(CurveReader *c)
+/* every line of the file with its # comment cut off, handed to parse until the first error; *nlines (if
+   not NULL): the number of lines read */
+static PetscErrorCode ReadLines(CurveReader *c, PetscErrorCode (*parse)(CurveReader *, char *, PetscInt), PetscInt *nlines)
 {
-  Lines    L  = {c->r.buf, c->r.buf + c->r.len, 0};
-  PetscInt nv = 0;
-  char    *s;
+  Lines L = {c->r.buf, c->r.buf + c->r.len, 0};
+  char *s;
   PetscFunctionBeginUser;
-  for (const char *p = c->r.buf, *end = c->r.buf + c->r.len; p < end;) {
-    const char *e = (const char *)memchr(p, '\n', (size_t)(end - p));
-    if (Keyword(p, "v")) nv++;
-    p = e ? e + 1 : end;
-  }
-  PetscCall(Alloc(c, nv));
   while ((s = CSReaderNextLine(&L)) && !c->r.msg[0]) {
     char *h = strchr(s, '#');
     if (h) *h = 0;
-    if (Keyword(s, "v")) ParsePoint(c, CSReaderSkipBlank(s) + 1, L.line);
-    else if (Keyword(s, "f")) CSReaderLineFail(&c->r, L.line, "a face in a curve file (only v and one l element)");
-    else if (Keyword(s, "l")) {
-      if (c->lline) CSReaderLineFail(&c->r, L.line, "a second l element (the first is on line %" PetscInt_FMT "; one closed polyline per file)", c->lline);
-      else {
-        c->lline = L.line;
-        PetscCall(ParseLine(c, CSReaderSkipBlank(s) + 1, L.line, nv));
-      }
+    PetscCall(parse(c, s, L.line));
+  }
+  if (nlines) *nlines = L.line;
+  PetscFunctionReturn(0);
+}
+
+/* an OBJ line: a `v` point or the one `l` element; a face is an error, any other line is ignored */
+static PetscErrorCode ParseOBJLine(CurveReader *c, char *s, PetscInt line)
+{
+  PetscFunctionBeginUser;
+  if (Keyword(s, "v")) ParsePoint(c, CSReaderSkipBlank(s) + 1, line);
+  else if (Keyword(s, "f")) CSReaderLineFail(&c->r, line, "a face in a curve file (only v and one l element)");
+  else if (Keyword(s, "l")) {
+    if (c->lline) CSReaderLineFail(&c->r, line, "a second l element (the first is on line %" PetscInt_FMT "; one closed polyline per file)", c->lline);
+    else {
+      c->lline = line;
+      PetscCall(ParseLine(c, CSReaderSkipBlank(s) + 1, line, c->nvlines));
     }
   }
-  if (!c->r.msg[0] && !c->lline) CSReaderFail(&c->r, "%s:%" PetscInt_FMT ": no l element (the polyline `l 1 2 ... n 1`)", c->r.path, PetscMax(L.line, 1));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode ReadOBJ(CurveReader *c)
+{
+  PetscInt nlines;
+  PetscFunctionBeginUser;
+  for (const char *p = c->r.buf, *end = c->r.buf + c->r.len; p < end;) {
+    const char *e = (const char *)memchr(p, '\n', (size_t)(end - p));
+    if (Keyword(p, "v")) c->nvlines++;
+    p = e ? e + 1 : end;
+  }
+  PetscCall(Alloc(c, c->nvlines));
+  PetscCall(ReadLines(c, ParseOBJLine, &nlines));
+  if (!c->r.msg[0] && !c->lline) CSReaderFail(&c->r, "%s:%" PetscInt_FMT ": no l element (the polyline `l 1 2 ... n 1`)", c->r.path, PetscMax(nlines, 1));
+  PetscFunctionReturn(0);
+}
+
+/* a text line: a point, or nothing */
+static PetscErrorCode ParseTextLine(CurveReader *c, char *s, PetscInt line)
+{
+  PetscFunctionBeginUser;
+  if (*CSReaderSkipBlank(s)) ParsePoint(c, s, line);
   PetscFunctionReturn(0);
 }
 
 static PetscErrorCode ReadText(CurveReader *c)
 {
-  Lines    L  = {c->r.buf, c->r.buf + c->r.len, 0};
   PetscInt nl = 1;
-  char    *s;
   PetscFunctionBeginUser;
   for (size_t i = 0; i < c->r.len; i++) nl += c->r.buf[i] == '\n';
   PetscCall(Alloc(c, nl));
-  while ((s = CSReaderNextLine(&L)) && !c->r.msg[0]) {
-    char *h = strchr(s, '#');
-    if (h) *h = 0;
-    if (*CSReaderSkipBlank(s)) ParsePoint(c, s, L.line);
-  }
+  PetscCall(ReadLines(c, ParseTextLine, NULL));
   PetscFunctionReturn(0);
 }
 
