@@ -34,6 +34,9 @@ PETSC_EXTERN PetscErrorCode CSOutputAddMeshFacts(CSOutput *o, CSMesh mesh, Vec x
    (reported by -task info; the BS flow reports its own energy under the same key). */
 PETSC_EXTERN PetscErrorCode CSOutputAddWillmoreBS(CSOutput *o, CSMesh mesh, Vec x);
 PETSC_EXTERN PetscErrorCode CSOutputFinish(CSOutput *o, CSMesh mesh, Vec x);
+/* CSOutputFinish's parts for a task without a CSMesh (the curve flow): the keys seconds and ranks; -summary */
+PETSC_EXTERN PetscErrorCode CSOutputAddRunFacts(CSOutput *o, MPI_Comm comm);
+PETSC_EXTERN PetscErrorCode CSOutputWriteSummary(CSOutput *o, MPI_Comm comm);
 PETSC_EXTERN PetscErrorCode CSOutputDestroy(CSOutput *o);
 
 /* Checkpoints of iterative tasks (CSCheckpointWrite/Read: natural order, any number of ranks). The task's loop

@@ -123,8 +123,6 @@ PetscErrorCode CSCurveFlowReport(CSCurveFlow flow, CSOutput *out)
   CSCurveFlowInfo            i;
   CSCurve                    curve;
   Vec                        x;
-  PetscLogDouble             t1;
-  PetscMPIInt                size;
   PetscFunctionBeginUser;
   PetscCall(CSCurveFlowGetCurve(flow, &curve));
   PetscCall(CSCurveFlowGetConvergedReason(flow, &reason));
@@ -138,17 +136,11 @@ PetscErrorCode CSCurveFlowReport(CSCurveFlow flow, CSOutput *out)
   PetscCall(CSJSONAddBool(out->json, "converged", (PetscBool)(reason > 0)));
   PetscCall(CSJSONAddString(out->json, "stop_reason", CSCurveFlowConvergedReasons[reason]));
   PetscCall(ReportState(out->json, &i));
-  PetscCall(PetscTime(&t1));
-  PetscCall(CSJSONAddReal(out->json, "seconds", (PetscReal)(t1 - out->t0)));
-  PetscCallMPI(MPI_Comm_size(curve->comm, &size));
-  PetscCall(CSJSONAddInt(out->json, "ranks", (PetscInt)size));
+  PetscCall(CSOutputAddRunFacts(out, curve->comm));
   if (out->has_out) {
     PetscCall(CSCurveWrite(curve, x, NULL, out->out));
     PetscCall(PetscPrintf(curve->comm, "wrote curve %s\n", out->out));
   }
-  if (out->has_summary) {
-    PetscCall(CSJSONWrite(out->json, out->summary));
-    PetscCall(PetscPrintf(curve->comm, "wrote summary %s\n", out->summary));
-  }
+  PetscCall(CSOutputWriteSummary(out, curve->comm));
   PetscFunctionReturn(0);
 }

@@ -121,26 +121,37 @@ PetscErrorCode CSOutputAddWillmoreBS(CSOutput *o, CSMesh mesh, Vec x)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CSOutputFinish(CSOutput *o, CSMesh mesh, Vec x)
+PetscErrorCode CSOutputAddRunFacts(CSOutput *o, MPI_Comm comm)
 {
   PetscLogDouble t1;
+  PetscMPIInt    size;
   PetscFunctionBeginUser;
   PetscCall(PetscTime(&t1));
   PetscCall(CSJSONAddReal(o->json, "seconds", (PetscReal)(t1 - o->t0)));
-  {
-    PetscMPIInt size;
-    PetscCallMPI(MPI_Comm_size(mesh->comm, &size));
-    PetscCall(CSJSONAddInt(o->json, "ranks", (PetscInt)size));
-  }
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  PetscCall(CSJSONAddInt(o->json, "ranks", (PetscInt)size));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSOutputWriteSummary(CSOutput *o, MPI_Comm comm)
+{
+  PetscFunctionBeginUser;
+  if (!o->has_summary) PetscFunctionReturn(0);
+  PetscCall(CSJSONWrite(o->json, o->summary));
+  PetscCall(PetscPrintf(comm, "wrote summary %s\n", o->summary));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSOutputFinish(CSOutput *o, CSMesh mesh, Vec x)
+{
+  PetscFunctionBeginUser;
+  PetscCall(CSOutputAddRunFacts(o, mesh->comm));
   if ((o->has_checkpoint || o->has_resume) && !o->checkpoint_used) PetscCall(PetscPrintf(mesh->comm, "WARNING: -checkpoint/-resume ignored: this task does not use checkpoints\n"));
   if (o->has_out) {
     PetscCall(CSMeshWrite(mesh, x, o->out));
     PetscCall(PetscPrintf(mesh->comm, "wrote mesh %s\n", o->out));
   }
-  if (o->has_summary) {
-    PetscCall(CSJSONWrite(o->json, o->summary));
-    PetscCall(PetscPrintf(mesh->comm, "wrote summary %s\n", o->summary));
-  }
+  PetscCall(CSOutputWriteSummary(o, mesh->comm));
   PetscFunctionReturn(0);
 }
 
