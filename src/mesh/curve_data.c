@@ -95,6 +95,7 @@ PetscErrorCode CSCurveDataWrite(const char path[], PetscInt m, const PetscReal x
   FILE *fp;
   PetscFunctionBeginUser;
   PetscCall(CSPathExtension(path, ext, sizeof(ext)));
+  PetscCall(CSPathMakeParents(path));
   fp = fopen(path, "w");
   PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "%s: cannot open for writing", path);
   if (!strcmp(ext, "obj")) {

@@ -47,6 +47,7 @@ PetscErrorCode CSMeshDataWrite(const char path[], const CSMeshData *md)
   PetscFunctionBeginUser;
   PetscCall(CSPathExtension(path, ext, sizeof(ext)));
   PetscCheck(!strcmp(ext, "obj") || !strcmp(ext, "off") || !strcmp(ext, "ply"), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%s: unknown mesh file extension '.%s' (write .obj, .off or .ply)", path, ext);
+  PetscCall(CSPathMakeParents(path));
   fp = fopen(path, "wb");
   PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "%s: cannot open for writing (%s)", path, strerror(errno));
   if (!strcmp(ext, "obj")) PetscCall(CSMeshDataWriteOBJ(fp, md));

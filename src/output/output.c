@@ -9,6 +9,7 @@ static PetscErrorCode CheckWritable(const char path[])
   FILE *fp;
   PetscFunctionBeginUser;
   PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", path)); /* the name CSCheckpointWrite writes first */
+  PetscCall(CSPathMakeParents(tmp));
   fp = fopen(tmp, "w");
   PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-checkpoint %s: cannot write %s", path, tmp);
   fclose(fp);

@@ -14,6 +14,7 @@ PetscErrorCode CSHistoryCreate(MPI_Comm comm, const char path[], const char head
   (*h)->comm = comm;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   if (!rank) {
+    PetscCall(CSPathMakeParents(path));
     (*h)->fp = fopen(path, "w");
     PetscCheck((*h)->fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-history_csv: cannot open %s for writing", path);
     fprintf((*h)->fp, "%s\n", header);

@@ -123,6 +123,7 @@ PetscErrorCode CSJSONWrite(CSJSON js, const char path[])
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(js->comm, &rank));
   if (!rank) {
+    PetscCall(CSPathMakeParents(path));
     fp = fopen(path, "w");
     PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-summary: cannot open %s for writing", path);
     fprintf(fp, "{\n");
