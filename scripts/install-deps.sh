@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs what confsurf needs on a fresh Debian machine (we run as root; sudo is used when we are not).
 set -euo pipefail
-pkgs="petsc-dev slepc-dev libsuitesparse-dev openmpi-bin libopenblas0 pkg-config python3 make bc valgrind"  # libsuitesparse-dev: CHOLMOD headers (a dependency of petsc-dev anyway)
+pkgs="petsc-dev slepc-dev libsuitesparse-dev openmpi-bin libopenblas0 pkg-config python3 python3-numpy python3-matplotlib make bc valgrind"  # libsuitesparse-dev: CHOLMOD headers (a dependency of petsc-dev anyway); python3-matplotlib: the pictures (scripts/pictures.py)
 missing=""
 for p in $pkgs; do dpkg -s "$p" >/dev/null 2>&1 || missing="$missing $p"; done
 if [ -z "$missing" ]; then exit 0; fi
