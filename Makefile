@@ -26,7 +26,7 @@ CC       := $(shell pkg-config --variable=ccompiler petsc)
 CPPFLAGS := -Iinclude $(shell pkg-config --cflags slepc petsc)
 CFLAGS   ?= -O2 -g
 CFLAGS   += -std=gnu11 -Wall -Wextra -Wno-unused-parameter $(WERROR) -MMD -MP
-LDLIBS   := $(shell pkg-config --libs slepc petsc) -lcholmod -llapack -lblas -lm
+LDLIBS   := $(shell pkg-config --libs slepc petsc) -lcholmod -llapack -lblas -lz -lm
 
 LIB_SRC  := $(sort $(wildcard src/*/*.c src/*/*/*.c))
 LIB_SRC  := $(filter-out src/driver/%,$(LIB_SRC))
@@ -70,10 +70,13 @@ run: bin/confsurf
 demo: bin/confsurf
 	bash scripts/demo.sh
 
+# the suite's own dependencies (ParaView for tests/cases/viewer_paraview.sh); a failed install leaves that test failing
 test: all
+	bash scripts/install-deps.sh --test || echo "make test: could not install the test dependencies (paraview)"
 	bash tests/run.sh
 
 test-serial: all
+	bash scripts/install-deps.sh --test || echo "make test: could not install the test dependencies (paraview)"
 	CS_TEST_NPROCS=1 bash tests/run.sh
 
 bench: all
