@@ -4,6 +4,8 @@ and by the quasi-conformal error Q, and the history plots (headless matplotlib, 
 
   /usr/bin/python3 scripts/pictures.py DIR --input IN.obj --result OUT.obj [--history H.csv] [--summary S.json]
                                        [--title T] [--view ELEV,AZIM]
+  /usr/bin/python3 scripts/pictures.py DIR --series VTU/series.pvd [...]   (input = first step, result = last;
+                                       a serial run's series: the pieces of a parallel one repeat shared vertices)
   (the same as: /usr/bin/python3 scripts/render_mesh.py pictures DIR ...)
 
 Writes into DIR:
@@ -13,6 +15,7 @@ Writes into DIR:
                        Q = sigma_max/sigma_min of the affine map input triangle -> final triangle (1: conformal)
   history.png          the history CSV against iteration: energy, EL residual, constraint violations, step size
                        (log scales where the values are positive); only the columns the file has
+  spectrum.png         with --summary of -task spectrum (no surfaces): the eigenvalues
   pictures.json        what was drawn: per picture its panels' surface bounding boxes in pixels (for the tests),
                        the mean curvature range, q_mean and q_max (compare with the summary's)
 H is the pointwise mean curvature of confsurf (soliman2021 Eq. 27, src/geometry/mean_curvature.c):
@@ -214,11 +217,43 @@ def history(outdir, path, title, info):
     info["history.png"] = {"rows": len(rows)}
 
 
+def read_series(path):
+    """(input positions, final positions, faces) from the first and last step of a ParaView series."""
+    import vtu  # scripts/vtu.py
+    steps = vtu.read_pvd(path)
+    out = []
+    for _, pvtu in (steps[0], steps[-1]):
+        V, F, off = [], [], 0
+        for piece in vtu.read_pvtu(pvtu):
+            V.extend(piece["arrays"]["Points"]["positions"][1])
+            F.extend(c + off for c in piece["arrays"]["Cells"]["connectivity"][1])
+            off += piece["points"]
+        out.append((np.array(V).reshape(-1, 3), np.array(F).reshape(-1, 3)))
+    if out[0][1].shape != out[1][1].shape or (out[0][1] != out[1][1]).any():
+        sys.exit("pictures: %s: the first and last steps differ in connectivity" % path)
+    return out[0][0], out[1][0], out[0][1]
+
+
+def spectrum(outdir, summary, title, info):
+    ev = np.array(summary["eigenvalues"])
+    fig, ax = plt.subplots(figsize=(5, 3.2))
+    ax.plot(np.arange(len(ev)), ev, "o-")
+    ax.set_xlabel("k", fontsize=8)
+    ax.set_ylabel("eigenvalue", fontsize=8)
+    ax.grid(True, alpha=0.3)
+    ax.set_title((title + ": " if title else "") + "smallest eigenvalues of the Dirac problem (rho = 0)", fontsize=9)
+    fig.tight_layout()
+    fig.savefig(os.path.join(outdir, "spectrum.png"), dpi=DPI)
+    plt.close(fig)
+    info["spectrum.png"] = {"eigenvalues": len(ev)}
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("dir")
-    ap.add_argument("--input", required=True)
-    ap.add_argument("--result", required=True)
+    ap.add_argument("--input")
+    ap.add_argument("--result")
+    ap.add_argument("--series")
     ap.add_argument("--history")
     ap.add_argument("--summary")
     ap.add_argument("--title", default="")
@@ -226,23 +261,33 @@ def main(argv=None):
     a = ap.parse_args(argv)
     t0 = time.time()
     os.makedirs(a.dir, exist_ok=True)
-    V0, F = read_obj(a.input)
-    V, F1 = read_obj(a.result)
-    if F1.shape != F.shape or (F1 != F).any():
-        sys.exit("pictures: --result %s: not the connectivity of --input %s" % (a.result, a.input))
-    view = tuple(float(x) for x in a.view.split(","))
-    info = {"faces": len(F), "vertices": len(V)}
-    surfaces(a.dir, V0, V, F, view, a.title, info)
+    info = {}
+    if a.series:
+        V0, V, F = read_series(a.series)
+    elif a.input and a.result:
+        V0, F = read_obj(a.input)
+        V, F1 = read_obj(a.result)
+        if F1.shape != F.shape or (F1 != F).any():
+            sys.exit("pictures: --result %s: not the connectivity of --input %s" % (a.result, a.input))
+    elif a.summary and "eigenvalues" in json.load(open(a.summary)):
+        V = None
+    else:
+        sys.exit("pictures: give --input and --result, or --series (or --summary of -task spectrum)")
+    if V is not None:
+        view = tuple(float(x) for x in a.view.split(","))
+        info.update({"faces": len(F), "vertices": len(V)})
+        surfaces(a.dir, V0, V, F, view, a.title, info)
     if a.history:
         history(a.dir, a.history, a.title, info)
     if a.summary:
         s = json.load(open(a.summary))
         info["summary"] = {k: s[k] for k in ("energy_initial", "energy", "willmore", "q_mean", "q_max") if k in s}
+        if "eigenvalues" in s:
+            spectrum(a.dir, s, a.title, info)
     info["seconds"] = time.time() - t0
     with open(os.path.join(a.dir, "pictures.json"), "w") as fh:
         json.dump(info, fh, indent=1)
-    print("pictures: wrote %s/{mean_curvature,quasi_conformal%s}.png in %.1f s" %
-          (a.dir, ",history" if a.history else "", info["seconds"]))
+    print("pictures: wrote %s in %.1f s" % (", ".join(os.path.join(a.dir, k) for k in info if k.endswith(".png")), info["seconds"]))
     return 0
 
 
