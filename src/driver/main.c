@@ -11,6 +11,7 @@ static const char *const task_help[][2] = {
   {"flow",     "-flow_type cgd|pgd|gd: conformally constrained Willmore (area, fairing) flow (soliman2021); bs: Bobenko-Schroeder flow"},
   {"spin",     "spin transformation (crane2011): curvature change rho, or the nearest one to -spin_target_mesh"},
   {"spectrum", "the smallest eigenvalues of the Dirac problem with rho = 0 (crane2011 Fig. 8)"},
+  {"curveflow", "isometric curvature flow of a closed planar curve (crane2013 Sec. 5): -curve FILE or -gen_curve SHAPE"},
 };
 
 #include <slepcsys.h>
@@ -25,7 +26,7 @@ static const char *const task_help[][2] = {
    as PETSc's `-help all` shows them. */
 static PetscBool HelpKeep = PETSC_FALSE;
 static PetscErrorCode (*HelpSavedVFPrintf)(FILE *, const char[], va_list) = NULL;
-static const char *const HelpSections[] = {"confsurf", "confsurf flow", "confsurf output", "Mesh orientation", "Mesh source", "Test-input deformation", "ParaView output (-viewer_dir)", "Bobenko-Schroeder flow output", "Dirac spectrum (crane2011 Fig. 8)", "Willmore flow output", "Bobenko-Schroeder Willmore flow (bobenko-schroeder2005)", "Constrained Willmore flow (soliman2021)", "Change of mean curvature half-density rho (crane2011 Sec. 4.1)", "Spin boundary tangents (crane2011 Sec. 5.7)", "Spin transformations (crane2011)"};
+static const char *const HelpSections[] = {"confsurf", "confsurf flow", "confsurf output", "Mesh orientation", "Mesh source", "Test-input deformation", "ParaView output (-viewer_dir)", "Bobenko-Schroeder flow output", "Dirac spectrum (crane2011 Fig. 8)", "Willmore flow output", "Bobenko-Schroeder Willmore flow (bobenko-schroeder2005)", "Constrained Willmore flow (soliman2021)", "Change of mean curvature half-density rho (crane2011 Sec. 4.1)", "Spin boundary tangents (crane2011 Sec. 5.7)", "Spin transformations (crane2011)", "confsurf curve input", "Isometric curve flow (crane2013 Sec. 5)", "Curve flow output"};
 
 /* Everything the task prints is dropped, except the lines of an enumerated option's help, which PETSc prints
    with PetscFPrintf (PetscFunctionListPrintTypes) instead of PetscHelpPrintf. */
@@ -95,13 +96,17 @@ static PetscErrorCode HelpTaskList(void)
 /* -task NAME -help: run the task on a small mesh for zero iterations with the option blocks filtered. */
 static PetscErrorCode HelpTaskSetUp(void)
 {
-  PetscBool mesh, gen;
+  PetscBool mesh, gen, curve, gencurve;
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsHasName(NULL, NULL, "-mesh", &mesh));
   PetscCall(PetscOptionsHasName(NULL, NULL, "-gen", &gen));
+  PetscCall(PetscOptionsHasName(NULL, NULL, "-curve", &curve));
+  PetscCall(PetscOptionsHasName(NULL, NULL, "-gen_curve", &gencurve));
   if (!mesh && !gen) PetscCall(PetscOptionsSetValue(NULL, "-gen", "icosphere"));
+  if (!curve && !gencurve) PetscCall(PetscOptionsSetValue(NULL, "-gen_curve", "circle"));
   PetscCall(PetscOptionsSetValue(NULL, "-flow_max_it", "0"));
   PetscCall(PetscOptionsSetValue(NULL, "-bs_max_it", "0"));
+  PetscCall(PetscOptionsSetValue(NULL, "-curve_max_it", "0"));
   PetscCall(PetscOptionsSetValue(NULL, "-help", NULL));
   PetscHelpPrintf   = HelpFilter;
   HelpSavedVFPrintf = PetscVFPrintf;
@@ -222,7 +227,7 @@ int main(int argc, char **argv)
   if (!ierr && !helpmode) PetscCall(CheckUnusedOptions(PETSC_COMM_WORLD, &bad));
   if (helpmode) {
     PetscVFPrintf = HelpSavedVFPrintf;
-    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "\n(<now V : formerly D>: D is the default; -flow_max_it and -bs_max_it are 0 here only to list the options. Solver objects take PETSc's options under their prefixes, e.g. -flow_saddle_ksp_*, -bs_semi_*, -spin_st_*: listed by -help all.)\n"));
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "\n(<now V : formerly D>: D is the default; -flow_max_it, -bs_max_it and -curve_max_it are 0 here only to list the options. Solver objects take PETSc's options under their prefixes, e.g. -flow_saddle_ksp_*, -bs_semi_*, -spin_st_*: listed by -help all.)\n"));
     PetscCall(PetscOptionsClearValue(NULL, "-help")); /* PetscFinalize would print its own help lines */
   }
   /* finalize also after an error so -malloc_debug/valgrind see a clean exit */

@@ -4,7 +4,7 @@
 # nprocs: 1
 source tests/lib.sh
 "$CS_BIN" -help > "$TMP/h.txt" 2>&1 || { cat "$TMP/h.txt"; echo "BAD: -help exit $?"; exit 1; }
-for t in info flow spin spectrum; do grep -q "^  $t " "$TMP/h.txt" || { echo "BAD: task $t not listed"; exit 1; }; done
+for t in info flow spin spectrum curveflow; do grep -q "^  $t " "$TMP/h.txt" || { echo "BAD: task $t not listed"; exit 1; }; done
 ! grep -q "Options for all PETSc programs" "$TMP/h.txt" || { echo "BAD: PETSc's banner"; exit 1; }
 echo "ok  -help lists the tasks ($(wc -l < "$TMP/h.txt") lines)"
 check() { # task-args, must-have regex list, must-not regex
@@ -21,3 +21,4 @@ check "-task flow -flow_type bs" "-bs_max_it -bs_scheme -o" "^  -(spin_|flow_rto
 check "-task spin" "-spin_solver -spin_boundary -o" "^  -(flow_|bs_)|_ksp_|_eps_|_st_"
 check "-task info" "-mesh -gen -o" "^  -(flow_|bs_|spin_)"
 EXPECT="-flow_rtoll" expect_fail "$CS_BIN" -task flow -gen icosphere -gen_level 1 -flow_max_it 1 -flow_rtoll 1
+check "-task curveflow" "-curve_tau -curve -gen_curve -o" "^  -(flow_|bs_|spin_|gen_level)|_ksp_|_pc_"
