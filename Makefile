@@ -1,12 +1,18 @@
-# confsurf: `make` builds, `make run` runs the default experiment, `make test` runs the test suite,
+# confsurf: `make` builds, `make run` runs the default experiment (a constrained Willmore flow with its pictures,
+# scripts/run-default.sh), `make demo` one short example per method with a gallery (scripts/demo.sh), `make test` runs the test suite,
 # `make bench` runs the benchmarks in runs/ (runs/run-all.sh), `make deps` installs the system packages
 # (scripts/install-deps.sh; the other goals do it too when packages are missing). `make WERROR=` builds without -Werror.
 .DEFAULT_GOAL := all
-GOALS := all run test test-serial bench clean
+GOALS := all run demo test test-serial bench clean
 WERROR ?= -Werror
 
 deps:
 	bash scripts/install-deps.sh
+
+# `make run`/`make demo` from a fresh clone: build only the program, on every core
+ifneq ($(filter run demo,$(MAKECMDGOALS)),)
+MAKEFLAGS += -j$(shell nproc)
+endif
 
 HAVE_DEPS := $(shell bash scripts/install-deps.sh --check >/dev/null 2>&1 && pkg-config --exists petsc slepc 2>/dev/null && echo yes)
 
@@ -20,7 +26,7 @@ CC       := $(shell pkg-config --variable=ccompiler petsc)
 CPPFLAGS := -Iinclude $(shell pkg-config --cflags slepc petsc)
 CFLAGS   ?= -O2 -g
 CFLAGS   += -std=gnu11 -Wall -Wextra -Wno-unused-parameter $(WERROR) -MMD -MP
-LDLIBS   := $(shell pkg-config --libs slepc petsc) -lcholmod -llapack -lblas -lm
+LDLIBS   := $(shell pkg-config --libs slepc petsc) -lcholmod -llapack -lblas -lz -lm
 
 LIB_SRC  := $(sort $(wildcard src/*/*.c src/*/*/*.c))
 LIB_SRC  := $(filter-out src/driver/%,$(LIB_SRC))
@@ -58,13 +64,19 @@ build/runs/%: runs/%.c $(LIB)
 	@mkdir -p build/runs
 	$(CC) $(CPPFLAGS) $(CFLAGS) -o $@ $< $(LIB) $(LDLIBS)
 
-run: all
+run: bin/confsurf
 	bash scripts/run-default.sh
 
+demo: bin/confsurf
+	bash scripts/demo.sh
+
+# the suite's own dependencies (ParaView for tests/cases/viewer_paraview.sh); a failed install leaves that test failing
 test: all
+	bash scripts/install-deps.sh --test || echo "make test: could not install the test dependencies (paraview)"
 	bash tests/run.sh
 
 test-serial: all
+	bash scripts/install-deps.sh --test || echo "make test: could not install the test dependencies (paraview)"
 	CS_TEST_NPROCS=1 bash tests/run.sh
 
 bench: all

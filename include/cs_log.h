@@ -5,7 +5,7 @@
 #include <petsclog.h>
 
 /* mesh, geometry, energies */
-PETSC_EXTERN PetscLogEvent CS_EVENT_MeshRead, CS_EVENT_MeshDistribute, CS_EVENT_Geometry, CS_EVENT_Energy, CS_EVENT_Gradient, CS_EVENT_Assemble;
+PETSC_EXTERN PetscLogEvent CS_EVENT_MeshRead, CS_EVENT_MeshDistribute, CS_EVENT_Geometry, CS_EVENT_Energy, CS_EVENT_Gradient, CS_EVENT_Assemble, CS_EVENT_ViewerWrite;
 /* linalg: CHOLMOD's complex form (cholmod_factor.c), the quaternion Cholesky, the cssubchol PC */
 PETSC_EXTERN PetscLogEvent CS_EVENT_CholmodSym, CS_EVENT_CholmodNum, CS_EVENT_CholmodSolve;
 PETSC_EXTERN PetscLogEvent CS_EVENT_QuatCholSym, CS_EVENT_QuatCholNum, CS_EVENT_QuatCholSolve;

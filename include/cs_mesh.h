@@ -115,9 +115,19 @@ PETSC_EXTERN PetscErrorCode CSMeshLoadCompatiblePositions(CSMesh mesh, const cha
 PETSC_EXTERN PetscErrorCode CSMeshWrite(CSMesh mesh, Vec x, const char path[]);
 
 /* ParaView output: one .pvtu per step (a piece per rank, with named per-vertex and per-face fields) plus a
-   .pvd series index in dir. Fields are global Vecs of dmV1/dmV3 (vertex) or dmF1 (face). */
+   .pvd series index in dir. Fields are global Vecs of dmV1/dmV3 (vertex) or dmF1 (face). The pieces' data arrays
+   are written as -viewer_format binary (default: VTK XML appended raw data, UInt64 block headers), zlib (the
+   same, zlib-compressed in 64 KiB blocks) or ascii, with -viewer_precision double (default) or single (Float32);
+   CSViewerCreate reads the options (docs/output.md). */
 typedef struct _p_CSViewer *CSViewer;
-PETSC_EXTERN PetscErrorCode CSViewerCreate(CSMesh mesh, const char dir[], CSViewer *v);
+typedef enum {
+  CS_VIEWER_ASCII,
+  CS_VIEWER_BINARY,
+  CS_VIEWER_ZLIB
+} CSViewerFormat;
+PETSC_EXTERN const char *const CSViewerFormats[];
+PETSC_EXTERN PetscErrorCode    CSViewerCreate(CSMesh mesh, const char dir[], CSViewer *v);
+PETSC_EXTERN PetscErrorCode    CSViewerSetFormat(CSViewer v, CSViewerFormat format, PetscBool single);
 PETSC_EXTERN PetscErrorCode CSViewerAddVertexField(CSViewer v, const char name[], Vec g);
 PETSC_EXTERN PetscErrorCode CSViewerAddFaceField(CSViewer v, const char name[], Vec g);
 PETSC_EXTERN PetscErrorCode CSViewerWriteStep(CSViewer v, Vec x, PetscReal time); /* writes and clears the fields */

@@ -2,6 +2,11 @@
 """Pictures of flow results against their input, for docs and for looking at a run (headless matplotlib).
 
   /usr/bin/python3 scripts/render_mesh.py OUT.png INPUT.obj RESULT.obj [RESULT2.obj ...] [--views 3] [--title T]
+  /usr/bin/python3 scripts/render_mesh.py pictures DIR --input IN.obj --result OUT.obj [--history H.csv]
+                                                  [--summary S.json] [--title T]
+
+The second form (`pictures`, used by `make run` and `make demo`; scripts/pictures.py documents it) draws a
+finished run's pictures into DIR.
 
 Each RESULT (same connectivity as INPUT, e.g. the -o of a flow) is drawn from a few view directions, its faces
 coloured by log10 of (face area / input face area), centred on the median: blue faces have shrunk, red ones have
@@ -63,6 +68,9 @@ def draw(ax, V, F, ratio, view, title):
 
 
 def main():
+    if len(sys.argv) > 1 and sys.argv[1] == "pictures":
+        import pictures  # scripts/pictures.py, next to this file
+        sys.exit(pictures.main(sys.argv[2:]))
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("out")
     ap.add_argument("input")

@@ -5,9 +5,114 @@ static const char help[] = "confsurf: conformal geometry processing of triangle 
                            "  -o FILE -viewer_dir DIR -summary FILE.json -history_csv FILE.csv -reference FILE\n"
                            "Unknown options are an error (they are listed at the end of the run).\n";
 
+/* The tasks and what they do, for -help (the same names as RegisterTasks). */
+static const char *const task_help[][2] = {
+  {"info",     "facts of a mesh: counts, genus, boundary loops, area, volume, Willmore energies"},
+  {"flow",     "-flow_type cgd|pgd|gd: conformally constrained Willmore (area, fairing) flow (soliman2021); bs: Bobenko-Schroeder flow"},
+  {"spin",     "spin transformation (crane2011): curvature change rho, or the nearest one to -spin_target_mesh"},
+  {"spectrum", "the smallest eigenvalues of the Dirac problem with rho = 0 (crane2011 Fig. 8)"},
+  {"curveflow", "isometric curvature flow of a closed planar curve (crane2013 Sec. 5): -curve FILE or -gen_curve SHAPE"},
+};
+
 #include <slepcsys.h>
 #include "cs_driver.h"
 #include "cs_package.h"
+
+/* -help. PETSc's own -help prints its banner, the options of every PETSc program, and then those of whatever
+   the run reaches (and fails without a mesh). Here -help is taken out of argv before PETSc starts: alone it prints
+   the task list; with -task NAME the task runs on a small generated mesh with zero iterations, its normal output
+   discarded, and only the option blocks of confsurf's own objects are printed (with their defaults: PETSc's
+   "<now V : formerly D>" shows the default D); the solver objects' (KSP, PC, EPS, ST, TAO) blocks are left out,
+   as PETSc's `-help all` shows them. */
+static PetscBool HelpKeep = PETSC_FALSE;
+static PetscErrorCode (*HelpSavedVFPrintf)(FILE *, const char[], va_list) = NULL;
+static const char *const HelpSections[] = {"confsurf", "confsurf flow", "confsurf output", "Mesh orientation", "Mesh source", "Test-input deformation", "ParaView output (-viewer_dir)", "Bobenko-Schroeder flow output", "Dirac spectrum (crane2011 Fig. 8)", "Willmore flow output", "Bobenko-Schroeder Willmore flow (bobenko-schroeder2005)", "Constrained Willmore flow (soliman2021)", "Change of mean curvature half-density rho (crane2011 Sec. 4.1)", "Spin boundary tangents (crane2011 Sec. 5.7)", "Spin transformations (crane2011)", "confsurf curve input", "Isometric curve flow (crane2013 Sec. 5)", "Curve flow output"};
+
+/* Everything the task prints is dropped, except the lines of an enumerated option's help, which PETSc prints
+   with PetscFPrintf (PetscFunctionListPrintTypes) instead of PetscHelpPrintf. */
+static PetscErrorCode HelpDiscard(FILE *fd, const char format[], va_list ap)
+{
+  static PetscBool inlist = PETSC_FALSE;
+  if (strstr(format, "<now %s : formerly %s>: %s (one of)")) inlist = PETSC_TRUE;
+  if (inlist) {
+    if (HelpKeep) vfprintf(stdout, format, ap);
+    if (strchr(format, '\n')) inlist = PETSC_FALSE;
+  }
+  return 0;
+}
+
+static PetscErrorCode HelpFilter(MPI_Comm comm, const char format[], ...)
+{
+  char        buf[8192];
+  const char *dash = "----------------------------------------\n";
+  PetscMPIInt rank = 0;
+  va_list     ap;
+  if (comm != MPI_COMM_NULL) MPI_Comm_rank(comm, &rank);
+  if (rank) return 0;
+  va_start(ap, format);
+  vsnprintf(buf, sizeof(buf), format, ap);
+  va_end(ap);
+  if (!strncmp(buf, dash, strlen(dash))) {
+    char  *title = buf + strlen(dash);
+    size_t n     = strcspn(title, "\n");
+    if (n && title[n - 1] == ':') n--;
+    HelpKeep = PETSC_FALSE;
+    for (size_t i = 0; i < sizeof(HelpSections) / sizeof(HelpSections[0]); i++)
+      if (strlen(HelpSections[i]) == n && !strncmp(title, HelpSections[i], n)) HelpKeep = PETSC_TRUE;
+    if (HelpKeep) fprintf(stdout, "\n%.*s:\n", (int)n, title);
+    return 0;
+  }
+  if (HelpKeep) fputs(buf, stdout);
+  return 0;
+}
+
+/* Removes -help/--help/-h (unless "-help all") from argv; returns whether it was there. */
+static PetscBool HelpFromArgs(int *argc, char **argv)
+{
+  PetscBool found = PETSC_FALSE;
+  int       j     = 1;
+  for (int i = 1; i < *argc; i++) {
+    if (!strcmp(argv[i], "-help") || !strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
+      if (i + 1 < *argc && !strcmp(argv[i + 1], "all")) return PETSC_FALSE; /* PETSc's full -help */
+      found = PETSC_TRUE;
+      continue;
+    }
+    argv[j++] = argv[i];
+  }
+  *argc   = j;
+  argv[j] = NULL;
+  return found;
+}
+
+static PetscErrorCode HelpTaskList(void)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s\nTasks (-task NAME; `bin/confsurf -task NAME -help` lists that task's options and their defaults):\n", help));
+  for (size_t i = 0; i < sizeof(task_help) / sizeof(task_help[0]); i++) PetscCall(PetscPrintf(PETSC_COMM_WORLD, "  %-9s %s\n", task_help[i][0], task_help[i][1]));
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "Experiments: options/*.opts (bin/confsurf -options_file F); PETSc's own help with every solver option: -help all\n"));
+  PetscFunctionReturn(0);
+}
+
+/* -task NAME -help: run the task on a small mesh for zero iterations with the option blocks filtered. */
+static PetscErrorCode HelpTaskSetUp(void)
+{
+  PetscBool mesh, gen, curve, gencurve;
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsHasName(NULL, NULL, "-mesh", &mesh));
+  PetscCall(PetscOptionsHasName(NULL, NULL, "-gen", &gen));
+  PetscCall(PetscOptionsHasName(NULL, NULL, "-curve", &curve));
+  PetscCall(PetscOptionsHasName(NULL, NULL, "-gen_curve", &gencurve));
+  if (!mesh && !gen) PetscCall(PetscOptionsSetValue(NULL, "-gen", "icosphere"));
+  if (!curve && !gencurve) PetscCall(PetscOptionsSetValue(NULL, "-gen_curve", "circle"));
+  PetscCall(PetscOptionsSetValue(NULL, "-flow_max_it", "0"));
+  PetscCall(PetscOptionsSetValue(NULL, "-bs_max_it", "0"));
+  PetscCall(PetscOptionsSetValue(NULL, "-curve_max_it", "0"));
+  PetscCall(PetscOptionsSetValue(NULL, "-help", NULL));
+  PetscHelpPrintf   = HelpFilter;
+  HelpSavedVFPrintf = PetscVFPrintf;
+  PetscVFPrintf     = HelpDiscard;
+  PetscFunctionReturn(0);
+}
 
 /* Every task of bin/confsurf, by -task name (like KSPSetType); later issues register theirs here. */
 static PetscErrorCode RegisterTasks(PetscFunctionList *tasks)
@@ -79,19 +184,52 @@ static PetscErrorCode Run(MPI_Comm comm)
   PetscFunctionReturn(0);
 }
 
+/* Start-up of a serial run (an MPI singleton, not started by mpirun): Open MPI's defaults spawn a helper daemon
+   (ess singleton), open UCX and every transport (pml, btl) and let hwloc load its GL/OpenCL/PCI/libxml plugins (X11,
+   libicu) and opens nine collective components; for one process none of that is used. Measured (docs/output.md):
+   MPI_Init 384 ms -> 46 ms, the tiny -task info run 0.60 s -> 0.14 s wall. Set only
+   what the user did not set; CS_MPI_DEFAULTS=0 turns it off. */
+static void SingletonDefaults(void)
+{
+  const char *off = getenv("CS_MPI_DEFAULTS");
+  if (off && !strcmp(off, "0")) return;
+  if (getenv("OMPI_COMM_WORLD_SIZE") || getenv("PMIX_RANK") || getenv("PMI_RANK")) return; /* under a launcher */
+  setenv("OMPI_MCA_ess_singleton_isolated", "1", 0);
+  setenv("OMPI_MCA_pml", "ob1", 0);
+  setenv("OMPI_MCA_btl", "self", 0);
+  setenv("OMPI_MCA_coll", "self,basic,libnbc", 0);
+  setenv("HWLOC_PLUGINS_BLACKLIST", "hwloc_gl,hwloc_opencl,hwloc_pci,hwloc_xml_libxml", 0);
+}
+
 int main(int argc, char **argv)
 {
   PetscErrorCode ierr;
-  PetscBool      bad = PETSC_FALSE, traceback = PETSC_FALSE;
+  PetscBool      bad = PETSC_FALSE, traceback = PETSC_FALSE, helpmode, task;
 
+  helpmode = HelpFromArgs(&argc, argv);
+  SingletonDefaults();
   PetscCall(SlepcInitialize(&argc, &argv, NULL, help));
+  if (helpmode) {
+    PetscCall(PetscOptionsHasName(NULL, NULL, "-task", &task));
+    if (!task) {
+      PetscCall(HelpTaskList());
+      PetscCall(SlepcFinalize());
+      return 0;
+    }
+    PetscCall(HelpTaskSetUp());
+  }
   PetscCall(CSLimitThreads(PETSC_COMM_WORLD));
   PetscCall(CSInitializePackage()); /* events, PCs and solver types, before any options are read */
   PetscCall(PetscOptionsHasName(NULL, NULL, "-cs_traceback", &traceback));
   if (!traceback) PetscCall(PetscPushErrorHandler(ConciseErrorHandler, NULL));
   ierr = Run(PETSC_COMM_WORLD);
   if (!traceback) PetscCall(PetscPopErrorHandler());
-  if (!ierr) PetscCall(CheckUnusedOptions(PETSC_COMM_WORLD, &bad));
+  if (!ierr && !helpmode) PetscCall(CheckUnusedOptions(PETSC_COMM_WORLD, &bad));
+  if (helpmode) {
+    PetscVFPrintf = HelpSavedVFPrintf;
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "\n(<now V : formerly D>: D is the default; -flow_max_it, -bs_max_it and -curve_max_it are 0 here only to list the options. Solver objects take PETSc's options under their prefixes, e.g. -flow_saddle_ksp_*, -bs_semi_*, -spin_st_*: listed by -help all.)\n"));
+    PetscCall(PetscOptionsClearValue(NULL, "-help")); /* PetscFinalize would print its own help lines */
+  }
   /* finalize also after an error so -malloc_debug/valgrind see a clean exit */
   PetscCall(SlepcFinalize());
   return ierr ? (int)ierr : (bad ? 2 : 0);

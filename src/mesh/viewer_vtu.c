@@ -2,8 +2,12 @@
    rank 0 writes the .pvtu that joins the pieces and the .pvd series index. Nothing is gathered. */
 #include "cs_mesh.h"
 #include "cs_util.h"
+#include "cs_log.h"
 #include <sys/stat.h>
 #include <errno.h>
+#include <zlib.h>
+
+const char *const CSViewerFormats[] = {"ascii", "binary", "zlib", "CSViewerFormat", "CS_VIEWER_", NULL};
 
 #define CS_VIEWER_MAX_FIELDS 16
 
@@ -18,6 +22,8 @@ struct _p_CSViewer {
   CSMesh        mesh;
   char          dir[PETSC_MAX_PATH_LEN];
   PetscInt      nfields, step;
+  CSViewerFormat format;
+  PetscBool      single; /* -viewer_precision single: Float32 positions and fields */
   CSViewerField fields[CS_VIEWER_MAX_FIELDS];
   PetscReal    *times;
   PetscInt      ntimes_alloc;
@@ -31,10 +37,28 @@ PetscErrorCode CSViewerCreate(CSMesh mesh, const char dir[], CSViewer *v)
   PetscCall(PetscNew(v));
   (*v)->mesh = mesh;
   PetscCall(PetscStrncpy((*v)->dir, dir, sizeof((*v)->dir)));
+  (*v)->format = CS_VIEWER_BINARY;
+  PetscOptionsBegin(mesh->comm, NULL, "ParaView output (-viewer_dir)", NULL);
+  PetscCall(PetscOptionsEnum("-viewer_format", "Data arrays of the .vtu pieces: appended raw binary, the same zlib-compressed, or ascii", "CSViewerSetFormat", CSViewerFormats, (PetscEnum)(*v)->format, (PetscEnum *)&(*v)->format, NULL));
+  {
+    const char *prec[] = {"double", "single"};
+    PetscInt    ip     = 0;
+    PetscCall(PetscOptionsEList("-viewer_precision", "Positions and fields as Float64 (double) or Float32 (single: 7 digits, half the bytes)", "CSViewerSetFormat", prec, 2, prec[0], &ip, NULL));
+    (*v)->single = (PetscBool)(ip == 1);
+  }
+  PetscOptionsEnd();
   PetscCallMPI(MPI_Comm_rank(mesh->comm, &rank));
   if (!rank && mkdir(dir, 0755) && errno != EEXIST) ok = 0;
   PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, mesh->comm));
   PetscCheck(ok, mesh->comm, PETSC_ERR_FILE_OPEN, "-viewer_dir %s: cannot create the directory", dir);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSViewerSetFormat(CSViewer v, CSViewerFormat format, PetscBool single)
+{
+  PetscFunctionBeginUser;
+  v->format = format;
+  v->single = single;
   PetscFunctionReturn(0);
 }
 
@@ -77,11 +101,125 @@ PetscErrorCode CSViewerAddFaceField(CSViewer v, const char name[], Vec g)
   PetscFunctionReturn(0);
 }
 
-static void WriteArray(FILE *fp, const char name[], PetscInt ncomp, PetscInt n, const PetscScalar *a)
+/* One data array of a piece: its XML attributes and its values (Float64, the PetscInt type, or UInt8). */
+typedef struct {
+  char        name[64], type[8];
+  PetscInt    ncomp;
+  size_t      n, elsize; /* n values (tuples * ncomp) of elsize bytes */
+  const void *data;
+  void       *blob; /* zlib: the compressed blocks with their header */
+  size_t      nblob;
+} Array;
+
+#define CS_VTU_BLOCK 65536
+
+/* The bytes VTK reads for one appended array: binary, a UInt64 byte count then the data (written straight from
+   the array); zlib, the header [nblocks, block size, last block's size, compressed size of each block] then the
+   compressed blocks (level 1: the fastest; deflateBound of a block fits in compressBound). */
+static PetscErrorCode EncodeArray(Array *a, CSViewerFormat format)
 {
-  fprintf(fp, "<DataArray type=\"Float64\" Name=\"%s\" NumberOfComponents=\"%d\" format=\"ascii\">\n", name, (int)ncomp);
-  for (PetscInt i = 0; i < n * ncomp; i++) fprintf(fp, "%.10g%c", (double)PetscRealPart(a[i]), (i + 1) % ncomp ? ' ' : '\n');
-  fprintf(fp, "</DataArray>\n");
+  size_t nbytes = a->n * a->elsize;
+  PetscFunctionBeginUser;
+  if (format == CS_VIEWER_BINARY) {
+    a->nblob = sizeof(uint64_t) + nbytes;
+  } else {
+    size_t    nb = nbytes ? (nbytes + CS_VTU_BLOCK - 1) / CS_VTU_BLOCK : 0, pos;
+    uint64_t *h;
+    uLong     bound = compressBound(CS_VTU_BLOCK);
+    PetscCall(PetscMalloc((3 + nb) * sizeof(uint64_t) + nb * bound, &a->blob));
+    h    = (uint64_t *)a->blob;
+    h[0] = nb;
+    h[1] = CS_VTU_BLOCK;
+    h[2] = nb ? nbytes - (nb - 1) * CS_VTU_BLOCK : 0;
+    pos  = (3 + nb) * sizeof(uint64_t);
+    /* one stream for every block (deflateReset): a deflateInit per block maps and faults in its state anew */
+    z_stream z;
+    int      ok = 1;
+    memset(&z, 0, sizeof(z));
+    /* floats: Huffman coding only (the LZ77 match search finds little in mantissas and doubles the time) */
+    PetscCheck(deflateInit2(&z, 1, Z_DEFLATED, 15, 8, a->type[0] == 'F' ? Z_HUFFMAN_ONLY : Z_DEFAULT_STRATEGY) == Z_OK, PETSC_COMM_SELF, PETSC_ERR_LIB, "-viewer_format zlib: deflateInit2 failed");
+    for (size_t b = 0; b < nb && ok; b++) {
+      size_t in   = b + 1 < nb ? CS_VTU_BLOCK : h[2];
+      z.next_in   = (Bytef *)a->data + b * CS_VTU_BLOCK;
+      z.avail_in  = (uInt)in;
+      z.next_out  = (Bytef *)a->blob + pos;
+      z.avail_out = (uInt)bound;
+      ok          = deflate(&z, Z_FINISH) == Z_STREAM_END;
+      h[3 + b]    = z.total_out;
+      pos += h[3 + b];
+      if (ok) ok = deflateReset(&z) == Z_OK;
+    }
+    deflateEnd(&z);
+    PetscCheck(ok, PETSC_COMM_SELF, PETSC_ERR_LIB, "-viewer_format zlib: compression failed");
+    a->nblob = pos;
+  }
+  PetscFunctionReturn(0);
+}
+
+static void WriteArrayBytes(FILE *fp, const Array *a, CSViewerFormat format)
+{
+  if (format == CS_VIEWER_ZLIB) {
+    fwrite(a->blob, 1, a->nblob, fp);
+  } else {
+    uint64_t h = a->n * a->elsize;
+    fwrite(&h, sizeof(h), 1, fp);
+    if (h) fwrite(a->data, 1, h, fp);
+  }
+}
+
+static void WriteArrayHeader(FILE *fp, const Array *a, CSViewerFormat format, size_t *offset)
+{
+  fprintf(fp, "<DataArray type=\"%s\" Name=\"%s\" NumberOfComponents=\"%d\" format=\"%s\"", a->type, a->name, (int)a->ncomp, format == CS_VIEWER_ASCII ? "ascii" : "appended");
+  if (format == CS_VIEWER_ASCII) {
+    fprintf(fp, ">\n");
+    for (size_t i = 0; i < a->n; i++) {
+      char sep = (i + 1) % a->ncomp ? ' ' : '\n';
+      if (a->type[0] == 'F') fprintf(fp, "%.10g%c", a->elsize == 8 ? ((const double *)a->data)[i] : (double)((const float *)a->data)[i], sep);
+      else if (a->type[0] == 'I') fprintf(fp, "%lld%c", a->elsize == 8 ? (long long)((const int64_t *)a->data)[i] : (long long)((const int32_t *)a->data)[i], sep);
+      else fprintf(fp, "%d%c", (int)((const uint8_t *)a->data)[i], sep);
+    }
+    fprintf(fp, "</DataArray>\n");
+  } else {
+    fprintf(fp, " offset=\"%zu\"/>\n", *offset);
+    *offset += a->nblob;
+  }
+}
+
+static void SetArray(Array *a, const char name[], const char type[], PetscInt ncomp, size_t n, size_t elsize, const void *data)
+{
+  memset(a, 0, sizeof(*a));
+  snprintf(a->name, sizeof(a->name), "%s", name);
+  snprintf(a->type, sizeof(a->type), "%s", type);
+  a->ncomp  = ncomp;
+  a->n      = n;
+  a->elsize = elsize;
+  a->data   = data;
+}
+
+/* The values of a Vec as written: the array itself for Float64 in a real double build, else a copy as doubles or
+   (single) floats, freed by the caller. */
+static PetscErrorCode RealValues(const PetscScalar *a, PetscInt n, PetscBool single, const void **r, void **copy)
+{
+  PetscFunctionBeginUser;
+  *copy = NULL;
+  if (single) {
+    float *f;
+    PetscCall(PetscMalloc1(n, &f));
+    for (PetscInt i = 0; i < n; i++) f[i] = (float)PetscRealPart(a[i]);
+    *r = *copy = f;
+    PetscFunctionReturn(0);
+  }
+#if defined(PETSC_USE_REAL_DOUBLE) && !defined(PETSC_USE_COMPLEX)
+  *r = a;
+#else
+  {
+    double *d;
+    PetscCall(PetscMalloc1(n, &d));
+    for (PetscInt i = 0; i < n; i++) d[i] = (double)PetscRealPart(a[i]);
+    *r = *copy = d;
+  }
+#endif
+  PetscFunctionReturn(0);
 }
 
 static PetscErrorCode WritePiece(CSViewer v, Vec x, const char path[])
@@ -89,42 +227,73 @@ static PetscErrorCode WritePiece(CSViewer v, Vec x, const char path[])
   CSMesh             m = v->mesh;
   FILE              *fp;
   Vec                xl;
-  const PetscScalar *p;
+  const PetscScalar *p, *fa[CS_VIEWER_MAX_FIELDS];
+  Array              arr[4 + CS_VIEWER_MAX_FIELDS];
+  void              *copy[1 + CS_VIEWER_MAX_FIELDS];
+  const void        *r;
+  const char        *ftype  = v->single ? "Float32" : "Float64";
+  size_t             fsize  = v->single ? sizeof(float) : sizeof(double);
+  PetscInt          *offs;
+  uint8_t           *types;
+  PetscInt           na = 0, first_point = 0, first_cell = 0;
+  size_t             offset = 0;
+  const char        *itype = sizeof(PetscInt) == 8 ? "Int64" : "Int32";
   PetscFunctionBeginUser;
-  fp = fopen(path, "w");
-  PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-viewer_dir: cannot write %s", path);
+  /* every array as it is written, straight from the Vecs and the mesh's tables where the types match */
   PetscCall(DMGetLocalVector(m->dmV3, &xl));
   PetscCall(DMGlobalToLocal(m->dmV3, x, INSERT_VALUES, xl));
   PetscCall(VecGetArrayRead(xl, &p));
-  fprintf(fp, "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n<UnstructuredGrid>\n");
+  PetscCall(RealValues(p, 3 * m->nv, v->single, &r, &copy[0]));
+  SetArray(&arr[na++], "positions", ftype, 3, 3 * m->nv, fsize, r);
+  PetscCall(PetscMalloc2(m->nf, &offs, m->nf, &types));
+  for (PetscInt f = 0; f < m->nf; f++) {
+    offs[f]  = 3 * f + 3;
+    types[f] = 5; /* VTK_TRIANGLE */
+  }
+  SetArray(&arr[na++], "connectivity", itype, 1, 3 * m->nf, sizeof(PetscInt), m->faceVert);
+  SetArray(&arr[na++], "offsets", itype, 1, m->nf, sizeof(PetscInt), offs);
+  SetArray(&arr[na++], "types", "UInt8", 1, m->nf, sizeof(uint8_t), types);
+  for (int pass = 0; pass < 2; pass++) { /* point data, then cell data */
+    if (pass == 0) first_point = na;
+    else first_cell = na;
+    for (PetscInt k = 0; k < v->nfields; k++) {
+      PetscInt n;
+      if (v->fields[k].face != (PetscBool)pass) continue;
+      n = (pass ? m->nf : m->nv) * v->fields[k].ncomp;
+      PetscCall(VecGetArrayRead(v->fields[k].local, &fa[k]));
+      PetscCall(RealValues(fa[k], n, v->single, &r, &copy[na - 3]));
+      SetArray(&arr[na++], v->fields[k].name, ftype, v->fields[k].ncomp, (size_t)n, fsize, r);
+    }
+  }
+  if (v->format != CS_VIEWER_ASCII)
+    for (PetscInt k = 0; k < na; k++) PetscCall(EncodeArray(&arr[k], v->format));
+
+  fp = fopen(path, "wb");
+  PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-viewer_dir: cannot write %s", path);
+  fprintf(fp, "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\"%s>\n<UnstructuredGrid>\n", v->format == CS_VIEWER_ZLIB ? " compressor=\"vtkZLibDataCompressor\"" : "");
   fprintf(fp, "<Piece NumberOfPoints=\"%d\" NumberOfCells=\"%d\">\n<Points>\n", (int)m->nv, (int)m->nf);
-  WriteArray(fp, "positions", 3, m->nv, p);
-  fprintf(fp, "</Points>\n<Cells>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n");
-  for (PetscInt f = 0; f < m->nf; f++) fprintf(fp, "%d %d %d\n", (int)m->faceVert[3 * f], (int)m->faceVert[3 * f + 1], (int)m->faceVert[3 * f + 2]);
-  fprintf(fp, "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n");
-  for (PetscInt f = 0; f < m->nf; f++) fprintf(fp, "%d\n", (int)(3 * f + 3));
-  fprintf(fp, "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n");
-  for (PetscInt f = 0; f < m->nf; f++) fprintf(fp, "5\n");
-  fprintf(fp, "</DataArray>\n</Cells>\n<PointData>\n");
+  WriteArrayHeader(fp, &arr[0], v->format, &offset);
+  fprintf(fp, "</Points>\n<Cells>\n");
+  for (PetscInt k = 1; k < 4; k++) WriteArrayHeader(fp, &arr[k], v->format, &offset);
+  fprintf(fp, "</Cells>\n<PointData>\n");
+  for (PetscInt k = first_point; k < first_cell; k++) WriteArrayHeader(fp, &arr[k], v->format, &offset);
+  fprintf(fp, "</PointData>\n<CellData>\n");
+  for (PetscInt k = first_cell; k < na; k++) WriteArrayHeader(fp, &arr[k], v->format, &offset);
+  fprintf(fp, "</CellData>\n</Piece>\n</UnstructuredGrid>\n");
+  if (v->format != CS_VIEWER_ASCII) {
+    fprintf(fp, "<AppendedData encoding=\"raw\">\n_");
+    for (PetscInt k = 0; k < na; k++) WriteArrayBytes(fp, &arr[k], v->format);
+    fprintf(fp, "\n</AppendedData>\n");
+  }
+  fprintf(fp, "</VTKFile>\n");
+  PetscCheck(!fclose(fp), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "-viewer_dir: error writing %s", path);
+  for (PetscInt k = 0; k < na; k++) PetscCall(PetscFree(arr[k].blob));
+  PetscCall(PetscFree(copy[0]));
+  for (PetscInt k = 4; k < na; k++) PetscCall(PetscFree(copy[k - 3]));
+  for (PetscInt k = 0; k < v->nfields; k++) PetscCall(VecRestoreArrayRead(v->fields[k].local, &fa[k]));
   PetscCall(VecRestoreArrayRead(xl, &p));
   PetscCall(DMRestoreLocalVector(m->dmV3, &xl));
-  for (PetscInt k = 0; k < v->nfields; k++) {
-    const PetscScalar *a;
-    if (v->fields[k].face) continue;
-    PetscCall(VecGetArrayRead(v->fields[k].local, &a));
-    WriteArray(fp, v->fields[k].name, v->fields[k].ncomp, m->nv, a);
-    PetscCall(VecRestoreArrayRead(v->fields[k].local, &a));
-  }
-  fprintf(fp, "</PointData>\n<CellData>\n");
-  for (PetscInt k = 0; k < v->nfields; k++) {
-    const PetscScalar *a;
-    if (!v->fields[k].face) continue;
-    PetscCall(VecGetArrayRead(v->fields[k].local, &a));
-    WriteArray(fp, v->fields[k].name, v->fields[k].ncomp, m->nf, a);
-    PetscCall(VecRestoreArrayRead(v->fields[k].local, &a));
-  }
-  fprintf(fp, "</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n");
-  PetscCheck(!fclose(fp), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "-viewer_dir: error writing %s", path);
+  PetscCall(PetscFree2(offs, types));
   PetscFunctionReturn(0);
 }
 
@@ -132,19 +301,20 @@ static PetscErrorCode WritePiece(CSViewer v, Vec x, const char path[])
    leaves a readable series). */
 static PetscErrorCode WriteIndex(CSViewer v, PetscMPIInt size)
 {
-  char  path[PETSC_MAX_PATH_LEN];
-  FILE *fp;
+  char        path[PETSC_MAX_PATH_LEN];
+  FILE       *fp;
+  const char *ftype = v->single ? "Float32" : "Float64";
   PetscFunctionBeginUser;
   PetscCall(PetscSNPrintf(path, sizeof(path), "%s/surface_%04d.pvtu", v->dir, (int)v->step));
   fp = fopen(path, "w");
   PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-viewer_dir: cannot write %s", path);
   fprintf(fp, "<?xml version=\"1.0\"?>\n<VTKFile type=\"PUnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n<PUnstructuredGrid GhostLevel=\"0\">\n");
-  fprintf(fp, "<PPoints><PDataArray type=\"Float64\" Name=\"positions\" NumberOfComponents=\"3\"/></PPoints>\n<PPointData>\n");
+  fprintf(fp, "<PPoints><PDataArray type=\"%s\" Name=\"positions\" NumberOfComponents=\"3\"/></PPoints>\n<PPointData>\n", ftype);
   for (PetscInt k = 0; k < v->nfields; k++)
-    if (!v->fields[k].face) fprintf(fp, "<PDataArray type=\"Float64\" Name=\"%s\" NumberOfComponents=\"%d\"/>\n", v->fields[k].name, (int)v->fields[k].ncomp);
+    if (!v->fields[k].face) fprintf(fp, "<PDataArray type=\"%s\" Name=\"%s\" NumberOfComponents=\"%d\"/>\n", ftype, v->fields[k].name, (int)v->fields[k].ncomp);
   fprintf(fp, "</PPointData>\n<PCellData>\n");
   for (PetscInt k = 0; k < v->nfields; k++)
-    if (v->fields[k].face) fprintf(fp, "<PDataArray type=\"Float64\" Name=\"%s\" NumberOfComponents=\"%d\"/>\n", v->fields[k].name, (int)v->fields[k].ncomp);
+    if (v->fields[k].face) fprintf(fp, "<PDataArray type=\"%s\" Name=\"%s\" NumberOfComponents=\"%d\"/>\n", ftype, v->fields[k].name, (int)v->fields[k].ncomp);
   fprintf(fp, "</PCellData>\n");
   for (PetscMPIInt r = 0; r < size; r++) fprintf(fp, "<Piece Source=\"surface_%04d_%d.vtu\"/>\n", (int)v->step, (int)r);
   fprintf(fp, "</PUnstructuredGrid>\n</VTKFile>\n");
@@ -170,8 +340,10 @@ PetscErrorCode CSViewerWriteStep(CSViewer v, Vec x, PetscReal time)
   PetscCall(CSArrayGrow(sizeof(PetscReal), v->step, 64, &v->ntimes_alloc, (void **)&v->times));
   v->times[v->step] = time;
   PetscCall(PetscSNPrintf(path, sizeof(path), "%s/surface_%04d_%d.vtu", v->dir, (int)v->step, (int)rank));
+  PetscCall(PetscLogEventBegin(CS_EVENT_ViewerWrite, 0, 0, 0, 0));
   PetscCall(WritePiece(v, x, path));
   if (!rank) PetscCall(WriteIndex(v, size));
+  PetscCall(PetscLogEventEnd(CS_EVENT_ViewerWrite, 0, 0, 0, 0));
   for (PetscInt k = 0; k < v->nfields; k++) PetscCall(VecDestroy(&v->fields[k].local));
   v->nfields = 0;
   v->step++;

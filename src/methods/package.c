@@ -29,6 +29,7 @@ static const EventName mesh_events[] = {
   {"CSEnergy",         &CS_EVENT_Energy        },
   {"CSGradient",       &CS_EVENT_Gradient      },
   {"CSAssemble",       &CS_EVENT_Assemble      },
+  {"CSViewerWrite",    &CS_EVENT_ViewerWrite   },
 };
 static const EventName cholmod_events[] = {
   {"CSCholmodSym",   &CS_EVENT_CholmodSym  },

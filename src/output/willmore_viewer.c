@@ -1,7 +1,11 @@
 /* The ParaView series of a Willmore flow (-viewer_dir DIR, -flow_viewer_every N): one CSViewer for the run, so
    the steps written during the flow and the final state land in one DIR/series.pvd. With N = 0 (the default)
-   only the final state is written, as before the flow had monitors. */
+   only the final state is written, as before the flow had monitors. Every step carries the fields
+   mean_curvature (|h|, pointwise, as -task info), vertex_area (point data), face_area and Q (cell data: the
+   quasi-conformal error of each face against the flow's input, as the summary's q_max). */
 #include "cs_output_willmore.h"
+#include "cs_geometry.h"
+#include "cs_linalg.h"
 
 struct _n_CSWillmoreViewer {
   CSViewer v;
@@ -10,10 +14,32 @@ struct _n_CSWillmoreViewer {
 
 static PetscErrorCode WriteStep(CSWillmoreFlow flow, CSWillmoreViewer V, PetscInt it)
 {
-  Vec x;
+  Vec    x, x0, h, hn, area, farea, q;
+  CSMesh mesh;
   PetscFunctionBeginUser;
   PetscCall(CSWillmoreFlowGetSolution(flow, &x));
+  PetscCall(CSWillmoreFlowGetInitial(flow, &x0));
+  PetscCall(CSWillmoreFlowGetMesh(flow, &mesh));
+  PetscCall(DMCreateGlobalVector(mesh->dmV3, &h));
+  PetscCall(DMCreateGlobalVector(mesh->dmV1, &hn));
+  PetscCall(DMCreateGlobalVector(mesh->dmV1, &area));
+  PetscCall(DMCreateGlobalVector(mesh->dmF1, &farea));
+  PetscCall(DMCreateGlobalVector(mesh->dmF1, &q));
+  PetscCall(CSGeometryMeanCurvature(mesh, x, h));
+  PetscCall(CSVecBlockNorms(h, 3, hn));
+  PetscCall(CSGeometryVertexAreas(mesh, x, area));
+  PetscCall(CSGeometryFaceAreas(mesh, x, farea));
+  PetscCall(CSGeometryQuasiConformal(mesh, x0, x, q, NULL, NULL));
+  PetscCall(CSViewerAddVertexField(V->v, "mean_curvature", hn));
+  PetscCall(CSViewerAddVertexField(V->v, "vertex_area", area));
+  PetscCall(CSViewerAddFaceField(V->v, "face_area", farea));
+  PetscCall(CSViewerAddFaceField(V->v, "Q", q));
   PetscCall(CSViewerWriteStep(V->v, x, (PetscReal)it));
+  PetscCall(VecDestroy(&h));
+  PetscCall(VecDestroy(&hn));
+  PetscCall(VecDestroy(&area));
+  PetscCall(VecDestroy(&farea));
+  PetscCall(VecDestroy(&q));
   V->last = it;
   PetscFunctionReturn(0);
 }

@@ -1,7 +1,7 @@
 /* Storage of the event ids of include/cs_log.h; CSInitializePackage registers them. */
 #include "cs_log.h"
 
-PetscLogEvent CS_EVENT_MeshRead, CS_EVENT_MeshDistribute, CS_EVENT_Geometry, CS_EVENT_Energy, CS_EVENT_Gradient, CS_EVENT_Assemble;
+PetscLogEvent CS_EVENT_MeshRead, CS_EVENT_MeshDistribute, CS_EVENT_Geometry, CS_EVENT_Energy, CS_EVENT_Gradient, CS_EVENT_Assemble, CS_EVENT_ViewerWrite;
 PetscLogEvent CS_EVENT_CholmodSym, CS_EVENT_CholmodNum, CS_EVENT_CholmodSolve;
 PetscLogEvent CS_EVENT_QuatCholSym, CS_EVENT_QuatCholNum, CS_EVENT_QuatCholSolve;
 PetscLogEvent CS_EVENT_SubCholSym, CS_EVENT_SubCholNum, CS_EVENT_SubCholDense, CS_EVENT_SubCholSolve;

@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# -help (src/driver/main.c): alone, the task list (exit 0, no PETSc banner); with -task NAME, only that task's own
+# options with their defaults (no other task's, no solver object's); an unknown option still fails naming it.
+# nprocs: 1
+source tests/lib.sh
+"$CS_BIN" -help > "$TMP/h.txt" 2>&1 || { cat "$TMP/h.txt"; echo "BAD: -help exit $?"; exit 1; }
+for t in info flow spin spectrum curveflow; do grep -q "^  $t " "$TMP/h.txt" || { echo "BAD: task $t not listed"; exit 1; }; done
+! grep -q "Options for all PETSc programs" "$TMP/h.txt" || { echo "BAD: PETSc's banner"; exit 1; }
+echo "ok  -help lists the tasks ($(wc -l < "$TMP/h.txt") lines)"
+check() { # task-args, must-have regex list, must-not regex
+  local args=$1 want=$2 not=$3
+  $CS_BIN $args -help > "$TMP/t.txt" 2>&1 || { cat "$TMP/t.txt"; echo "BAD: $args -help failed"; exit 1; }
+  for w in $want; do grep -qE -- "^  $w " "$TMP/t.txt" || { echo "BAD: $args -help lacks $w"; exit 1; }; done
+  grep -E -- "^  -" "$TMP/t.txt" > "$TMP/opts.txt"
+  if grep -qE -- "$not" "$TMP/opts.txt"; then echo "BAD: $args -help shows $(grep -E -- "$not" "$TMP/opts.txt" | head -2)"; exit 1; fi
+  echo "ok  $args -help: $(grep -c '^  -' "$TMP/t.txt") options, none of /$not/"
+}
+check "-task flow" "-flow_rtol -flow_type -flow_viewer_every -flow_constraint_area -o -mesh -viewer_dir" "^  -(spin_|bs_)|_ksp_|_pc_"
+grep -qE -- "-flow_rtol <1e-06 : 1e-06>" "$TMP/t.txt" || { echo "BAD: -flow_rtol default not shown"; exit 1; }
+check "-task flow -flow_type bs" "-bs_max_it -bs_scheme -o" "^  -(spin_|flow_rtol)|_ksp_|_pc_"
+check "-task spin" "-spin_solver -spin_boundary -o" "^  -(flow_|bs_)|_ksp_|_eps_|_st_"
+check "-task info" "-mesh -gen -o" "^  -(flow_|bs_|spin_)"
+EXPECT="-flow_rtoll" expect_fail "$CS_BIN" -task flow -gen icosphere -gen_level 1 -flow_max_it 1 -flow_rtoll 1
+check "-task curveflow" "-curve_tau -curve -gen_curve -o" "^  -(flow_|bs_|spin_|gen_level)|_ksp_|_pc_"
