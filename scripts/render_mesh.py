@@ -20,24 +20,14 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+import objio  # noqa: E402  (scripts/objio.py, beside this file)
 from mpl_toolkits.mplot3d.art3d import Poly3DCollection  # noqa: E402
 
 VIEWS = [(20, 30), (70, -60), (-10, 120)]
 
 
 def read_obj(path):
-    verts, faces = [], []
-    with open(path) as fh:
-        for line in fh:
-            s = line.split()
-            if not s:
-                continue
-            if s[0] == "v":
-                verts.append([float(x) for x in s[1:4]])
-            elif s[0] == "f":
-                if len(s) != 4:
-                    sys.exit("%s: only triangles are drawn" % path)
-                faces.append([int(x.split("/")[0]) - 1 for x in s[1:4]])
+    verts, faces = objio.read_obj(path, triangles_only=True)
     if not verts or not faces:
         sys.exit("%s: no vertices or faces" % path)
     return np.array(verts), np.array(faces)

@@ -23,20 +23,12 @@ import sys
 import tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+sys.path.insert(0, os.path.join(ROOT, "scripts"))
+import objio  # noqa: E402  (the project's OBJ reader)
 
 
 def read_obj(path):
-    V, F = [], []
-    with open(path) as fp:
-        for line in fp:
-            t = line.split()
-            if not t:
-                continue
-            if t[0] == "v":
-                V.append([float(t[1]), float(t[2]), float(t[3])])
-            elif t[0] == "f":
-                F.append([int(s.split("/")[0]) - 1 for s in t[1:4]])
-    return V, F
+    return objio.read_obj(path)
 
 
 def write_obj(path, V, F, comment):
