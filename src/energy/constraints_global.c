@@ -161,11 +161,13 @@ static PetscErrorCode ReadPointsFile(const char option[], const char path[], Pet
     if (nr != 4 || PetscIsInfOrNanReal((PetscReal)a) || PetscIsInfOrNanReal((PetscReal)b) || PetscIsInfOrNanReal((PetscReal)c)) {
       fclose(fp);
       PetscCall(PetscFree(seen));
+      PetscCall(PetscFree2(*vnat, *p)); /* the error paths freed only seen (issue 18, item 12) */
       SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "%s %s line %" PetscInt_FMT ": expected 'vertex_index x y z' (0-based index and three finite numbers)", option, path, lineno);
     }
     if (idx < 0 || idx >= Nv || seen[idx]) {
       fclose(fp);
       PetscCall(PetscFree(seen));
+      PetscCall(PetscFree2(*vnat, *p)); /* the error paths freed only seen (issue 18, item 12) */
       PetscCheck(idx >= 0 && idx < Nv, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "%s %s line %" PetscInt_FMT ": vertex index %ld out of range [0, %" PetscInt_FMT ")", option, path, lineno, idx, Nv);
       SETERRQ(PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%s %s line %" PetscInt_FMT ": vertex %ld is constrained twice", option, path, lineno, idx);
     }

@@ -62,7 +62,7 @@ PetscErrorCode CSMeshDataReadOBJ(Reader *r)
       else if (cnt < 3) CSReaderLineFail(r, L.line, "face with %" PetscInt_FMT " vertices (a triangle needs 3)", cnt);
       for (int k = 0; k < 3 && !r->msg[0]; k++) {
         if (idx[k] > 0 && idx[k] <= nvx) r->f[3 * nf + k] = (PetscInt)(idx[k] - 1);
-        else if (idx[k] < 0 && -idx[k] <= nv) r->f[3 * nf + k] = (PetscInt)(nv + idx[k]);
+        else if (idx[k] < 0 && idx[k] >= -(long long)nv) r->f[3 * nf + k] = (PetscInt)(nv + idx[k]);
         else if (idx[k] == 0) CSReaderLineFail(r, L.line, "vertex index 0 is invalid (OBJ indices start at 1)");
         else if (idx[k] > 0) CSReaderLineFail(r, L.line, "vertex index %lld out of range (the file has %" PetscInt_FMT " vertices)", idx[k], nvx);
         else CSReaderLineFail(r, L.line, "relative vertex index %lld out of range (%" PetscInt_FMT " vertices defined so far)", idx[k], nv);

@@ -14,6 +14,7 @@ check "truncated|expected|end of file" tests/data/truncated.off
 check "truncated|expected|end of file" tests/data/truncated_binary.ply
 check "garbage|number|parse|invalid" tests/data/garbage.obj
 check "range" tests/data/index_out_of_range.obj
+check "relative vertex index -9223372036854775808 out of range" tests/data/index_min_int64.obj
 check "nan" tests/data/nan.obj
 check "inf" tests/data/inf.ply
 check "repeated" tests/data/repeated_vertex.obj

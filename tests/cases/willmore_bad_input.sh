@@ -22,4 +22,9 @@ EXPECT="-flow_factor_reuse_its -1" expect_fail F -gen icosphere -gen_level 1 -fl
 EXPECT="-flow_soc_max_it -1" expect_fail F -gen icosphere -gen_level 1 -flow_soc_max_it -1
 EXPECT="-flow_restore_above -0.5" expect_fail F -gen icosphere -gen_level 1 -flow_restore_above -0.5
 EXPECT="-flow_fin_q 0.5" expect_fail F -gen icosphere -gen_level 1 -flow_fin_q 0.5
+# numeric options that used to make do-nothing runs exiting 0 (issue 18, item 10): nan, inf, out of range
+for o in "-flow_rtol nan" "-flow_iq_wmin -1" "-flow_max_it -1" "-flow_max_rejections 0" "-flow_t_mu -5" "-flow_t inf" "-flow_vmax nan"; do
+  EXPECT="^confsurf: error: $o: must" expect_fail F -gen icosphere -gen_level 1 $o
+done
+EXPECT="-bs_dt inf: must be > 0" expect_fail F -flow_type bs -gen icosphere -gen_level 2 -bs_dt inf
 EXPECT="-flow_constraint_mobius.*-flow_conformal" expect_fail F -gen icosphere -gen_level 1 -flow_type gd -flow_constraint_mobius

@@ -51,15 +51,16 @@ static PetscErrorCode CheckOptions(CSBSFlow F)
   const char *p    = F->hdr.prefix;
   PetscFunctionBeginUser;
   PetscCheck(F->max_rej >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%smax_rejections %" PetscInt_FMT ": must be >= 0", p, F->max_rej);
-  PetscCheck(F->max_it >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%smax_it %" PetscInt_FMT ": must be >= 0", p, F->max_it);
-  PetscCheck(!F->dt_set || F->dt_opt > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sdt %g: must be > 0", p, (double)F->dt_opt);
-  PetscCheck(F->dt_rel > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sdt_rel %g: must be > 0", p, (double)F->dt_rel);
-  PetscCheck(F->dt_grow >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sdt_grow %g: must be >= 1", p, (double)F->dt_grow);
-  PetscCheck(F->dt_max_opt >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sdt_max %g: must be > 0", p, (double)F->dt_max_opt);
-  PetscCheck(F->atol >= 0 && F->rtol >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%satol/-%srtol must be >= 0", p, p);
-  PetscCheck(F->perturb >= 0 && F->perturb < 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sperturb %g: must lie in [0, 1)", p, (double)F->perturb);
-  PetscCheck(F->beta_eps >= 0 && F->beta_eps < 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sbeta_eps %g: must lie in [0, 1)", p, (double)F->beta_eps);
-  PetscCheck(!F->hessian_eps_set || (F->hessian_eps >= F->beta_eps && F->hessian_eps < 1), comm, PETSC_ERR_ARG_OUTOFRANGE, "-%shessian_eps %g: must lie in [-%sbeta_eps, 1)", p, (double)F->hessian_eps, p);
+  PetscCall(CSCheckOptionValue(comm, p, "dt", F->dt_opt, !F->dt_set || F->dt_opt > 0, "must be > 0"));
+  PetscCall(CSCheckOptionValue(comm, p, "dt_rel", F->dt_rel, F->dt_rel > 0, "must be > 0"));
+  PetscCall(CSCheckOptionValue(comm, p, "dt_grow", F->dt_grow, F->dt_grow >= 1, "must be >= 1"));
+  PetscCall(CSCheckOptionValue(comm, p, "dt_max", F->dt_max_opt, F->dt_max_opt >= 0, "must be >= 0 (0: the default)"));
+  PetscCall(CSCheckOptionValue(comm, p, "atol", F->atol, F->atol >= 0, "must be >= 0"));
+  PetscCall(CSCheckOptionValue(comm, p, "rtol", F->rtol, F->rtol >= 0, "must be >= 0"));
+  PetscCall(CSCheckOptionValue(comm, p, "beta_eps", F->beta_eps, F->beta_eps >= 0 && F->beta_eps < 1, "must lie in [0, 1)"));
+  PetscCall(CSCheckOptionValue(comm, p, "perturb", F->perturb, F->perturb >= 0 && F->perturb < 1, "must lie in [0, 1)"));
+  PetscCall(CSCheckOptionValue(comm, p, "max_it", (PetscReal)F->max_it, F->max_it >= 0, "must be >= 0"));
+  PetscCall(CSCheckOptionValue(comm, p, "hessian_eps", F->hessian_eps, !F->hessian_eps_set || (F->hessian_eps >= F->beta_eps && F->hessian_eps < 1), "must lie in [beta_eps, 1)"));
   PetscFunctionReturn(0);
 }
 

@@ -1,5 +1,6 @@
 /* CSWillmoreFlowSetFromOptions: every option of the flow, under its prefix (default "flow_"). */
 #include "willmore_impl.h"
+#include "cs_util.h"
 
 const char *const CSFlowMetricTypes[]   = {"h2", "l2", "CSFlowMetricType", "CS_FLOW_METRIC_", NULL};
 const char *const CSFlowBoundaryTypes[] = {"dirichlet", "free", "normals", "CSFlowBoundaryType", "CS_FLOW_BOUNDARY_", NULL};
@@ -26,7 +27,7 @@ static PetscErrorCode StepOptions(CSWillmoreFlow F, PetscOptionItems *PetscOptio
   PetscBool   set;
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsReal("-t", "Initial primal step size t", NULL, F->t, &F->t, NULL));
-  PetscCall(PetscOptionsReal("-t_mu", "Dual step size t_mu of the multipliers (default 1e3 t)", NULL, F->tmu, &F->tmu, NULL));
+  PetscCall(PetscOptionsReal("-t_mu", "Dual step size t_mu of the multipliers (default 1e3 t)", NULL, F->tmu, &F->tmu, &F->tmu_set));
   PetscCall(PetscOptionsReal("-t_max", "Largest primal step", NULL, F->tmax, &F->tmax, NULL));
   PetscCall(PetscOptionsReal("-t_mu_grow", "Grow t_mu by this factor after each accepted step, independently of t, up to t_mu_max (0: t_mu follows t)", NULL, F->tmu_grow, &F->tmu_grow, NULL));
   PetscCall(PetscOptionsReal("-t_mu_max", "Largest t_mu (default: 1e3 t_max with t_mu_grow, else none; in the units of t_mu)", NULL, F->tmu_max, &F->tmu_max, NULL));
@@ -76,15 +77,37 @@ static PetscErrorCode ProblemOptions(CSWillmoreFlow F, PetscFunctionList energie
   PetscFunctionReturn(0);
 }
 
+/* Every numeric option finite and in range, named in the error (issue 18, item 10). */
+static PetscErrorCode CheckValues(CSWillmoreFlow F)
+{
+  const char *p = F->prefix;
+  MPI_Comm    c = F->comm;
+  PetscFunctionBeginUser;
+  PetscCall(CSCheckOptionValue(c, p, "t", F->t, F->t > 0, "must be > 0"));
+  PetscCall(CSCheckOptionValue(c, p, "t_mu", F->tmu, !F->tmu_set || F->tmu > 0, "must be > 0"));
+  PetscCall(CSCheckOptionValue(c, p, "t_max", F->tmax, F->tmax >= F->t, "must be >= the initial step -t"));
+  PetscCall(CSCheckOptionValue(c, p, "t_grow", F->grow, F->grow >= 1, "must be >= 1"));
+  PetscCall(CSCheckOptionValue(c, p, "t_mu_grow", F->tmu_grow, F->tmu_grow == 0 || F->tmu_grow >= 1, "use 0 (t_mu follows t) or a factor >= 1"));
+  PetscCall(CSCheckOptionValue(c, p, "t_mu_max", F->tmu_max, F->tmu_max >= 0, "must be >= 0 (0: the default)"));
+  PetscCall(CSCheckOptionValue(c, p, "merit_rho", F->rho, F->rho >= 0, "must be >= 0"));
+  PetscCall(CSCheckOptionValue(c, p, "vmax", F->vmax, F->vmax > 0, "must be > 0"));
+  PetscCall(CSCheckOptionValue(c, p, "iq_wmin", F->wmin, F->wmin > 0, "must be > 0"));
+  PetscCall(CSCheckOptionValue(c, p, "rtol", F->rtol, F->rtol >= 0, "must be >= 0"));
+  PetscCall(CSCheckOptionValue(c, p, "ctol", F->ctol, F->ctol >= 0, "must be >= 0"));
+  PetscCall(CSCheckOptionValue(c, p, "pgd_t_mu", F->proj_tmu, F->proj_tmu > 0, "must be > 0"));
+  PetscCall(CSCheckOptionValue(c, p, "fairing_epsilon", F->eps, F->eps > 0, "must be > 0"));
+  PetscCall(CSCheckOptionValue(c, p, "max_it", (PetscReal)F->max_it, F->max_it >= 0, "must be >= 0"));
+  PetscCall(CSCheckOptionValue(c, p, "max_rejections", (PetscReal)F->max_rej, F->max_rej >= 1, "must be >= 1"));
+  PetscFunctionReturn(0);
+}
+
 /* Consistency of the options with each other and with the kind. */
 static PetscErrorCode CheckOptions(CSWillmoreFlow F)
 {
   const char *p = F->prefix;
   PetscFunctionBeginUser;
-  if (F->tmu <= 0) F->tmu = 1e3 * F->t;
-  PetscCheck(F->t > 0 && F->tmu > 0 && F->grow >= 1 && F->tmax >= F->t, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%st %g, -%st_mu %g, -%st_grow %g, -%st_max %g: need t > 0, t_mu > 0, grow >= 1, t_max >= t", p, (double)F->t, p, (double)F->tmu, p, (double)F->grow, p, (double)F->tmax);
-  PetscCheck(F->tmu_grow == 0 || F->tmu_grow >= 1, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%st_mu_grow %g: use 0 (t_mu follows t) or a factor >= 1", p, (double)F->tmu_grow);
-  PetscCheck(F->eps > 0, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sfairing_epsilon %g: must be positive", p, (double)F->eps);
+  PetscCall(CheckValues(F));
+  if (!F->tmu_set) F->tmu = 1e3 * F->t;
   PetscCheck(!F->target[0] || F->conformal, F->comm, PETSC_ERR_ARG_INCOMP, "-%starget_mesh %s needs the conformal constraint (cgd, or pgd with -%sconformal)", p, F->target, p);
   PetscCheck(!F->boundary_set || F->boundary != CS_FLOW_BOUNDARY_NORMALS || F->conformal, F->comm, PETSC_ERR_ARG_INCOMP, "-%sboundary normals needs the conformal constraint (cgd or pgd)", p);
   if (F->ops.setup) PetscCall((*F->ops.setup)(F));
