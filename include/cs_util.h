@@ -56,7 +56,13 @@ PETSC_EXTERN PetscErrorCode CSHistoryMonitorDestroy(void **ctx);
 PETSC_EXTERN PetscErrorCode CSArrayGrow(size_t size, PetscInt n, PetscInt initial, PetscInt *cap, void **a);
 PETSC_EXTERN PetscErrorCode CSPathExtension(const char path[], char ext[], size_t len); /* lower-case, without dot */
 PETSC_EXTERN PetscErrorCode CSPathMakeParents(const char path[]); /* mkdir -p of the folders above a file to write */
-/* A numeric option: v finite and ok (the caller's range test), else an error "-<prefix><name> <v>: <want>". */
-PETSC_EXTERN PetscErrorCode CSCheckOptionValue(MPI_Comm comm, const char prefix[], const char name[], PetscReal v, PetscBool ok, const char want[]);
+/* Numeric options: each value finite and ok (the caller's range test), else an error "-<prefix><name> <v>: <want>". */
+typedef struct {
+  const char *name;
+  PetscReal   value;
+  PetscBool   ok;
+  const char *want;
+} CSOptionCheck;
+PETSC_EXTERN PetscErrorCode CSCheckOptionValues(MPI_Comm comm, const char prefix[], size_t n, const CSOptionCheck checks[]);
 
 #endif

@@ -47,20 +47,23 @@ PetscErrorCode CSBSFlowGetOptionsPrefix(CSBSFlow flow, const char *prefix[])
 /* A clear one-line error naming the option (with the prefix) for every bad value. */
 static PetscErrorCode CheckOptions(CSBSFlow F)
 {
-  MPI_Comm    comm = F->mesh->comm;
-  const char *p    = F->hdr.prefix;
+  MPI_Comm            comm     = F->mesh->comm;
+  const char         *p        = F->hdr.prefix;
+  const CSOptionCheck checks[] = {
+    {"dt", F->dt_opt, !F->dt_set || F->dt_opt > 0, "must be > 0"},
+    {"dt_rel", F->dt_rel, F->dt_rel > 0, "must be > 0"},
+    {"dt_grow", F->dt_grow, F->dt_grow >= 1, "must be >= 1"},
+    {"dt_max", F->dt_max_opt, F->dt_max_opt >= 0, "must be >= 0 (0: the default)"},
+    {"atol", F->atol, F->atol >= 0, "must be >= 0"},
+    {"rtol", F->rtol, F->rtol >= 0, "must be >= 0"},
+    {"beta_eps", F->beta_eps, F->beta_eps >= 0 && F->beta_eps < 1, "must lie in [0, 1)"},
+    {"perturb", F->perturb, F->perturb >= 0 && F->perturb < 1, "must lie in [0, 1)"},
+    {"max_it", (PetscReal)F->max_it, F->max_it >= 0, "must be >= 0"},
+    {"hessian_eps", F->hessian_eps, !F->hessian_eps_set || (F->hessian_eps >= F->beta_eps && F->hessian_eps < 1), "must lie in [beta_eps, 1)"},
+  };
   PetscFunctionBeginUser;
   PetscCheck(F->max_rej >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%smax_rejections %" PetscInt_FMT ": must be >= 0", p, F->max_rej);
-  PetscCall(CSCheckOptionValue(comm, p, "dt", F->dt_opt, !F->dt_set || F->dt_opt > 0, "must be > 0"));
-  PetscCall(CSCheckOptionValue(comm, p, "dt_rel", F->dt_rel, F->dt_rel > 0, "must be > 0"));
-  PetscCall(CSCheckOptionValue(comm, p, "dt_grow", F->dt_grow, F->dt_grow >= 1, "must be >= 1"));
-  PetscCall(CSCheckOptionValue(comm, p, "dt_max", F->dt_max_opt, F->dt_max_opt >= 0, "must be >= 0 (0: the default)"));
-  PetscCall(CSCheckOptionValue(comm, p, "atol", F->atol, F->atol >= 0, "must be >= 0"));
-  PetscCall(CSCheckOptionValue(comm, p, "rtol", F->rtol, F->rtol >= 0, "must be >= 0"));
-  PetscCall(CSCheckOptionValue(comm, p, "beta_eps", F->beta_eps, F->beta_eps >= 0 && F->beta_eps < 1, "must lie in [0, 1)"));
-  PetscCall(CSCheckOptionValue(comm, p, "perturb", F->perturb, F->perturb >= 0 && F->perturb < 1, "must lie in [0, 1)"));
-  PetscCall(CSCheckOptionValue(comm, p, "max_it", (PetscReal)F->max_it, F->max_it >= 0, "must be >= 0"));
-  PetscCall(CSCheckOptionValue(comm, p, "hessian_eps", F->hessian_eps, !F->hessian_eps_set || (F->hessian_eps >= F->beta_eps && F->hessian_eps < 1), "must lie in [beta_eps, 1)"));
+  PetscCall(CSCheckOptionValues(comm, p, sizeof(checks) / sizeof(checks[0]), checks));
   PetscFunctionReturn(0);
 }
 

@@ -39,7 +39,7 @@ static PetscErrorCode RegisterAll(void)
 static void SetDefaults(CSWillmoreFlow F)
 {
   F->t               = 1.0;
-  F->tmu             = -1; /* 1e3 t */
+  F->tmu             = 0; /* 0: 1e3 t */
   F->tmax            = 2.0;
   F->grow            = 2.0;
   F->rtol            = 1e-6;

@@ -27,7 +27,7 @@ static PetscErrorCode StepOptions(CSWillmoreFlow F, PetscOptionItems *PetscOptio
   PetscBool   set;
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsReal("-t", "Initial primal step size t", NULL, F->t, &F->t, NULL));
-  PetscCall(PetscOptionsReal("-t_mu", "Dual step size t_mu of the multipliers (default 1e3 t)", NULL, F->tmu, &F->tmu, &F->tmu_set));
+  PetscCall(PetscOptionsReal("-t_mu", "Dual step size t_mu of the multipliers (0: the default, 1e3 t)", NULL, F->tmu, &F->tmu, NULL));
   PetscCall(PetscOptionsReal("-t_max", "Largest primal step", NULL, F->tmax, &F->tmax, NULL));
   PetscCall(PetscOptionsReal("-t_mu_grow", "Grow t_mu by this factor after each accepted step, independently of t, up to t_mu_max (0: t_mu follows t)", NULL, F->tmu_grow, &F->tmu_grow, NULL));
   PetscCall(PetscOptionsReal("-t_mu_max", "Largest t_mu (default: 1e3 t_max with t_mu_grow, else none; in the units of t_mu)", NULL, F->tmu_max, &F->tmu_max, NULL));
@@ -80,24 +80,25 @@ static PetscErrorCode ProblemOptions(CSWillmoreFlow F, PetscFunctionList energie
 /* Every numeric option finite and in range, named in the error (issue 18, item 10). */
 static PetscErrorCode CheckValues(CSWillmoreFlow F)
 {
-  const char *p = F->prefix;
-  MPI_Comm    c = F->comm;
+  const CSOptionCheck checks[] = {
+    {"t", F->t, F->t > 0, "must be > 0"},
+    {"t_mu", F->tmu, F->tmu >= 0, "must be > 0 (0: the default, 1e3 t)"},
+    {"t_max", F->tmax, F->tmax >= F->t, "must be >= the initial step -t"},
+    {"t_grow", F->grow, F->grow >= 1, "must be >= 1"},
+    {"t_mu_grow", F->tmu_grow, F->tmu_grow == 0 || F->tmu_grow >= 1, "use 0 (t_mu follows t) or a factor >= 1"},
+    {"t_mu_max", F->tmu_max, F->tmu_max >= 0, "must be >= 0 (0: the default)"},
+    {"merit_rho", F->rho, F->rho >= 0, "must be >= 0"},
+    {"vmax", F->vmax, F->vmax > 0, "must be > 0"},
+    {"iq_wmin", F->wmin, F->wmin > 0, "must be > 0"},
+    {"rtol", F->rtol, F->rtol >= 0, "must be >= 0"},
+    {"ctol", F->ctol, F->ctol >= 0, "must be >= 0"},
+    {"pgd_t_mu", F->proj_tmu, F->proj_tmu > 0, "must be > 0"},
+    {"fairing_epsilon", F->eps, F->eps > 0, "must be > 0"},
+    {"max_it", (PetscReal)F->max_it, F->max_it >= 0, "must be >= 0"},
+    {"max_rejections", (PetscReal)F->max_rej, F->max_rej >= 1, "must be >= 1"},
+  };
   PetscFunctionBeginUser;
-  PetscCall(CSCheckOptionValue(c, p, "t", F->t, F->t > 0, "must be > 0"));
-  PetscCall(CSCheckOptionValue(c, p, "t_mu", F->tmu, !F->tmu_set || F->tmu > 0, "must be > 0"));
-  PetscCall(CSCheckOptionValue(c, p, "t_max", F->tmax, F->tmax >= F->t, "must be >= the initial step -t"));
-  PetscCall(CSCheckOptionValue(c, p, "t_grow", F->grow, F->grow >= 1, "must be >= 1"));
-  PetscCall(CSCheckOptionValue(c, p, "t_mu_grow", F->tmu_grow, F->tmu_grow == 0 || F->tmu_grow >= 1, "use 0 (t_mu follows t) or a factor >= 1"));
-  PetscCall(CSCheckOptionValue(c, p, "t_mu_max", F->tmu_max, F->tmu_max >= 0, "must be >= 0 (0: the default)"));
-  PetscCall(CSCheckOptionValue(c, p, "merit_rho", F->rho, F->rho >= 0, "must be >= 0"));
-  PetscCall(CSCheckOptionValue(c, p, "vmax", F->vmax, F->vmax > 0, "must be > 0"));
-  PetscCall(CSCheckOptionValue(c, p, "iq_wmin", F->wmin, F->wmin > 0, "must be > 0"));
-  PetscCall(CSCheckOptionValue(c, p, "rtol", F->rtol, F->rtol >= 0, "must be >= 0"));
-  PetscCall(CSCheckOptionValue(c, p, "ctol", F->ctol, F->ctol >= 0, "must be >= 0"));
-  PetscCall(CSCheckOptionValue(c, p, "pgd_t_mu", F->proj_tmu, F->proj_tmu > 0, "must be > 0"));
-  PetscCall(CSCheckOptionValue(c, p, "fairing_epsilon", F->eps, F->eps > 0, "must be > 0"));
-  PetscCall(CSCheckOptionValue(c, p, "max_it", (PetscReal)F->max_it, F->max_it >= 0, "must be >= 0"));
-  PetscCall(CSCheckOptionValue(c, p, "max_rejections", (PetscReal)F->max_rej, F->max_rej >= 1, "must be >= 1"));
+  PetscCall(CSCheckOptionValues(F->comm, F->prefix, sizeof(checks) / sizeof(checks[0]), checks));
   PetscFunctionReturn(0);
 }
 
@@ -107,7 +108,7 @@ static PetscErrorCode CheckOptions(CSWillmoreFlow F)
   const char *p = F->prefix;
   PetscFunctionBeginUser;
   PetscCall(CheckValues(F));
-  if (!F->tmu_set) F->tmu = 1e3 * F->t;
+  if (F->tmu == 0) F->tmu = 1e3 * F->t;
   PetscCheck(!F->target[0] || F->conformal, F->comm, PETSC_ERR_ARG_INCOMP, "-%starget_mesh %s needs the conformal constraint (cgd, or pgd with -%sconformal)", p, F->target, p);
   PetscCheck(!F->boundary_set || F->boundary != CS_FLOW_BOUNDARY_NORMALS || F->conformal, F->comm, PETSC_ERR_ARG_INCOMP, "-%sboundary normals needs the conformal constraint (cgd or pgd)", p);
   if (F->ops.setup) PetscCall((*F->ops.setup)(F));

@@ -117,7 +117,7 @@ struct _p_CSWillmoreFlow {
   Vec                  *rows;
   PetscReal            *cx, *cxt, *nu, *dnu, *dnu2, *gw, *nun;
   PetscReal             t, tmu, tmax, grow, rtol, ctol, wmin, rho, vmax, vrestore;
-  PetscBool             restore_stalled, restore_failed, tmu_set;
+  PetscBool             restore_stalled, restore_failed;
   Vec                   mun;
   Vec                   area0, areat; /* barycentric vertex areas of the input and of the current state */
   PetscReal             area0_total;  /* total area of the input */
