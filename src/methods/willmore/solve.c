@@ -87,10 +87,12 @@ PetscErrorCode CSWillmoreFlowStep(CSWillmoreFlow F, CSWillmoreFlowConvergedReaso
   }
   F->reason = CS_WILLMORE_FLOW_ITERATING;
   PetscCall(Evaluate(F));
+  /* the guard (and the projection of the state it stops at) before the monitors, so the history, the ParaView
+     series and the progress line show the state the flow returns; a NaN state is left to the check below */
+  if (F->E == F->E && F->el == F->el) PetscCall(CSWFCheckResolution(F, &F->reason));
+  if (F->reason == CS_WILLMORE_FLOW_DIVERGED_MESH_DEGENERATE) PetscCall(ProjectAtStop(F));
   for (PetscInt i = 0; i < F->nmonitor; i++) PetscCall((*F->monitor[i].fn)(F, F->it, F->monitor[i].ctx));
   PetscCheck(F->E == F->E && F->el == F->el, F->comm, PETSC_ERR_FP, "flow: the energy or the residual is not a number at iteration %" PetscInt_FMT " (degenerate triangles?); try a smaller -%st", F->it, F->prefix);
-  PetscCall(CSWFCheckResolution(F, &F->reason));
-  if (F->reason == CS_WILLMORE_FLOW_DIVERGED_MESH_DEGENERATE) PetscCall(ProjectAtStop(F));
   if (!F->reason && F->el < F->rtol && PetscMax(F->conf, F->glob) < F->ctol) F->reason = CS_WILLMORE_FLOW_CONVERGED_RTOL;
   if (!F->reason && F->it >= F->max_it) F->reason = CS_WILLMORE_FLOW_DIVERGED_MAX_IT;
   if (!F->reason) {
