@@ -3,8 +3,6 @@
 #include "cs_mesh.h"
 #include "cs_util.h"
 #include "cs_log.h"
-#include <sys/stat.h>
-#include <errno.h>
 #include <zlib.h>
 
 const char *const CSViewerFormats[] = {"ascii", "binary", "zlib", "CSViewerFormat", "CS_VIEWER_", NULL};
@@ -31,8 +29,6 @@ struct _p_CSViewer {
 
 PetscErrorCode CSViewerCreate(CSMesh mesh, const char dir[], CSViewer *v)
 {
-  PetscMPIInt rank;
-  int         ok = 1;
   PetscFunctionBeginUser;
   PetscCall(PetscNew(v));
   (*v)->mesh = mesh;
@@ -47,10 +43,7 @@ PetscErrorCode CSViewerCreate(CSMesh mesh, const char dir[], CSViewer *v)
     (*v)->single = (PetscBool)(ip == 1);
   }
   PetscOptionsEnd();
-  PetscCallMPI(MPI_Comm_rank(mesh->comm, &rank));
-  if (!rank && mkdir(dir, 0755) && errno != EEXIST) ok = 0;
-  PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, mesh->comm));
-  PetscCheck(ok, mesh->comm, PETSC_ERR_FILE_OPEN, "-viewer_dir %s: cannot create the directory", dir);
+  CSRootCall(mesh->comm, CSPathMakeDir(dir));
   PetscFunctionReturn(0);
 }
 

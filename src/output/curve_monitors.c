@@ -1,7 +1,5 @@
 /* Monitors and the report of the curve flow (include/cs_output_curve.h). */
 #include "cs_output_curve.h"
-#include <sys/stat.h>
-#include <errno.h>
 
 PetscErrorCode CSCurveFlowMonitorProgress(CSCurveFlow flow, const CSCurveMonitorInfo *s, void *ctx)
 {
@@ -74,13 +72,6 @@ static PetscErrorCode StepsDestroy(void **ctx)
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode MakeDir(const char dir[])
-{
-  PetscFunctionBeginUser;
-  PetscCheck(!mkdir(dir, 0755) || errno == EEXIST, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-viewer_dir %s: cannot create the directory", dir);
-  PetscFunctionReturn(0);
-}
-
 PetscErrorCode CSCurveFlowMonitorSetSteps(CSCurveFlow flow, CSOutput *out, PetscInt every)
 {
   StepsCtx *S;
@@ -88,7 +79,7 @@ PetscErrorCode CSCurveFlowMonitorSetSteps(CSCurveFlow flow, CSOutput *out, Petsc
   PetscFunctionBeginUser;
   if (!out->has_viewer) PetscFunctionReturn(0);
   PetscCall(CSCurveFlowGetCurve(flow, &curve));
-  CSRootCall(curve->comm, MakeDir(out->viewer_dir));
+  CSRootCall(curve->comm, CSPathMakeDir(out->viewer_dir));
   PetscCall(PetscNew(&S));
   PetscCall(PetscStrncpy(S->dir, out->viewer_dir, sizeof(S->dir)));
   S->every = every;

@@ -59,10 +59,10 @@ static PetscErrorCode CheckOptions(CSBSFlow F)
     {"beta_eps", F->beta_eps, F->beta_eps >= 0 && F->beta_eps < 1, "must lie in [0, 1)"},
     {"perturb", F->perturb, F->perturb >= 0 && F->perturb < 1, "must lie in [0, 1)"},
     {"max_it", (PetscReal)F->max_it, F->max_it >= 0, "must be >= 0"},
+    {"max_rejections", (PetscReal)F->max_rej, F->max_rej >= 0, "must be >= 0"},
     {"hessian_eps", F->hessian_eps, !F->hessian_eps_set || (F->hessian_eps >= F->beta_eps && F->hessian_eps < 1), "must lie in [beta_eps, 1)"},
   };
   PetscFunctionBeginUser;
-  PetscCheck(F->max_rej >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%smax_rejections %" PetscInt_FMT ": must be >= 0", p, F->max_rej);
   PetscCall(CSCheckOptionValues(comm, p, sizeof(checks) / sizeof(checks[0]), checks));
   PetscFunctionReturn(0);
 }

@@ -3,6 +3,7 @@
    (Eq. 2, Sec. 5.1-5.2 angles and tangents), curve_poisson.c (Sec. 5.2 positions). */
 #include "curve_flow_impl.h"
 #include "cs_package.h"
+#include "cs_util.h"
 
 static const char *const ReasonsShifted[]         = {"turning_changed", "energy_growth", "max_it", "iterating", "converged"};
 const char *const       *CSCurveFlowConvergedReasons = ReasonsShifted + 3;
@@ -41,14 +42,16 @@ PetscErrorCode CSCurveFlowGetOptionsPrefix(CSCurveFlow F, const char *prefix[])
 /* a clear one-line error naming the option (with the prefix) for every bad value */
 static PetscErrorCode CheckOptions(CSCurveFlow F)
 {
-  const char *p = F->hdr.prefix;
+  const CSOptionCheck checks[] = {
+    {"tau", F->tau, F->tau > 0, "must be > 0"},
+    {"max_it", (PetscReal)F->max_it, F->max_it >= 0, "must be >= 0"},
+    {"rtol", F->rtol, F->rtol >= 0, "must be >= 0"},
+    {"filter_sigma", F->sigma, F->sigma > 0, "must be > 0"},
+    {"filter_k", (PetscReal)F->fk, F->fk >= 0 && F->fk <= 4, "must lie in 0..4"},
+    {"max_energy_growth", F->egrow, F->egrow > 1, "must be > 1"},
+  };
   PetscFunctionBeginUser;
-  PetscCheck(F->tau > 0 && !PetscIsInfOrNanReal(F->tau), F->hdr.comm, PETSC_ERR_ARG_OUTOFRANGE, "-%stau %g: must be > 0", p, (double)F->tau);
-  PetscCheck(F->max_it >= 0, F->hdr.comm, PETSC_ERR_ARG_OUTOFRANGE, "-%smax_it %" PetscInt_FMT ": must be >= 0", p, F->max_it);
-  PetscCheck(F->rtol >= 0, F->hdr.comm, PETSC_ERR_ARG_OUTOFRANGE, "-%srtol %g: must be >= 0", p, (double)F->rtol);
-  PetscCheck(F->sigma > 0, F->hdr.comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sfilter_sigma %g: must be > 0", p, (double)F->sigma);
-  PetscCheck(F->fk >= 0 && F->fk <= 4, F->hdr.comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sfilter_k %" PetscInt_FMT ": must lie in 0..4", p, F->fk);
-  PetscCheck(F->egrow > 1, F->hdr.comm, PETSC_ERR_ARG_OUTOFRANGE, "-%smax_energy_growth %g: must be > 1", p, (double)F->egrow);
+  PetscCall(CSCheckOptionValues(F->hdr.comm, F->hdr.prefix, sizeof(checks) / sizeof(checks[0]), checks));
   PetscFunctionReturn(0);
 }
 

@@ -37,20 +37,16 @@ static PetscErrorCode StepOptions(CSWillmoreFlow F, PetscOptionItems *PetscOptio
   PetscCall(PetscOptionsReal("-merit_rho", "Weight of the quadratic constraint penalty in the merit function, relative to |E(input)|", NULL, F->rho, &F->rho, NULL));
   PetscCall(PetscOptionsReal("-vmax", "Step control: reject steps whose constraint violation exceeds max(v, this), v that of the current state", NULL, F->vmax, &F->vmax, NULL));
   PetscCall(PetscOptionsReal("-restore_above", "CGD/GD: project an accepted state whose constraint violation exceeds this back onto the constraints (0: never)", NULL, F->vrestore, &F->vrestore, NULL));
-  PetscCheck(F->vrestore >= 0, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%srestore_above %g: use 0 (off) or a positive violation", p, (double)F->vrestore);
   PetscCall(PetscOptionsBool("-restore_stalled", "CGD/GD: project an accepted state back onto the constraints when t has collapsed (t < 1e-3 t_max) with the violation above vmax / 10", NULL, F->restore_stalled, &F->restore_stalled, NULL));
   PetscCall(PetscOptionsReal("-max_area_ratio", "Stop when max(A_i/A0_i)/min(A_i/A0_i) of the vertex areas, or the total area relative to the input, exceeds this (0: off)", NULL, F->max_area_ratio, &F->max_area_ratio, NULL));
-  PetscCheck(F->max_area_ratio == 0 || F->max_area_ratio > 1, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%smax_area_ratio %g: use 0 (off) or a ratio above 1", p, (double)F->max_area_ratio);
   PetscCall(PetscOptionsBool("-project_at_stop", "When the resolution guard stops the flow, project the state onto the constraints (PGD's projection) so the result lies in the prescribed conformal class", NULL, F->project_at_stop, &F->project_at_stop, NULL));
   PetscCall(PetscOptionsReal("-fin_q", "Resolution guard: a stop with the largest quasi-conformal error of a face above this is reported as fins (a jump of the conformal factor across faces), below it as a smooth concentration", NULL, F->fin_q, &F->fin_q, NULL));
-  PetscCheck(F->fin_q >= 1, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sfin_q %g: a quasi-conformal error is at least 1", p, (double)F->fin_q);
   PetscCall(PetscOptionsReal("-rtol", "Stop when ||g + X^T mu||_2 is below this", NULL, F->rtol, &F->rtol, NULL));
   PetscCall(PetscOptionsReal("-ctol", "... and the constraint violation (inf-norm) below this", NULL, F->ctol, &F->ctol, NULL));
   PetscCall(PetscOptionsInt("-max_it", "Maximum number of iterations", NULL, F->max_it, &F->max_it, NULL));
   PetscCall(PetscOptionsReal("-iq_wmin", "Floor on cotan weights in I_Q (Eq. 25) for non-Delaunay edges", NULL, F->wmin, &F->wmin, NULL));
   PetscCall(PetscOptionsReal("-pgd_t_mu", "PGD: regularising dual step of the (singular) PGD system and of the projection", NULL, F->proj_tmu, &F->proj_tmu, NULL));
   PetscCall(PetscOptionsInt("-soc_max_it", "CGD/GD: second-order corrections of each trial step toward the constraints (0: none)", NULL, F->soc_max_it, &F->soc_max_it, NULL));
-  PetscCheck(F->soc_max_it >= 0, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%ssoc_max_it %" PetscInt_FMT ": use 0 (no corrections) or a positive count", p, F->soc_max_it);
   PetscCall(PetscOptionsInt("-pgd_projection_max_it", "PGD: Gauss-Newton iterations of the projection onto the constraint set", NULL, F->proj_max_it, &F->proj_max_it, NULL));
   PetscCall(PetscOptionsInt("-factor_reuse_its", "Keep the preconditioner (factorisation) of an earlier step while the last solve needed at most this many Krylov iterations (0: refactor every step; default 10 with the conformal constraint, else 0; ignored with a preonly saddle KSP)", NULL, F->reuse_its, &F->reuse_its, &set));
   PetscCheck(!set || F->reuse_its >= 0, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sfactor_reuse_its %" PetscInt_FMT ": use 0 (refactor every step) or a positive iteration count", p, F->reuse_its);
@@ -89,6 +85,9 @@ static PetscErrorCode CheckValues(CSWillmoreFlow F)
     {"t_mu_max", F->tmu_max, F->tmu_max >= 0, "must be >= 0 (0: the default)"},
     {"merit_rho", F->rho, F->rho >= 0, "must be >= 0"},
     {"vmax", F->vmax, F->vmax > 0, "must be > 0"},
+    {"restore_above", F->vrestore, F->vrestore >= 0, "use 0 (off) or a positive violation"},
+    {"max_area_ratio", F->max_area_ratio, F->max_area_ratio == 0 || F->max_area_ratio > 1, "use 0 (off) or a ratio above 1"},
+    {"fin_q", F->fin_q, F->fin_q >= 1, "a quasi-conformal error is at least 1"},
     {"iq_wmin", F->wmin, F->wmin > 0, "must be > 0"},
     {"rtol", F->rtol, F->rtol >= 0, "must be >= 0"},
     {"ctol", F->ctol, F->ctol >= 0, "must be >= 0"},
@@ -96,6 +95,7 @@ static PetscErrorCode CheckValues(CSWillmoreFlow F)
     {"fairing_epsilon", F->eps, F->eps > 0, "must be > 0"},
     {"max_it", (PetscReal)F->max_it, F->max_it >= 0, "must be >= 0"},
     {"max_rejections", (PetscReal)F->max_rej, F->max_rej >= 1, "must be >= 1"},
+    {"soc_max_it", (PetscReal)F->soc_max_it, F->soc_max_it >= 0, "use 0 (no corrections) or a positive count"},
   };
   PetscFunctionBeginUser;
   PetscCall(CSCheckOptionValues(F->comm, F->prefix, sizeof(checks) / sizeof(checks[0]), checks));
