@@ -11,5 +11,7 @@ PETSC_EXTERN PetscErrorCode CSTaskSpectrum(MPI_Comm comm);
 PETSC_EXTERN PetscErrorCode CSTaskCurveFlow(MPI_Comm comm); /* src/driver/task_curveflow.c */
 /* -task flow -flow_type bs (src/driver/task_flow_bs.c), registered in task_flow.c */
 PETSC_EXTERN PetscErrorCode CSFlowBS(MPI_Comm comm, CSOutput *out);
+/* -task flow -flow_type conformal (src/driver/task_flow_conformal.c) */
+PETSC_EXTERN PetscErrorCode CSFlowConformal(MPI_Comm comm, CSOutput *out);
 
 #endif

@@ -145,6 +145,9 @@ PETSC_EXTERN PetscErrorCode CSGeometryBoundaryTangents(CSMesh mesh, Vec x, Vec T
 PETSC_EXTERN PetscErrorCode CSGeometryLaplacianPositions(CSMesh mesh, Vec x, Vec Lf, Vec area);
 /* Integrated mean curvature vector Lf (dmV3) and pointwise h = 1/2 *0^{-1} L f (soliman2021 Eq. 27). */
 PETSC_EXTERN PetscErrorCode CSGeometryMeanCurvature(CSMesh mesh, Vec x, Vec h);
+/* Signed pointwise mean curvature H_i = (L f)_i . N_i / (2 A_i) (dmV1; positive on a sphere with outward normals);
+   N (dmV3, the area-weighted vertex normals) and area (dmV1, *0) are returned when not NULL. */
+PETSC_EXTERN PetscErrorCode CSGeometrySignedMeanCurvature(CSMesh mesh, Vec x, Vec H, Vec N, Vec area);
 /* Total area, enclosed volume (soliman2021 App. B.2: 1/6 sum f_i.(f_j x f_k)). */
 PETSC_EXTERN PetscErrorCode CSGeometryAreaVolume(CSMesh mesh, Vec x, PetscReal *area, PetscReal *volume);
 /* Quasi-conformal error (crane2011 Sec. 6.1): per face the ratio sigma_max/sigma_min of the affine map from

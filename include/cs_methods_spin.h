@@ -89,6 +89,9 @@ PETSC_EXTERN PetscErrorCode CSSpinSetFromOptions(CSSpin spin);
 PETSC_EXTERN PetscErrorCode CSSpinSetBoundaryTangents(CSSpin spin, Vec x, Vec Ttarget);
 /* Smallest eigenpair for the surface x and rho; lambda is a global vector of spin->dm. */
 PETSC_EXTERN PetscErrorCode CSSpinSolveEigen(CSSpin spin, Vec x, CSRhoLocation loc, Vec rho, Vec lambda);
+/* The next CSSpinSolveEigen starts from lambda = 1 (the identity) instead of the last eigenvector (a flow on a
+   new surface each step: crane2013 Sec. 6.1, rho^m = 0). */
+PETSC_EXTERN PetscErrorCode CSSpinResetStart(CSSpin spin);
 /* The nev smallest eigenvalues of Eq. 7 (rho = 0 unless given), ascending, unscaled (Fig. 8). */
 PETSC_EXTERN PetscErrorCode CSSpinSpectrum(CSSpin spin, Vec x, CSRhoLocation loc, Vec rho, PetscInt nev, PetscReal eig[], PetscInt *nconv);
 /* lambda is determined up to a constant right factor c in H (a global similarity): choose c by least squares

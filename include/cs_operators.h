@@ -17,6 +17,11 @@ PETSC_EXTERN PetscErrorCode CSOperatorLaplacian3(CSMesh mesh, Vec x, MatReuse re
 /* Vertex mass *0 = diag(barycentric dual areas) as a dmV1 vector (create with DMCreateGlobalVector). */
 PETSC_EXTERN PetscErrorCode CSOperatorMass(CSMesh mesh, Vec x, Vec mass);
 
+/* The spectral filter matrix of crane2013 Sec. 4 (src/operators/spectral_filter.c): B = M + s L (M^-1 L)^(k-1)
+   (k >= 1) or (1 + s) M (k = 0), a new SPD matrix, for (id + s A^k) w = v as B w = M v; L any AIJ Laplacian
+   (positive semi-definite), mass its diagonal mass vector. */
+PETSC_EXTERN PetscErrorCode CSOperatorSpectralFilter(Mat L, Vec mass, PetscReal s, PetscInt k, Mat *B);
+
 #include "cs_linalg.h" /* CSMatAddFixedPattern (src/linalg/mat_add_fixed.c) */
 
 #endif

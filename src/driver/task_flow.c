@@ -1,6 +1,7 @@
 /* -task flow: -flow_type chooses a driver through a PetscFunctionList. cgd|pgd|gd (soliman2021): the mesh and
    the output from the options, a CSWillmoreFlow on that mesh with the output's monitors; bs
-   (Bobenko-Schroeder): CSFlowBS (src/driver/task_flow_bs.c). */
+   (Bobenko-Schroeder): CSFlowBS (src/driver/task_flow_bs.c); conformal (crane2013): CSFlowConformal
+   (src/driver/task_flow_conformal.c). */
 #include "cs_driver.h"
 #include "cs_output_willmore.h"
 #include "cs_methods_bs.h"
@@ -61,6 +62,7 @@ static PetscErrorCode FlowRegisterAll(void)
   PetscCall(PetscFunctionListAdd(&CSFlowList, "pgd", CSFlowWillmore));
   PetscCall(PetscFunctionListAdd(&CSFlowList, "gd", CSFlowWillmore));
   PetscCall(PetscFunctionListAdd(&CSFlowList, "bs", CSFlowBS));
+  PetscCall(PetscFunctionListAdd(&CSFlowList, "conformal", CSFlowConformal));
   PetscCall(PetscRegisterFinalize(FlowListDestroy));
   PetscFunctionReturn(0);
 }
@@ -77,7 +79,7 @@ PetscErrorCode CSTaskFlow(MPI_Comm comm)
   PetscCall(PetscOptionsFList("-flow_type", "Flow", NULL, CSFlowList, type, type, sizeof(type), NULL));
   PetscOptionsEnd();
   PetscCall(PetscFunctionListFind(CSFlowList, type, &run));
-  PetscCheck(run, comm, PETSC_ERR_ARG_OUTOFRANGE, "-flow_type %s: unknown flow (known: cgd pgd gd bs)", type);
+  PetscCheck(run, comm, PETSC_ERR_ARG_OUTOFRANGE, "-flow_type %s: unknown flow (known: cgd pgd gd bs conformal)", type);
   PetscCall(CSOutputFromOptions(comm, &out));
   ierr = (*run)(comm, &out);
   if (ierr) PetscCall(CSOutputDestroy(&out)); /* no leak on the error path */

@@ -56,3 +56,37 @@ PetscErrorCode CSGeometryMeanCurvature(CSMesh m, Vec x, Vec h)
   PetscCall(DMRestoreGlobalVector(m->dmV1, &area));
   PetscFunctionReturn(0);
 }
+
+/* H_i = (L f)_i . N_i / (2 A_i) with the area-weighted vertex normals: positive on a sphere with outward normals,
+   signed on saddles (crane2013 Table 1 step I, H = 1/2 <N, Delta f>). */
+PetscErrorCode CSGeometrySignedMeanCurvature(CSMesh m, Vec x, Vec H, Vec N, Vec area)
+{
+  Vec                Lf, Nl = N, Al = area;
+  const PetscScalar *l, *n, *a;
+  PetscScalar       *h;
+  PetscInt           nl;
+  PetscFunctionBeginUser;
+  PetscCall(DMGetGlobalVector(m->dmV3, &Lf));
+  if (!N) PetscCall(DMGetGlobalVector(m->dmV3, &Nl));
+  if (!area) PetscCall(DMGetGlobalVector(m->dmV1, &Al));
+  PetscCall(CSGeometryLaplacianPositions(m, x, Lf, Al));
+  PetscCall(CSGeometryVertexNormals(m, x, Nl));
+  PetscCall(VecGetLocalSize(Al, &nl));
+  PetscCall(VecGetArrayRead(Lf, &l));
+  PetscCall(VecGetArrayRead(Nl, &n));
+  PetscCall(VecGetArrayRead(Al, &a));
+  PetscCall(VecGetArray(H, &h));
+  for (PetscInt i = 0; i < nl; i++) {
+    PetscReal s = 0;
+    for (int d = 0; d < 3; d++) s += PetscRealPart(l[3 * i + d] * n[3 * i + d]);
+    h[i] = s / (2 * PetscRealPart(a[i]));
+  }
+  PetscCall(VecRestoreArray(H, &h));
+  PetscCall(VecRestoreArrayRead(Al, &a));
+  PetscCall(VecRestoreArrayRead(Nl, &n));
+  PetscCall(VecRestoreArrayRead(Lf, &l));
+  if (!area) PetscCall(DMRestoreGlobalVector(m->dmV1, &Al));
+  if (!N) PetscCall(DMRestoreGlobalVector(m->dmV3, &Nl));
+  PetscCall(DMRestoreGlobalVector(m->dmV3, &Lf));
+  PetscFunctionReturn(0);
+}

@@ -10,6 +10,7 @@
    back and the best rotation about it (2D Procrustes) undone. Also the filter matrix of Sec. 4. */
 #include "curve_flow_impl.h"
 #include "cs_log.h"
+#include "cs_operators.h"
 
 /* L of the input lengths (with c e_0 e_0^T when ground) */
 static PetscErrorCode AssembleLaplacian(CSCurveFlow F, PetscBool ground, Mat *L)
@@ -97,36 +98,12 @@ PetscErrorCode CSCurveFlowSetUpPoisson(CSCurveFlow F)
    v - (id + sigma A^k)^{-1} v = sigma A^k (id + sigma A^k)^{-1} v damps the low frequencies for every k. */
 PetscErrorCode CSCurveFlowSetUpFilter(CSCurveFlow F)
 {
-  Mat       L, B, T;
-  Vec       minv;
+  Mat       L;
   PetscReal s = F->sigma * PetscPowReal(F->length / (2 * PETSC_PI), 2.0 * (PetscReal)F->fk);
   PetscFunctionBeginUser;
   PetscCall(AssembleLaplacian(F, PETSC_FALSE, &L));
-  PetscCall(VecDuplicate(F->d, &minv));
-  PetscCall(VecCopy(F->d, minv));
-  PetscCall(VecReciprocal(minv));
-  if (F->fk == 0) {
-    PetscCall(MatDuplicate(L, MAT_DO_NOT_COPY_VALUES, &B));
-    PetscCall(MatZeroEntries(B));
-  } else {
-    PetscCall(MatDuplicate(L, MAT_COPY_VALUES, &B));
-    for (PetscInt k = 1; k < F->fk; k++) { /* B <- L M^{-1} B */
-      PetscCall(MatDuplicate(B, MAT_COPY_VALUES, &T));
-      PetscCall(MatDiagonalScale(T, minv, NULL));
-      PetscCall(MatDestroy(&B));
-      PetscCall(MatMatMult(L, T, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &B));
-      PetscCall(MatDestroy(&T));
-    }
-  }
-  PetscCall(MatScale(B, F->fk == 0 ? 0 : s));
-  PetscCall(VecScale(minv, 0)); /* reused for the diagonal (1 + s [k = 0]) M */
-  PetscCall(VecAXPY(minv, F->fk == 0 ? 1 + s : 1, F->d));
-  PetscCall(MatDiagonalSet(B, minv, ADD_VALUES));
-  PetscCall(MatSetOption(B, MAT_SYMMETRIC, PETSC_TRUE));
-  PetscCall(MatSetOption(B, MAT_SPD, PETSC_TRUE));
-  F->Lf = B;
+  PetscCall(CSOperatorSpectralFilter(L, F->d, s, F->fk, &F->Lf)); /* shared with the surface flow */
   PetscCall(CreateDirectKSP(F, F->Lf, "filter_", &F->kspf));
-  PetscCall(VecDestroy(&minv));
   PetscCall(MatDestroy(&L));
   PetscFunctionReturn(0);
 }

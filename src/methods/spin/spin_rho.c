@@ -62,33 +62,12 @@ static PetscErrorCode ReadField(CSMesh mesh, const char option[], const char pat
    which loses the sign on saddle-shaped regions; the projection on the vertex normal keeps it. */
 static PetscErrorCode AddMeanCurvature(CSMesh mesh, Vec x, PetscReal s, Vec rho)
 {
-  Vec                Lf, M, N;
-  const PetscScalar *l, *m, *nn;
-  PetscScalar       *r;
-  PetscInt           n;
+  Vec H;
   PetscFunctionBeginUser;
-  PetscCall(DMCreateGlobalVector(mesh->dmV3, &Lf));
-  PetscCall(DMCreateGlobalVector(mesh->dmV3, &N));
-  PetscCall(DMCreateGlobalVector(mesh->dmV1, &M));
-  PetscCall(CSGeometryLaplacianPositions(mesh, x, Lf, M));
-  PetscCall(CSGeometryVertexNormals(mesh, x, N));
-  PetscCall(VecGetLocalSize(M, &n));
-  PetscCall(VecGetArrayRead(Lf, &l));
-  PetscCall(VecGetArrayRead(N, &nn));
-  PetscCall(VecGetArrayRead(M, &m));
-  PetscCall(VecGetArray(rho, &r));
-  for (PetscInt i = 0; i < n; i++) {
-    PetscReal h = 0;
-    for (int d = 0; d < 3; d++) h += PetscRealPart(l[3 * i + d] * nn[3 * i + d]);
-    r[i] += s * h / (2 * PetscRealPart(m[i]));
-  }
-  PetscCall(VecRestoreArray(rho, &r));
-  PetscCall(VecRestoreArrayRead(M, &m));
-  PetscCall(VecRestoreArrayRead(N, &nn));
-  PetscCall(VecRestoreArrayRead(Lf, &l));
-  PetscCall(VecDestroy(&Lf));
-  PetscCall(VecDestroy(&N));
-  PetscCall(VecDestroy(&M));
+  PetscCall(DMGetGlobalVector(mesh->dmV1, &H));
+  PetscCall(CSGeometrySignedMeanCurvature(mesh, x, H, NULL, NULL));
+  PetscCall(VecAXPY(rho, s, H));
+  PetscCall(DMRestoreGlobalVector(mesh->dmV1, &H));
   PetscFunctionReturn(0);
 }
 

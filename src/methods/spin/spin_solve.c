@@ -478,6 +478,13 @@ static PetscErrorCode DefaultStart(CSSpin s, Vec start)
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode CSSpinResetStart(CSSpin s)
+{
+  PetscFunctionBeginUser;
+  PetscCall(VecDestroy(&s->start));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode CSSpinKSPSolve(CSSpin s, KSP ksp, Vec b, Vec x, const char what[], PetscInt *its)
 {
   KSPConvergedReason reason;

@@ -1,0 +1,202 @@
+/* A state of the conformal flow and its direction (crane2013 Table 1 right column, steps I-IV; Sec. 4, 6.1, 6.2):
+     I    H_i = (L f)_i . N_i / (2 A_i) (CSGeometrySignedMeanCurvature).
+     II   v = -2 H. The factor, derived: E_W(mu) = |mu|^2 with mu = H |df| (Sec. 6.1), so the L2 gradient flow is
+          mu' = -2 mu (Eq. 1); a spin transformation with potential rho changes mu to mu + rho |df| (Sec. 6, with
+          gamma the eigenvalue), so rho' = -2 H and the forward Euler step (Eq. 2) is rho = -2 tau H (rho^m = 0):
+          mu -> (1 - 2 tau) mu, stable iff |1 - 2 tau| < 1, i.e. tau < 1 (Sec. 4). The paper's text is not
+          consistent about the factor: Sec. 6.1 says rho' = -H and rho^{m+1} = rho^m - 2 tau H^m, then solves
+          (D + tau H^m) lambda = gamma lambda, which is rho = -tau H, i.e. mu -> (1 - tau) mu, stable for tau < 2.
+          We take -2 tau H (the step of Eq. 2 with the threshold tau < 1 the paper states and Fig. 18 shows);
+          the check is the threshold itself (tests/cases/conformal_stability.sh: 0.95 stable, 1.05 not).
+          (App. F's rho' = -H/2 is the scaling flow h' = -h, not the gradient.)
+     (Sec. 4) the optional filter v <- v - (id + s A^k)^{-1} v (src/operators/spectral_filter.c).
+     III  an orthonormal basis of {1, N^x, N^y, N^z} in <<a, b>> = sum_i A_i a_i b_i (modified Gram-Schmidt;
+          App. B: total curvature; App. D: sphere inversions);
+     IV   v <- v - sum_i <<v, c_i>> c_i; with Moebius balancing (App. E) v += w rho_a after the inversion
+          constraint, then the remaining constraint (1) projected out again. */
+#include "conformal_impl.h"
+#include "cs_operators.h"
+
+/* <<a, b>> = sum_i A_i a_i b_i over owned vertices */
+static PetscErrorCode Dot(CSConformalFlow F, Vec a, Vec b, PetscReal *r)
+{
+  PetscFunctionBeginUser;
+  PetscCall(VecPointwiseMult(F->work, F->area, a));
+  PetscCall(VecDot(F->work, b, r));
+  PetscFunctionReturn(0);
+}
+
+/* c[0] = 1, c[1..3] = N^x,y,z (with the inversion constraint), orthonormalised in order; nearly dependent ones
+   (relative norm below 1e-10 after orthogonalisation) are dropped */
+static PetscErrorCode ConstraintBasis(CSConformalFlow F)
+{
+  PetscInt n = F->inversion ? 4 : 1;
+  PetscFunctionBeginUser;
+  F->nc = 0;
+  for (PetscInt j = 0; j < n; j++) {
+    Vec       c = F->c[F->nc];
+    PetscReal a, a0;
+    if (j == 0) PetscCall(VecSet(c, 1));
+    else PetscCall(VecStrideGather(F->N, j - 1, c, INSERT_VALUES));
+    PetscCall(Dot(F, c, c, &a0));
+    for (PetscInt i = 0; i < F->nc; i++) {
+      PetscCall(Dot(F, c, F->c[i], &a));
+      PetscCall(VecAXPY(c, -a, F->c[i]));
+    }
+    PetscCall(Dot(F, c, c, &a));
+    if (a <= 1e-20 * a0) continue;
+    PetscCall(VecScale(c, 1 / PetscSqrtReal(a)));
+    F->nc++;
+  }
+  PetscFunctionReturn(0);
+}
+
+/* v <- v - sum_{i < n} <<v, c_i>> c_i */
+static PetscErrorCode Project(CSConformalFlow F, PetscInt n)
+{
+  PetscReal a;
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < n; i++) {
+    PetscCall(Dot(F, F->v, F->c[i], &a));
+    PetscCall(VecAXPY(F->v, -a, F->c[i]));
+  }
+  PetscFunctionReturn(0);
+}
+
+/* App. E.1: u = 1/2 log(A_i / A*_i) (A* the input's vertex areas), u0 = u minus its area mean, b = sum A_i f_i u0_i,
+   B = 4 sum A_i N_i N_i^T, a = B^-1 b normalised to <B a, a> = 1. The inversion with centre velocity a changes the
+   scale factors by u' = -2 <a, f> (App. E), which for this a decreases the spread of u fastest, and has the
+   curvature change rho' = -2 <a, N> (App. D) of unit L2 norm. (E's text adds "<a, N>" to rho'; App. D's factor
+   -2 is the one that belongs to the inversion moving toward the balanced areas.) Adds w rho' to v. */
+static PetscErrorCode MobiusBalance(CSConformalFlow F)
+{
+  const PetscScalar *A, *A0, *f, *N;
+  PetscScalar       *v;
+  PetscReal          loc[14] = {0}, g[14], b[3], Bm[9], a[3], det, nB;
+  PetscInt           n;
+  PetscFunctionBeginUser;
+  PetscCall(VecGetLocalSize(F->area, &n));
+  PetscCall(VecGetArrayRead(F->area, &A));
+  PetscCall(VecGetArrayRead(F->area0, &A0));
+  PetscCall(VecGetArrayRead(F->x, &f));
+  PetscCall(VecGetArrayRead(F->N, &N));
+  for (PetscInt i = 0; i < n; i++) { /* sums of A, A u, A f, A f u and A N N^T */
+    PetscReal Ai = PetscRealPart(A[i]), u = 0.5 * PetscLogReal(Ai / PetscRealPart(A0[i]));
+    loc[0] += Ai;
+    loc[1] += Ai * u;
+    for (int d = 0; d < 3; d++) {
+      loc[2 + d] += Ai * PetscRealPart(f[3 * i + d]);
+      loc[5 + d] += Ai * PetscRealPart(f[3 * i + d]) * u;
+    }
+    for (int d = 0; d < 3; d++)
+      for (int e = d; e < 3; e++) loc[8 + (d == 0 ? e : d + e + 1)] += 4 * Ai * PetscRealPart(N[3 * i + d] * N[3 * i + e]);
+  }
+  PetscCall(VecRestoreArrayRead(F->N, &N));
+  PetscCall(VecRestoreArrayRead(F->x, &f));
+  PetscCall(VecRestoreArrayRead(F->area0, &A0));
+  PetscCall(VecRestoreArrayRead(F->area, &A));
+  PetscCall(MPIU_Allreduce(loc, g, 14, MPIU_REAL, MPIU_SUM, F->hdr.comm));
+  for (int d = 0; d < 3; d++) b[d] = g[5 + d] - g[1] / g[0] * g[2 + d]; /* sum A f (u - mean u) */
+  /* symmetric B from its upper triangle xx xy xz yy yz zz */
+  Bm[0] = g[8]; Bm[1] = g[9]; Bm[2] = g[10]; Bm[4] = g[11]; Bm[5] = g[12]; Bm[8] = g[13];
+  Bm[3] = Bm[1]; Bm[6] = Bm[2]; Bm[7] = Bm[5];
+  det = Bm[0] * (Bm[4] * Bm[8] - Bm[5] * Bm[7]) - Bm[1] * (Bm[3] * Bm[8] - Bm[5] * Bm[6]) + Bm[2] * (Bm[3] * Bm[7] - Bm[4] * Bm[6]);
+  PetscCheck(det > 0, F->hdr.comm, PETSC_ERR_PLIB, "conformal flow: Moebius balancing: B = 4 sum A N N^T is singular (a flat surface?)");
+  a[0] = (b[0] * (Bm[4] * Bm[8] - Bm[5] * Bm[7]) - Bm[1] * (b[1] * Bm[8] - Bm[5] * b[2]) + Bm[2] * (b[1] * Bm[7] - Bm[4] * b[2])) / det;
+  a[1] = (Bm[0] * (b[1] * Bm[8] - Bm[5] * b[2]) - b[0] * (Bm[3] * Bm[8] - Bm[5] * Bm[6]) + Bm[2] * (Bm[3] * b[2] - b[1] * Bm[6])) / det;
+  a[2] = (Bm[0] * (Bm[4] * b[2] - b[1] * Bm[7]) - Bm[1] * (Bm[3] * b[2] - b[1] * Bm[6]) + b[0] * (Bm[3] * Bm[7] - Bm[4] * Bm[6])) / det;
+  nB = 0;
+  for (int d = 0; d < 3; d++)
+    for (int e = 0; e < 3; e++) nB += a[d] * Bm[3 * d + e] * a[e];
+  if (nB <= 0) PetscFunctionReturn(0); /* balanced already */
+  for (int d = 0; d < 3; d++) a[d] /= PetscSqrtReal(nB);
+  PetscCall(VecGetArrayRead(F->N, &N));
+  PetscCall(VecGetArray(F->v, &v));
+  for (PetscInt i = 0; i < n; i++) v[i] += -2 * F->mobius_weight * (a[0] * N[3 * i] + a[1] * N[3 * i + 1] + a[2] * N[3 * i + 2]);
+  PetscCall(VecRestoreArray(F->v, &v));
+  PetscCall(VecRestoreArrayRead(F->N, &N));
+  PetscFunctionReturn(0);
+}
+
+/* the largest |<<v, c>>| / (|v| |c|) over c = 1 (res_total) and c = N^x,y,z (res_inversion) */
+static PetscErrorCode Residuals(CSConformalFlow F)
+{
+  PetscReal vv, cc, vc;
+  PetscFunctionBeginUser;
+  PetscCall(Dot(F, F->v, F->v, &vv));
+  F->s.vnorm         = PetscSqrtReal(vv);
+  F->s.res_total     = 0;
+  F->s.res_inversion = 0;
+  if (vv == 0) PetscFunctionReturn(0);
+  for (PetscInt j = 0; j < 4; j++) {
+    PetscReal r;
+    if (j == 0) PetscCall(VecSet(F->rho, 1));
+    else PetscCall(VecStrideGather(F->N, j - 1, F->rho, INSERT_VALUES));
+    PetscCall(Dot(F, F->rho, F->rho, &cc));
+    PetscCall(Dot(F, F->v, F->rho, &vc));
+    r = PetscAbsReal(vc) / PetscSqrtReal(vv * cc);
+    if (j == 0) F->s.res_total = r;
+    else F->s.res_inversion = PetscMax(F->s.res_inversion, r);
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSConformalFlowApplyFilter(CSConformalFlow F, Vec v)
+{
+  KSPConvergedReason kr;
+  PetscReal          A, vol, s;
+  PetscFunctionBeginUser;
+  PetscCheck(F->setupcalled && F->sigma > 0, F->hdr.comm, PETSC_ERR_ORDER, "CSConformalFlowApplyFilter: needs SetUp and -%sfilter_sigma > 0", F->hdr.prefix);
+  PetscCall(CSGeometryAreaVolume(F->mesh, F->x, &A, &vol));
+  s = F->sigma * PetscPowReal(A / (4 * PETSC_PI), (PetscReal)F->fk); /* sigma is dimensionless: the unit sphere's */
+  PetscCall(CSGeometryVertexAreas(F->mesh, F->x, F->area));
+  PetscCall(CSOperatorLaplacian(F->mesh, F->x, F->L ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX, &F->L));
+  PetscCall(MatDestroy(&F->B));
+  PetscCall(CSOperatorSpectralFilter(F->L, F->area, s, F->fk, &F->B));
+  if (!F->kspf) {
+    PC pc;
+    PetscCall(KSPCreate(F->hdr.comm, &F->kspf));
+    PetscCall(KSPSetOptionsPrefix(F->kspf, F->hdr.prefix));
+    PetscCall(KSPAppendOptionsPrefix(F->kspf, "filter_"));
+    PetscCall(KSPSetType(F->kspf, KSPPREONLY));
+    PetscCall(KSPGetPC(F->kspf, &pc));
+    PetscCall(CSSetDefaultCholesky(pc));
+    PetscCall(KSPSetFromOptions(F->kspf));
+  }
+  PetscCall(KSPSetOperators(F->kspf, F->B, F->B));
+  PetscCall(VecPointwiseMult(F->work, F->area, v)); /* B w = M v */
+  PetscCall(KSPSolve(F->kspf, F->work, F->rho));
+  PetscCall(KSPGetConvergedReason(F->kspf, &kr));
+  PetscCheck(kr >= 0, F->hdr.comm, PETSC_ERR_NOT_CONVERGED, "conformal flow: the filter solve (-%sfilter_ksp_type ...) failed: %s", F->hdr.prefix, KSPConvergedReasons[kr]);
+  PetscCall(VecAXPY(v, -1, F->rho));
+  PetscFunctionReturn(0);
+}
+
+/* E_H = <<H, H>> = the paper's |mu|^2 with the signed H */
+static PetscErrorCode Measures(CSConformalFlow F)
+{
+  PetscReal vol;
+  PetscFunctionBeginUser;
+  PetscCall(CSEnergyValue(F->will, F->x, &F->s.W));
+  PetscCall(Dot(F, F->H, F->H, &F->s.EH));
+  PetscCall(CSGeometryAreaVolume(F->mesh, F->x, &F->s.area, &vol));
+  PetscCall(CSGeometryQuasiConformal(F->mesh, F->x0, F->x, NULL, &F->s.q_mean, &F->s.q_max));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSConformalFlowEvaluate(CSConformalFlow F)
+{
+  PetscFunctionBeginUser;
+  PetscCall(CSGeometrySignedMeanCurvature(F->mesh, F->x, F->H, F->N, F->area)); /* I */
+  PetscCall(Measures(F));
+  PetscCall(VecAXPBY(F->v, -F->hfactor, 0, F->H)); /* II: rho' = -2 H (see above; -flow_curvature_factor) */
+  if (F->sigma > 0) PetscCall(CSConformalFlowApplyFilter(F, F->v)); /* Sec. 4 */
+  PetscCall(ConstraintBasis(F)); /* III */
+  PetscCall(Project(F, F->nc));  /* IV */
+  if (F->mobius) {
+    PetscCall(MobiusBalance(F));
+    PetscCall(Project(F, 1)); /* the remaining constraint: total curvature */
+  }
+  PetscCall(Residuals(F));
+  PetscFunctionReturn(0);
+}

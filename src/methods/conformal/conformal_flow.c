@@ -1,0 +1,258 @@
+/* The conformal curvature flow object (crane2013 Sec. 6): options, set-up, the stepping loop and the monitors.
+   The step's parts: conformal_direction.c (Table 1 I-IV, Sec. 4's filter, App. E), conformal_integrate.c
+   (V-VII: Eq. 5 and 6 through CSSpin). See include/cs_methods_conformal.h. */
+#include "conformal_impl.h"
+#include "cs_package.h"
+#include "cs_util.h"
+
+static const char *const ReasonsShifted[]              = {"energy_growth", "max_it", "iterating", "converged_atol", "converged_rtol"};
+const char *const       *CSConformalFlowConvergedReasons = ReasonsShifted + 2;
+const char *const        CSConformalEigensolvers[]      = {"inverse", "eps", "CSConformalEigensolver", "CS_CONFORMAL_EIGEN_", NULL};
+
+PetscErrorCode CSConformalFlowCreate(CSMesh mesh, CSConformalFlow *flow)
+{
+  CSConformalFlow F;
+  PetscFunctionBeginUser;
+  PetscCall(CSInitializePackage());
+  PetscCall(CSObjectCreate(sizeof(*F), mesh->comm, "flow_", &F));
+  F->mesh          = mesh;
+  F->tau           = 0.95; /* stable for tau < 1 (Sec. 4: |1 - 2 tau| < 1) */
+  F->max_it        = 100;
+  F->atol          = 0;
+  F->rtol          = 1e-6;
+  F->egrow         = 1e3;
+  F->fk            = 2;
+  F->sigma         = 0;
+  F->inversion     = PETSC_TRUE;
+  F->mobius_weight = 1;
+  F->hfactor       = 2; /* rho' = -2 H: conformal_direction.c */
+  F->keep_area     = PETSC_TRUE;
+  F->eigensolver   = CS_CONFORMAL_EIGEN_INVERSE;
+  *flow            = F;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSConformalFlowSetOptionsPrefix(CSConformalFlow F, const char prefix[])
+{
+  PetscFunctionBeginUser;
+  PetscCall(CSObjectSetOptionsPrefix(&F->hdr, prefix));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSConformalFlowGetOptionsPrefix(CSConformalFlow F, const char *prefix[])
+{
+  PetscFunctionBeginUser;
+  PetscCall(CSObjectGetOptionsPrefix(&F->hdr, prefix));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSConformalFlowSetTimeStep(CSConformalFlow F, PetscReal tau)
+{
+  PetscFunctionBeginUser;
+  F->tau = tau;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSConformalFlowSetTolerances(CSConformalFlow F, PetscReal atol, PetscReal rtol, PetscInt max_it)
+{
+  PetscFunctionBeginUser;
+  F->atol   = atol;
+  F->rtol   = rtol;
+  F->max_it = max_it;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSConformalFlowSetFilter(CSConformalFlow F, PetscReal sigma, PetscInt k)
+{
+  PetscFunctionBeginUser;
+  F->sigma = sigma;
+  F->fk    = k;
+  PetscFunctionReturn(0);
+}
+
+/* a clear one-line error naming the option (with the prefix) for every bad value */
+static PetscErrorCode CheckOptions(CSConformalFlow F)
+{
+  const CSOptionCheck checks[] = {
+    {"tau", F->tau, F->tau > 0, "must be > 0 (the flow is stable for 0 < tau < 1)"},
+    {"max_it", (PetscReal)F->max_it, F->max_it >= 0, "must be >= 0"},
+    {"atol", F->atol, F->atol >= 0, "must be >= 0"},
+    {"rtol", F->rtol, F->rtol >= 0, "must be >= 0"},
+    {"max_energy_growth", F->egrow, F->egrow > 1, "must be > 1"},
+    {"filter_sigma", F->sigma, F->sigma >= 0, "must be >= 0 (0: no filter)"},
+    {"filter_k", (PetscReal)F->fk, F->fk >= 0 && F->fk <= 4, "must lie in 0..4"},
+    {"curvature_factor", F->hfactor, F->hfactor > 0, "must be > 0"},
+    {"mobius_weight", F->mobius_weight, F->mobius_weight >= 0, "must be >= 0"},
+  };
+  PetscFunctionBeginUser;
+  PetscCall(CSCheckOptionValues(F->hdr.comm, F->hdr.prefix, sizeof(checks) / sizeof(checks[0]), checks));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSConformalFlowSetFromOptions(CSConformalFlow F)
+{
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(F->hdr.comm, F->hdr.prefix, "Conformal curvature flow (crane2013 Sec. 6)", NULL);
+  PetscCall(PetscOptionsReal("-tau", "Time step of rho = tau v, v = -2 H projected (Table 1 V); stable for tau < 1", NULL, F->tau, &F->tau, NULL));
+  PetscCall(PetscOptionsInt("-max_it", "Maximum number of steps", NULL, F->max_it, &F->max_it, NULL));
+  PetscCall(PetscOptionsReal("-atol", "Stop when W is at most this (0: off)", NULL, F->atol, &F->atol, NULL));
+  PetscCall(PetscOptionsReal("-rtol", "Stop when a step changes W by at most this fraction", NULL, F->rtol, &F->rtol, NULL));
+  PetscCall(PetscOptionsReal("-max_energy_growth", "Stop (diverged) when W exceeds this times the initial W", NULL, F->egrow, &F->egrow, NULL));
+  PetscCall(PetscOptionsReal("-filter_sigma", "Spectral filter v <- v - (id + sigma A^k)^-1 v (Sec. 4, A = M^-1 L >= 0); sigma in units of (area/4pi)^k, 0: off", NULL, F->sigma, &F->sigma, NULL));
+  PetscCall(PetscOptionsInt("-filter_k", "Filter order k (0..4)", NULL, F->fk, &F->fk, NULL));
+  PetscCall(PetscOptionsBool("-inversion", "Constrain sphere inversions: <<v, N^x,y,z>> = 0 (Sec. 6.2, App. D)", NULL, F->inversion, &F->inversion, NULL));
+  PetscCall(PetscOptionsBool("-mobius", "Moebius balancing v += w <a, N> toward the input's area distribution (App. E, E.1)", NULL, F->mobius, &F->mobius, NULL));
+  PetscCall(PetscOptionsReal("-mobius_weight", "Moebius balancing: the weight w of the unit-norm direction", NULL, F->mobius_weight, &F->mobius_weight, NULL));
+  PetscCall(PetscOptionsReal("-curvature_factor", "c in rho' = -c H: 2 is the gradient of |mu|^2 (Eq. 1, stable for tau < 1); 1 is the paper's (D + tau H) lambda = gamma lambda", NULL, F->hfactor, &F->hfactor, NULL));
+  PetscCall(PetscOptionsBool("-keep_area", "Scale every new surface to the input's area", NULL, F->keep_area, &F->keep_area, NULL));
+  PetscCall(PetscOptionsEnum("-eigensolver", "Eq. 5: one inverse-iteration step on a factorisation of the current X (Sec. 6.4.2), or SLEPc to convergence (options -spin_eps_*, -spin_st_*)", NULL, CSConformalEigensolvers, (PetscEnum)F->eigensolver, (PetscEnum *)&F->eigensolver, NULL));
+  PetscOptionsEnd();
+  PetscCall(CheckOptions(F));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode CheckMesh(CSConformalFlow F)
+{
+  CSMesh m = F->mesh;
+  PetscFunctionBeginUser;
+  PetscCheck(m->topo.boundary_loops == 0, m->comm, PETSC_ERR_SUP, "-flow_type conformal: mesh %s has %" PetscInt_FMT " boundary loop(s); the boundary conditions of crane2013 Sec. 6.3 are not implemented (closed meshes only)", m->name, m->topo.boundary_loops);
+  PetscCheck(m->topo.components == 1, m->comm, PETSC_ERR_SUP, "-flow_type conformal: mesh %s has %" PetscInt_FMT " components; the constraints are per surface (one component only)", m->name, m->topo.components);
+  if (m->topo.genus > 0) PetscCall(PetscPrintf(m->comm, "Warning: conformal flow: mesh %s has genus %" PetscInt_FMT "; the exactness constraint (crane2013 App. C) is not applied, the surface may fail to close\n", m->name, m->topo.genus));
+  PetscFunctionReturn(0);
+}
+
+/* the spin object of Eq. 5 and 6: one inverse-iteration step with a fresh factorisation of the current X by
+   default (symbolic analysis kept), -spin_* options still apply */
+static PetscErrorCode SetUpSpin(CSConformalFlow F)
+{
+  PetscFunctionBeginUser;
+  PetscCall(CSSpinCreate(F->mesh, &F->spin));
+  F->spin->inverse     = (PetscBool)(F->eigensolver == CS_CONFORMAL_EIGEN_INVERSE);
+  F->spin->inverse_its = 1;
+  F->spin->boundary    = CS_SPIN_BOUNDARY_NONE;
+  PetscCall(CSSpinSetFromOptions(F->spin));
+  PetscCall(DMCreateGlobalVector(F->spin->dm, &F->lambda));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSConformalFlowSetUp(CSConformalFlow F)
+{
+  CSMesh         m = F->mesh;
+  PetscReal      vol;
+  PetscLogDouble t1;
+  PetscFunctionBeginUser;
+  if (F->setupcalled) PetscFunctionReturn(0);
+  PetscCall(PetscTime(&F->t0));
+  PetscCall(CheckMesh(F));
+  PetscCall(VecDuplicate(m->x, &F->x));
+  PetscCall(VecCopy(m->x, F->x));
+  PetscCall(VecDuplicate(m->x, &F->x0));
+  PetscCall(VecCopy(m->x, F->x0));
+  PetscCall(VecDuplicate(m->x, &F->xnew));
+  PetscCall(VecDuplicate(m->x, &F->N));
+  PetscCall(DMCreateGlobalVector(m->dmV1, &F->area));
+  {
+    Vec *vs[] = {&F->area0, &F->H, &F->v, &F->rho, &F->work};
+    for (size_t k = 0; k < sizeof(vs) / sizeof(vs[0]); k++) PetscCall(VecDuplicate(F->area, vs[k]));
+  }
+  for (int k = 0; k < CS_CONFORMAL_MAX_BASIS; k++) PetscCall(VecDuplicate(F->area, &F->c[k]));
+  PetscCall(CSGeometryVertexAreas(m, F->x0, F->area0));
+  PetscCall(CSGeometryAreaVolume(m, F->x0, &F->area_initial, &vol));
+  PetscCall(CSEnergyCreateWillmore(m, &F->will));
+  PetscCall(SetUpSpin(F));
+  PetscCall(PetscTime(&t1));
+  F->t_setup     = t1 - F->t0;
+  F->setupcalled = PETSC_TRUE;
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode Monitor(CSConformalFlow F, CSConformalMonitorEvent ev)
+{
+  PetscLogDouble now;
+  PetscFunctionBeginUser;
+  PetscCall(PetscTime(&now));
+  F->s.event   = ev;
+  F->s.seconds = (PetscReal)(now - F->t0);
+  for (PetscInt i = 0; i < F->hdr.monitors.n; i++) PetscCall(((CSConformalFlowMonitorFn)F->hdr.monitors.fn[i])(F, &F->s, F->hdr.monitors.ctx[i]));
+  PetscFunctionReturn(0);
+}
+
+/* the convergence tests of a new state */
+static void Judge(CSConformalFlow F)
+{
+  CSConformalMonitorInfo *s = &F->s;
+  if (!(s->W == s->W) || s->W > F->egrow * F->W0) F->reason = CS_CONFORMAL_DIVERGED_ENERGY;
+  else if (F->atol > 0 && s->W <= F->atol) F->reason = CS_CONFORMAL_CONVERGED_ATOL;
+  else if (s->it > 0 && PetscAbsReal(s->W - F->Wprev) <= F->rtol * F->Wprev) F->reason = CS_CONFORMAL_CONVERGED_RTOL;
+  else if (s->it >= F->max_it) F->reason = CS_CONFORMAL_DIVERGED_MAX_IT;
+}
+
+static PetscErrorCode Start(CSConformalFlow F)
+{
+  PetscFunctionBeginUser;
+  PetscCall(CSConformalFlowSetUp(F));
+  if (F->started) PetscFunctionReturn(0);
+  F->started = PETSC_TRUE;
+  F->s.tau   = F->tau;
+  PetscCall(CSConformalFlowEvaluate(F));
+  F->W0    = F->s.W;
+  F->Wprev = F->s.W;
+  Judge(F);
+  PetscCall(Monitor(F, CS_CONFORMAL_MONITOR_START));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSConformalFlowStep(CSConformalFlow F)
+{
+  PetscLogDouble t0, t1;
+  PetscFunctionBeginUser;
+  PetscCall(Start(F));
+  if (F->reason != CS_CONFORMAL_ITERATING) PetscFunctionReturn(0);
+  PetscCall(PetscTime(&t0));
+  F->Wprev = F->s.W;
+  PetscCall(CSConformalFlowIntegrate(F)); /* Table 1 V-VII */
+  F->s.it++;
+  PetscCall(CSConformalFlowEvaluate(F)); /* the new state and the next direction (I-IV) */
+  PetscCall(PetscTime(&t1));
+  F->s.step_seconds = (PetscReal)(t1 - t0);
+  F->t_steps += t1 - t0;
+  Judge(F);
+  PetscCall(Monitor(F, CS_CONFORMAL_MONITOR_STEP));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSConformalFlowSolve(CSConformalFlow F)
+{
+  PetscFunctionBeginUser;
+  PetscCall(Start(F));
+  while (F->reason == CS_CONFORMAL_ITERATING) PetscCall(CSConformalFlowStep(F));
+  PetscCall(Monitor(F, CS_CONFORMAL_MONITOR_END));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSConformalFlowMonitorSet(CSConformalFlow F, CSConformalFlowMonitorFn fn, void *ctx, PetscErrorCode (*destroy)(void **))
+{
+  PetscFunctionBeginUser;
+  PetscCall(CSMonitorListAdd(&F->hdr.monitors, F->hdr.comm, "CSConformalFlowMonitorSet", (PetscVoidFunction)fn, ctx, destroy));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSConformalFlowDestroy(CSConformalFlow *flow)
+{
+  CSConformalFlow F = *flow;
+  PetscFunctionBeginUser;
+  if (!F) PetscFunctionReturn(0);
+  PetscCall(CSMonitorListCancel(&F->hdr.monitors));
+  {
+    Vec *vs[] = {&F->x, &F->x0, &F->xnew, &F->area0, &F->area, &F->N, &F->H, &F->v, &F->rho, &F->work, &F->lambda};
+    for (size_t k = 0; k < sizeof(vs) / sizeof(vs[0]); k++) PetscCall(VecDestroy(vs[k]));
+  }
+  for (int k = 0; k < CS_CONFORMAL_MAX_BASIS; k++) PetscCall(VecDestroy(&F->c[k]));
+  PetscCall(CSSpinDestroy(&F->spin));
+  PetscCall(CSEnergyDestroy(&F->will));
+  PetscCall(MatDestroy(&F->L));
+  PetscCall(MatDestroy(&F->B));
+  PetscCall(KSPDestroy(&F->kspf));
+  PetscCall(CSObjectDestroy((CSObject *)flow));
+  PetscFunctionReturn(0);
+}

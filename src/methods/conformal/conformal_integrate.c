@@ -1,0 +1,27 @@
+/* Table 1 steps V-VII of crane2013 on the current surface (rho^m = 0, Sec. 6.1): rho = tau v; the smallest
+   eigenpair of (D - rho) lambda = gamma lambda (Eq. 5, App. G's per-vertex X) by the CSSpin object: by default
+   one inverse-iteration step from lambda = 1 (the identity, the solution for rho = 0) with a factorisation of
+   the current X - sigma M (Sec. 6.4.2: "a single power iteration ... identical to a single linear solve");
+   lambda fixed up to its global right factor (CSSpinNormalize: the rotation closest to 1, unit mean |lambda|^2);
+   the Poisson problem L f~ = div(conj(lambda) e lambda) (Eq. 6, CSSpinReconstruct) with the old vertex mean kept;
+   then the input's area restored (W and Q are scale-invariant; -flow_keep_area false keeps |lambda|'s scale). */
+#include "conformal_impl.h"
+
+PetscErrorCode CSConformalFlowIntegrate(CSConformalFlow F)
+{
+  PetscFunctionBeginUser;
+  PetscCall(VecAXPBY(F->rho, F->tau, 0, F->v)); /* V */
+  PetscCall(CSSpinResetStart(F->spin));         /* lambda = 1 on the current surface */
+  PetscCall(CSSpinSolveEigen(F->spin, F->x, CS_RHO_VERTEX, F->rho, F->lambda)); /* VI */
+  F->s.gamma = F->spin->gamma;
+  PetscCall(CSSpinNormalize(F->spin, F->lambda, NULL, PETSC_TRUE));
+  PetscCall(CSSpinReconstruct(F->spin, F->x, F->lambda, F->x, F->xnew)); /* VII */
+  if (F->keep_area) {
+    PetscReal A, vol;
+    PetscCall(CSGeometryAreaVolume(F->mesh, F->xnew, &A, &vol));
+    PetscCheck(A > 0 && A == A, F->hdr.comm, PETSC_ERR_NOT_CONVERGED, "conformal flow: step %" PetscInt_FMT " produced a surface of area %g", F->s.it + 1, (double)A);
+    PetscCall(CSSpinRestoreArea(F->spin, F->x0, F->xnew));
+  }
+  PetscCall(VecCopy(F->xnew, F->x));
+  PetscFunctionReturn(0);
+}
