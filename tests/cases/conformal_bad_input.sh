@@ -1,0 +1,14 @@
+# Bad input to the conformal flow: a mesh with boundary (Sec. 6.3 not implemented), tau <= 0, a bad filter order,
+# an unknown eigensolver: one clear line naming the mesh or the option, non-zero exit. Under 2 ranks only the first
+# two (every rank exits non-zero, no hang; a process start costs ~2 s there).
+# nprocs: 1 2
+source tests/lib.sh
+run() { timeout 60 $MPIEXEC "$CS_BIN" -task flow -flow_type conformal "$@"; }
+EXPECT="boundary loop.*Sec. 6.3" expect_fail run -gen disk -gen_rings 4
+EXPECT="-flow_tau 0: must be > 0" expect_fail run -gen icosphere -gen_level 1 -flow_tau 0
+[ "$NP" = 1 ] || exit 0
+EXPECT="-flow_tau -1: must be > 0" expect_fail run -gen icosphere -gen_level 1 -flow_tau -1
+EXPECT="-flow_filter_k 7: must lie in 0..4" expect_fail run -gen icosphere -gen_level 1 -flow_filter_k 7
+EXPECT="-flow_filter_sigma -1" expect_fail run -gen icosphere -gen_level 1 -flow_filter_sigma -1
+EXPECT="eigensolver" expect_fail run -gen icosphere -gen_level 1 -flow_eigensolver lanczos
+EXPECT="checkpoint" expect_fail run -gen icosphere -gen_level 1 -checkpoint "$TMP/c.bin"
