@@ -47,7 +47,9 @@ PETSC_EXTERN PetscErrorCode CSMeshGetClosedGenus(CSMesh mesh, const char caller[
      CSHarmonicBasisUpdate(hb, x);                new positions, same mesh: recomputes (keeps the solvers' symbolic work)
      CSHarmonicBasisDestroy(&hb);
 
-   A mesh with boundary or several components is refused (CSMeshGetClosedGenus); genus 0 gives n = 0. */
+   A mesh with boundary or several components is refused (CSMeshGetClosedGenus); genus 0 gives n = 0.
+   On several ranks the default solver is the PC cssubchol: call CSInitializePackage first (the methods'
+   Create functions do). */
 typedef struct _p_CSHarmonicBasis *CSHarmonicBasis;
 PETSC_EXTERN PetscErrorCode CSHarmonicBasisCreate(CSMesh mesh, Vec x, CSHarmonicBasis *hb);
 PETSC_EXTERN PetscErrorCode CSHarmonicBasisSetOptionsPrefix(CSHarmonicBasis hb, const char prefix[]);
