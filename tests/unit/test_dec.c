@@ -1,0 +1,269 @@
+/* Unit checks of the DEC operators and the harmonic basis (include/cs_operators_dec.h), serial and under mpirun,
+   on an icosphere (g = 0), the generated torus and knot1_cgal.obj (g = 1), eight_cgal.obj (2), elephant_cgal.obj (3):
+   - d1 d0 = 0 exactly, and d0^T *1 d0 is the cotan Laplacian of laplacian.c;
+   - the basis has 2g forms, closed (|d1 w| / |w|) and co-closed (|d0^T *1 w| / |*1 w|) below 1e-12, *1-orthonormal
+     to 1e-12; a basis from another seed spans the same space (the harmonic space is unique);
+   - the projection is the identity on the basis and annihilates exact forms d0 u;
+   - the face vectors lie in their faces' planes and reproduce the form on all three edges of every face;
+   - the basis at the doubled positions (CSHarmonicBasisUpdate) is the same (the *1 of a surface is scale invariant);
+   - a mesh with boundary is refused.
+   Prints a line per check and the set-up time; exit status = number of failures. */
+#include "cs_operators_dec.h"
+#include "cs_mesh_adjacency.h"
+#include "cs_package.h"
+#include "cs_test.h"
+
+static PetscErrorCode LoadMesh(MPI_Comm comm, const char path[], CSMesh *mesh)
+{
+  CSMeshData  md;
+  PetscMPIInt rank;
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCall(PetscMemzero(&md, sizeof(md)));
+  if (!rank) PetscCall(CSMeshDataRead(path, &md));
+  PetscCall(CSTestDistribute(comm, &md, 0, 0, mesh));
+  PetscFunctionReturn(0);
+}
+
+/* |d1 d0|_F = 0 exactly; |d0^T *1 d0 - L|_F / |L|_F */
+static PetscErrorCode CheckOperators(CSMesh m, const char name[])
+{
+  Mat       d0, d1, P, S, L;
+  Vec       w;
+  PetscReal nP, nL, nD;
+  char      what[128];
+  PetscFunctionBeginUser;
+  PetscCall(CSOperatorDECd0(m, &d0));
+  PetscCall(CSOperatorDECd1(m, &d1));
+  PetscCall(MatMatMult(d1, d0, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &P));
+  PetscCall(MatNorm(P, NORM_FROBENIUS, &nP));
+  PetscCall(PetscSNPrintf(what, sizeof(what), "%s: |d1 d0| = 0 exactly", name));
+  PetscCall(CSTestCheck(m->comm, (PetscBool)(nP == 0), what, nP, 0));
+  PetscCall(DMCreateGlobalVector(m->dmE1, &w));
+  PetscCall(CSOperatorHodgeStar1(m, m->x, w));
+  PetscCall(MatDuplicate(d0, MAT_COPY_VALUES, &S));
+  PetscCall(MatDiagonalScale(S, w, NULL));
+  PetscCall(MatDestroy(&P));
+  PetscCall(MatTransposeMatMult(d0, S, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &P));
+  PetscCall(CSOperatorLaplacian(m, m->x, MAT_INITIAL_MATRIX, &L));
+  PetscCall(MatNorm(L, NORM_FROBENIUS, &nL));
+  PetscCall(MatAXPY(P, -1.0, L, DIFFERENT_NONZERO_PATTERN));
+  PetscCall(MatNorm(P, NORM_FROBENIUS, &nD));
+  PetscCall(PetscSNPrintf(what, sizeof(what), "%s: |d0^T *1 d0 - L| / |L|", name));
+  PetscCall(CSTestCheck(m->comm, (PetscBool)(nD <= 1e-14 * nL), what, nD / nL, 1e-14));
+  PetscCall(MatDestroy(&P));
+  PetscCall(MatDestroy(&S));
+  PetscCall(MatDestroy(&L));
+  PetscCall(MatDestroy(&d0));
+  PetscCall(MatDestroy(&d1));
+  PetscCall(VecDestroy(&w));
+  PetscFunctionReturn(0);
+}
+
+/* Face vectors: max |<v, N>| / |v| and max_f,a |<v, p_{a+2} - p_{a+1}> - s_a w_e| / max|w|. */
+static PetscErrorCode CheckFaceVectors(CSMesh m, CSHarmonicBasis hb, PetscInt i, PetscReal *tang, PetscReal *repro)
+{
+  Vec                om, ol, v, xl;
+  DM                 dmF3;
+  const PetscReal   *p;
+  const PetscScalar *o, *va;
+  PetscReal          wmax, t = 0, r = 0;
+  PetscFunctionBeginUser;
+  PetscCall(CSHarmonicBasisGetForm(hb, i, &om));
+  PetscCall(CSHarmonicBasisGetFaceVectors(hb, i, &v));
+  PetscCall(CSHarmonicBasisGetFaceDM(hb, &dmF3));
+  PetscCall(VecNorm(om, NORM_INFINITY, &wmax));
+  PetscCall(DMGetLocalVector(m->dmE1, &ol));
+  PetscCall(DMGlobalToLocal(m->dmE1, om, INSERT_VALUES, ol));
+  PetscCall(CSMeshGetLocalPositions(m, m->x, &xl, &p));
+  PetscCall(VecGetArrayRead(ol, &o));
+  PetscCall(VecGetArrayRead(v, &va)); /* local face f is block f (overlap 0) */
+  for (CSFaceIter F = CS_FACE_ITER_INIT; CSMeshFaceNext(m, p, &F);) {
+    PetscReal N[3], vf[3];
+    for (int d = 0; d < 3; d++) vf[d] = PetscRealPart(va[3 * F.f + d]);
+    CSTriangleNormal(F.c, N);
+    if (CSVecNorm(vf) > 0) t = PetscMax(t, PetscAbsReal(CSVecDot(vf, N)) / CSVecNorm(vf));
+    for (int a = 0; a < 3; a++) {
+      PetscReal e[3], s = CSMeshEdgeSide(m, &F, a) == 0 ? 1 : -1;
+      CSVecSub(F.c[(a + 2) % 3], F.c[(a + 1) % 3], e);
+      r = PetscMax(r, PetscAbsReal(CSVecDot(vf, e) - s * PetscRealPart(o[F.e[a]])) / wmax);
+    }
+  }
+  PetscCall(VecRestoreArrayRead(v, &va));
+  PetscCall(VecRestoreArrayRead(ol, &o));
+  PetscCall(CSMeshRestoreLocalPositions(m, m->x, &xl, &p));
+  PetscCall(DMRestoreLocalVector(m->dmE1, &ol));
+  PetscCall(MPIU_Allreduce(&t, tang, 1, MPIU_REAL, MPIU_MAX, m->comm));
+  PetscCall(MPIU_Allreduce(&r, repro, 1, MPIU_REAL, MPIU_MAX, m->comm));
+  PetscFunctionReturn(0);
+}
+
+/* max_i |a_i - P_b a_i|_*1 (a: basis hb's forms, P_b: projection onto the span of other's) */
+static PetscErrorCode SpanDistance(CSHarmonicBasis hb, CSHarmonicBasis other, Vec star1, PetscReal *dist)
+{
+  PetscInt n;
+  Vec      h, t;
+  PetscFunctionBeginUser;
+  *dist = 0;
+  PetscCall(CSHarmonicBasisGetSize(hb, &n));
+  PetscCall(VecDuplicate(star1, &h));
+  PetscCall(VecDuplicate(star1, &t));
+  for (PetscInt i = 0; i < n; i++) {
+    Vec         w;
+    PetscScalar c;
+    PetscCall(CSHarmonicBasisGetForm(hb, i, &w));
+    PetscCall(CSHarmonicBasisProject(other, w, h));
+    PetscCall(VecAYPX(h, -1.0, w));
+    PetscCall(VecPointwiseMult(t, star1, h));
+    PetscCall(VecDot(h, t, &c));
+    *dist = PetscMax(*dist, PetscSqrtReal(PetscAbsReal(PetscRealPart(c))));
+  }
+  PetscCall(VecDestroy(&h));
+  PetscCall(VecDestroy(&t));
+  PetscFunctionReturn(0);
+}
+
+/* |P(d0 u)|_*1 / |d0 u|_*1 for a smooth-ish u (the x coordinate) */
+static PetscErrorCode ExactProjection(CSMesh m, CSHarmonicBasis hb, Vec star1, PetscReal *rel)
+{
+  Mat         d0;
+  Vec         u, du, h, t;
+  PetscScalar a, b;
+  PetscFunctionBeginUser;
+  PetscCall(CSOperatorDECd0(m, &d0));
+  PetscCall(DMCreateGlobalVector(m->dmV1, &u));
+  PetscCall(VecStrideGather(m->x, 0, u, INSERT_VALUES));
+  PetscCall(VecDuplicate(star1, &du));
+  PetscCall(VecDuplicate(star1, &h));
+  PetscCall(VecDuplicate(star1, &t));
+  PetscCall(MatMult(d0, u, du));
+  PetscCall(CSHarmonicBasisProject(hb, du, h));
+  PetscCall(VecPointwiseMult(t, star1, h));
+  PetscCall(VecDot(h, t, &a));
+  PetscCall(VecPointwiseMult(t, star1, du));
+  PetscCall(VecDot(du, t, &b));
+  *rel = PetscSqrtReal(PetscAbsReal(PetscRealPart(a) / PetscRealPart(b)));
+  PetscCall(MatDestroy(&d0));
+  PetscCall(VecDestroy(&u));
+  PetscCall(VecDestroy(&du));
+  PetscCall(VecDestroy(&h));
+  PetscCall(VecDestroy(&t));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode CheckResiduals(MPI_Comm comm, CSHarmonicBasis hb, const char name[], const char when[])
+{
+  PetscReal rc, rd, ro;
+  char      what[160];
+  PetscFunctionBeginUser;
+  PetscCall(CSHarmonicBasisGetResiduals(hb, &rc, &rd, &ro));
+  PetscCall(PetscSNPrintf(what, sizeof(what), "%s%s: closed |d1 w|/|w|", name, when));
+  PetscCall(CSTestCheck(comm, (PetscBool)(rc < 1e-12), what, rc, 1e-12));
+  PetscCall(PetscSNPrintf(what, sizeof(what), "%s%s: co-closed |d0^T *1 w|/|*1 w|", name, when));
+  PetscCall(CSTestCheck(comm, (PetscBool)(rd < 1e-12), what, rd, 1e-12));
+  PetscCall(PetscSNPrintf(what, sizeof(what), "%s%s: *1-orthonormal", name, when));
+  PetscCall(CSTestCheck(comm, (PetscBool)(ro < 1e-12), what, ro, 1e-12));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode CheckBasis(CSMesh m, const char name[], PetscInt genus)
+{
+  CSHarmonicBasis hb, hb2;
+  PetscInt        n, chi = m->Nv - m->Ne + m->Nf;
+  PetscLogDouble  t0, t1;
+  Vec             star1, x2;
+  PetscReal       d, tang = 0, repro = 0;
+  char            what[160];
+  PetscFunctionBeginUser;
+  PetscCall(CheckOperators(m, name));
+  PetscCall(PetscTime(&t0));
+  PetscCall(CSHarmonicBasisCreate(m, m->x, &hb));
+  PetscCall(CSHarmonicBasisSetFromOptions(hb));
+  PetscCall(CSHarmonicBasisSetUp(hb));
+  PetscCall(PetscTime(&t1));
+  PetscCall(CSHarmonicBasisGetSize(hb, &n));
+  PetscCall(PetscPrintf(m->comm, "     %s: V %" PetscInt_FMT " E %" PetscInt_FMT " F %" PetscInt_FMT ", chi %" PetscInt_FMT ", %" PetscInt_FMT " harmonic forms, set-up %.3f s\n", name, m->Nv, m->Ne, m->Nf, chi, n, t1 - t0));
+  PetscCall(PetscSNPrintf(what, sizeof(what), "%s: basis size = 2g = %" PetscInt_FMT, name, 2 * genus));
+  PetscCall(CSTestCheck(m->comm, (PetscBool)(n == 2 * genus), what, (PetscReal)n, (PetscReal)(2 * genus)));
+  if (n) {
+    PetscCall(CheckResiduals(m->comm, hb, name, ""));
+    PetscCall(DMCreateGlobalVector(m->dmE1, &star1));
+    PetscCall(CSOperatorHodgeStar1(m, m->x, star1));
+    PetscCall(CSHarmonicBasisCreate(m, m->x, &hb2));
+    PetscCall(CSHarmonicBasisSetSeed(hb2, 7));
+    PetscCall(SpanDistance(hb, hb2, star1, &d));
+    PetscCall(PetscSNPrintf(what, sizeof(what), "%s: seeds 1 and 7 span the same space", name));
+    PetscCall(CSTestCheck(m->comm, (PetscBool)(d < 1e-11), what, d, 1e-11));
+    PetscCall(SpanDistance(hb, hb, star1, &d));
+    PetscCall(PetscSNPrintf(what, sizeof(what), "%s: projection is the identity on the basis", name));
+    PetscCall(CSTestCheck(m->comm, (PetscBool)(d < 1e-12), what, d, 1e-12));
+    PetscCall(ExactProjection(m, hb, star1, &d));
+    PetscCall(PetscSNPrintf(what, sizeof(what), "%s: projection of d0 x vanishes", name));
+    PetscCall(CSTestCheck(m->comm, (PetscBool)(d < 1e-12), what, d, 1e-12));
+    for (PetscInt i = 0; i < n; i++) {
+      PetscReal ti, ri;
+      PetscCall(CheckFaceVectors(m, hb, i, &ti, &ri));
+      tang  = PetscMax(tang, ti);
+      repro = PetscMax(repro, ri);
+    }
+    PetscCall(PetscSNPrintf(what, sizeof(what), "%s: face vectors tangent |<v,N>|/|v|", name));
+    PetscCall(CSTestCheck(m->comm, (PetscBool)(tang < 1e-12), what, tang, 1e-12));
+    PetscCall(PetscSNPrintf(what, sizeof(what), "%s: face vectors reproduce w on every edge", name));
+    PetscCall(CSTestCheck(m->comm, (PetscBool)(repro < 1e-12), what, repro, 1e-12));
+    /* doubled positions: the same *1, so the same basis */
+    PetscCall(VecDuplicate(m->x, &x2));
+    PetscCall(VecCopy(m->x, x2));
+    PetscCall(VecScale(x2, 2.0));
+    PetscCall(CSHarmonicBasisUpdate(hb2, x2));
+    PetscCall(CheckResiduals(m->comm, hb2, name, " (Update, 2x)"));
+    PetscCall(SpanDistance(hb, hb2, star1, &d));
+    PetscCall(PetscSNPrintf(what, sizeof(what), "%s: basis at 2x spans the same space", name));
+    PetscCall(CSTestCheck(m->comm, (PetscBool)(d < 1e-11), what, d, 1e-11));
+    PetscCall(VecDestroy(&x2));
+    PetscCall(VecDestroy(&star1));
+    PetscCall(CSHarmonicBasisDestroy(&hb2));
+  }
+  PetscCall(CSHarmonicBasisDestroy(&hb));
+  PetscFunctionReturn(0);
+}
+
+/* A mesh with boundary: CSHarmonicBasisCreate fails (on every rank) with a message. */
+static PetscErrorCode CheckBoundaryRefused(MPI_Comm comm)
+{
+  CSMesh          m;
+  CSHarmonicBasis hb = NULL;
+  PetscErrorCode  ierr;
+  PetscFunctionBeginUser;
+  PetscCall(CSTestMesh(comm, (CSTestMeshSpec){CS_TEST_CYLINDER, 12, 5, 0, 0}, 0, 0, &m));
+  PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
+  ierr = CSHarmonicBasisCreate(m, m->x, &hb);
+  PetscCall(PetscPopErrorHandler());
+  PetscCall(CSTestCheck(comm, (PetscBool)(ierr != 0 && !hb), "cylinder (boundary): CSHarmonicBasisCreate refuses", (PetscReal)ierr, 0));
+  PetscCall(CSMeshDestroy(&m));
+  PetscFunctionReturn(0);
+}
+
+int main(int argc, char **argv)
+{
+  MPI_Comm    comm;
+  CSMesh      m;
+  const char *files[]  = {"meshes/knot1_cgal.obj", "meshes/eight_cgal.obj", "meshes/elephant_cgal.obj"};
+  PetscInt    genera[] = {1, 2, 3};
+  PetscFunctionBeginUser;
+  PetscCall(PetscInitialize(&argc, &argv, NULL, NULL));
+  comm = PETSC_COMM_WORLD;
+  PetscCall(CSInitializePackage()); /* the PC cssubchol of the parallel solves */
+  PetscCall(CSTestMesh(comm, (CSTestMeshSpec){CS_TEST_ICOSPHERE, 3, 0, 0, 0}, 0, 0, &m));
+  PetscCall(CheckBasis(m, "icosphere 3", 0));
+  PetscCall(CSMeshDestroy(&m));
+  PetscCall(CSTestMesh(comm, (CSTestMeshSpec){CS_TEST_TORUS, 24, 12, 3.0, 1.0}, 0.02, 5, &m));
+  PetscCall(CheckBasis(m, "torus 24x12 bumpy", 1));
+  PetscCall(CSMeshDestroy(&m));
+  for (int k = 0; k < 3; k++) {
+    PetscCall(LoadMesh(comm, files[k], &m));
+    PetscCall(CheckBasis(m, files[k], genera[k]));
+    PetscCall(CSMeshDestroy(&m));
+  }
+  PetscCall(CheckBoundaryRefused(comm));
+  return CSTestFinalize(comm, PetscFinalize);
+}
