@@ -19,7 +19,8 @@
      VII  the Poisson problem L f~ = div(conj(lambda) e lambda) (Eq. 6; prefix spin_poisson_), translated to the
           old vertex mean and scaled to the input's area (W and Q are scale-invariant).
    Closed meshes only (boundary conditions of Sec. 6.3 are not implemented: refused with a message). On genus
-   >= 1 the exactness constraint (App. C) is not applied yet: the flow runs with a warning. */
+   >= 1 the exactness constraint (App. C, C.1: conformal_exactness.c with the CSHarmonicBasis of
+   cs_operators_dec.h) is on by default (-flow_exactness). */
 #ifndef CS_METHODS_CONFORMAL_H
 #define CS_METHODS_CONFORMAL_H
 #include <petscksp.h>
@@ -51,13 +52,14 @@ typedef enum {
 
 /* The measures of a state: it = steps taken; W = the cotan Willmore energy (soliman2021 Eq. 28); E_H = sum A_i H_i^2
    (the paper's |mu|^2 with the signed H); gamma = the eigenvalue of the last step; q_mean, q_max against the
-   input (crane2011 Sec. 6.1); area; res_total, res_inversion = the largest |<<v, c>>| / (|v| |c|) of the projected
-   direction against 1 and N^x,y,z (App. B, D); vnorm = |v| (the step's direction before tau); tau; seconds of
+   input (crane2011 Sec. 6.1); area; res_total, res_inversion, res_exact = the largest |<<v, c>>| / (|v| |c|) of
+   the projected direction against 1, N^x,y,z and the Z_i^x,y,z (App. B, D, C); closing = the last step's closing
+   error |harmonic part of conj(lambda) df lambda| / |conj(lambda) df lambda| (genus >= 1, App. C); vnorm = |v| (the step's direction before tau); tau; seconds of
    the last step and since the start. */
 typedef struct {
   CSConformalMonitorEvent event;
   PetscInt                it;
-  PetscReal               W, EH, gamma, q_mean, q_max, area, res_total, res_inversion, vnorm, tau;
+  PetscReal               W, EH, gamma, q_mean, q_max, area, res_total, res_inversion, res_exact, closing, vnorm, tau;
   PetscReal               step_seconds, seconds;
 } CSConformalMonitorInfo;
 typedef PetscErrorCode (*CSConformalFlowMonitorFn)(CSConformalFlow, const CSConformalMonitorInfo *, void *);
@@ -91,9 +93,10 @@ PETSC_EXTERN PetscErrorCode CSConformalFlowGetQuasiConformal(CSConformalFlow flo
 /* The current state's measures, the initial W, the stepping time (without SetUp) and the options in use. */
 typedef struct {
   CSConformalMonitorInfo state;
-  PetscReal              W_initial, tau, filter_sigma;
+  PetscReal              W_initial, tau, filter_sigma, closing_max;
   PetscInt               filter_k;
-  PetscBool              inversion, mobius;
+  PetscBool              inversion, mobius, exactness;
+  PetscInt               genus;
   PetscLogDouble         setup_seconds, step_seconds;
 } CSConformalFlowInfo;
 PETSC_EXTERN PetscErrorCode CSConformalFlowGetInfo(CSConformalFlow flow, CSConformalFlowInfo *info);

@@ -20,6 +20,21 @@ static inline PetscLogDouble CSSpinCPUTime(void)
   return (PetscLogDouble)t.tv_sec + 1e-9 * (PetscLogDouble)t.tv_nsec;
 }
 
+/* crane2011 Eq. 8: e~_ij = 1/3 conj(l_i) e l_i + 1/6 conj(l_i) e l_j + 1/6 conj(l_j) e l_i + 1/3 conj(l_j) e l_j for the
+   edge vector e = f_j - f_i. The two middle terms are q - conj(q) = 2 Im q with q = conj(l_i) e l_j, so e~ is
+   imaginary. (The Poisson right-hand side, and the closing error of the conformal flow.) */
+static inline void CSSpinTransformedEdge(const PetscReal li[4], const PetscReal lj[4], const PetscReal e[3], PetscReal out[3])
+{
+  PetscReal eq[4] = {0, e[0], e[1], e[2]}, ti[4], tj[4], a[4], b[4], c[4], d[4];
+  CSQuatConjMul(li, eq, ti);
+  CSQuatConjMul(lj, eq, tj);
+  CSQuatMul(ti, li, a);
+  CSQuatMul(ti, lj, b);
+  CSQuatMul(tj, li, c);
+  CSQuatMul(tj, lj, d);
+  for (int k = 0; k < 3; k++) out[k] = a[k + 1] / 3 + b[k + 1] / 6 + c[k + 1] / 6 + d[k + 1] / 3;
+}
+
 typedef enum {
   CS_SPIN_BOUNDARY_NONE, /* natural (free) boundary; the default is KEEP on meshes with a boundary */
   CS_SPIN_BOUNDARY_KEEP, /* target tangents = current tangents */

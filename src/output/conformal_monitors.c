@@ -8,7 +8,7 @@ PetscErrorCode CSConformalFlowMonitorProgress(CSConformalFlow flow, const CSConf
   PetscFunctionBeginUser;
   if (s->event == CS_CONFORMAL_MONITOR_END) PetscFunctionReturn(0);
   PetscCall(CSConformalFlowGetMesh(flow, &mesh));
-  PetscCall(PetscPrintf(mesh->comm, "conformal step %3" PetscInt_FMT "  W=%.10e  W/4pi=%.6f  gamma=%.3e  q_mean=%.4f  q_max=%.4f  |v|=%.3e  res=%.1e/%.1e  %.3f s\n", s->it, (double)s->W, (double)(s->W / (4 * PETSC_PI)), (double)s->gamma, (double)s->q_mean, (double)s->q_max, (double)s->vnorm, (double)s->res_total, (double)s->res_inversion,
+  PetscCall(PetscPrintf(mesh->comm, "conformal step %3" PetscInt_FMT "  W=%.10e  W/4pi=%.6f  gamma=%.3e  q_mean=%.4f  q_max=%.4f  |v|=%.3e  res=%.1e/%.1e/%.1e  closing=%.1e  %.3f s\n", s->it, (double)s->W, (double)(s->W / (4 * PETSC_PI)), (double)s->gamma, (double)s->q_mean, (double)s->q_max, (double)s->vnorm, (double)s->res_total, (double)s->res_inversion, (double)s->res_exact, (double)s->closing,
                         (double)(s->event == CS_CONFORMAL_MONITOR_STEP ? s->step_seconds : 0)));
   PetscFunctionReturn(0);
 }
@@ -22,7 +22,7 @@ static PetscErrorCode MonitorHistory(CSConformalFlow flow, const CSConformalMoni
 {
   HistoryCtx *H = (HistoryCtx *)ctx;
   Vec         x;
-  PetscReal   Wbs, row[14];
+  PetscReal   Wbs, row[16];
   PetscFunctionBeginUser;
   if (s->event == CS_CONFORMAL_MONITOR_END) PetscFunctionReturn(0);
   PetscCall(CSConformalFlowGetSolution(flow, &x));
@@ -37,11 +37,13 @@ static PetscErrorCode MonitorHistory(CSConformalFlow flow, const CSConformalMoni
   row[7]  = s->area;
   row[8]  = s->res_total;
   row[9]  = s->res_inversion;
-  row[10] = s->vnorm;
-  row[11] = s->tau;
-  row[12] = s->event == CS_CONFORMAL_MONITOR_STEP ? s->step_seconds : 0;
-  row[13] = s->seconds;
-  PetscCall(CSHistoryAppend(H->hist, 14, row));
+  row[10] = s->res_exact;
+  row[11] = s->closing;
+  row[12] = s->vnorm;
+  row[13] = s->tau;
+  row[14] = s->event == CS_CONFORMAL_MONITOR_STEP ? s->step_seconds : 0;
+  row[15] = s->seconds;
+  PetscCall(CSHistoryAppend(H->hist, 16, row));
   PetscFunctionReturn(0);
 }
 
@@ -63,7 +65,7 @@ PetscErrorCode CSConformalFlowMonitorSetHistory(CSConformalFlow flow, CSOutput *
   if (!out->has_history) PetscFunctionReturn(0);
   PetscCall(CSConformalFlowGetMesh(flow, &mesh));
   PetscCall(PetscNew(&H));
-  PetscCall(CSOutputHistoryCreate(out, mesh->comm, "it,willmore,willmore_bs,E_H,gamma,q_mean,q_max,area,res_total,res_inversion,vnorm,tau,step_seconds,seconds", 0, &H->hist));
+  PetscCall(CSOutputHistoryCreate(out, mesh->comm, "it,willmore,willmore_bs,E_H,gamma,q_mean,q_max,area,res_total,res_inversion,res_exact,closing_error,vnorm,tau,step_seconds,seconds", 0, &H->hist));
   PetscCall(CSEnergyCreateWillmoreBS(mesh, CS_BS_BOUNDARY_FIXED, 1e-6, &H->bs));
   PetscCall(CSConformalFlowMonitorSet(flow, MonitorHistory, H, HistoryDestroy));
   PetscFunctionReturn(0);
@@ -148,6 +150,9 @@ PetscErrorCode CSConformalFlowReport(CSConformalFlow flow, CSOutput *out)
   PetscCall(CSJSONAddReal(out->json, "gamma", i.state.gamma));
   PetscCall(CSJSONAddReal(out->json, "res_total", i.state.res_total));
   PetscCall(CSJSONAddReal(out->json, "res_inversion", i.state.res_inversion));
+  PetscCall(CSJSONAddReal(out->json, "res_exact", i.state.res_exact));
+  PetscCall(CSJSONAddBool(out->json, "exactness", i.exactness));
+  PetscCall(CSJSONAddReal(out->json, "closing_error_max", i.closing_max));
   PetscCall(CSJSONAddReal(out->json, "tau", i.tau));
   PetscCall(CSJSONAddReal(out->json, "filter_sigma", i.filter_sigma));
   PetscCall(CSJSONAddInt(out->json, "filter_k", i.filter_k));

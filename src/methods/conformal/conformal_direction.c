@@ -26,18 +26,22 @@ static PetscErrorCode Dot(CSConformalFlow F, Vec a, Vec b, PetscReal *r)
   PetscFunctionReturn(0);
 }
 
-/* c[0] = 1, c[1..3] = N^x,y,z (with the inversion constraint), orthonormalised in order; nearly dependent ones
-   (relative norm below 1e-10 after orthogonalisation) are dropped */
+/* Raw functions c[0] = 1, c[1..3] = N^x,y,z (with the inversion constraint), then Z_i^x,y,z (exactness), made
+   orthonormal in that order by modified Gram-Schmidt; nearly dependent ones (relative norm below 1e-10 after
+   orthogonalisation) are dropped. nbefore counts the orthonormal ones from 1 and N. */
 static PetscErrorCode ConstraintBasis(CSConformalFlow F)
 {
-  PetscInt n = F->inversion ? 4 : 1;
+  PetscInt nraw = F->inversion ? 4 : 1, nz;
   PetscFunctionBeginUser;
+  PetscCall(VecSet(F->c[0], 1));
+  for (PetscInt d = 1; d < nraw; d++) PetscCall(VecStrideGather(F->N, d - 1, F->c[d], INSERT_VALUES));
+  F->nc = nraw;
+  PetscCall(CSConformalFlowExactnessFunctions(F, &nz)); /* c[nraw..nraw+nz) */
   F->nc = 0;
-  for (PetscInt j = 0; j < n; j++) {
-    Vec       c = F->c[F->nc];
+  for (PetscInt j = 0; j < nraw + nz; j++) {
+    Vec       c = F->c[j];
     PetscReal a, a0;
-    if (j == 0) PetscCall(VecSet(c, 1));
-    else PetscCall(VecStrideGather(F->N, j - 1, c, INSERT_VALUES));
+    if (j == nraw) F->nbefore = F->nc;
     PetscCall(Dot(F, c, c, &a0));
     for (PetscInt i = 0; i < F->nc; i++) {
       PetscCall(Dot(F, c, F->c[i], &a));
@@ -46,17 +50,19 @@ static PetscErrorCode ConstraintBasis(CSConformalFlow F)
     PetscCall(Dot(F, c, c, &a));
     if (a <= 1e-20 * a0) continue;
     PetscCall(VecScale(c, 1 / PetscSqrtReal(a)));
-    F->nc++;
+    F->c[j]       = F->c[F->nc]; /* keep it at position nc (swap the vectors) */
+    F->c[F->nc++] = c;
   }
+  if (!nz) F->nbefore = F->nc;
   PetscFunctionReturn(0);
 }
 
-/* v <- v - sum_{i < n} <<v, c_i>> c_i */
-static PetscErrorCode Project(CSConformalFlow F, PetscInt n)
+/* v <- v - sum_{i0 <= i < n} <<v, c_i>> c_i */
+static PetscErrorCode Project(CSConformalFlow F, PetscInt i0, PetscInt n)
 {
   PetscReal a;
   PetscFunctionBeginUser;
-  for (PetscInt i = 0; i < n; i++) {
+  for (PetscInt i = i0; i < n; i++) {
     PetscCall(Dot(F, F->v, F->c[i], &a));
     PetscCall(VecAXPY(F->v, -a, F->c[i]));
   }
@@ -127,6 +133,7 @@ static PetscErrorCode Residuals(CSConformalFlow F)
   F->s.vnorm         = PetscSqrtReal(vv);
   F->s.res_total     = 0;
   F->s.res_inversion = 0;
+  F->s.res_exact     = 0;
   if (vv == 0) PetscFunctionReturn(0);
   for (PetscInt j = 0; j < 4; j++) {
     PetscReal r;
@@ -137,6 +144,11 @@ static PetscErrorCode Residuals(CSConformalFlow F)
     r = PetscAbsReal(vc) / PetscSqrtReal(vv * cc);
     if (j == 0) F->s.res_total = r;
     else F->s.res_inversion = PetscMax(F->s.res_inversion, r);
+  }
+  F->s.res_exact = 0; /* against the orthonormalised Z functions (the same span) */
+  for (PetscInt i = F->nbefore; i < F->nc; i++) {
+    PetscCall(Dot(F, F->v, F->c[i], &vc));
+    F->s.res_exact = PetscMax(F->s.res_exact, PetscAbsReal(vc) / PetscSqrtReal(vv));
   }
   PetscFunctionReturn(0);
 }
@@ -192,10 +204,11 @@ PetscErrorCode CSConformalFlowEvaluate(CSConformalFlow F)
   PetscCall(VecAXPBY(F->v, -F->hfactor, 0, F->H)); /* II: rho' = -2 H (see above; -flow_curvature_factor) */
   if (F->sigma > 0) PetscCall(CSConformalFlowApplyFilter(F, F->v)); /* Sec. 4 */
   PetscCall(ConstraintBasis(F)); /* III */
-  PetscCall(Project(F, F->nc));  /* IV */
-  if (F->mobius) {
+  PetscCall(Project(F, 0, F->nc)); /* IV */
+  if (F->mobius) { /* after the inversion constraint, before the remaining ones (Sec. 6.2) */
     PetscCall(MobiusBalance(F));
-    PetscCall(Project(F, 1)); /* the remaining constraint: total curvature */
+    PetscCall(Project(F, 0, 1));
+    PetscCall(Project(F, F->nbefore, F->nc));
   }
   PetscCall(Residuals(F));
   PetscFunctionReturn(0);

@@ -24,6 +24,7 @@ PetscErrorCode CSConformalFlowCreate(CSMesh mesh, CSConformalFlow *flow)
   F->fk            = 2;
   F->sigma         = 0;
   F->inversion     = PETSC_TRUE;
+  F->exactness     = PETSC_TRUE;
   F->mobius_weight = 1;
   F->hfactor       = 2; /* rho' = -2 H: conformal_direction.c */
   F->keep_area     = PETSC_TRUE;
@@ -101,6 +102,7 @@ PetscErrorCode CSConformalFlowSetFromOptions(CSConformalFlow F)
   PetscCall(PetscOptionsReal("-filter_sigma", "Spectral filter v <- v - (id + sigma A^k)^-1 v (Sec. 4, A = M^-1 L >= 0); sigma in units of (area/4pi)^k, 0: off", NULL, F->sigma, &F->sigma, NULL));
   PetscCall(PetscOptionsInt("-filter_k", "Filter order k (0..4)", NULL, F->fk, &F->fk, NULL));
   PetscCall(PetscOptionsBool("-inversion", "Constrain sphere inversions: <<v, N^x,y,z>> = 0 (Sec. 6.2, App. D)", NULL, F->inversion, &F->inversion, NULL));
+  PetscCall(PetscOptionsBool("-exactness", "Genus >= 1: constrain <<v, Z_i^x,y,z>> = 0 with D Z_i = v_i for the harmonic vector fields v_i (App. C, C.1)", NULL, F->exactness, &F->exactness, NULL));
   PetscCall(PetscOptionsBool("-mobius", "Moebius balancing v += w <a, N> toward the input's area distribution (App. E, E.1)", NULL, F->mobius, &F->mobius, NULL));
   PetscCall(PetscOptionsReal("-mobius_weight", "Moebius balancing: the weight w of the unit-norm direction", NULL, F->mobius_weight, &F->mobius_weight, NULL));
   PetscCall(PetscOptionsReal("-curvature_factor", "c in rho' = -c H: 2 is the gradient of |mu|^2 (Eq. 1, stable for tau < 1); 1 is the paper's (D + tau H) lambda = gamma lambda", NULL, F->hfactor, &F->hfactor, NULL));
@@ -117,7 +119,7 @@ static PetscErrorCode CheckMesh(CSConformalFlow F)
   PetscFunctionBeginUser;
   PetscCheck(m->topo.boundary_loops == 0, m->comm, PETSC_ERR_SUP, "-flow_type conformal: mesh %s has %" PetscInt_FMT " boundary loop(s); the boundary conditions of crane2013 Sec. 6.3 are not implemented (closed meshes only)", m->name, m->topo.boundary_loops);
   PetscCheck(m->topo.components == 1, m->comm, PETSC_ERR_SUP, "-flow_type conformal: mesh %s has %" PetscInt_FMT " components; the constraints are per surface (one component only)", m->name, m->topo.components);
-  if (m->topo.genus > 0) PetscCall(PetscPrintf(m->comm, "Warning: conformal flow: mesh %s has genus %" PetscInt_FMT "; the exactness constraint (crane2013 App. C) is not applied, the surface may fail to close\n", m->name, m->topo.genus));
+  if (m->topo.genus > 0 && !F->exactness) PetscCall(PetscPrintf(m->comm, "Warning: conformal flow: mesh %s has genus %" PetscInt_FMT " and -%sexactness false: the surface may fail to close (closing_error in the history)\n", m->name, m->topo.genus, F->hdr.prefix));
   PetscFunctionReturn(0);
 }
 
@@ -155,11 +157,13 @@ PetscErrorCode CSConformalFlowSetUp(CSConformalFlow F)
     Vec *vs[] = {&F->area0, &F->H, &F->v, &F->rho, &F->work};
     for (size_t k = 0; k < sizeof(vs) / sizeof(vs[0]); k++) PetscCall(VecDuplicate(F->area, vs[k]));
   }
-  for (int k = 0; k < CS_CONFORMAL_MAX_BASIS; k++) PetscCall(VecDuplicate(F->area, &F->c[k]));
   PetscCall(CSGeometryVertexAreas(m, F->x0, F->area0));
   PetscCall(CSGeometryAreaVolume(m, F->x0, &F->area_initial, &vol));
   PetscCall(CSEnergyCreateWillmore(m, &F->will));
   PetscCall(SetUpSpin(F));
+  PetscCall(CSConformalFlowExactnessSetUp(F));
+  F->ncmax = 4 + (F->exactness ? 3 * F->ng : 0);
+  PetscCall(VecDuplicateVecs(F->area, F->ncmax, &F->c));
   PetscCall(PetscTime(&t1));
   F->t_setup     = t1 - F->t0;
   F->setupcalled = PETSC_TRUE;
@@ -247,7 +251,8 @@ PetscErrorCode CSConformalFlowDestroy(CSConformalFlow *flow)
     Vec *vs[] = {&F->x, &F->x0, &F->xnew, &F->area0, &F->area, &F->N, &F->H, &F->v, &F->rho, &F->work, &F->lambda};
     for (size_t k = 0; k < sizeof(vs) / sizeof(vs[0]); k++) PetscCall(VecDestroy(vs[k]));
   }
-  for (int k = 0; k < CS_CONFORMAL_MAX_BASIS; k++) PetscCall(VecDestroy(&F->c[k]));
+  if (F->c) PetscCall(VecDestroyVecs(F->ncmax, &F->c));
+  PetscCall(CSConformalFlowExactnessDestroy(F));
   PetscCall(CSSpinDestroy(&F->spin));
   PetscCall(CSEnergyDestroy(&F->will));
   PetscCall(MatDestroy(&F->L));

@@ -54,6 +54,9 @@ PetscErrorCode CSConformalFlowGetInfo(CSConformalFlow F, CSConformalFlowInfo *in
   info->filter_k      = F->fk;
   info->inversion     = F->inversion;
   info->mobius        = F->mobius;
+  info->exactness     = (PetscBool)(F->exactness && F->ng > 0);
+  info->genus         = F->mesh->topo.genus;
+  info->closing_max   = F->closing_max;
   info->setup_seconds = F->t_setup;
   info->step_seconds  = F->t_steps;
   PetscFunctionReturn(0);

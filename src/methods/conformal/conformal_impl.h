@@ -5,8 +5,8 @@
 #include "cs_methods_spin.h"
 #include "cs_energy.h"
 #include "cs_object.h"
+#include "cs_operators_dec.h"
 
-#define CS_CONFORMAL_MAX_BASIS 4 /* {1, N^x, N^y, N^z} */
 
 struct _p_CSConformalFlow {
   CSObjectHeader hdr; /* comm (the mesh's), prefix, monitors (CSConformalFlowMonitorFn) */
@@ -14,12 +14,20 @@ struct _p_CSConformalFlow {
   /* options */
   PetscReal              tau, atol, rtol, egrow, sigma, mobius_weight, hfactor;
   PetscInt               max_it, fk;
-  PetscBool              inversion, mobius, keep_area;
+  PetscBool              inversion, mobius, keep_area, exactness;
   CSConformalEigensolver eigensolver;
   /* state: positions (current, input, next), per-vertex areas of the input, the step's fields */
   Vec       x, x0, xnew, area0;
-  Vec       area, N, H, v, rho, work, c[CS_CONFORMAL_MAX_BASIS], lambda;
-  PetscInt  nc;            /* constraint functions in c */
+  Vec       area, N, H, v, rho, work, lambda;
+  Vec      *c;             /* the constraint functions {1, N^x,y,z, Z_i^x,y,z}, orthonormalised */
+  PetscInt  nc, ncmax;     /* functions in c (after dropping dependent ones), allocated */
+  PetscInt  nbefore;       /* c[0..nbefore) are 1 and N (the Moebius step goes after them) */
+  /* exactness (App. C, C.1; conformal_exactness.c): the harmonic basis of the current surface, Z_i from X Z_i = D^* v_i */
+  CSHarmonicBasis hb;
+  PetscInt        ng;      /* 2g */
+  Vec            *Z, zr, zt, zb, M4, MF;
+  Mat             X0, Xs, Dface;
+  KSP             kz;
   CSSpin    spin;          /* Eq. 5 and 6: the Dirac eigenproblem and the Poisson problem */
   CSEnergy  will;          /* W of soliman2021 Eq. 28 */
   Mat       L, B;          /* the filter: L on the current surface, B = M + s L (M^-1 L)^(k-1) */
@@ -28,13 +36,19 @@ struct _p_CSConformalFlow {
   /* progress */
   CSConformalMonitorInfo         s;
   CSConformalFlowConvergedReason reason;
-  PetscReal                      W0, Wprev;
+  PetscReal                      W0, Wprev, closing_max;
   PetscLogDouble                 t0, t_setup, t_steps;
   PetscBool                      setupcalled, started;
 };
 
 /* conformal_direction.c: H, W, the filtered and projected direction v and the measures of the state */
 PETSC_INTERN PetscErrorCode CSConformalFlowEvaluate(CSConformalFlow F);
+/* conformal_exactness.c: set-up (genus >= 1), the functions Z_i^x,y,z of the current surface appended to c (from
+   c[nc]), and the closing error |harmonic part of conj(lambda) df lambda| / |conj(lambda) df lambda| (*1 norms) */
+PETSC_INTERN PetscErrorCode CSConformalFlowExactnessSetUp(CSConformalFlow F);
+PETSC_INTERN PetscErrorCode CSConformalFlowExactnessFunctions(CSConformalFlow F, PetscInt *n);
+PETSC_INTERN PetscErrorCode CSConformalFlowClosingError(CSConformalFlow F, PetscReal *err);
+PETSC_INTERN PetscErrorCode CSConformalFlowExactnessDestroy(CSConformalFlow F);
 /* conformal_integrate.c: rho = tau v, the eigenproblem, the Poisson problem, x <- the new positions */
 PETSC_INTERN PetscErrorCode CSConformalFlowIntegrate(CSConformalFlow F);
 

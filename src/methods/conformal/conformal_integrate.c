@@ -15,6 +15,8 @@ PetscErrorCode CSConformalFlowIntegrate(CSConformalFlow F)
   PetscCall(CSSpinSolveEigen(F->spin, F->x, CS_RHO_VERTEX, F->rho, F->lambda)); /* VI */
   F->s.gamma = F->spin->gamma;
   PetscCall(CSSpinNormalize(F->spin, F->lambda, NULL, PETSC_TRUE));
+  PetscCall(CSConformalFlowClosingError(F, &F->s.closing)); /* genus >= 1: the harmonic part of conj(lambda) df lambda */
+  F->closing_max = PetscMax(F->closing_max, F->s.closing);
   PetscCall(CSSpinReconstruct(F->spin, F->x, F->lambda, F->x, F->xnew)); /* VII */
   if (F->keep_area) {
     PetscReal A, vol;

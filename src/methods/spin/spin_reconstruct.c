@@ -4,20 +4,6 @@
    default). */
 #include "cs_methods_spin.h"
 
-/* crane2011 Eq. 8: e~_ij = 1/3 conj(l_i) e l_i + 1/6 conj(l_i) e l_j + 1/6 conj(l_j) e l_i + 1/3 conj(l_j) e l_j.
-   The two middle terms are q - conj(q) = 2 Im q with q = conj(l_i) e l_j, so e~ is imaginary. */
-static inline void TransformedEdge(const PetscReal li[4], const PetscReal lj[4], const PetscReal e[3], PetscReal out[3])
-{
-  PetscReal eq[4] = {0, e[0], e[1], e[2]}, ti[4], tj[4], a[4], b[4], c[4], d[4];
-  CSQuatConjMul(li, eq, ti);
-  CSQuatConjMul(lj, eq, tj);
-  CSQuatMul(ti, li, a);
-  CSQuatMul(ti, lj, b);
-  CSQuatMul(tj, li, c);
-  CSQuatMul(tj, lj, d);
-  for (int k = 0; k < 3; k++) out[k] = a[k + 1] / 3 + b[k + 1] / 6 + c[k + 1] / 6 + d[k + 1] / 3;
-}
-
 /* b = -sum_j w_ij e~_ij: the gradient of sum_edges w_ij |f_j - f_i - e~_ij|^2 is 2 (L f + sum_j w_ij e~_ij), with
    (L f)_i = sum_j w_ij (f_i - f_j) the positive cotan Laplacian (cs_operators.h). For e~_ij = f_j - f_i this is
    b = L f, so lambda = 1 reproduces the input exactly. */
@@ -48,7 +34,7 @@ static PetscErrorCode PoissonRHS(CSSpin s, Vec x, Vec lambda, Vec b)
         li[q] = PetscRealPart(l[4 * i + q]);
         lj[q] = PetscRealPart(l[4 * j + q]);
       }
-      TransformedEdge(li, lj, e, et);
+      CSSpinTransformedEdge(li, lj, e, et);
       for (int d = 0; d < 3; d++) {
         ba[3 * i + d] -= w * et[d];
         ba[3 * j + d] += w * et[d];

@@ -1,0 +1,230 @@
+/* The exactness constraint of crane2013 App. C, C.1 for genus g >= 1: with the 2g harmonic 1-forms omega_i of the
+   current surface and their face vector fields v_i (CSHarmonicBasis, src/operators/harmonic_basis.c: steps I-IV),
+   step V solves D Z_i = v_i in the least-squares sense, X Z_i = D^* M_F v_i with X = D^* M_F D (App. G, rho = 0;
+   D^* = the real transpose of the 4x4-block form, crane2011 Sec. 5.4), and rho' must be orthogonal to the three
+   imaginary components Z_i^x,y,z (App. C: <<rho', <Z_i, a>>> = 0 for all a in R^3).
+   X is singular (the constants, 4-fold); the right-hand side is orthogonal to them (D 1 = 0), so we factor the
+   definite X + s M (s = 1e-2 4 pi / area, M the vertex areas per quaternion component) once per step and refine:
+   Z <- Z + (X + s M)^{-1} (b - X Z), each pass reducing the error by s / (s + gamma_1) ~ 1e-2 (3 passes).
+   The closing error: the harmonic part of beta = conj(lambda) df lambda (App. C), per edge the transformed edge
+   vector of crane2011 Eq. 8, measured as |P_H beta|_*1 / |beta|_*1 over the three coordinates. */
+#include "conformal_impl.h"
+#include "cs_linalg.h"
+
+PetscErrorCode CSConformalFlowExactnessSetUp(CSConformalFlow F)
+{
+  CSMesh      m = F->mesh;
+  PetscMPIInt size;
+  PC          pc;
+  PetscFunctionBeginUser;
+  if (m->topo.genus == 0) PetscFunctionReturn(0);
+  PetscCall(CSHarmonicBasisCreate(m, F->x, &F->hb));
+  PetscCall(CSHarmonicBasisSetFromOptions(F->hb));
+  PetscCall(CSHarmonicBasisGetSize(F->hb, &F->ng));
+  if (!F->exactness) PetscFunctionReturn(0); /* the basis still measures the closing error */
+  PetscCall(PetscMalloc1(F->ng, &F->Z));
+  for (PetscInt i = 0; i < F->ng; i++) PetscCall(DMCreateGlobalVector(F->spin->dm, &F->Z[i]));
+  PetscCall(DMCreateGlobalVector(F->spin->dm, &F->zr));
+  PetscCall(VecDuplicate(F->zr, &F->zt));
+  PetscCall(VecDuplicate(F->zr, &F->zb));
+  PetscCall(VecDuplicate(F->zr, &F->M4));
+  PetscCall(KSPCreate(m->comm, &F->kz));
+  PetscCall(KSPSetOptionsPrefix(F->kz, F->hdr.prefix));
+  PetscCall(KSPAppendOptionsPrefix(F->kz, "exactness_"));
+  PetscCall(KSPSetType(F->kz, KSPPREONLY));
+  PetscCall(KSPGetPC(F->kz, &pc));
+  PetscCallMPI(MPI_Comm_size(m->comm, &size));
+  if (size == 1) { /* the quaternion Cholesky, as the spin method's default (docs/solvers.md) */
+    PetscCall(PCSetType(pc, PCCHOLESKY));
+    PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERCSQUAT));
+  } else PetscCall(CSSetDefaultCholesky(pc));
+  PetscCall(KSPSetFromOptions(F->kz));
+  PetscFunctionReturn(0);
+}
+
+/* X0 = D^* M_F D, Xs = X0 + s M (same pattern), the face operator D and the face areas M_F on the current surface */
+static PetscErrorCode Operators(CSConformalFlow F)
+{
+  PetscReal          A, vol, s;
+  const PetscScalar *a;
+  PetscScalar       *m4;
+  PetscInt           n;
+  PetscFunctionBeginUser;
+  PetscCall(CSDiracAssemble(F->mesh, F->spin->dm, F->x, CS_RHO_NONE, NULL, F->X0 ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX, &F->X0));
+  PetscCall(MatDestroy(&F->Dface));
+  PetscCall(VecDestroy(&F->MF));
+  PetscCall(CSDiracCreateFaceOperators(F->mesh, F->spin->dm, F->x, CS_RHO_NONE, NULL, &F->Dface, NULL, NULL, &F->MF));
+  PetscCall(CSGeometryAreaVolume(F->mesh, F->x, &A, &vol));
+  s = 1e-2 * 4 * PETSC_PI / A;
+  PetscCall(VecGetLocalSize(F->area, &n));
+  PetscCall(VecGetArrayRead(F->area, &a));
+  PetscCall(VecGetArray(F->M4, &m4));
+  for (PetscInt i = 0; i < 4 * n; i++) m4[i] = s * a[i / 4];
+  PetscCall(VecRestoreArray(F->M4, &m4));
+  PetscCall(VecRestoreArrayRead(F->area, &a));
+  if (!F->Xs) PetscCall(MatDuplicate(F->X0, MAT_COPY_VALUES, &F->Xs));
+  else PetscCall(MatCopy(F->X0, F->Xs, SAME_NONZERO_PATTERN));
+  PetscCall(MatDiagonalSet(F->Xs, F->M4, ADD_VALUES));
+  PetscCall(MatSetOption(F->Xs, MAT_SPD, PETSC_TRUE));
+  PetscCall(KSPSetOperators(F->kz, F->Xs, F->Xs));
+  PetscFunctionReturn(0);
+}
+
+/* b = D^T (M_F w), w = (0, v) per face */
+static PetscErrorCode RightHandSide(CSConformalFlow F, Vec vf, Vec b)
+{
+  Vec                w;
+  const PetscScalar *v, *mf;
+  PetscScalar       *wa;
+  PetscInt           nf4;
+  PetscFunctionBeginUser;
+  PetscCall(VecDuplicate(F->MF, &w));
+  PetscCall(VecGetLocalSize(w, &nf4));
+  PetscCall(VecGetArrayRead(vf, &v));
+  PetscCall(VecGetArrayRead(F->MF, &mf));
+  PetscCall(VecGetArray(w, &wa));
+  for (PetscInt k = 0; k < nf4 / 4; k++) {
+    wa[4 * k] = 0;
+    for (int d = 0; d < 3; d++) wa[4 * k + 1 + d] = mf[4 * k + 1 + d] * v[3 * k + d];
+  }
+  PetscCall(VecRestoreArray(w, &wa));
+  PetscCall(VecRestoreArrayRead(F->MF, &mf));
+  PetscCall(VecRestoreArrayRead(vf, &v));
+  PetscCall(MatMultTranspose(F->Dface, w, b));
+  PetscCall(VecDestroy(&w));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode SolveZ(CSConformalFlow F, Vec b, Vec Z)
+{
+  KSPConvergedReason r;
+  PetscFunctionBeginUser;
+  PetscCall(VecSet(Z, 0));
+  PetscCall(VecCopy(b, F->zr));
+  for (int pass = 0; pass < 4; pass++) { /* Z <- Z + Xs^{-1} (b - X0 Z) */
+    PetscCall(KSPSolve(F->kz, F->zr, F->zt));
+    PetscCall(KSPGetConvergedReason(F->kz, &r));
+    PetscCheck(r >= 0, F->hdr.comm, PETSC_ERR_NOT_CONVERGED, "conformal flow: the exactness solve X Z = D^* v (-%sexactness_ksp_*) failed: %s", F->hdr.prefix, KSPConvergedReasons[r]);
+    PetscCall(VecAXPY(Z, 1, F->zt));
+    PetscCall(MatMult(F->X0, Z, F->zr));
+    PetscCall(VecAYPX(F->zr, -1, b));
+  }
+  PetscFunctionReturn(0);
+}
+
+/* c[nc + 3i + d] = Z_i^{x,y,z}; *n = 3 * 2g */
+PetscErrorCode CSConformalFlowExactnessFunctions(CSConformalFlow F, PetscInt *n)
+{
+  PetscFunctionBeginUser;
+  *n = 0;
+  if (!F->exactness || !F->ng) PetscFunctionReturn(0);
+  PetscCall(CSHarmonicBasisUpdate(F->hb, F->x));
+  PetscCall(Operators(F));
+  for (PetscInt i = 0; i < F->ng; i++) {
+    Vec                vf;
+    const PetscScalar *z;
+    PetscInt           nl;
+    PetscCall(CSHarmonicBasisGetFaceVectors(F->hb, i, &vf));
+    PetscCall(RightHandSide(F, vf, F->zb));
+    PetscCall(SolveZ(F, F->zb, F->Z[i]));
+    PetscCall(VecGetLocalSize(F->area, &nl));
+    PetscCall(VecGetArrayRead(F->Z[i], &z));
+    for (int d = 0; d < 3; d++) {
+      PetscScalar *c;
+      PetscCall(VecGetArray(F->c[F->nc + *n], &c));
+      for (PetscInt j = 0; j < nl; j++) c[j] = z[4 * j + 1 + d];
+      PetscCall(VecRestoreArray(F->c[F->nc + *n], &c));
+      (*n)++;
+    }
+    PetscCall(VecRestoreArrayRead(F->Z[i], &z));
+  }
+  PetscFunctionReturn(0);
+}
+
+/* beta_d on every local edge (edgeVert[2e] -> edgeVert[2e+1]) from the local positions and lambda */
+static PetscErrorCode TransformedEdges(CSConformalFlow F, Vec beta[3])
+{
+  CSMesh             m = F->mesh;
+  Vec                xl, ll, bl[3];
+  const PetscReal   *p;
+  const PetscScalar *l;
+  PetscScalar       *b[3];
+  PetscFunctionBeginUser;
+  PetscCall(CSMeshGetLocalPositions(m, F->x, &xl, &p));
+  PetscCall(DMGetLocalVector(F->spin->dm, &ll));
+  PetscCall(DMGlobalToLocal(F->spin->dm, F->lambda, INSERT_VALUES, ll));
+  PetscCall(VecGetArrayRead(ll, &l));
+  for (int d = 0; d < 3; d++) {
+    PetscCall(DMGetLocalVector(m->dmE1, &bl[d]));
+    PetscCall(VecGetArray(bl[d], &b[d]));
+  }
+  for (PetscInt e = 0; e < m->ne; e++) {
+    PetscInt  i = m->edgeVert[2 * e], j = m->edgeVert[2 * e + 1];
+    PetscReal li[4], lj[4], ed[3], et[3];
+    for (int q = 0; q < 4; q++) {
+      li[q] = PetscRealPart(l[4 * i + q]);
+      lj[q] = PetscRealPart(l[4 * j + q]);
+    }
+    CSVecSub(p + 3 * j, p + 3 * i, ed);
+    CSSpinTransformedEdge(li, lj, ed, et);
+    for (int d = 0; d < 3; d++) b[d][e] = et[d];
+  }
+  for (int d = 0; d < 3; d++) {
+    PetscCall(VecRestoreArray(bl[d], &b[d]));
+    PetscCall(DMLocalToGlobal(m->dmE1, bl[d], INSERT_VALUES, beta[d]));
+    PetscCall(DMRestoreLocalVector(m->dmE1, &bl[d]));
+  }
+  PetscCall(VecRestoreArrayRead(ll, &l));
+  PetscCall(DMRestoreLocalVector(F->spin->dm, &ll));
+  PetscCall(CSMeshRestoreLocalPositions(m, F->x, &xl, &p));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSConformalFlowClosingError(CSConformalFlow F, PetscReal *err)
+{
+  Vec          beta[3], star1, t;
+  PetscScalar *c;
+  PetscReal    num = 0, den = 0;
+  PetscFunctionBeginUser;
+  *err = 0;
+  if (!F->ng) PetscFunctionReturn(0);
+  if (!F->exactness) PetscCall(CSHarmonicBasisUpdate(F->hb, F->x)); /* else updated by the constraint step */
+  PetscCall(PetscMalloc1(F->ng, &c));
+  PetscCall(DMCreateGlobalVector(F->mesh->dmE1, &star1));
+  PetscCall(VecDuplicate(star1, &t));
+  for (int d = 0; d < 3; d++) PetscCall(VecDuplicate(star1, &beta[d]));
+  PetscCall(CSOperatorHodgeStar1(F->mesh, F->x, star1));
+  PetscCall(TransformedEdges(F, beta));
+  for (int d = 0; d < 3; d++) {
+    PetscScalar bb;
+    PetscCall(CSHarmonicBasisInner(F->hb, beta[d], c));
+    for (PetscInt i = 0; i < F->ng; i++) num += PetscRealPart(c[i] * c[i]);
+    PetscCall(VecPointwiseMult(t, star1, beta[d]));
+    PetscCall(VecDot(t, beta[d], &bb));
+    den += PetscRealPart(bb);
+  }
+  *err = den > 0 ? PetscSqrtReal(num / den) : 0;
+  for (int d = 0; d < 3; d++) PetscCall(VecDestroy(&beta[d]));
+  PetscCall(VecDestroy(&t));
+  PetscCall(VecDestroy(&star1));
+  PetscCall(PetscFree(c));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSConformalFlowExactnessDestroy(CSConformalFlow F)
+{
+  PetscFunctionBeginUser;
+  if (F->Z)
+    for (PetscInt i = 0; i < F->ng; i++) PetscCall(VecDestroy(&F->Z[i]));
+  PetscCall(PetscFree(F->Z));
+  {
+    Vec *vs[] = {&F->zr, &F->zt, &F->zb, &F->M4, &F->MF};
+    for (size_t k = 0; k < sizeof(vs) / sizeof(vs[0]); k++) PetscCall(VecDestroy(vs[k]));
+  }
+  PetscCall(MatDestroy(&F->X0));
+  PetscCall(MatDestroy(&F->Xs));
+  PetscCall(MatDestroy(&F->Dface));
+  PetscCall(KSPDestroy(&F->kz));
+  PetscCall(CSHarmonicBasisDestroy(&F->hb));
+  PetscFunctionReturn(0);
+}
