@@ -54,12 +54,13 @@ typedef enum {
    (the paper's |mu|^2 with the signed H); gamma = the eigenvalue of the last step; q_mean, q_max against the
    input (crane2011 Sec. 6.1); area; res_total, res_inversion, res_exact = the largest |<<v, c>>| / (|v| |c|) of
    the projected direction against 1, N^x,y,z and the Z_i^x,y,z (App. B, D, C); closing = the last step's closing
-   error |harmonic part of conj(lambda) df lambda| / |conj(lambda) df lambda| (genus >= 1, App. C); vnorm = |v| (the step's direction before tau); tau; seconds of
+   error |harmonic part of conj(lambda) df lambda| / |conj(lambda) df lambda| (genus >= 1, App. C);
+   log_area_spread = the area-weighted standard deviation of log(A_i / A_i of the input) (App. E); vnorm = |v| (the step's direction before tau); tau; seconds of
    the last step and since the start. */
 typedef struct {
   CSConformalMonitorEvent event;
   PetscInt                it;
-  PetscReal               W, EH, gamma, q_mean, q_max, area, res_total, res_inversion, res_exact, closing, vnorm, tau;
+  PetscReal               W, EH, gamma, q_mean, q_max, area, res_total, res_inversion, res_exact, closing, log_area_spread, vnorm, tau;
   PetscReal               step_seconds, seconds;
 } CSConformalMonitorInfo;
 typedef PetscErrorCode (*CSConformalFlowMonitorFn)(CSConformalFlow, const CSConformalMonitorInfo *, void *);

@@ -22,7 +22,7 @@ static PetscErrorCode MonitorHistory(CSConformalFlow flow, const CSConformalMoni
 {
   HistoryCtx *H = (HistoryCtx *)ctx;
   Vec         x;
-  PetscReal   Wbs, row[16];
+  PetscReal   Wbs, row[17];
   PetscFunctionBeginUser;
   if (s->event == CS_CONFORMAL_MONITOR_END) PetscFunctionReturn(0);
   PetscCall(CSConformalFlowGetSolution(flow, &x));
@@ -39,11 +39,12 @@ static PetscErrorCode MonitorHistory(CSConformalFlow flow, const CSConformalMoni
   row[9]  = s->res_inversion;
   row[10] = s->res_exact;
   row[11] = s->closing;
-  row[12] = s->vnorm;
-  row[13] = s->tau;
-  row[14] = s->event == CS_CONFORMAL_MONITOR_STEP ? s->step_seconds : 0;
-  row[15] = s->seconds;
-  PetscCall(CSHistoryAppend(H->hist, 16, row));
+  row[12] = s->log_area_spread;
+  row[13] = s->vnorm;
+  row[14] = s->tau;
+  row[15] = s->event == CS_CONFORMAL_MONITOR_STEP ? s->step_seconds : 0;
+  row[16] = s->seconds;
+  PetscCall(CSHistoryAppend(H->hist, 17, row));
   PetscFunctionReturn(0);
 }
 
@@ -65,7 +66,7 @@ PetscErrorCode CSConformalFlowMonitorSetHistory(CSConformalFlow flow, CSOutput *
   if (!out->has_history) PetscFunctionReturn(0);
   PetscCall(CSConformalFlowGetMesh(flow, &mesh));
   PetscCall(PetscNew(&H));
-  PetscCall(CSOutputHistoryCreate(out, mesh->comm, "it,willmore,willmore_bs,E_H,gamma,q_mean,q_max,area,res_total,res_inversion,res_exact,closing_error,vnorm,tau,step_seconds,seconds", 0, &H->hist));
+  PetscCall(CSOutputHistoryCreate(out, mesh->comm, "it,willmore,willmore_bs,E_H,gamma,q_mean,q_max,area,res_total,res_inversion,res_exact,closing_error,log_area_spread,vnorm,tau,step_seconds,seconds", 0, &H->hist));
   PetscCall(CSEnergyCreateWillmoreBS(mesh, CS_BS_BOUNDARY_FIXED, 1e-6, &H->bs));
   PetscCall(CSConformalFlowMonitorSet(flow, MonitorHistory, H, HistoryDestroy));
   PetscFunctionReturn(0);
@@ -152,6 +153,7 @@ PetscErrorCode CSConformalFlowReport(CSConformalFlow flow, CSOutput *out)
   PetscCall(CSJSONAddReal(out->json, "res_inversion", i.state.res_inversion));
   PetscCall(CSJSONAddReal(out->json, "res_exact", i.state.res_exact));
   PetscCall(CSJSONAddBool(out->json, "exactness", i.exactness));
+  PetscCall(CSJSONAddReal(out->json, "log_area_spread", i.state.log_area_spread));
   PetscCall(CSJSONAddReal(out->json, "closing_error_max", i.closing_max));
   PetscCall(CSJSONAddReal(out->json, "tau", i.tau));
   PetscCall(CSJSONAddReal(out->json, "filter_sigma", i.filter_sigma));

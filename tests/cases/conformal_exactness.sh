@@ -2,23 +2,27 @@
 # on a bumpy torus (R = 3, r = 1, 48 x 24) 4 steps with -flow_exactness (default) against the same run without it:
 # the direction is orthogonal to the Z_i^x,y,z to 1e-12, W falls at every step, and the closing error (the harmonic
 # part of conj(lambda) df lambda) and q_mean are smaller with the constraint (measured 0.036 vs 0.13, 1.12 vs 1.64).
+# Under 2 ranks only the run with the constraint (orthogonality, W falling).
 # nprocs: 1 2
 source tests/lib.sh
 run() { timeout 120 $MPIEXEC "$CS_BIN" -task flow -flow_type conformal -gen torus -gen_torus_R 3 -gen_tube_r 1 -gen_n 48 -gen_m 24 -gen_deform_bump 0.1 -flow_max_it 4 -flow_rtol 0 -flow_curvature_factor 1 "$@"; }
 run -history_csv "$TMP/a.csv" -summary "$TMP/a.json" > "$TMP/log1"
-run -flow_exactness false -history_csv "$TMP/b.csv" -summary "$TMP/b.json" > "$TMP/log2"
+if [ "$NP" = 1 ]; then run -flow_exactness false -history_csv "$TMP/b.csv" -summary "$TMP/b.json" > "$TMP/log2"; fi
 python3 - "$TMP" <<'PY'
 import sys, csv, json
 t = sys.argv[1]
-a = list(csv.DictReader(open(t + '/a.csv'))); b = list(csv.DictReader(open(t + '/b.csv')))
-sa = json.load(open(t + '/a.json')); sb = json.load(open(t + '/b.json'))
+import os
+a = list(csv.DictReader(open(t + '/a.csv'))); sa = json.load(open(t + '/a.json'))
 def report(c, msg):
     print(("ok   " if c else "FAIL ") + msg); return c
-ok = report(sa['genus'] == 1 and sa['exactness'] and not sb['exactness'], f"genus {sa['genus']}, exactness on/off")
+ok = report(sa['genus'] == 1 and sa['exactness'], f"genus {sa['genus']}, exactness on")
 res = max(float(r['res_exact']) for r in a)
 ok &= report(res < 1e-12, f"<<v, Z_i>> / |v| = {res:.1e} (< 1e-12)")
 W = [float(r['willmore']) for r in a]
 ok &= report(all(y < x for x, y in zip(W, W[1:])), "W falls at every step: " + " ".join(f"{w:.3f}" for w in W))
+if not os.path.exists(t + '/b.json'): sys.exit(0 if ok else 1)
+sb = json.load(open(t + '/b.json'))
+ok &= report(not sb['exactness'], "exactness off in the second run")
 ca, cb = sa['closing_error_max'], sb['closing_error_max']
 ok &= report(ca < 0.5 * cb, f"closing error with {ca:.3e} < half of without {cb:.3e}")
 ok &= report(sa['q_mean'] < sb['q_mean'], f"q_mean with {sa['q_mean']:.4f} < without {sb['q_mean']:.4f}")

@@ -184,11 +184,35 @@ PetscErrorCode CSConformalFlowApplyFilter(CSConformalFlow F, Vec v)
   PetscFunctionReturn(0);
 }
 
+/* the area-weighted standard deviation of u = log(A_i / A0_i), the scale factors against the input (App. E) */
+static PetscErrorCode AreaSpread(CSConformalFlow F)
+{
+  const PetscScalar *A, *A0;
+  PetscReal          s[3] = {0, 0, 0}, g[3];
+  PetscInt           n;
+  PetscFunctionBeginUser;
+  PetscCall(VecGetLocalSize(F->area, &n));
+  PetscCall(VecGetArrayRead(F->area, &A));
+  PetscCall(VecGetArrayRead(F->area0, &A0));
+  for (PetscInt i = 0; i < n; i++) {
+    PetscReal u = PetscLogReal(PetscRealPart(A[i] / A0[i]));
+    s[0] += PetscRealPart(A[i]);
+    s[1] += PetscRealPart(A[i]) * u;
+    s[2] += PetscRealPart(A[i]) * u * u;
+  }
+  PetscCall(VecRestoreArrayRead(F->area0, &A0));
+  PetscCall(VecRestoreArrayRead(F->area, &A));
+  PetscCall(MPIU_Allreduce(s, g, 3, MPIU_REAL, MPIU_SUM, F->hdr.comm));
+  F->s.log_area_spread = PetscSqrtReal(PetscMax(0, g[2] / g[0] - PetscSqr(g[1] / g[0])));
+  PetscFunctionReturn(0);
+}
+
 /* E_H = <<H, H>> = the paper's |mu|^2 with the signed H */
 static PetscErrorCode Measures(CSConformalFlow F)
 {
   PetscReal vol;
   PetscFunctionBeginUser;
+  PetscCall(AreaSpread(F));
   PetscCall(CSEnergyValue(F->will, F->x, &F->s.W));
   PetscCall(Dot(F, F->H, F->H, &F->s.EH));
   PetscCall(CSGeometryAreaVolume(F->mesh, F->x, &F->s.area, &vol));
