@@ -112,32 +112,121 @@ static PetscErrorCode SolveZ(CSConformalFlow F, Vec b, Vec Z)
   PetscFunctionReturn(0);
 }
 
+/* The discrete linearisation (default; docs/conformal_flow.md "Exactness"): with lambda = 1 + t l, edge ij's transformed
+   vector (crane2011 Eq. 8) changes by 2 Re(l_m) e + 2 e x Im(l_m), l_m = (l_i + l_j)/2, so the harmonic part
+   <<beta', omega_i>>_*1 . e_d is the linear functional g . l with, per vertex v and edge e = (v, w) of omega's
+   orientation, s_e = *1_e omega_i(e): Re g_v += s_e e_d . e, Im g_v += s_e e_d x e. Owned edges only (each once). */
+static PetscErrorCode FunctionalGradient(CSConformalFlow F, Vec omega, Vec star1, PetscInt d, Vec g)
+{
+  CSMesh             m = F->mesh;
+  Vec                xl, wl, sl;
+  const PetscReal   *p;
+  const PetscScalar *w, *st;
+  CSLocalSum         ls;
+  PetscFunctionBeginUser;
+  PetscCall(CSMeshGetLocalPositions(m, F->x, &xl, &p));
+  PetscCall(DMGetLocalVector(m->dmE1, &wl));
+  PetscCall(DMGetLocalVector(m->dmE1, &sl));
+  PetscCall(DMGlobalToLocal(m->dmE1, omega, INSERT_VALUES, wl));
+  PetscCall(DMGlobalToLocal(m->dmE1, star1, INSERT_VALUES, sl));
+  PetscCall(VecGetArrayRead(wl, &w));
+  PetscCall(VecGetArrayRead(sl, &st));
+  PetscCall(CSLocalSumBegin(F->spin->dm, &ls));
+  for (PetscInt e = 0; e < m->ne; e++) {
+    PetscInt  v[2] = {m->edgeVert[2 * e], m->edgeVert[2 * e + 1]};
+    PetscReal ev[3], ed[3] = {0, 0, 0}, cr[3], se = PetscRealPart(st[e] * w[e]);
+    if (!m->edgeOwned[e]) continue;
+    CSVecSub(p + 3 * v[1], p + 3 * v[0], ev);
+    ed[d] = 1;
+    CSVecCross(ed, ev, cr);
+    for (int k = 0; k < 2; k++) {
+      ls.a[4 * v[k]] += se * ev[d];
+      for (int q = 0; q < 3; q++) ls.a[4 * v[k] + 1 + q] += se * cr[q];
+    }
+  }
+  PetscCall(CSLocalSumEnd(&ls, g));
+  PetscCall(VecRestoreArrayRead(sl, &st));
+  PetscCall(VecRestoreArrayRead(wl, &w));
+  PetscCall(DMRestoreLocalVector(m->dmE1, &sl));
+  PetscCall(DMRestoreLocalVector(m->dmE1, &wl));
+  PetscCall(CSMeshRestoreLocalPositions(m, F->x, &xl, &p));
+  PetscFunctionReturn(0);
+}
+
+/* The linearised eigenproblem X l = D^T M_F (B rho') + gamma' M 1 (App. G with rho = t rho', D 1 = 0) gives
+   g . l = (D X^+ g)^T M_F B rho', so rho' must be <<.,.>>-orthogonal to c = M^{-1} B^T M_F Re(D Z), Z = X^+ g. */
+static PetscErrorCode DiscreteFunction(CSConformalFlow F, Vec Z, Vec c)
+{
+  CSMesh             m = F->mesh;
+  Vec                y;
+  const PetscScalar *ya, *mf;
+  CSLocalSum         ls;
+  PetscFunctionBeginUser;
+  PetscCall(VecDuplicate(F->MF, &y));
+  PetscCall(MatMult(F->Dface, Z, y));
+  PetscCall(VecGetArrayRead(y, &ya));
+  PetscCall(VecGetArrayRead(F->MF, &mf));
+  PetscCall(CSLocalSumBegin(m->dmV1, &ls));
+  for (CSFaceIter f = CS_FACE_ITER_INIT; CSMeshFaceNext(m, NULL, &f);)
+    for (int k = 0; k < 3; k++) ls.a[f.v[k]] += PetscRealPart(mf[4 * f.f] * ya[4 * f.f]) / 3;
+  PetscCall(CSLocalSumEnd(&ls, c));
+  PetscCall(VecRestoreArrayRead(F->MF, &mf));
+  PetscCall(VecRestoreArrayRead(y, &ya));
+  PetscCall(VecPointwiseDivide(c, c, F->area));
+  PetscCall(VecDestroy(&y));
+  PetscFunctionReturn(0);
+}
+
+/* the paper's functions (App. C.1, -flow_exactness_paper): c_d = Im_d Z_i with X Z_i = D^T M_F v_i */
+static PetscErrorCode PaperFunctions(CSConformalFlow F, PetscInt i, Vec c[3])
+{
+  Vec                vf;
+  const PetscScalar *z;
+  PetscInt           nl;
+  PetscFunctionBeginUser;
+  PetscCall(CSHarmonicBasisGetFaceVectors(F->hb, i, &vf));
+  PetscCall(RightHandSide(F, vf, F->zb));
+  PetscCall(SolveZ(F, F->zb, F->Z[i]));
+  PetscCall(VecGetLocalSize(F->area, &nl));
+  PetscCall(VecGetArrayRead(F->Z[i], &z));
+  for (int d = 0; d < 3; d++) {
+    PetscScalar *ca;
+    PetscCall(VecGetArray(c[d], &ca));
+    for (PetscInt j = 0; j < nl; j++) ca[j] = z[4 * j + 1 + d];
+    PetscCall(VecRestoreArray(c[d], &ca));
+  }
+  PetscCall(VecRestoreArrayRead(F->Z[i], &z));
+  PetscFunctionReturn(0);
+}
+
 /* c[nc + 3i + d] = Z_i^{x,y,z}; *n = 3 * 2g */
 PetscErrorCode CSConformalFlowExactnessFunctions(CSConformalFlow F, PetscInt *n)
 {
+  Vec star1 = NULL;
   PetscFunctionBeginUser;
   *n = 0;
   if (!F->exactness || !F->ng) PetscFunctionReturn(0);
   PetscCall(CSHarmonicBasisUpdate(F->hb, F->x));
   PetscCall(Operators(F));
-  for (PetscInt i = 0; i < F->ng; i++) {
-    Vec                vf;
-    const PetscScalar *z;
-    PetscInt           nl;
-    PetscCall(CSHarmonicBasisGetFaceVectors(F->hb, i, &vf));
-    PetscCall(RightHandSide(F, vf, F->zb));
-    PetscCall(SolveZ(F, F->zb, F->Z[i]));
-    PetscCall(VecGetLocalSize(F->area, &nl));
-    PetscCall(VecGetArrayRead(F->Z[i], &z));
-    for (int d = 0; d < 3; d++) {
-      PetscScalar *c;
-      PetscCall(VecGetArray(F->c[F->nc + *n], &c));
-      for (PetscInt j = 0; j < nl; j++) c[j] = z[4 * j + 1 + d];
-      PetscCall(VecRestoreArray(F->c[F->nc + *n], &c));
-      (*n)++;
-    }
-    PetscCall(VecRestoreArrayRead(F->Z[i], &z));
+  if (!F->exactness_paper) {
+    PetscCall(DMCreateGlobalVector(F->mesh->dmE1, &star1));
+    PetscCall(CSOperatorHodgeStar1(F->mesh, F->x, star1));
   }
+  for (PetscInt i = 0; i < F->ng; i++) {
+    Vec *c = F->c + F->nc + 3 * i;
+    if (F->exactness_paper) PetscCall(PaperFunctions(F, i, c));
+    else {
+      Vec omega;
+      PetscCall(CSHarmonicBasisGetForm(F->hb, i, &omega));
+      for (PetscInt d = 0; d < 3; d++) {
+        PetscCall(FunctionalGradient(F, omega, star1, d, F->zb));
+        PetscCall(SolveZ(F, F->zb, F->Z[i]));
+        PetscCall(DiscreteFunction(F, F->Z[i], c[d]));
+      }
+    }
+  }
+  *n = 3 * F->ng;
+  PetscCall(VecDestroy(&star1));
   PetscFunctionReturn(0);
 }
 

@@ -103,6 +103,7 @@ PetscErrorCode CSConformalFlowSetFromOptions(CSConformalFlow F)
   PetscCall(PetscOptionsInt("-filter_k", "Filter order k (0..4)", NULL, F->fk, &F->fk, NULL));
   PetscCall(PetscOptionsBool("-inversion", "Constrain sphere inversions: <<v, N^x,y,z>> = 0 (Sec. 6.2, App. D)", NULL, F->inversion, &F->inversion, NULL));
   PetscCall(PetscOptionsBool("-exactness", "Genus >= 1: constrain <<v, Z_i^x,y,z>> = 0 with D Z_i = v_i for the harmonic vector fields v_i (App. C, C.1)", NULL, F->exactness, &F->exactness, NULL));
+  PetscCall(PetscOptionsBool("-exactness_paper", "Exactness functions as App. C.1 writes them (Im Z_i, D Z_i = v_i) instead of the discrete linearisation of the closing condition", NULL, F->exactness_paper, &F->exactness_paper, NULL));
   PetscCall(PetscOptionsBool("-mobius", "Moebius balancing v += w <a, N> toward the input's area distribution (App. E, E.1)", NULL, F->mobius, &F->mobius, NULL));
   PetscCall(PetscOptionsReal("-mobius_weight", "Moebius balancing: the weight w of the unit-norm direction", NULL, F->mobius_weight, &F->mobius_weight, NULL));
   PetscCall(PetscOptionsReal("-curvature_factor", "c in rho' = -c H: 2 is the gradient of |mu|^2 (Eq. 1, stable for tau < 1); 1 is the paper's (D + tau H) lambda = gamma lambda", NULL, F->hfactor, &F->hfactor, NULL));

@@ -14,7 +14,7 @@ struct _p_CSConformalFlow {
   /* options */
   PetscReal              tau, atol, rtol, egrow, sigma, mobius_weight, hfactor;
   PetscInt               max_it, fk;
-  PetscBool              inversion, mobius, keep_area, exactness;
+  PetscBool              inversion, mobius, keep_area, exactness, exactness_paper;
   CSConformalEigensolver eigensolver;
   /* state: positions (current, input, next), per-vertex areas of the input, the step's fields */
   Vec       x, x0, xnew, area0;
