@@ -5,12 +5,16 @@
 #    the eigenvector of X for rho = 0 and the Poisson step reproduces the input);
 # 3. the round icosphere drifts only by the discretisation: the cotan H of a projected icosphere is not
 #    constant, so 3 steps at tau = 0.95 move it by q_max - 1 that falls at least 2.5x from level 3 to level 4.
-# Under 2 ranks only part 1 (2 and 3 are numerics, the same code path; a process start costs ~2 s there).
+# Under 2 ranks only part 1, compared with a serial run to 1e-9 (2 and 3 are numerics, the same code path).
 # nprocs: 1 2
 source tests/lib.sh
 run() { timeout 120 $MPIEXEC "$CS_BIN" -task flow -flow_type conformal "$@"; }
 run -gen icosphere -gen_level 4 -gen_deform_bump 0.2 -gen_deform_stretch 1.5,1,0.8 -flow_max_it 5 -flow_rtol 0 \
     -history_csv "$TMP/h.csv" -summary "$TMP/s.json" -o "$TMP/out.obj" > "$TMP/log1"
+if [ "$NP" != 1 ]; then # the same answers as serially
+  timeout 120 "$CS_BIN" -task flow -flow_type conformal -gen icosphere -gen_level 4 -gen_deform_bump 0.2 -gen_deform_stretch 1.5,1,0.8 \
+    -flow_max_it 5 -flow_rtol 0 -summary "$TMP/serial.json" > "$TMP/log0"
+fi
 if [ "$NP" = 1 ]; then
 run -gen icosphere -gen_level 3 -flow_tau 1e-12 -flow_max_it 3 -flow_rtol 0 -summary "$TMP/id.json" > "$TMP/log2"
 for l in 3 4; do run -gen icosphere -gen_level $l -flow_max_it 3 -flow_rtol 0 -summary "$TMP/round$l.json" > "$TMP/log3$l"; done
@@ -34,6 +38,11 @@ ok &= report(res < 1e-12, f"constraint residuals <<v,1>>, <<v,N>> relative {res:
 for k in ['iterations', 'converged', 'willmore', 'q_mean', 'q_max', 'seconds_per_step', 'willmore_bs', 'gamma']:
     ok &= report(k in s, f"summary key {k}")
 import os
+if os.path.exists(t + '/serial.json'):
+    r = json.load(open(t + '/serial.json'))
+    for k in ['willmore', 'q_mean', 'q_max', 'area', 'gamma']:
+        d = abs(s[k] - r[k]) / abs(r[k])
+        ok &= report(d < 1e-9, f"{k} on {os.environ.get('NP')} ranks vs 1: relative difference {d:.1e} (< 1e-9)")
 if not os.path.exists(t + '/id.json'): sys.exit(0 if ok else 1)
 i = json.load(open(t + '/id.json'))
 ok &= report(i['q_max'] - 1 < 1e-8, f"identity: q_max - 1 = {i['q_max'] - 1:.2e} (< 1e-8)")

@@ -172,8 +172,13 @@ PetscErrorCode CSConformalFlowApplyFilter(CSConformalFlow F, Vec v)
     PetscCall(KSPAppendOptionsPrefix(F->kspf, "filter_"));
     PetscCall(KSPSetType(F->kspf, KSPPREONLY));
     PetscCall(KSPGetPC(F->kspf, &pc));
-    PetscCall(CSSetDefaultCholesky(pc));
+    /* MUMPS, not CHOLMOD: for k = 3 on a distorted mesh B = M + s L (M^-1 L)^2 is SPD in exact arithmetic but spans
+       so many orders of magnitude that CHOLMOD's supernodal Cholesky met a non-positive pivot (bunny_lowres_npm,
+       options/conformal_fig8_k3.opts, step 3); MUMPS's factorisation with its pivoting does not */
+    PetscCall(PCSetType(pc, PCCHOLESKY));
+    PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
     PetscCall(KSPSetFromOptions(F->kspf));
+    PetscCall(CSSpinMumpsDefaultOrdering(pc, F->B));
   }
   PetscCall(KSPSetOperators(F->kspf, F->B, F->B));
   PetscCall(VecPointwiseMult(F->work, F->area, v)); /* B w = M v */
