@@ -295,13 +295,13 @@ PetscErrorCode CSHarmonicBasisSetUp(CSHarmonicBasis hb)
 {
   PetscFunctionBeginUser;
   if (hb->setup) PetscFunctionReturn(0);
-  PetscCall(PetscLogEventBegin(CS_EVENT_Assemble, 0, 0, 0, 0));
+  PetscCall(PetscLogEventBegin(CS_EVENT_HarmonicBasis, 0, 0, 0, 0));
   if (!hb->dmF3) PetscCall(CSMeshCreateFieldDM(hb->mesh->dm, 2, 3, "face3", &hb->dmF3));
   if (hb->n) { /* genus 0: nothing to compute */
     if (!hb->d0) PetscCall(SetUpTopology(hb));
     PetscCall(SetUpGeometry(hb));
   }
-  PetscCall(PetscLogEventEnd(CS_EVENT_Assemble, 0, 0, 0, 0));
+  PetscCall(PetscLogEventEnd(CS_EVENT_HarmonicBasis, 0, 0, 0, 0));
   hb->setup = PETSC_TRUE;
   PetscFunctionReturn(0);
 }

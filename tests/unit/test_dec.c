@@ -13,15 +13,76 @@
 #include "cs_package.h"
 #include "cs_test.h"
 
-static PetscErrorCode LoadMesh(MPI_Comm comm, const char path[], CSMesh *mesh)
+/* A test mesh: a file (path not NULL) or a generated shape with noise amp */
+typedef struct {
+  const char    *path, *name;
+  CSTestMeshSpec spec;
+  PetscReal      amp;
+  PetscInt       genus;
+} Source;
+
+static PetscErrorCode MakeMesh(MPI_Comm comm, const Source *src, CSMesh *mesh)
 {
   CSMeshData  md;
   PetscMPIInt rank;
   PetscFunctionBeginUser;
+  if (!src->path) {
+    PetscCall(CSTestMesh(comm, src->spec, src->amp, 5, mesh));
+    PetscFunctionReturn(0);
+  }
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   PetscCall(PetscMemzero(&md, sizeof(md)));
-  if (!rank) PetscCall(CSMeshDataRead(path, &md));
+  if (!rank) PetscCall(CSMeshDataRead(src->path, &md));
   PetscCall(CSTestDistribute(comm, &md, 0, 0, mesh));
+  PetscFunctionReturn(0);
+}
+
+/* On several ranks: the forms in file (natural) edge order equal those of the same mesh on rank 0 alone
+   (same random forms, same edge orientations), max |difference|. */
+static PetscErrorCode CompareSerial(CSMesh m, CSHarmonicBasis hb, const Source *src, PetscReal *diff)
+{
+  PetscMPIInt size, rank;
+  PetscInt    n;
+  Vec        *nat;
+  PetscReal   d = 0;
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_size(m->comm, &size));
+  PetscCallMPI(MPI_Comm_rank(m->comm, &rank));
+  *diff = 0;
+  if (size == 1) PetscFunctionReturn(0);
+  PetscCall(CSHarmonicBasisGetSize(hb, &n));
+  PetscCall(PetscMalloc1(n, &nat));
+  for (PetscInt i = 0; i < n; i++) {
+    Vec w, g;
+    PetscCall(CSHarmonicBasisGetForm(hb, i, &w));
+    PetscCall(CSMeshGather(&m->natE1, w, &g));
+    PetscCall(VecDuplicate(g, &nat[i]));
+    PetscCall(VecCopy(g, nat[i]));
+  }
+  if (!rank) {
+    CSMesh          ms;
+    CSHarmonicBasis hs;
+    PetscCall(MakeMesh(PETSC_COMM_SELF, src, &ms));
+    PetscCall(CSHarmonicBasisCreate(ms, ms->x, &hs));
+    for (PetscInt i = 0; i < n; i++) {
+      Vec w, g;
+      PetscCall(CSHarmonicBasisGetForm(hs, i, &w));
+      const PetscScalar *a, *b;
+      PetscInt           len;
+      PetscCall(CSMeshGather(&ms->natE1, w, &g));
+      PetscCall(VecGetLocalSize(g, &len));
+      PetscCall(VecGetArrayRead(nat[i], &a)); /* the gathered vector lives on m->comm: no collective calls here */
+      PetscCall(VecGetArrayRead(g, &b));
+      for (PetscInt k = 0; k < len; k++) d = PetscMax(d, PetscAbsScalar(a[k] - b[k]));
+      PetscCall(VecRestoreArrayRead(g, &b));
+      PetscCall(VecRestoreArrayRead(nat[i], &a));
+    }
+    PetscCall(CSHarmonicBasisDestroy(&hs));
+    PetscCall(CSMeshDestroy(&ms));
+  }
+  PetscCall(MPIU_Allreduce(&d, diff, 1, MPIU_REAL, MPIU_MAX, m->comm));
+  for (PetscInt i = 0; i < n; i++) PetscCall(VecDestroy(&nat[i]));
+  PetscCall(PetscFree(nat));
   PetscFunctionReturn(0);
 }
 
@@ -166,15 +227,19 @@ static PetscErrorCode CheckResiduals(MPI_Comm comm, CSHarmonicBasis hb, const ch
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode CheckBasis(CSMesh m, const char name[], PetscInt genus)
+static PetscErrorCode CheckBasis(MPI_Comm comm, const Source *src)
 {
   CSHarmonicBasis hb, hb2;
-  PetscInt        n, chi = m->Nv - m->Ne + m->Nf;
+  CSMesh          m;
+  const char     *name  = src->name;
+  PetscInt        genus = src->genus, n, chi;
   PetscLogDouble  t0, t1;
   Vec             star1, x2;
   PetscReal       d, tang = 0, repro = 0;
   char            what[160];
   PetscFunctionBeginUser;
+  PetscCall(MakeMesh(comm, src, &m));
+  chi = m->Nv - m->Ne + m->Nf;
   PetscCall(CheckOperators(m, name));
   PetscCall(PetscTime(&t0));
   PetscCall(CSHarmonicBasisCreate(m, m->x, &hb));
@@ -219,11 +284,15 @@ static PetscErrorCode CheckBasis(CSMesh m, const char name[], PetscInt genus)
     PetscCall(SpanDistance(hb, hb2, star1, &d));
     PetscCall(PetscSNPrintf(what, sizeof(what), "%s: basis at 2x spans the same space", name));
     PetscCall(CSTestCheck(m->comm, (PetscBool)(d < 1e-11), what, d, 1e-11));
+    PetscCall(CompareSerial(m, hb, src, &d));
+    PetscCall(PetscSNPrintf(what, sizeof(what), "%s: the same forms (file order) as on one rank", name));
+    PetscCall(CSTestCheck(m->comm, (PetscBool)(d < 1e-11), what, d, 1e-11));
     PetscCall(VecDestroy(&x2));
     PetscCall(VecDestroy(&star1));
     PetscCall(CSHarmonicBasisDestroy(&hb2));
   }
   PetscCall(CSHarmonicBasisDestroy(&hb));
+  PetscCall(CSMeshDestroy(&m));
   PetscFunctionReturn(0);
 }
 
@@ -245,25 +314,19 @@ static PetscErrorCode CheckBoundaryRefused(MPI_Comm comm)
 
 int main(int argc, char **argv)
 {
-  MPI_Comm    comm;
-  CSMesh      m;
-  const char *files[]  = {"meshes/knot1_cgal.obj", "meshes/eight_cgal.obj", "meshes/elephant_cgal.obj"};
-  PetscInt    genera[] = {1, 2, 3};
+  MPI_Comm     comm;
+  const Source src[] = {
+    {NULL,                        "icosphere 3",       {CS_TEST_ICOSPHERE, 3, 0, 0, 0},     0,    0},
+    {NULL,                        "torus 24x12 bumpy", {CS_TEST_TORUS, 24, 12, 3.0, 1.0}, 0.02, 1},
+    {"meshes/knot1_cgal.obj",     "knot1_cgal",        {0},                                 0,    1},
+    {"meshes/eight_cgal.obj",     "eight_cgal",        {0},                                 0,    2},
+    {"meshes/elephant_cgal.obj",  "elephant_cgal",     {0},                                 0,    3},
+  };
   PetscFunctionBeginUser;
   PetscCall(PetscInitialize(&argc, &argv, NULL, NULL));
   comm = PETSC_COMM_WORLD;
   PetscCall(CSInitializePackage()); /* the PC cssubchol of the parallel solves */
-  PetscCall(CSTestMesh(comm, (CSTestMeshSpec){CS_TEST_ICOSPHERE, 3, 0, 0, 0}, 0, 0, &m));
-  PetscCall(CheckBasis(m, "icosphere 3", 0));
-  PetscCall(CSMeshDestroy(&m));
-  PetscCall(CSTestMesh(comm, (CSTestMeshSpec){CS_TEST_TORUS, 24, 12, 3.0, 1.0}, 0.02, 5, &m));
-  PetscCall(CheckBasis(m, "torus 24x12 bumpy", 1));
-  PetscCall(CSMeshDestroy(&m));
-  for (int k = 0; k < 3; k++) {
-    PetscCall(LoadMesh(comm, files[k], &m));
-    PetscCall(CheckBasis(m, files[k], genera[k]));
-    PetscCall(CSMeshDestroy(&m));
-  }
+  for (size_t k = 0; k < sizeof(src) / sizeof(src[0]); k++) PetscCall(CheckBasis(comm, &src[k]));
   PetscCall(CheckBoundaryRefused(comm));
   return CSTestFinalize(comm, PetscFinalize);
 }
