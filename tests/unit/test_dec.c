@@ -122,7 +122,7 @@ static PetscErrorCode CheckOperators(CSMesh m, const char name[])
 }
 
 /* Face vectors: max |<v, N>| / |v| and max_f,a |<v, p_{a+2} - p_{a+1}> - s_a w_e| / max|w|. */
-static PetscErrorCode CheckFaceVectors(CSMesh m, CSHarmonicBasis hb, PetscInt i, PetscReal *tang, PetscReal *repro)
+static PetscErrorCode CheckFaceVectors(CSMesh m, Vec x, CSHarmonicBasis hb, PetscInt i, PetscReal *tang, PetscReal *repro)
 {
   Vec                om, ol, v, xl;
   DM                 dmF3;
@@ -136,7 +136,7 @@ static PetscErrorCode CheckFaceVectors(CSMesh m, CSHarmonicBasis hb, PetscInt i,
   PetscCall(VecNorm(om, NORM_INFINITY, &wmax));
   PetscCall(DMGetLocalVector(m->dmE1, &ol));
   PetscCall(DMGlobalToLocal(m->dmE1, om, INSERT_VALUES, ol));
-  PetscCall(CSMeshGetLocalPositions(m, m->x, &xl, &p));
+  PetscCall(CSMeshGetLocalPositions(m, x, &xl, &p));
   PetscCall(VecGetArrayRead(ol, &o));
   PetscCall(VecGetArrayRead(v, &va)); /* local face f is block f (overlap 0) */
   for (CSFaceIter F = CS_FACE_ITER_INIT; CSMeshFaceNext(m, p, &F);) {
@@ -152,7 +152,7 @@ static PetscErrorCode CheckFaceVectors(CSMesh m, CSHarmonicBasis hb, PetscInt i,
   }
   PetscCall(VecRestoreArrayRead(v, &va));
   PetscCall(VecRestoreArrayRead(ol, &o));
-  PetscCall(CSMeshRestoreLocalPositions(m, m->x, &xl, &p));
+  PetscCall(CSMeshRestoreLocalPositions(m, x, &xl, &p));
   PetscCall(DMRestoreLocalVector(m->dmE1, &ol));
   PetscCall(MPIU_Allreduce(&t, tang, 1, MPIU_REAL, MPIU_MAX, m->comm));
   PetscCall(MPIU_Allreduce(&r, repro, 1, MPIU_REAL, MPIU_MAX, m->comm));
@@ -267,7 +267,7 @@ static PetscErrorCode CheckBasis(MPI_Comm comm, const Source *src)
     PetscCall(CSTestCheck(m->comm, (PetscBool)(d < 1e-12), what, d, 1e-12));
     for (PetscInt i = 0; i < n; i++) {
       PetscReal ti, ri;
-      PetscCall(CheckFaceVectors(m, hb, i, &ti, &ri));
+      PetscCall(CheckFaceVectors(m, m->x, hb, i, &ti, &ri));
       tang  = PetscMax(tang, ti);
       repro = PetscMax(repro, ri);
     }
@@ -284,6 +284,18 @@ static PetscErrorCode CheckBasis(MPI_Comm comm, const Source *src)
     PetscCall(SpanDistance(hb, hb2, star1, &d));
     PetscCall(PetscSNPrintf(what, sizeof(what), "%s: basis at 2x spans the same space", name));
     PetscCall(CSTestCheck(m->comm, (PetscBool)(d < 1e-11), what, d, 1e-11));
+    /* the same forms at 2x: face vectors halved, still reproducing the forms at 2x */
+    PetscCall(CSHarmonicBasisUpdateFaceVectors(hb, x2));
+    tang = repro = 0;
+    for (PetscInt i = 0; i < n; i++) {
+      PetscReal ti, ri;
+      PetscCall(CheckFaceVectors(m, x2, hb, i, &ti, &ri));
+      tang  = PetscMax(tang, ti);
+      repro = PetscMax(repro, ri);
+    }
+    PetscCall(PetscSNPrintf(what, sizeof(what), "%s: UpdateFaceVectors(2x): tangent, reproducing w", name));
+    PetscCall(CSTestCheck(m->comm, (PetscBool)(tang < 1e-12 && repro < 1e-12), what, PetscMax(tang, repro), 1e-12));
+    PetscCall(CSHarmonicBasisUpdateFaceVectors(hb, m->x));
     PetscCall(CompareSerial(m, hb, src, &d));
     PetscCall(PetscSNPrintf(what, sizeof(what), "%s: the same forms (file order) as on one rank", name));
     PetscCall(CSTestCheck(m->comm, (PetscBool)(d < 1e-11), what, d, 1e-11));
