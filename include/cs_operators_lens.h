@@ -1,0 +1,38 @@
+/* Triangle fields and the lens complex of soliman2021 Sec. 5.1, 5.2, App. A, D.1 (docs/dec.md, "Lens complex").
+
+   Index maps. The lens complex has V~ = V, E~ = H (halfedges), F~ = E u F (a lens per edge, the triangles).
+   A halfedge is an edge with a side: h = (e, s), s = 0 the halfedge running along e's orientation
+   (edgeVert[2e] -> edgeVert[2e+1]) in the face on side 0 (cs_mesh_adjacency.h), s = 1 the opposite one in the
+   face on side 1; twin(e, s) = (e, 1 - s). Halfedge fields live on the edges: a scalar per halfedge is dof s of
+   edge e (local index 2e + s, CSLensCreateHalfedgeDM with dof 1), a vector (a triangle field omega_ij in R^3) is
+   dofs 3s..3s+2 (local index 6e + 3s + c, dof 3). So twin, next and previous halfedges of a face are always in the
+   local closure, on any number of ranks. In face f the halfedge opposite corner a (running v[a+1] -> v[a+2]) is
+   (faceEdge[3f+a], CSMeshEdgeSide(mesh, F, a)); its next is the one opposite corner a+1, its previous the one
+   opposite corner a+2. Lenses are edges (dmE1), triangles faces (dmF1). */
+#ifndef CS_OPERATORS_LENS_H
+#define CS_OPERATORS_LENS_H
+#include "cs_operators_dec.h"
+
+/* mesh->dm with 2*dof unknowns per edge: dof per halfedge (1: scalar, e.g. log lengths; 3: triangle fields). */
+PETSC_EXTERN PetscErrorCode CSLensCreateHalfedgeDM(CSMesh mesh, PetscInt dof, DM *dmH);
+
+/* A~ (soliman2021 Eq. 14): H x V, (A~ u)_ij = (u_i + u_j)/2. Rows of dmH (dof 1), columns dmV1. */
+PETSC_EXTERN PetscErrorCode CSOperatorLensAverage(CSMesh mesh, DM dmH, Mat *A);
+/* C~ (soliman2021 Eq. 14, per face Eq. 30): H x H, (C~ lambda)_ij = log m(l)_ij
+     = (lambda_il - lambda_lj + lambda_jk - lambda_ki) + (lambda_ji - lambda_ij),
+   ijk the face of ij, jil the face of ji. C~ A~ = 0 and rank C~ = |H| - |V| (Lemma A.1). */
+PETSC_EXTERN PetscErrorCode CSOperatorLensCrossRatio(CSMesh mesh, DM dmH, Mat *C);
+/* The lens integrability d1 (soliman2021 Eq. 31, Sec. 5.1): E x H, (d1 omega)_e = -(omega_(e,0) + omega_(e,1)),
+   scalar (apply it per component of a triangle field). */
+PETSC_EXTERN PetscErrorCode CSOperatorLensD1(CSMesh mesh, DM dmH, Mat *d1);
+
+/* omega = df: omega_(e,s) = f_head - f_tail of the halfedge (dmH with dof 3, global vector). */
+PETSC_EXTERN PetscErrorCode CSTriangleFieldFromPositions(CSMesh mesh, Vec x, DM dmH3, Vec omega);
+/* Log halfedge lengths lambda_h = log |omega_h| (dmH3 -> dmH1 global vectors). */
+PETSC_EXTERN PetscErrorCode CSTriangleFieldLogLengths(CSMesh mesh, DM dmH3, Vec omega, DM dmH1, Vec lambda);
+/* The triangle-field Willmore energy (soliman2021 App. D.1) W~(omega) = 1/4 <d*omega, d*omega>
+   = 1/4 sum_i |sum_ij w_ij omega_ij|^2 / A_i with the cotans and areas of the triangle field's own triangles;
+   W~(df) = W(f). */
+PETSC_EXTERN PetscErrorCode CSTriangleFieldWillmore(CSMesh mesh, DM dmH3, Vec omega, PetscReal *W);
+
+#endif

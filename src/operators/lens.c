@@ -1,0 +1,79 @@
+/* The lens complex of soliman2021 Sec. 5 / App. A as halfedge fields on the edges (include/cs_operators_lens.h):
+   the averaging map A~, the length multi-ratio map C~ and the lens integrability d1. */
+#include "cs_operators_lens.h"
+#include "cs_mesh_adjacency.h"
+
+PetscErrorCode CSLensCreateHalfedgeDM(CSMesh m, PetscInt dof, DM *dmH)
+{
+  PetscFunctionBeginUser;
+  PetscCall(CSMeshCreateFieldDM(m->dm, 1, 2 * dof, dof == 1 ? "halfedge" : "halfedge_vector", dmH));
+  PetscFunctionReturn(0);
+}
+
+/* (A~ u)_(e,s) = (u_i + u_j)/2 for both halfedges of every owned edge. */
+PetscErrorCode CSOperatorLensAverage(CSMesh m, DM dmH, Mat *A)
+{
+  PetscFunctionBeginUser;
+  PetscCall(CSOperatorCreatePointMatrix(dmH, m->dmV1, 2, A));
+  for (PetscInt e = 0; e < m->ne; e++) {
+    PetscScalar v[2] = {0.5, 0.5};
+    if (!m->edgeOwned[e]) continue;
+    for (PetscInt s = 0; s < 2; s++) {
+      PetscInt row = 2 * e + s;
+      PetscCall(MatSetValuesLocal(*A, 1, &row, 2, m->edgeVert + 2 * e, v, INSERT_VALUES));
+    }
+  }
+  PetscCall(MatAssemblyBegin(*A, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(*A, MAT_FINAL_ASSEMBLY));
+  PetscFunctionReturn(0);
+}
+
+/* (C~ lambda)_ij = (lambda_jk - lambda_ki) + (lambda_il - lambda_lj) + (lambda_ji - lambda_ij): the first bracket
+   is next minus previous of ij in its face ijk, the second next minus previous of ji in its face jil. So each
+   face adds, for each of its halfedges h with next n and previous p, +1 at n and -1 at p to the rows of h and of
+   twin(h); every owned edge adds the last bracket to its two rows.
+   The printed per-face matrix Eq. 30 has rows jk and ki of Eq. 24 (0 on the diagonal) and only row ij changed to
+   (-1, 1, -1): that is not invariant under relabelling the face (ij -> jk -> ki) and does not give Eq. 14's
+   log m, whose halfedge term lambda_ji - lambda_ij couples the two faces of an edge. We assemble Eq. 14 as
+   written; tests/unit/test_lens.c checks C~ A~ = 0 and rank C~ = |H| - |V| (Lemma A.1). */
+PetscErrorCode CSOperatorLensCrossRatio(CSMesh m, DM dmH, Mat *C)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(CS_EVENT_Assemble, 0, 0, 0, 0));
+  PetscCall(CSOperatorCreatePointMatrix(dmH, dmH, 6, C));
+  for (CSFaceIter F = CS_FACE_ITER_INIT; CSMeshFaceNext(m, NULL, &F);) {
+    PetscInt h[3];
+    for (int a = 0; a < 3; a++) h[a] = 2 * F.e[a] + CSMeshEdgeSide(m, &F, a);
+    for (int a = 0; a < 3; a++) {
+      PetscInt    rows[2] = {h[a], h[a] ^ 1}, cols[2] = {h[(a + 1) % 3], h[(a + 2) % 3]}; /* h ^ 1: the twin */
+      PetscScalar v[4]    = {1.0, -1.0, 1.0, -1.0};
+      PetscCall(MatSetValuesLocal(*C, 2, rows, 2, cols, v, ADD_VALUES));
+    }
+  }
+  for (PetscInt e = 0; e < m->ne; e++) {
+    PetscInt    rc[2] = {2 * e, 2 * e + 1};
+    PetscScalar v[4]  = {-1.0, 1.0, 1.0, -1.0};
+    if (!m->edgeOwned[e]) continue;
+    PetscCall(MatSetValuesLocal(*C, 2, rc, 2, rc, v, ADD_VALUES));
+  }
+  PetscCall(MatAssemblyBegin(*C, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(*C, MAT_FINAL_ASSEMBLY));
+  PetscCall(PetscLogEventEnd(CS_EVENT_Assemble, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+/* (d1 omega)_e = -(omega_(e,0) + omega_(e,1)) (Sec. 5.1; Eq. 31's +-1 with the lens oriented so). */
+PetscErrorCode CSOperatorLensD1(CSMesh m, DM dmH, Mat *d1)
+{
+  PetscFunctionBeginUser;
+  PetscCall(CSOperatorCreatePointMatrix(m->dmE1, dmH, 2, d1));
+  for (PetscInt e = 0; e < m->ne; e++) {
+    PetscInt    cols[2] = {2 * e, 2 * e + 1};
+    PetscScalar v[2]    = {-1.0, -1.0};
+    if (!m->edgeOwned[e]) continue;
+    PetscCall(MatSetValuesLocal(*d1, 1, &e, 2, cols, v, INSERT_VALUES));
+  }
+  PetscCall(MatAssemblyBegin(*d1, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(*d1, MAT_FINAL_ASSEMBLY));
+  PetscFunctionReturn(0);
+}

@@ -1,0 +1,98 @@
+/* Triangle fields omega (halfedge vectors, soliman2021 Sec. 5.1) on the halfedge layout of
+   include/cs_operators_lens.h: from positions, their log lengths, and the extended Willmore energy of App. D.1. */
+#include "cs_operators_lens.h"
+#include "cs_mesh_adjacency.h"
+
+PetscErrorCode CSTriangleFieldFromPositions(CSMesh m, Vec x, DM dmH3, Vec omega)
+{
+  Vec              xl, ol;
+  const PetscReal *p;
+  PetscScalar     *o;
+  PetscFunctionBeginUser;
+  PetscCall(CSMeshGetLocalPositions(m, x, &xl, &p));
+  PetscCall(DMGetLocalVector(dmH3, &ol));
+  PetscCall(VecGetArray(ol, &o));
+  for (PetscInt e = 0; e < m->ne; e++) {
+    PetscReal d[3];
+    CSVecSub(p + 3 * m->edgeVert[2 * e + 1], p + 3 * m->edgeVert[2 * e], d);
+    for (int c = 0; c < 3; c++) {
+      o[6 * e + c]     = d[c];  /* side 0 runs along the edge */
+      o[6 * e + 3 + c] = -d[c]; /* side 1 against it */
+    }
+  }
+  PetscCall(VecRestoreArray(ol, &o));
+  PetscCall(DMLocalToGlobal(dmH3, ol, INSERT_VALUES, omega));
+  PetscCall(DMRestoreLocalVector(dmH3, &ol));
+  PetscCall(CSMeshRestoreLocalPositions(m, x, &xl, &p));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSTriangleFieldLogLengths(CSMesh m, DM dmH3, Vec omega, DM dmH1, Vec lambda)
+{
+  PetscInt           n;
+  const PetscScalar *o;
+  PetscScalar       *l;
+  PetscFunctionBeginUser;
+  PetscCall(VecGetLocalSize(lambda, &n));
+  PetscCall(VecGetArrayRead(omega, &o));
+  PetscCall(VecGetArray(lambda, &l));
+  for (PetscInt h = 0; h < n; h++) {
+    PetscReal w[3] = {PetscRealPart(o[3 * h]), PetscRealPart(o[3 * h + 1]), PetscRealPart(o[3 * h + 2])};
+    l[h]           = PetscLogReal(CSVecNorm(w));
+  }
+  PetscCall(VecRestoreArray(lambda, &l));
+  PetscCall(VecRestoreArrayRead(omega, &o));
+  PetscFunctionReturn(0);
+}
+
+/* Per face the halfedge vectors w[a] (opposite corner a, running v[a+1] -> v[a+2]): the edges leaving corner a
+   are w[a+2] and -w[a+1], so cot(theta_a) = <w[a+2], -w[a+1]> / |w[a+2] x w[a+1]| and the area is
+   |w[a+2] x w[a+1]|/2. Halfedge a adds 1/2 cot(theta_a) w[a] to Y at its tail v[a+1] and subtracts it at its head
+   v[a+2]: for w = df that is Y_i = sum_j w_ij (f_j - f_i) = -(L f)_i. A_i gets a third of the area. */
+static void AddFace(const PetscReal w[3][3], const PetscInt v[3], PetscScalar *Y, PetscScalar *A)
+{
+  PetscReal n[3], an;
+  CSVecCross(w[2], w[1], n);
+  an = CSVecNorm(n);
+  for (int a = 0; a < 3; a++) {
+    PetscReal cot = -CSVecDot(w[(a + 2) % 3], w[(a + 1) % 3]) / an;
+    PetscInt  t = v[(a + 1) % 3], h = v[(a + 2) % 3];
+    for (int d = 0; d < 3; d++) {
+      Y[3 * t + d] += 0.5 * cot * w[a][d];
+      Y[3 * h + d] -= 0.5 * cot * w[a][d];
+    }
+    A[v[a]] += an / 6;
+  }
+}
+
+PetscErrorCode CSTriangleFieldWillmore(CSMesh m, DM dmH3, Vec omega, PetscReal *W)
+{
+  Vec                ol;
+  CSLocalSum         sy, sa;
+  const PetscScalar *o;
+  PetscReal          loc = 0;
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLocalVector(dmH3, &ol));
+  PetscCall(DMGlobalToLocal(dmH3, omega, INSERT_VALUES, ol));
+  PetscCall(VecGetArrayRead(ol, &o));
+  PetscCall(CSLocalSumBegin(m->dmV3, &sy));
+  PetscCall(CSLocalSumBegin(m->dmV1, &sa));
+  for (CSFaceIter F = CS_FACE_ITER_INIT; CSMeshFaceNext(m, NULL, &F);) {
+    PetscReal w[3][3];
+    for (int a = 0; a < 3; a++)
+      for (int d = 0; d < 3; d++) w[a][d] = PetscRealPart(o[6 * F.e[a] + 3 * CSMeshEdgeSide(m, &F, a) + d]);
+    AddFace(w, F.v, sy.a, sa.a);
+  }
+  PetscCall(CSLocalSumShare(&sy));
+  PetscCall(CSLocalSumShare(&sa));
+  for (PetscInt i = 0; i < m->nv; i++) {
+    PetscReal y[3] = {PetscRealPart(sy.a[3 * i]), PetscRealPart(sy.a[3 * i + 1]), PetscRealPart(sy.a[3 * i + 2])};
+    if (m->vertOwned[i]) loc += 0.25 * CSVecDot(y, y) / PetscRealPart(sa.a[i]);
+  }
+  PetscCall(CSLocalSumEnd(&sy, NULL));
+  PetscCall(CSLocalSumEnd(&sa, NULL));
+  PetscCall(VecRestoreArrayRead(ol, &o));
+  PetscCall(DMRestoreLocalVector(dmH3, &ol));
+  PetscCall(MPIU_Allreduce(&loc, W, 1, MPIU_REAL, MPIU_SUM, m->comm));
+  PetscFunctionReturn(0);
+}

@@ -1,0 +1,221 @@
+/* Unit checks of the lens-complex operators and triangle fields (include/cs_operators_lens.h), serial and under
+   mpirun, on a bumpy icosphere (level 1 for the rank, level 3 otherwise) and a bumpy torus:
+   - C~ A~ = 0 exactly and rank C~ = |H| - |V| (soliman2021 Lemma A.1; dense SVD of the small mesh's C~);
+   - for omega = df: d1 omega = 0 (exactly), C~ lambda = C lambda on both halfedges of every edge (Eq. 14 reduces to
+     Eq. 3 when lambda_ij = lambda_ji), and W~(df) = W(f) to 1e-12 (App. D.1);
+   - a non-integrable omega (one halfedge moved) has d1 omega != 0 on exactly that edge.
+   Prints a line per check; exit status = number of failures. */
+#include "cs_operators_lens.h"
+#include "cs_operators_conformal.h"
+#include "cs_energy.h"
+#include "cs_package.h"
+#include "cs_test.h"
+#include <petscblaslapack.h>
+
+/* numerical rank of A (every rank computes it from a redundant copy) */
+static PetscErrorCode DenseRank(Mat A, PetscInt *rank)
+{
+  Mat          R, D;
+  PetscInt     mr, nc;
+  PetscMPIInt  size;
+  PetscScalar *a, *work;
+  PetscReal   *sv;
+  PetscBLASInt m, n, lda, lwork, info, one = 1;
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_size(PetscObjectComm((PetscObject)A), &size));
+  PetscCall(MatCreateRedundantMatrix(A, size, MPI_COMM_NULL, MAT_INITIAL_MATRIX, &R));
+  PetscCall(MatConvert(R, MATSEQDENSE, MAT_INITIAL_MATRIX, &D));
+  PetscCall(MatGetSize(D, &mr, &nc));
+  PetscCall(PetscBLASIntCast(mr, &m));
+  PetscCall(PetscBLASIntCast(nc, &n));
+  lda   = m;
+  lwork = 10 * (m + n);
+  PetscCall(PetscMalloc2(PetscMin(mr, nc), &sv, lwork, &work));
+  PetscCall(MatDenseGetArray(D, &a));
+  PetscCallBLAS("LAPACKgesvd", LAPACKgesvd_("N", "N", &m, &n, a, &lda, sv, NULL, &one, NULL, &one, work, &lwork, &info));
+  PetscCall(MatDenseRestoreArray(D, &a));
+  PetscCheck(!info, PETSC_COMM_SELF, PETSC_ERR_LIB, "gesvd info %d", (int)info);
+  *rank = 0;
+  for (PetscInt k = 0; k < PetscMin(mr, nc); k++)
+    if (sv[k] > 1e-10 * sv[0]) (*rank)++;
+  PetscCall(PetscFree2(sv, work));
+  PetscCall(MatDestroy(&D));
+  PetscCall(MatDestroy(&R));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode CheckLemma(CSMesh m, const char name[], PetscBool rank)
+{
+  DM        dmH;
+  Mat       A, C, P;
+  PetscReal nP;
+  char      what[160];
+  PetscFunctionBeginUser;
+  PetscCall(CSLensCreateHalfedgeDM(m, 1, &dmH));
+  PetscCall(CSOperatorLensAverage(m, dmH, &A));
+  PetscCall(CSOperatorLensCrossRatio(m, dmH, &C));
+  PetscCall(MatMatMult(C, A, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &P));
+  PetscCall(MatNorm(P, NORM_FROBENIUS, &nP));
+  PetscCall(PetscSNPrintf(what, sizeof(what), "%s: |C~ A~| = 0 exactly", name));
+  PetscCall(CSTestCheck(m->comm, (PetscBool)(nP == 0), what, nP, 0));
+  if (rank) {
+    PetscInt r = -1, H = 2 * m->Ne;
+    PetscCall(DenseRank(C, &r));
+    PetscCall(PetscSNPrintf(what, sizeof(what), "%s: rank C~ = |H| - |V| = %" PetscInt_FMT, name, H - m->Nv));
+    PetscCall(CSTestCheck(m->comm, (PetscBool)(r == H - m->Nv), what, (PetscReal)r, (PetscReal)(H - m->Nv)));
+  }
+  PetscCall(MatDestroy(&P));
+  PetscCall(MatDestroy(&A));
+  PetscCall(MatDestroy(&C));
+  PetscCall(DMDestroy(&dmH));
+  PetscFunctionReturn(0);
+}
+
+/* max over halfedges |(C~ lambda~)_(e,s) - (C lambda)_e| for omega = df */
+static PetscErrorCode CrossRatioAgrees(CSMesh m, DM dmH1, DM dmH3, Vec omega, PetscReal *diff)
+{
+  Mat                Ct, C;
+  Vec                lt, ct, l, c;
+  const PetscScalar *a, *b;
+  PetscInt           n;
+  PetscReal          d = 0;
+  PetscFunctionBeginUser;
+  PetscCall(DMCreateGlobalVector(dmH1, &lt));
+  PetscCall(VecDuplicate(lt, &ct));
+  PetscCall(DMCreateGlobalVector(m->dmE1, &l));
+  PetscCall(VecDuplicate(l, &c));
+  PetscCall(CSTriangleFieldLogLengths(m, dmH3, omega, dmH1, lt));
+  PetscCall(CSOperatorLensCrossRatio(m, dmH1, &Ct));
+  PetscCall(MatMult(Ct, lt, ct));
+  PetscCall(CSOperatorLogLengths(m, m->x, l));
+  PetscCall(CSOperatorCrossRatio(m, PETSC_FALSE, &C));
+  PetscCall(MatMult(C, l, c));
+  PetscCall(VecGetLocalSize(c, &n));
+  PetscCall(VecGetArrayRead(ct, &a));
+  PetscCall(VecGetArrayRead(c, &b)); /* owned edge k is halfedges 2k, 2k+1 of the owned part */
+  for (PetscInt k = 0; k < n; k++)
+    for (int s = 0; s < 2; s++) d = PetscMax(d, PetscAbsScalar(a[2 * k + s] - b[k]));
+  PetscCall(VecRestoreArrayRead(c, &b));
+  PetscCall(VecRestoreArrayRead(ct, &a));
+  PetscCall(MPIU_Allreduce(&d, diff, 1, MPIU_REAL, MPIU_MAX, m->comm));
+  PetscCall(MatDestroy(&Ct));
+  PetscCall(MatDestroy(&C));
+  PetscCall(VecDestroy(&lt));
+  PetscCall(VecDestroy(&ct));
+  PetscCall(VecDestroy(&l));
+  PetscCall(VecDestroy(&c));
+  PetscFunctionReturn(0);
+}
+
+/* comp_h = omega_h[c] (the halfedge vector layout has block size 6: two halfedges per edge) */
+static PetscErrorCode Component(Vec omega, PetscInt c, Vec comp)
+{
+  const PetscScalar *o;
+  PetscScalar       *a;
+  PetscInt           n;
+  PetscFunctionBeginUser;
+  PetscCall(VecGetLocalSize(comp, &n));
+  PetscCall(VecGetArrayRead(omega, &o));
+  PetscCall(VecGetArray(comp, &a));
+  for (PetscInt h = 0; h < n; h++) a[h] = o[3 * h + c];
+  PetscCall(VecRestoreArray(comp, &a));
+  PetscCall(VecRestoreArrayRead(omega, &o));
+  PetscFunctionReturn(0);
+}
+
+/* d1 omega per component: |d1 (df)| (exactly 0) and, with one halfedge (global 0, component 0) moved by 0.1, the
+   number of nonzero rows (1) */
+static PetscErrorCode CheckIntegrability(CSMesh m, DM dmH1, DM dmH3, Vec omega, PetscReal *n0, PetscInt *nbad)
+{
+  Mat       d1;
+  Vec       comp, r;
+  PetscInt  lo, hi, cnt = 0, nr;
+  PetscReal nrm;
+  PetscFunctionBeginUser;
+  PetscCall(CSOperatorLensD1(m, dmH1, &d1));
+  PetscCall(DMCreateGlobalVector(dmH1, &comp));
+  PetscCall(DMCreateGlobalVector(m->dmE1, &r));
+  *n0 = 0;
+  for (PetscInt c = 0; c < 3; c++) {
+    PetscCall(Component(omega, c, comp));
+    PetscCall(MatMult(d1, comp, r));
+    PetscCall(VecNorm(r, NORM_INFINITY, &nrm));
+    *n0 = PetscMax(*n0, nrm);
+  }
+  PetscCall(Component(omega, 0, comp));
+  PetscCall(VecGetOwnershipRange(comp, &lo, &hi));
+  if (lo == 0 && hi > 0) PetscCall(VecSetValue(comp, 0, 0.1, ADD_VALUES));
+  PetscCall(VecAssemblyBegin(comp));
+  PetscCall(VecAssemblyEnd(comp));
+  PetscCall(MatMult(d1, comp, r));
+  {
+    const PetscScalar *a;
+    PetscCall(VecGetLocalSize(r, &nr));
+    PetscCall(VecGetArrayRead(r, &a));
+    for (PetscInt k = 0; k < nr; k++)
+      if (PetscAbsScalar(a[k]) > 1e-14) cnt++;
+    PetscCall(VecRestoreArrayRead(r, &a));
+  }
+  PetscCall(MPIU_Allreduce(&cnt, nbad, 1, MPIU_INT, MPI_SUM, m->comm));
+  PetscCall(MatDestroy(&d1));
+  PetscCall(VecDestroy(&comp));
+  PetscCall(VecDestroy(&r));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode CheckTriangleField(CSMesh m, const char name[])
+{
+  DM        dmH1, dmH3;
+  Vec       omega;
+  CSEnergy  e;
+  PetscReal Wt, W, d, n0 = -1;
+  PetscInt  nbad;
+  char      what[160];
+  PetscFunctionBeginUser;
+  PetscCall(CSLensCreateHalfedgeDM(m, 1, &dmH1));
+  PetscCall(CSLensCreateHalfedgeDM(m, 3, &dmH3));
+  PetscCall(DMCreateGlobalVector(dmH3, &omega));
+  PetscCall(CSTriangleFieldFromPositions(m, m->x, dmH3, omega));
+  PetscCall(CSTriangleFieldWillmore(m, dmH3, omega, &Wt));
+  PetscCall(CSEnergyCreateWillmore(m, &e));
+  PetscCall(CSEnergyValue(e, m->x, &W));
+  PetscCall(PetscSNPrintf(what, sizeof(what), "%s: |W~(df) - W(f)| / W(f) (W = %.6f)", name, (double)W));
+  PetscCall(CSTestCheck(m->comm, (PetscBool)(PetscAbsReal(Wt - W) <= 1e-12 * W), what, PetscAbsReal(Wt - W) / W, 1e-12));
+  PetscCall(CrossRatioAgrees(m, dmH1, dmH3, omega, &d));
+  PetscCall(PetscSNPrintf(what, sizeof(what), "%s: C~ lambda(df) = C lambda(f) on both halfedges", name));
+  PetscCall(CSTestCheck(m->comm, (PetscBool)(d < 1e-12), what, d, 1e-12));
+  PetscCall(CheckIntegrability(m, dmH1, dmH3, omega, &n0, &nbad));
+  PetscCall(PetscSNPrintf(what, sizeof(what), "%s: d1 (df) = 0 exactly", name));
+  PetscCall(CSTestCheck(m->comm, (PetscBool)(n0 == 0), what, n0, 0));
+  PetscCall(PetscSNPrintf(what, sizeof(what), "%s: one moved halfedge breaks d1 on one lens", name));
+  PetscCall(CSTestCheck(m->comm, (PetscBool)(nbad == 1), what, (PetscReal)nbad, 1));
+  PetscCall(CSEnergyDestroy(&e));
+  PetscCall(VecDestroy(&omega));
+  PetscCall(DMDestroy(&dmH1));
+  PetscCall(DMDestroy(&dmH3));
+  PetscFunctionReturn(0);
+}
+
+int main(int argc, char **argv)
+{
+  MPI_Comm comm;
+  CSMesh   m;
+  PetscFunctionBeginUser;
+  PetscCall(PetscInitialize(&argc, &argv, NULL, NULL));
+  comm = PETSC_COMM_WORLD;
+  PetscCall(CSInitializePackage());
+  PetscCall(CSTestMesh(comm, (CSTestMeshSpec){CS_TEST_ICOSPHERE, 1, 0, 0, 0}, 0.05, 3, &m));
+  PetscCall(CheckLemma(m, "icosphere 1 bumpy", PETSC_TRUE));
+  PetscCall(CSMeshDestroy(&m));
+  PetscCall(CSTestMesh(comm, (CSTestMeshSpec){CS_TEST_TORUS, 8, 6, 2.0, 0.7}, 0.05, 3, &m));
+  PetscCall(CheckLemma(m, "torus 8x6 bumpy", PETSC_TRUE));
+  PetscCall(CSMeshDestroy(&m));
+  PetscCall(CSTestMesh(comm, (CSTestMeshSpec){CS_TEST_ICOSPHERE, 3, 0, 0, 0}, 0.02, 4, &m));
+  PetscCall(CheckLemma(m, "icosphere 3 bumpy", PETSC_FALSE));
+  PetscCall(CheckTriangleField(m, "icosphere 3 bumpy"));
+  PetscCall(CSMeshDestroy(&m));
+  PetscCall(CSTestMesh(comm, (CSTestMeshSpec){CS_TEST_TORUS, 24, 12, 3.0, 1.0}, 0.02, 5, &m));
+  PetscCall(CheckTriangleField(m, "torus 24x12 bumpy"));
+  PetscCall(CSMeshDestroy(&m));
+  return CSTestFinalize(comm, PetscFinalize);
+}
