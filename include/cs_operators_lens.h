@@ -26,6 +26,11 @@ PETSC_EXTERN PetscErrorCode CSOperatorLensCrossRatio(CSMesh mesh, DM dmH, Mat *C
    scalar (apply it per component of a triangle field). */
 PETSC_EXTERN PetscErrorCode CSOperatorLensD1(CSMesh mesh, DM dmH, Mat *d1);
 
+/* The harmonic dual 1-form Y of an edge 1-form eta (e.g. a CSHarmonicBasis form) on halfedges (dmH1 global
+   vector y), with the cotans at positions x: <<Y|omega>> = sum_h y_h omega_h, per component of a triangle field,
+   is the constraint row of soliman2021 Eq. 13 / Algorithm 2; for omega = df it is <<eta, df>> = 0 for harmonic eta. */
+PETSC_EXTERN PetscErrorCode CSLensHarmonicDual(CSMesh mesh, Vec x, Vec eta, DM dmH1, Vec y);
+
 /* omega = df: omega_(e,s) = f_head - f_tail of the halfedge (dmH with dof 3, global vector). */
 PETSC_EXTERN PetscErrorCode CSTriangleFieldFromPositions(CSMesh mesh, Vec x, DM dmH3, Vec omega);
 /* Log halfedge lengths lambda_h = log |omega_h| (dmH3 -> dmH1 global vectors). */

@@ -77,3 +77,39 @@ PetscErrorCode CSOperatorLensD1(CSMesh m, DM dmH, Mat *d1)
   PetscCall(MatAssemblyEnd(*d1, MAT_FINAL_ASSEMBLY));
   PetscFunctionReturn(0);
 }
+
+/* The harmonic dual 1-form Y of an edge 1-form eta on halfedges (soliman2021 Eq. 13, Algorithm 2 step 2):
+   y_h = 1/2 cot(theta_h) eta(h), theta_h the angle opposite h in its face at positions x and eta(h) = +-eta_e
+   by the halfedge's direction, so that <<Y|omega>> = sum_h y_h omega_h is the L2 product of Sec. 5.1 (the
+   cotan formula per face, polarised) and, for omega = df, sum_e w_e eta_e (df)_e = <<eta, df>>. */
+static void AddHalfCotanDual(CSMesh m, const PetscReal *p, const CSFaceIter *F, PetscScalar *a)
+{
+  PetscReal cot[3];
+  CSTriangleCotans(F->c, cot);
+  for (int k = 0; k < 3; k++) a[2 * F->e[k] + CSMeshEdgeSide(m, F, k)] += 0.5 * cot[k];
+}
+
+PetscErrorCode CSLensHarmonicDual(CSMesh m, Vec x, Vec eta, DM dmH1, Vec y)
+{
+  Vec                el, yl;
+  const PetscScalar *e;
+  PetscScalar       *a;
+  PetscFunctionBeginUser;
+  PetscCall(CSGeometryFaceSum(m, x, dmH1, AddHalfCotanDual, y));
+  PetscCall(DMGetLocalVector(m->dmE1, &el));
+  PetscCall(DMGlobalToLocal(m->dmE1, eta, INSERT_VALUES, el));
+  PetscCall(DMGetLocalVector(dmH1, &yl));
+  PetscCall(DMGlobalToLocal(dmH1, y, INSERT_VALUES, yl));
+  PetscCall(VecGetArrayRead(el, &e));
+  PetscCall(VecGetArray(yl, &a));
+  for (PetscInt k = 0; k < m->ne; k++) {
+    a[2 * k] *= e[k];
+    a[2 * k + 1] *= -e[k];
+  }
+  PetscCall(VecRestoreArray(yl, &a));
+  PetscCall(VecRestoreArrayRead(el, &e));
+  PetscCall(DMLocalToGlobal(dmH1, yl, INSERT_VALUES, y));
+  PetscCall(DMRestoreLocalVector(dmH1, &yl));
+  PetscCall(DMRestoreLocalVector(m->dmE1, &el));
+  PetscFunctionReturn(0);
+}

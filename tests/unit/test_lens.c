@@ -3,7 +3,8 @@
    - C~ A~ = 0 exactly and rank C~ = |H| - |V| (soliman2021 Lemma A.1; dense SVD of the small mesh's C~);
    - for omega = df: d1 omega = 0 (exactly), C~ lambda = C lambda on both halfedges of every edge (Eq. 14 reduces to
      Eq. 3 when lambda_ij = lambda_ji), and W~(df) = W(f) to 1e-12 (App. D.1);
-   - a non-integrable omega (one halfedge moved) has d1 omega != 0 on exactly that edge.
+   - a non-integrable omega (one halfedge moved) has d1 omega != 0 on exactly that edge;
+   - the harmonic dual forms Y_i (Eq. 13) on the torus: <<Y_i|df>> = 0 and <<Y_i|omega_j>> = delta_ij.
    Prints a line per check; exit status = number of failures. */
 #include "cs_operators_lens.h"
 #include "cs_operators_conformal.h"
@@ -163,6 +164,70 @@ static PetscErrorCode CheckIntegrability(CSMesh m, DM dmH1, DM dmH3, Vec omega, 
   PetscFunctionReturn(0);
 }
 
+/* h(e, s) = +-eta_e: an edge 1-form as a scalar halfedge field (owned edge k is halfedges 2k, 2k+1 of the owned part) */
+static PetscErrorCode Lift(Vec eta, Vec h)
+{
+  const PetscScalar *e;
+  PetscScalar       *a;
+  PetscInt           n;
+  PetscFunctionBeginUser;
+  PetscCall(VecGetLocalSize(eta, &n));
+  PetscCall(VecGetArrayRead(eta, &e));
+  PetscCall(VecGetArray(h, &a));
+  for (PetscInt k = 0; k < n; k++) {
+    a[2 * k]     = e[k];
+    a[2 * k + 1] = -e[k];
+  }
+  PetscCall(VecRestoreArray(h, &a));
+  PetscCall(VecRestoreArrayRead(eta, &e));
+  PetscFunctionReturn(0);
+}
+
+/* Eq. 13 rows: <<Y_i|df>> = 0 (relative to |y||df|) and <<Y_i|lift(omega_j)>> = delta_ij for the harmonic basis */
+static PetscErrorCode CheckHarmonicDual(CSMesh m, DM dmH1, Vec omega, const char name[])
+{
+  CSHarmonicBasis hb;
+  Vec             y, comp, lj;
+  PetscInt        n;
+  PetscReal       ex = 0, dl = 0;
+  char            what[160];
+  PetscFunctionBeginUser;
+  PetscCall(CSHarmonicBasisCreate(m, m->x, &hb));
+  PetscCall(CSHarmonicBasisGetSize(hb, &n));
+  PetscCall(DMCreateGlobalVector(dmH1, &y));
+  PetscCall(VecDuplicate(y, &comp));
+  PetscCall(VecDuplicate(y, &lj));
+  for (PetscInt i = 0; i < n; i++) {
+    Vec         wi, wj;
+    PetscScalar d;
+    PetscReal   ny, nc;
+    PetscCall(CSHarmonicBasisGetForm(hb, i, &wi));
+    PetscCall(CSLensHarmonicDual(m, m->x, wi, dmH1, y));
+    PetscCall(VecNorm(y, NORM_2, &ny));
+    for (PetscInt c = 0; c < 3; c++) {
+      PetscCall(Component(omega, c, comp));
+      PetscCall(VecNorm(comp, NORM_2, &nc));
+      PetscCall(VecDot(y, comp, &d));
+      ex = PetscMax(ex, PetscAbsScalar(d) / (ny * nc));
+    }
+    for (PetscInt j = 0; j < n; j++) {
+      PetscCall(CSHarmonicBasisGetForm(hb, j, &wj));
+      PetscCall(Lift(wj, lj));
+      PetscCall(VecDot(y, lj, &d));
+      dl = PetscMax(dl, PetscAbsScalar(d - (i == j ? 1.0 : 0.0)));
+    }
+  }
+  PetscCall(PetscSNPrintf(what, sizeof(what), "%s: <<Y_i|df>> = 0 (%" PetscInt_FMT " forms)", name, n));
+  PetscCall(CSTestCheck(m->comm, (PetscBool)(n > 0 && ex < 1e-12), what, ex, 1e-12));
+  PetscCall(PetscSNPrintf(what, sizeof(what), "%s: <<Y_i|omega_j>> = delta_ij", name));
+  PetscCall(CSTestCheck(m->comm, (PetscBool)(dl < 1e-12), what, dl, 1e-12));
+  PetscCall(VecDestroy(&y));
+  PetscCall(VecDestroy(&comp));
+  PetscCall(VecDestroy(&lj));
+  PetscCall(CSHarmonicBasisDestroy(&hb));
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode CheckTriangleField(CSMesh m, const char name[])
 {
   DM        dmH1, dmH3;
@@ -189,6 +254,7 @@ static PetscErrorCode CheckTriangleField(CSMesh m, const char name[])
   PetscCall(CSTestCheck(m->comm, (PetscBool)(n0 == 0), what, n0, 0));
   PetscCall(PetscSNPrintf(what, sizeof(what), "%s: one moved halfedge breaks d1 on one lens", name));
   PetscCall(CSTestCheck(m->comm, (PetscBool)(nbad == 1), what, (PetscReal)nbad, 1));
+  if (m->topo.genus > 0) PetscCall(CheckHarmonicDual(m, dmH1, omega, name));
   PetscCall(CSEnergyDestroy(&e));
   PetscCall(VecDestroy(&omega));
   PetscCall(DMDestroy(&dmH1));
