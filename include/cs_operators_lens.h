@@ -31,6 +31,18 @@ PETSC_EXTERN PetscErrorCode CSOperatorLensD1(CSMesh mesh, DM dmH, Mat *d1);
    is the constraint row of soliman2021 Eq. 13 / Algorithm 2; for omega = df it is <<eta, df>> = 0 for harmonic eta. */
 PETSC_EXTERN PetscErrorCode CSLensHarmonicDual(CSMesh mesh, Vec x, Vec eta, DM dmH1, Vec y);
 
+/* The lens d0 (H x V): (d0 u)_h = u_head - u_tail; per component of the positions it gives df. */
+PETSC_EXTERN PetscErrorCode CSOperatorLensD0(CSMesh mesh, DM dmH, Mat *d0);
+/* Dlambda on halfedges (soliman2021 Sec. 5.2, cf. Eq. 5): (Dlambda omega-dot)_h = <omega_h, omega-dot_h>/|omega_h|^2,
+   H x 3H (rows dmH1, columns dmH3), at the triangle field omega. */
+PETSC_EXTERN PetscErrorCode CSOperatorLensLogLengthDerivative(CSMesh mesh, DM dmH1, DM dmH3, Vec omega, MatReuse reuse, Mat *D);
+/* The triangle field's metric (Sec. 5.1): star1_h = 1/2 cot theta_h (dmH1) with theta_h the angle opposite h in
+   omega's own triangle, star0_i = a third of the incident triangle field areas (dmV1). */
+PETSC_EXTERN PetscErrorCode CSTriangleFieldStars(CSMesh mesh, DM dmH3, Vec omega, DM dmH1, Vec star1, Vec star0);
+/* I_H1 = *1 + *1 d0 *0^{-1} d0^T *1 (soliman2021 Eq. 32) on halfedges, scalar H x H (per component of a
+   triangle field), from the stars of CSTriangleFieldStars; d0^T I_H1 d0 = L + L *0^{-1} L for omega = df. */
+PETSC_EXTERN PetscErrorCode CSOperatorLensH1Metric(CSMesh mesh, DM dmH, Vec star1, Vec star0, Mat *H1);
+
 /* omega = df: omega_(e,s) = f_head - f_tail of the halfedge (dmH with dof 3, global vector). */
 PETSC_EXTERN PetscErrorCode CSTriangleFieldFromPositions(CSMesh mesh, Vec x, DM dmH3, Vec omega);
 /* Log halfedge lengths lambda_h = log |omega_h| (dmH3 -> dmH1 global vectors). */

@@ -113,3 +113,75 @@ PetscErrorCode CSLensHarmonicDual(CSMesh m, Vec x, Vec eta, DM dmH1, Vec y)
   PetscCall(DMRestoreLocalVector(m->dmE1, &el));
   PetscFunctionReturn(0);
 }
+
+/* The lens d0 (H x V): (d0 u)_h = u_head - u_tail, i.e. (e, 0): u_j - u_i and (e, 1): u_i - u_j for
+   e = (i -> j); d0 of the positions per component is the triangle field df. */
+PetscErrorCode CSOperatorLensD0(CSMesh m, DM dmH, Mat *d0)
+{
+  PetscFunctionBeginUser;
+  PetscCall(CSOperatorCreatePointMatrix(dmH, m->dmV1, 2, d0));
+  for (PetscInt e = 0; e < m->ne; e++) {
+    PetscScalar v[2][2] = {{-1.0, 1.0}, {1.0, -1.0}};
+    if (!m->edgeOwned[e]) continue;
+    for (PetscInt s = 0; s < 2; s++) {
+      PetscInt row = 2 * e + s;
+      PetscCall(MatSetValuesLocal(*d0, 1, &row, 2, m->edgeVert + 2 * e, v[s], INSERT_VALUES));
+    }
+  }
+  PetscCall(MatAssemblyBegin(*d0, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(*d0, MAT_FINAL_ASSEMBLY));
+  PetscFunctionReturn(0);
+}
+
+/* I_H1 = *1 + *1 d0 *0^{-1} d0^T *1 (soliman2021 Eq. 32) on halfedges, scalar (H x H), from the stars of
+   CSTriangleFieldStars: B = *1 d0 (rows scaled), H1 = B *0^{-1} B^T + diag(*1). As *1 itself it is indefinite
+   where a triangle has an obtuse angle opposite a halfedge whose other side does not compensate (cot < 0). */
+PetscErrorCode CSOperatorLensH1Metric(CSMesh m, DM dmH, Vec star1, Vec star0, Mat *H1)
+{
+  Mat B, Bs;
+  Vec s0i;
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(CS_EVENT_Assemble, 0, 0, 0, 0));
+  PetscCall(CSOperatorLensD0(m, dmH, &B));
+  PetscCall(MatDiagonalScale(B, star1, NULL));
+  PetscCall(MatDuplicate(B, MAT_COPY_VALUES, &Bs));
+  PetscCall(VecDuplicate(star0, &s0i));
+  PetscCall(VecCopy(star0, s0i));
+  PetscCall(VecReciprocal(s0i));
+  PetscCall(MatDiagonalScale(Bs, NULL, s0i));
+  PetscCall(MatMatTransposeMult(Bs, B, MAT_INITIAL_MATRIX, PETSC_DEFAULT, H1));
+  PetscCall(MatDiagonalSet(*H1, star1, ADD_VALUES));
+  PetscCall(MatDestroy(&B));
+  PetscCall(MatDestroy(&Bs));
+  PetscCall(VecDestroy(&s0i));
+  PetscCall(PetscLogEventEnd(CS_EVENT_Assemble, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+/* Dlambda on halfedges (soliman2021 Sec. 5.2): lambda-dot_h = <omega_h, omega-dot_h> / |omega_h|^2, H x 3H (rows
+   dmH1, columns dmH3). Rows set by the edge's owner; MAT_REUSE_MATRIX refills *D. */
+PetscErrorCode CSOperatorLensLogLengthDerivative(CSMesh m, DM dmH1, DM dmH3, Vec omega, MatReuse reuse, Mat *D)
+{
+  Vec                ol;
+  const PetscScalar *o;
+  PetscFunctionBeginUser;
+  if (reuse == MAT_INITIAL_MATRIX) PetscCall(CSOperatorCreatePointMatrix(dmH1, dmH3, 3, D));
+  else PetscCall(MatZeroEntries(*D));
+  PetscCall(DMGetLocalVector(dmH3, &ol));
+  PetscCall(DMGlobalToLocal(dmH3, omega, INSERT_VALUES, ol));
+  PetscCall(VecGetArrayRead(ol, &o));
+  for (PetscInt e = 0; e < m->ne; e++) {
+    if (!m->edgeOwned[e]) continue;
+    for (PetscInt h = 2 * e; h < 2 * e + 2; h++) {
+      PetscReal   w[3] = {PetscRealPart(o[3 * h]), PetscRealPart(o[3 * h + 1]), PetscRealPart(o[3 * h + 2])}, l2 = CSVecDot(w, w);
+      PetscInt    cols[3] = {3 * h, 3 * h + 1, 3 * h + 2};
+      PetscScalar v[3]    = {w[0] / l2, w[1] / l2, w[2] / l2};
+      PetscCall(MatSetValuesLocal(*D, 1, &h, 3, cols, v, INSERT_VALUES));
+    }
+  }
+  PetscCall(VecRestoreArrayRead(ol, &o));
+  PetscCall(DMRestoreLocalVector(dmH3, &ol));
+  PetscCall(MatAssemblyBegin(*D, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(*D, MAT_FINAL_ASSEMBLY));
+  PetscFunctionReturn(0);
+}

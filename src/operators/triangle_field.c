@@ -49,17 +49,30 @@ PetscErrorCode CSTriangleFieldLogLengths(CSMesh m, DM dmH3, Vec omega, DM dmH1, 
    are w[a+2] and -w[a+1], so cot(theta_a) = <w[a+2], -w[a+1]> / |w[a+2] x w[a+1]| and the area is
    |w[a+2] x w[a+1]|/2. Halfedge a adds 1/2 cot(theta_a) w[a] to Y at its tail v[a+1] and subtracts it at its head
    v[a+2]: for w = df that is Y_i = sum_j w_ij (f_j - f_i) = -(L f)_i. A_i gets a third of the area. */
-static void AddFace(const PetscReal w[3][3], const PetscInt v[3], PetscScalar *Y, PetscScalar *A)
+static PetscReal FaceCotans(const PetscReal w[3][3], PetscReal cot[3])
 {
   PetscReal n[3], an;
   CSVecCross(w[2], w[1], n);
   an = CSVecNorm(n);
+  for (int a = 0; a < 3; a++) cot[a] = -CSVecDot(w[(a + 2) % 3], w[(a + 1) % 3]) / an;
+  return an;
+}
+
+/* the three halfedge vectors of face F from the local triangle field array o */
+static void FaceVectors(CSMesh m, const CSFaceIter *F, const PetscScalar *o, PetscReal w[3][3])
+{
+  for (int a = 0; a < 3; a++)
+    for (int d = 0; d < 3; d++) w[a][d] = PetscRealPart(o[6 * F->e[a] + 3 * CSMeshEdgeSide(m, F, a) + d]);
+}
+
+static void AddFace(const PetscReal w[3][3], const PetscInt v[3], PetscScalar *Y, PetscScalar *A)
+{
+  PetscReal cot[3], an = FaceCotans(w, cot);
   for (int a = 0; a < 3; a++) {
-    PetscReal cot = -CSVecDot(w[(a + 2) % 3], w[(a + 1) % 3]) / an;
-    PetscInt  t = v[(a + 1) % 3], h = v[(a + 2) % 3];
+    PetscInt t = v[(a + 1) % 3], h = v[(a + 2) % 3];
     for (int d = 0; d < 3; d++) {
-      Y[3 * t + d] += 0.5 * cot * w[a][d];
-      Y[3 * h + d] -= 0.5 * cot * w[a][d];
+      Y[3 * t + d] += 0.5 * cot[a] * w[a][d];
+      Y[3 * h + d] -= 0.5 * cot[a] * w[a][d];
     }
     A[v[a]] += an / 6;
   }
@@ -79,8 +92,7 @@ PetscErrorCode CSTriangleFieldWillmore(CSMesh m, DM dmH3, Vec omega, PetscReal *
   PetscCall(CSLocalSumBegin(m->dmV1, &sa));
   for (CSFaceIter F = CS_FACE_ITER_INIT; CSMeshFaceNext(m, NULL, &F);) {
     PetscReal w[3][3];
-    for (int a = 0; a < 3; a++)
-      for (int d = 0; d < 3; d++) w[a][d] = PetscRealPart(o[6 * F.e[a] + 3 * CSMeshEdgeSide(m, &F, a) + d]);
+    FaceVectors(m, &F, o, w);
     AddFace(w, F.v, sy.a, sa.a);
   }
   PetscCall(CSLocalSumShare(&sy));
@@ -94,5 +106,34 @@ PetscErrorCode CSTriangleFieldWillmore(CSMesh m, DM dmH3, Vec omega, PetscReal *
   PetscCall(VecRestoreArrayRead(ol, &o));
   PetscCall(DMRestoreLocalVector(dmH3, &ol));
   PetscCall(MPIU_Allreduce(&loc, W, 1, MPIU_REAL, MPIU_SUM, m->comm));
+  PetscFunctionReturn(0);
+}
+
+/* The metric of the triangle field (Sec. 5.1): the halfedge star (*1 omega)_h = 1/2 cot(theta_h) omega_h (dmH1)
+   and the vertex areas *0 = a third of the incident triangle field areas (dmV1). */
+PetscErrorCode CSTriangleFieldStars(CSMesh m, DM dmH3, Vec omega, DM dmH1, Vec star1, Vec star0)
+{
+  Vec                ol;
+  CSLocalSum         s1, s0;
+  const PetscScalar *o;
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLocalVector(dmH3, &ol));
+  PetscCall(DMGlobalToLocal(dmH3, omega, INSERT_VALUES, ol));
+  PetscCall(VecGetArrayRead(ol, &o));
+  PetscCall(CSLocalSumBegin(dmH1, &s1));
+  PetscCall(CSLocalSumBegin(m->dmV1, &s0));
+  for (CSFaceIter F = CS_FACE_ITER_INIT; CSMeshFaceNext(m, NULL, &F);) {
+    PetscReal w[3][3], cot[3], an;
+    FaceVectors(m, &F, o, w);
+    an = FaceCotans(w, cot);
+    for (int a = 0; a < 3; a++) {
+      s1.a[2 * F.e[a] + CSMeshEdgeSide(m, &F, a)] += 0.5 * cot[a];
+      s0.a[F.v[a]] += an / 6;
+    }
+  }
+  PetscCall(CSLocalSumEnd(&s1, star1));
+  PetscCall(CSLocalSumEnd(&s0, star0));
+  PetscCall(VecRestoreArrayRead(ol, &o));
+  PetscCall(DMRestoreLocalVector(dmH3, &ol));
   PetscFunctionReturn(0);
 }

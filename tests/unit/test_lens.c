@@ -228,6 +228,119 @@ static PetscErrorCode CheckHarmonicDual(CSMesh m, DM dmH1, Vec omega, const char
   PetscFunctionReturn(0);
 }
 
+/* |A - B|_F / |B|_F */
+static PetscErrorCode MatRelDiff(Mat A, Mat B, PetscReal *d)
+{
+  Mat       D;
+  PetscReal nb, nd;
+  PetscFunctionBeginUser;
+  PetscCall(MatDuplicate(A, MAT_COPY_VALUES, &D));
+  PetscCall(MatAXPY(D, -1.0, B, DIFFERENT_NONZERO_PATTERN));
+  PetscCall(MatNorm(D, NORM_FROBENIUS, &nd));
+  PetscCall(MatNorm(B, NORM_FROBENIUS, &nb));
+  *d = nd / nb;
+  PetscCall(MatDestroy(&D));
+  PetscFunctionReturn(0);
+}
+
+/* lens d0 of the positions = df; d1 d0 = 0; the stars of df: d0^T *1 d0 = L and *0 = vertex areas; d0^T I_H1 d0
+   = L + L *0^{-1} L (Eq. 32 against Eq. 26's second term); Dlambda against central differences */
+static PetscErrorCode CheckLensMetric(CSMesh m, DM dmH1, DM dmH3, Vec omega, const char name[])
+{
+  Mat         d0, d1, P, L, H1, LAL, T;
+  Vec         s1, s0, A, comp, u, du, dir, wp, wm, lp, lm, Dd;
+  PetscReal   e0 = 0, nP, dL, dA, dH, dD, nD, eps = 1e-6;
+  PetscRandom rnd;
+  char        what[160];
+  PetscFunctionBeginUser;
+  PetscCall(CSOperatorLensD0(m, dmH1, &d0));
+  PetscCall(CSOperatorLensD1(m, dmH1, &d1));
+  PetscCall(DMCreateGlobalVector(dmH1, &comp));
+  PetscCall(VecDuplicate(comp, &du));
+  PetscCall(DMCreateGlobalVector(m->dmV1, &u));
+  for (PetscInt c = 0; c < 3; c++) {
+    PetscReal n;
+    PetscCall(VecStrideGather(m->x, c, u, INSERT_VALUES));
+    PetscCall(MatMult(d0, u, du));
+    PetscCall(Component(omega, c, comp));
+    PetscCall(VecAXPY(du, -1.0, comp));
+    PetscCall(VecNorm(du, NORM_INFINITY, &n));
+    e0 = PetscMax(e0, n);
+  }
+  PetscCall(PetscSNPrintf(what, sizeof(what), "%s: lens d0 f = df (exactly)", name));
+  PetscCall(CSTestCheck(m->comm, (PetscBool)(e0 == 0), what, e0, 0));
+  PetscCall(MatMatMult(d1, d0, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &P));
+  PetscCall(MatNorm(P, NORM_FROBENIUS, &nP));
+  PetscCall(PetscSNPrintf(what, sizeof(what), "%s: lens d1 d0 = 0 exactly", name));
+  PetscCall(CSTestCheck(m->comm, (PetscBool)(nP == 0), what, nP, 0));
+  PetscCall(MatDestroy(&P));
+  /* stars and I_H1 */
+  PetscCall(VecDuplicate(comp, &s1));
+  PetscCall(DMCreateGlobalVector(m->dmV1, &s0));
+  PetscCall(VecDuplicate(s0, &A));
+  PetscCall(CSTriangleFieldStars(m, dmH3, omega, dmH1, s1, s0));
+  PetscCall(CSGeometryVertexAreas(m, m->x, A));
+  PetscCall(VecAXPY(A, -1.0, s0));
+  PetscCall(VecNorm(A, NORM_INFINITY, &dA));
+  PetscCall(VecNorm(s0, NORM_INFINITY, &nD));
+  dA /= nD;
+  PetscCall(CSOperatorLaplacian(m, m->x, MAT_INITIAL_MATRIX, &L));
+  PetscCall(MatDuplicate(d0, MAT_COPY_VALUES, &T));
+  PetscCall(MatDiagonalScale(T, s1, NULL));
+  PetscCall(MatTransposeMatMult(d0, T, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &P));
+  PetscCall(MatRelDiff(P, L, &dL));
+  PetscCall(PetscSNPrintf(what, sizeof(what), "%s: stars of df: d0^T *1 d0 = L, *0 = areas", name));
+  PetscCall(CSTestCheck(m->comm, (PetscBool)(dL < 1e-14 && dA < 1e-14), what, PetscMax(dL, dA), 1e-14));
+  PetscCall(MatDestroy(&P));
+  PetscCall(MatDestroy(&T));
+  PetscCall(CSOperatorLensH1Metric(m, dmH1, s1, s0, &H1));
+  PetscCall(MatPtAP(H1, d0, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &P));
+  PetscCall(MatDuplicate(L, MAT_COPY_VALUES, &T));
+  PetscCall(VecReciprocal(s0));
+  PetscCall(MatDiagonalScale(T, s0, NULL));
+  PetscCall(MatMatMult(L, T, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &LAL));
+  PetscCall(MatAXPY(LAL, 1.0, L, DIFFERENT_NONZERO_PATTERN));
+  PetscCall(MatRelDiff(P, LAL, &dH));
+  PetscCall(PetscSNPrintf(what, sizeof(what), "%s: d0^T I_H1 d0 = L + L *0^-1 L", name));
+  PetscCall(CSTestCheck(m->comm, (PetscBool)(dH < 1e-13), what, dH, 1e-13));
+  /* Dlambda against central differences */
+  PetscCall(VecDuplicate(omega, &dir));
+  PetscCall(VecDuplicate(omega, &wp));
+  PetscCall(VecDuplicate(omega, &wm));
+  PetscCall(VecDuplicate(comp, &lp));
+  PetscCall(VecDuplicate(comp, &lm));
+  PetscCall(VecDuplicate(comp, &Dd));
+  PetscCall(CSTestRandom(m->comm, -1, 1, 11, &rnd));
+  PetscCall(VecSetRandom(dir, rnd));
+  PetscCall(VecWAXPY(wp, eps, dir, omega));
+  PetscCall(VecWAXPY(wm, -eps, dir, omega));
+  PetscCall(CSTriangleFieldLogLengths(m, dmH3, wp, dmH1, lp));
+  PetscCall(CSTriangleFieldLogLengths(m, dmH3, wm, dmH1, lm));
+  PetscCall(VecAXPY(lp, -1.0, lm));
+  PetscCall(VecScale(lp, 0.5 / eps));
+  PetscCall(MatDestroy(&T));
+  PetscCall(CSOperatorLensLogLengthDerivative(m, dmH1, dmH3, omega, MAT_INITIAL_MATRIX, &T));
+  PetscCall(MatMult(T, dir, Dd));
+  PetscCall(VecNorm(Dd, NORM_INFINITY, &nD));
+  PetscCall(VecAXPY(lp, -1.0, Dd));
+  PetscCall(VecNorm(lp, NORM_INFINITY, &dD));
+  PetscCall(PetscSNPrintf(what, sizeof(what), "%s: Dlambda (halfedges) vs central differences", name));
+  PetscCall(CSTestCheck(m->comm, (PetscBool)(dD <= 1e-6 * nD), what, dD / nD, 1e-6));
+  PetscCall(PetscRandomDestroy(&rnd));
+  PetscCall(MatDestroy(&d0));
+  PetscCall(MatDestroy(&d1));
+  PetscCall(MatDestroy(&P));
+  PetscCall(MatDestroy(&L));
+  PetscCall(MatDestroy(&H1));
+  PetscCall(MatDestroy(&LAL));
+  PetscCall(MatDestroy(&T));
+  {
+    Vec *vs[] = {&s1, &s0, &A, &comp, &u, &du, &dir, &wp, &wm, &lp, &lm, &Dd};
+    for (size_t k = 0; k < sizeof(vs) / sizeof(vs[0]); k++) PetscCall(VecDestroy(vs[k]));
+  }
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode CheckTriangleField(CSMesh m, const char name[])
 {
   DM        dmH1, dmH3;
@@ -254,6 +367,7 @@ static PetscErrorCode CheckTriangleField(CSMesh m, const char name[])
   PetscCall(CSTestCheck(m->comm, (PetscBool)(n0 == 0), what, n0, 0));
   PetscCall(PetscSNPrintf(what, sizeof(what), "%s: one moved halfedge breaks d1 on one lens", name));
   PetscCall(CSTestCheck(m->comm, (PetscBool)(nbad == 1), what, (PetscReal)nbad, 1));
+  PetscCall(CheckLensMetric(m, dmH1, dmH3, omega, name));
   if (m->topo.genus > 0) PetscCall(CheckHarmonicDual(m, dmH1, omega, name));
   PetscCall(CSEnergyDestroy(&e));
   PetscCall(VecDestroy(&omega));
