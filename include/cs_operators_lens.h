@@ -43,6 +43,11 @@ PETSC_EXTERN PetscErrorCode CSTriangleFieldStars(CSMesh mesh, DM dmH3, Vec omega
    triangle field), from the stars of CSTriangleFieldStars; d0^T I_H1 d0 = L + L *0^{-1} L for omega = df. */
 PETSC_EXTERN PetscErrorCode CSOperatorLensH1Metric(CSMesh mesh, DM dmH, Vec star1, Vec star0, Mat *H1);
 
+/* I_Q on halfedges (Eq. 25 for triangle fields): (I_Q)_h = 1/(w_h |omega_h|^2), w_h = 1/2 cot theta_h of omega's
+   triangle floored at wmin (*nguard floored halfedges, may be NULL); dmH1 global vector iq. For omega = df the two
+   halfedges of an edge in series give Eq. 25's 1/(w_ij l_ij^2). */
+PETSC_EXTERN PetscErrorCode CSTriangleFieldQuadDiffMetric(CSMesh mesh, DM dmH3, Vec omega, DM dmH1, PetscReal wmin, Vec iq, PetscInt *nguard);
+
 /* omega = df: omega_(e,s) = f_head - f_tail of the halfedge (dmH with dof 3, global vector). */
 PETSC_EXTERN PetscErrorCode CSTriangleFieldFromPositions(CSMesh mesh, Vec x, DM dmH3, Vec omega);
 /* Log halfedge lengths lambda_h = log |omega_h| (dmH3 -> dmH1 global vectors). */

@@ -137,3 +137,35 @@ PetscErrorCode CSTriangleFieldStars(CSMesh m, DM dmH3, Vec omega, DM dmH1, Vec s
   PetscCall(DMRestoreLocalVector(dmH3, &ol));
   PetscFunctionReturn(0);
 }
+
+/* I_Q on halfedges (soliman2021 Eq. 25 for triangle fields, Algorithm 2 step 10): (I_Q)_h = 1/(w_h l_h^2) with the
+   halfedge weight w_h = 1/2 cot theta_h of omega's own triangle and l_h = |omega_h|, w_h floored at wmin as in
+   CSOperatorQuadDiffMetric (*nguard: the global number of floored halfedges, may be NULL). Why this form: for
+   halfedge multipliers q_h, q_twin carrying an edge's q = q_h + q_twin, min q_h^2 (I_Q)_h + q_twin^2 (I_Q)_twin is
+   q^2 / ((w_h + w_twin) l^2), Eq. 25's edge metric, when omega = df (the two halves in series). */
+PetscErrorCode CSTriangleFieldQuadDiffMetric(CSMesh m, DM dmH3, Vec omega, DM dmH1, PetscReal wmin, Vec iq, PetscInt *nguard)
+{
+  Vec                s0;
+  PetscInt           n, ng = 0;
+  PetscScalar       *a;
+  const PetscScalar *o;
+  PetscFunctionBeginUser;
+  PetscCall(DMGetGlobalVector(m->dmV1, &s0));
+  PetscCall(CSTriangleFieldStars(m, dmH3, omega, dmH1, iq, s0));
+  PetscCall(DMRestoreGlobalVector(m->dmV1, &s0));
+  PetscCall(VecGetLocalSize(iq, &n));
+  PetscCall(VecGetArray(iq, &a));
+  PetscCall(VecGetArrayRead(omega, &o));
+  for (PetscInt h = 0; h < n; h++) {
+    PetscReal w = PetscRealPart(a[h]), v[3] = {PetscRealPart(o[3 * h]), PetscRealPart(o[3 * h + 1]), PetscRealPart(o[3 * h + 2])};
+    if (w < wmin) {
+      w = wmin;
+      ng++;
+    }
+    a[h] = 1.0 / (w * CSVecDot(v, v));
+  }
+  PetscCall(VecRestoreArrayRead(omega, &o));
+  PetscCall(VecRestoreArray(iq, &a));
+  if (nguard) PetscCall(MPIU_Allreduce(&ng, nguard, 1, MPIU_INT, MPI_SUM, m->comm));
+  PetscFunctionReturn(0);
+}

@@ -341,6 +341,33 @@ static PetscErrorCode CheckLensMetric(CSMesh m, DM dmH1, DM dmH3, Vec omega, con
   PetscFunctionReturn(0);
 }
 
+/* halfedge I_Q of df: the two halves of every edge in series = the edge I_Q (Eq. 25) where no weight is floored */
+static PetscErrorCode CheckQuadDiff(CSMesh m, DM dmH1, DM dmH3, Vec omega, const char name[])
+{
+  Vec                ih, ie;
+  const PetscScalar *a, *b;
+  PetscInt           n, gh, ge;
+  PetscReal          d = 0, dd;
+  char               what[160];
+  PetscFunctionBeginUser;
+  PetscCall(DMCreateGlobalVector(dmH1, &ih));
+  PetscCall(DMCreateGlobalVector(m->dmE1, &ie));
+  PetscCall(CSTriangleFieldQuadDiffMetric(m, dmH3, omega, dmH1, -1e300, ih, &gh));
+  PetscCall(CSOperatorQuadDiffMetric(m, m->x, -1e300, ie, &ge));
+  PetscCall(VecGetLocalSize(ie, &n));
+  PetscCall(VecGetArrayRead(ih, &a));
+  PetscCall(VecGetArrayRead(ie, &b));
+  for (PetscInt k = 0; k < n; k++) d = PetscMax(d, PetscAbsReal(1.0 / (1.0 / PetscRealPart(a[2 * k]) + 1.0 / PetscRealPart(a[2 * k + 1])) / PetscRealPart(b[k]) - 1.0));
+  PetscCall(VecRestoreArrayRead(ih, &a));
+  PetscCall(VecRestoreArrayRead(ie, &b));
+  PetscCall(MPIU_Allreduce(&d, &dd, 1, MPIU_REAL, MPIU_MAX, m->comm));
+  PetscCall(PetscSNPrintf(what, sizeof(what), "%s: halfedge I_Q of df in series = edge I_Q (Eq. 25)", name));
+  PetscCall(CSTestCheck(m->comm, (PetscBool)(dd < 1e-12 && gh == 0 && ge == 0), what, dd, 1e-12));
+  PetscCall(VecDestroy(&ih));
+  PetscCall(VecDestroy(&ie));
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode CheckTriangleField(CSMesh m, const char name[])
 {
   DM        dmH1, dmH3;
@@ -368,6 +395,7 @@ static PetscErrorCode CheckTriangleField(CSMesh m, const char name[])
   PetscCall(PetscSNPrintf(what, sizeof(what), "%s: one moved halfedge breaks d1 on one lens", name));
   PetscCall(CSTestCheck(m->comm, (PetscBool)(nbad == 1), what, (PetscReal)nbad, 1));
   PetscCall(CheckLensMetric(m, dmH1, dmH3, omega, name));
+  PetscCall(CheckQuadDiff(m, dmH1, dmH3, omega, name));
   if (m->topo.genus > 0) PetscCall(CheckHarmonicDual(m, dmH1, omega, name));
   PetscCall(CSEnergyDestroy(&e));
   PetscCall(VecDestroy(&omega));
