@@ -74,6 +74,10 @@ PETSC_EXTERN PetscErrorCode CSHarmonicBasisInner(CSHarmonicBasis hb, Vec alpha, 
 /* h = sum_i <<alpha, omega_i>> omega_i: the harmonic part of alpha in its Hodge decomposition (harmonic forms
    are *1-orthogonal to exact and co-exact ones), e.g. the closing error of crane2013 App. C. h may be alpha. */
 PETSC_EXTERN PetscErrorCode CSHarmonicBasisProject(CSHarmonicBasis hb, Vec alpha, Vec h);
+/* |harmonic part|_*1 of a vector-valued 1-form with bs components per edge (local entry bs*e + k = component k of
+   owned edge e in dmE1 order, e.g. the R^3-valued beta = conj(lambda) df lambda of crane2013 App. C):
+   sqrt(sum_k sum_i <<beta_k, omega_i>>^2), the closing error's size (0 for an exact beta). */
+PETSC_EXTERN PetscErrorCode CSHarmonicBasisHarmonicNorm(CSHarmonicBasis hb, Vec beta, PetscInt bs, PetscReal *hnorm);
 /* Residuals of the basis at the positions of its last SetUp/Update (for tests and reports; each may be NULL): max_i |d1 omega_i|_2 / |omega_i|_2,
    max_i |d0^T *1 omega_i|_2 / |*1 omega_i|_2 (co-closedness relative to the size of its terms), and
    max_ij |<<omega_i, omega_j>> - delta_ij|. */

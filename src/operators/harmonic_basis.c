@@ -388,6 +388,31 @@ PetscErrorCode CSHarmonicBasisProject(CSHarmonicBasis hb, Vec alpha, Vec h)
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode CSHarmonicBasisHarmonicNorm(CSHarmonicBasis hb, Vec beta, PetscInt bs, PetscReal *hnorm)
+{
+  const PetscScalar *b;
+  PetscScalar       *c, *w;
+  PetscInt           n;
+  PetscReal          s = 0;
+  PetscFunctionBeginUser;
+  PetscCall(CSHarmonicBasisSetUp(hb));
+  PetscCall(PetscMalloc1(hb->n + 1, &c));
+  PetscCall(VecGetLocalSize(hb->wE, &n));
+  for (PetscInt k = 0; k < bs; k++) {
+    PetscCall(VecGetArrayRead(beta, &b));
+    PetscCall(VecGetArray(hb->wE, &w));
+    for (PetscInt e = 0; e < n; e++) w[e] = b[bs * e + k];
+    PetscCall(VecRestoreArray(hb->wE, &w));
+    PetscCall(VecRestoreArrayRead(beta, &b));
+    PetscCall(VecPointwiseMult(hb->wE, hb->star1, hb->wE));
+    if (hb->n) PetscCall(VecMDot(hb->wE, hb->n, hb->omega, c));
+    for (PetscInt i = 0; i < hb->n; i++) s += PetscRealPart(c[i] * PetscConj(c[i]));
+  }
+  PetscCall(PetscFree(c));
+  *hnorm = PetscSqrtReal(s);
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode CSHarmonicBasisGetResiduals(CSHarmonicBasis hb, PetscReal *closed, PetscReal *coclosed, PetscReal *orthonormal)
 {
   PetscReal rc = 0, rd = 0, ro = 0;

@@ -213,6 +213,47 @@ static PetscErrorCode ExactProjection(CSMesh m, CSHarmonicBasis hb, Vec star1, P
   PetscFunctionReturn(0);
 }
 
+/* beta = df (3 components per edge): harmonic norm 0; beta + omega_0 (1, 2, 3): sqrt(14). Returns the larger error. */
+static PetscErrorCode CheckHarmonicNorm(CSMesh m, CSHarmonicBasis hb, PetscReal *err)
+{
+  Mat                d0;
+  Vec                u, du, beta, w0;
+  const PetscScalar *a, *o;
+  PetscScalar       *b;
+  PetscInt           n;
+  PetscReal          h0, h1;
+  PetscFunctionBeginUser;
+  PetscCall(CSOperatorDECd0(m, &d0));
+  PetscCall(DMCreateGlobalVector(m->dmV1, &u));
+  PetscCall(DMCreateGlobalVector(m->dmE1, &du));
+  PetscCall(VecGetLocalSize(du, &n));
+  PetscCall(VecCreateMPI(m->comm, 3 * n, PETSC_DETERMINE, &beta));
+  for (PetscInt c = 0; c < 3; c++) {
+    PetscCall(VecStrideGather(m->x, c, u, INSERT_VALUES));
+    PetscCall(MatMult(d0, u, du));
+    PetscCall(VecGetArrayRead(du, &a));
+    PetscCall(VecGetArray(beta, &b));
+    for (PetscInt e = 0; e < n; e++) b[3 * e + c] = a[e];
+    PetscCall(VecRestoreArray(beta, &b));
+    PetscCall(VecRestoreArrayRead(du, &a));
+  }
+  PetscCall(CSHarmonicBasisHarmonicNorm(hb, beta, 3, &h0));
+  PetscCall(CSHarmonicBasisGetForm(hb, 0, &w0));
+  PetscCall(VecGetArrayRead(w0, &o));
+  PetscCall(VecGetArray(beta, &b));
+  for (PetscInt e = 0; e < n; e++)
+    for (PetscInt c = 0; c < 3; c++) b[3 * e + c] += (c + 1) * o[e];
+  PetscCall(VecRestoreArray(beta, &b));
+  PetscCall(VecRestoreArrayRead(w0, &o));
+  PetscCall(CSHarmonicBasisHarmonicNorm(hb, beta, 3, &h1));
+  *err = PetscMax(h0, PetscAbsReal(h1 - PetscSqrtReal(14.0)));
+  PetscCall(MatDestroy(&d0));
+  PetscCall(VecDestroy(&u));
+  PetscCall(VecDestroy(&du));
+  PetscCall(VecDestroy(&beta));
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode CheckResiduals(MPI_Comm comm, CSHarmonicBasis hb, const char name[], const char when[])
 {
   PetscReal rc, rd, ro;
@@ -262,6 +303,9 @@ static PetscErrorCode CheckBasis(MPI_Comm comm, const Source *src)
     PetscCall(CSTestCheck(m->comm, (PetscBool)(d < 1e-11), what, d, 1e-11));
     PetscCall(SpanDistance(hb, hb, star1, &d));
     PetscCall(PetscSNPrintf(what, sizeof(what), "%s: projection is the identity on the basis", name));
+    PetscCall(CSTestCheck(m->comm, (PetscBool)(d < 1e-12), what, d, 1e-12));
+    PetscCall(CheckHarmonicNorm(m, hb, &d));
+    PetscCall(PetscSNPrintf(what, sizeof(what), "%s: HarmonicNorm(df + w_0 (1,2,3)) = sqrt(14), of df 0", name));
     PetscCall(CSTestCheck(m->comm, (PetscBool)(d < 1e-12), what, d, 1e-12));
     PetscCall(ExactProjection(m, hb, star1, &d));
     PetscCall(PetscSNPrintf(what, sizeof(what), "%s: projection of d0 x vanishes", name));
