@@ -54,7 +54,10 @@ PETSC_EXTERN PetscErrorCode CSTriangleFieldFromPositions(CSMesh mesh, Vec x, DM 
 PETSC_EXTERN PetscErrorCode CSTriangleFieldLogLengths(CSMesh mesh, DM dmH3, Vec omega, DM dmH1, Vec lambda);
 /* The triangle-field Willmore energy (soliman2021 App. D.1) W~(omega) = 1/4 <d*omega, d*omega>
    = 1/4 sum_i |sum_ij w_ij omega_ij|^2 / A_i with the cotans and areas of the triangle field's own triangles;
-   W~(df) = W(f). */
-PETSC_EXTERN PetscErrorCode CSTriangleFieldWillmore(CSMesh mesh, DM dmH3, Vec omega, PetscReal *W);
+   W~(df) = W(f). grad (may be NULL; W may be NULL): the partial derivatives with respect to the stored halfedge
+   vectors (dmH3), of W~ as computed from them (per face: the cotans from the two halfedges at each corner, the
+   area from |omega_2 x omega_1|; on face-closed fields every such formula agrees, off them this is the extension
+   differentiated). */
+PETSC_EXTERN PetscErrorCode CSTriangleFieldWillmore(CSMesh mesh, DM dmH3, Vec omega, PetscReal *W, Vec grad);
 
 #endif

@@ -78,7 +78,60 @@ static void AddFace(const PetscReal w[3][3], const PetscInt v[3], PetscScalar *Y
   }
 }
 
-PetscErrorCode CSTriangleFieldWillmore(CSMesh m, DM dmH3, Vec omega, PetscReal *W)
+/* The differential of W~ with respect to the three halfedge vectors w[a] of one face, given z_i = Y_i/(2 A_i) and
+   s_i = |Y_i|^2/(4 A_i^2) at its corners (dW~ = sum_i z_i . dY_i - s_i dA_i). With c_a = <w[a+2], w[a+1]>,
+   an = |n|, n = w[2] x w[1], cot_a = -c_a/an: halfedge a adds (z_tail - z_head) . d(cot_a w[a] / 2), and the
+   area an/6 at each corner gives -(s_0 + s_1 + s_2)/6 d an, with d an = (w[1] x n/an) . dw[2] + (n/an x w[2]) . dw[1]. */
+static void FaceGradient(const PetscReal w[3][3], const PetscReal z[3][3], const PetscReal sv[3], PetscReal G[3][3])
+{
+  PetscReal n[3], an, nh[3], cot[3], K, t[3];
+  CSVecCross(w[2], w[1], n);
+  an = CSVecNorm(n);
+  for (int d = 0; d < 3; d++) nh[d] = n[d] / an;
+  an = FaceCotans(w, cot);
+  K  = -(sv[0] + sv[1] + sv[2]) / 6;
+  for (int a = 0; a < 3; a++) G[a][0] = G[a][1] = G[a][2] = 0;
+  for (int a = 0; a < 3; a++) {
+    int       p = (a + 1) % 3, q = (a + 2) % 3; /* tail corner p, head corner q; c_a = <w[q], w[p]> */
+    PetscReal dz[3], g;
+    CSVecSub(z[p], z[q], dz);
+    g = CSVecDot(dz, w[a]);
+    for (int d = 0; d < 3; d++) {
+      G[a][d] += 0.5 * cot[a] * dz[d];
+      G[q][d] -= 0.5 * g * w[p][d] / an;
+      G[p][d] -= 0.5 * g * w[q][d] / an;
+    }
+    K += 0.5 * g * (-cot[a] * an) / (an * an); /* c_a = -cot_a an */
+  }
+  CSVecCross(w[1], nh, t);
+  for (int d = 0; d < 3; d++) G[2][d] += K * t[d];
+  CSVecCross(nh, w[2], t);
+  for (int d = 0; d < 3; d++) G[1][d] += K * t[d];
+}
+
+/* The gradient pass: per face the differential into the face's own halfedges (each halfedge has one face). */
+static PetscErrorCode WillmoreGradient(CSMesh m, DM dmH3, const PetscScalar *o, const PetscScalar *Y, const PetscScalar *A, Vec grad)
+{
+  CSLocalSum sg;
+  PetscFunctionBeginUser;
+  PetscCall(CSLocalSumBegin(dmH3, &sg));
+  for (CSFaceIter F = CS_FACE_ITER_INIT; CSMeshFaceNext(m, NULL, &F);) {
+    PetscReal w[3][3], z[3][3], sv[3], G[3][3];
+    FaceVectors(m, &F, o, w);
+    for (int a = 0; a < 3; a++) {
+      PetscReal Ai = PetscRealPart(A[F.v[a]]);
+      for (int d = 0; d < 3; d++) z[a][d] = PetscRealPart(Y[3 * F.v[a] + d]) / (2 * Ai);
+      sv[a] = CSVecDot(z[a], z[a]);
+    }
+    FaceGradient(w, z, sv, G);
+    for (int a = 0; a < 3; a++)
+      for (int d = 0; d < 3; d++) sg.a[6 * F.e[a] + 3 * CSMeshEdgeSide(m, &F, a) + d] += G[a][d];
+  }
+  PetscCall(CSLocalSumEnd(&sg, grad));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSTriangleFieldWillmore(CSMesh m, DM dmH3, Vec omega, PetscReal *W, Vec grad)
 {
   Vec                ol;
   CSLocalSum         sy, sa;
@@ -101,11 +154,12 @@ PetscErrorCode CSTriangleFieldWillmore(CSMesh m, DM dmH3, Vec omega, PetscReal *
     PetscReal y[3] = {PetscRealPart(sy.a[3 * i]), PetscRealPart(sy.a[3 * i + 1]), PetscRealPart(sy.a[3 * i + 2])};
     if (m->vertOwned[i]) loc += 0.25 * CSVecDot(y, y) / PetscRealPart(sa.a[i]);
   }
+  if (grad) PetscCall(WillmoreGradient(m, dmH3, o, sy.a, sa.a, grad));
   PetscCall(CSLocalSumEnd(&sy, NULL));
   PetscCall(CSLocalSumEnd(&sa, NULL));
   PetscCall(VecRestoreArrayRead(ol, &o));
   PetscCall(DMRestoreLocalVector(dmH3, &ol));
-  PetscCall(MPIU_Allreduce(&loc, W, 1, MPIU_REAL, MPIU_SUM, m->comm));
+  if (W) PetscCall(MPIU_Allreduce(&loc, W, 1, MPIU_REAL, MPIU_SUM, m->comm));
   PetscFunctionReturn(0);
 }
 

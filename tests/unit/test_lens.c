@@ -368,6 +368,49 @@ static PetscErrorCode CheckQuadDiff(CSMesh m, DM dmH1, DM dmH3, Vec omega, const
   PetscFunctionReturn(0);
 }
 
+/* dW~ against central differences along a random direction, at omega and at a perturbed (non-integrable) omega */
+static PetscErrorCode CheckWillmoreGradient(CSMesh m, DM dmH3, Vec omega, const char name[])
+{
+  Vec         w, g, dir, wp;
+  PetscRandom rnd;
+  PetscReal   eps = 1e-6, Wp, Wm, worst = 0;
+  PetscScalar dg;
+  char        what[160];
+  PetscFunctionBeginUser;
+  PetscCall(VecDuplicate(omega, &w));
+  PetscCall(VecDuplicate(omega, &g));
+  PetscCall(VecDuplicate(omega, &dir));
+  PetscCall(VecDuplicate(omega, &wp));
+  PetscCall(CSTestRandom(m->comm, -1, 1, 17, &rnd));
+  PetscCall(VecCopy(omega, w));
+  for (int k = 0; k < 2; k++) {
+    PetscReal fd;
+    if (k) { /* a non-integrable field: every halfedge moved by up to 2 % of the mean size */
+      PetscReal nrm;
+      PetscCall(VecSetRandom(dir, rnd));
+      PetscCall(VecNorm(omega, NORM_INFINITY, &nrm));
+      PetscCall(VecAXPY(w, 0.02 * nrm, dir));
+    }
+    PetscCall(VecSetRandom(dir, rnd));
+    PetscCall(CSTriangleFieldWillmore(m, dmH3, w, NULL, g));
+    PetscCall(VecDot(g, dir, &dg));
+    PetscCall(VecWAXPY(wp, eps, dir, w));
+    PetscCall(CSTriangleFieldWillmore(m, dmH3, wp, &Wp, NULL));
+    PetscCall(VecWAXPY(wp, -eps, dir, w));
+    PetscCall(CSTriangleFieldWillmore(m, dmH3, wp, &Wm, NULL));
+    fd    = (Wp - Wm) / (2 * eps);
+    worst = PetscMax(worst, PetscAbsReal(fd - PetscRealPart(dg)) / PetscAbsReal(fd));
+  }
+  PetscCall(PetscSNPrintf(what, sizeof(what), "%s: dW~ vs central differences (df and a non-integrable field)", name));
+  PetscCall(CSTestCheck(m->comm, (PetscBool)(worst < 1e-6), what, worst, 1e-6));
+  PetscCall(PetscRandomDestroy(&rnd));
+  PetscCall(VecDestroy(&w));
+  PetscCall(VecDestroy(&g));
+  PetscCall(VecDestroy(&dir));
+  PetscCall(VecDestroy(&wp));
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode CheckTriangleField(CSMesh m, const char name[])
 {
   DM        dmH1, dmH3;
@@ -381,7 +424,7 @@ static PetscErrorCode CheckTriangleField(CSMesh m, const char name[])
   PetscCall(CSLensCreateHalfedgeDM(m, 3, &dmH3));
   PetscCall(DMCreateGlobalVector(dmH3, &omega));
   PetscCall(CSTriangleFieldFromPositions(m, m->x, dmH3, omega));
-  PetscCall(CSTriangleFieldWillmore(m, dmH3, omega, &Wt));
+  PetscCall(CSTriangleFieldWillmore(m, dmH3, omega, &Wt, NULL));
   PetscCall(CSEnergyCreateWillmore(m, &e));
   PetscCall(CSEnergyValue(e, m->x, &W));
   PetscCall(PetscSNPrintf(what, sizeof(what), "%s: |W~(df) - W(f)| / W(f) (W = %.6f)", name, (double)W));
@@ -396,6 +439,7 @@ static PetscErrorCode CheckTriangleField(CSMesh m, const char name[])
   PetscCall(CSTestCheck(m->comm, (PetscBool)(nbad == 1), what, (PetscReal)nbad, 1));
   PetscCall(CheckLensMetric(m, dmH1, dmH3, omega, name));
   PetscCall(CheckQuadDiff(m, dmH1, dmH3, omega, name));
+  PetscCall(CheckWillmoreGradient(m, dmH3, omega, name));
   if (m->topo.genus > 0) PetscCall(CheckHarmonicDual(m, dmH1, omega, name));
   PetscCall(CSEnergyDestroy(&e));
   PetscCall(VecDestroy(&omega));
