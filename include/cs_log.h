@@ -14,4 +14,6 @@ PETSC_EXTERN PetscLogEvent CS_EVENT_SubCholSym, CS_EVENT_SubCholNum, CS_EVENT_Su
 PETSC_EXTERN PetscLogEvent CS_EVENT_SpinEigen, CS_EVENT_SpinPoisson;
 /* methods: the curve flow's Poisson matrix and factorisation (once), its per-step Poisson solves */
 PETSC_EXTERN PetscLogEvent CS_EVENT_CurvePoissonSetUp, CS_EVENT_CurvePoisson;
+/* operators: the harmonic 1-form basis (harmonic_basis.c): set-up / update */
+PETSC_EXTERN PetscLogEvent CS_EVENT_HarmonicBasis;
 #endif

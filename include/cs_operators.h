@@ -9,6 +9,10 @@
    assemble with MatSetValuesLocal. Much cheaper than DMCreateMatrix (DMPlexPreallocate: ~0.5 s at 10k vertices). */
 PETSC_EXTERN PetscErrorCode CSOperatorCreateVertexMatrix(CSMesh mesh, DM dm, PetscInt bs, MatType type, Mat *A);
 
+/* An AIJ matrix with rows of dmRow and columns of dmCol (per-point DMs of the mesh, e.g. dmE1 x dmV3), nz entries per
+   row preallocated in each block, both local-to-global mappings set (MatSetValuesLocal), new nonzeros an error. */
+PETSC_EXTERN PetscErrorCode CSOperatorCreatePointMatrix(DM dmRow, DM dmCol, PetscInt nz, Mat *A);
+
 /* Positive semi-definite cotan Laplacian L = -d*d (soliman2021 Sec. 2): (Lu)_i = sum_j w_ij (u_i - u_j).
    Scalar V x V AIJ on dmV1 (MAT_INITIAL_MATRIX creates *L, MAT_REUSE_MATRIX refills it). */
 PETSC_EXTERN PetscErrorCode CSOperatorLaplacian(CSMesh mesh, Vec x, MatReuse reuse, Mat *L);

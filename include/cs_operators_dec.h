@@ -45,6 +45,7 @@ PETSC_EXTERN PetscErrorCode CSMeshGetClosedGenus(CSMesh mesh, const char caller[
      CSHarmonicBasisGetForm(hb, i, &omega);       borrowed dmE1 global vector, 0 <= i < n
      CSHarmonicBasisGetFaceVectors(hb, i, &v);    borrowed, 3 entries per face (CSHarmonicBasisGetFaceDM)
      CSHarmonicBasisUpdate(hb, x);                new positions, same mesh: recomputes (keeps the solvers' symbolic work)
+     CSHarmonicBasisUpdateFaceVectors(hb, x);     new positions, the same forms: only the face vectors
      CSHarmonicBasisDestroy(&hb);
 
    A mesh with boundary or several components is refused (CSMeshGetClosedGenus); genus 0 gives n = 0.
@@ -57,6 +58,11 @@ PETSC_EXTERN PetscErrorCode CSHarmonicBasisSetFromOptions(CSHarmonicBasis hb);
 PETSC_EXTERN PetscErrorCode CSHarmonicBasisSetSeed(CSHarmonicBasis hb, PetscInt seed);
 PETSC_EXTERN PetscErrorCode CSHarmonicBasisSetUp(CSHarmonicBasis hb);
 PETSC_EXTERN PetscErrorCode CSHarmonicBasisUpdate(CSHarmonicBasis hb, Vec x);
+/* Keeps the forms and recomputes only the face vectors at positions x (O(F), no solve). Harmonic 1-forms depend
+   only on the conformal structure (the Hodge star on 1-forms is conformally invariant), which a conformal flow
+   keeps; the discrete *1 (cotans) changes a little under a discrete conformal map, so the kept forms are then
+   closed exactly but co-closed only approximately at x: CSHarmonicBasisUpdate recomputes them. */
+PETSC_EXTERN PetscErrorCode CSHarmonicBasisUpdateFaceVectors(CSHarmonicBasis hb, Vec x);
 PETSC_EXTERN PetscErrorCode CSHarmonicBasisGetSize(CSHarmonicBasis hb, PetscInt *n);
 PETSC_EXTERN PetscErrorCode CSHarmonicBasisGetForm(CSHarmonicBasis hb, PetscInt i, Vec *omega);
 /* The DM of the face vectors: mesh->dm with 3 dofs per face; local face f of this rank is block f of the
@@ -68,7 +74,11 @@ PETSC_EXTERN PetscErrorCode CSHarmonicBasisInner(CSHarmonicBasis hb, Vec alpha, 
 /* h = sum_i <<alpha, omega_i>> omega_i: the harmonic part of alpha in its Hodge decomposition (harmonic forms
    are *1-orthogonal to exact and co-exact ones), e.g. the closing error of crane2013 App. C. h may be alpha. */
 PETSC_EXTERN PetscErrorCode CSHarmonicBasisProject(CSHarmonicBasis hb, Vec alpha, Vec h);
-/* Residuals of the basis (for tests and reports; each may be NULL): max_i |d1 omega_i|_2 / |omega_i|_2,
+/* |harmonic part|_*1 of a vector-valued 1-form with bs components per edge (local entry bs*e + k = component k of
+   owned edge e in dmE1 order, e.g. the R^3-valued beta = conj(lambda) df lambda of crane2013 App. C):
+   sqrt(sum_k sum_i <<beta_k, omega_i>>^2), the closing error's size (0 for an exact beta). */
+PETSC_EXTERN PetscErrorCode CSHarmonicBasisHarmonicNorm(CSHarmonicBasis hb, Vec beta, PetscInt bs, PetscReal *hnorm);
+/* Residuals of the basis at the positions of its last SetUp/Update (for tests and reports; each may be NULL): max_i |d1 omega_i|_2 / |omega_i|_2,
    max_i |d0^T *1 omega_i|_2 / |*1 omega_i|_2 (co-closedness relative to the size of its terms), and
    max_ij |<<omega_i, omega_j>> - delta_ij|. */
 PETSC_EXTERN PetscErrorCode CSHarmonicBasisGetResiduals(CSHarmonicBasis hb, PetscReal *closed, PetscReal *coclosed, PetscReal *orthonormal);

@@ -30,6 +30,7 @@ static const EventName mesh_events[] = {
   {"CSGradient",       &CS_EVENT_Gradient      },
   {"CSAssemble",       &CS_EVENT_Assemble      },
   {"CSViewerWrite",    &CS_EVENT_ViewerWrite   },
+  {"CSHarmonicBasis",  &CS_EVENT_HarmonicBasis },
 };
 static const EventName cholmod_events[] = {
   {"CSCholmodSym",   &CS_EVENT_CholmodSym  },

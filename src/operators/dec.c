@@ -3,33 +3,12 @@
 #include "cs_operators_dec.h"
 #include "cs_mesh_adjacency.h"
 
-/* An AIJ matrix with rows of dmRow and columns of dmCol (both per-point DMs of the mesh), nz per row. */
-static PetscErrorCode CreateRectangular(DM dmRow, DM dmCol, PetscInt nz, Mat *A)
-{
-  Vec                    r, c;
-  PetscInt               nr, nc;
-  ISLocalToGlobalMapping lr, lc;
-  PetscFunctionBeginUser;
-  PetscCall(DMGetGlobalVector(dmRow, &r));
-  PetscCall(DMGetGlobalVector(dmCol, &c));
-  PetscCall(VecGetLocalSize(r, &nr));
-  PetscCall(VecGetLocalSize(c, &nc));
-  PetscCall(DMRestoreGlobalVector(dmRow, &r));
-  PetscCall(DMRestoreGlobalVector(dmCol, &c));
-  PetscCall(MatCreateAIJ(PetscObjectComm((PetscObject)dmRow), nr, nc, PETSC_DETERMINE, PETSC_DETERMINE, nz, NULL, nz, NULL, A));
-  PetscCall(DMGetLocalToGlobalMapping(dmRow, &lr));
-  PetscCall(DMGetLocalToGlobalMapping(dmCol, &lc));
-  PetscCall(MatSetLocalToGlobalMapping(*A, lr, lc));
-  PetscCall(MatSetOption(*A, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE));
-  PetscFunctionReturn(0);
-}
-
 /* (d0 u)_e = u_j - u_i for e = (i -> j) = (edgeVert[2e] -> edgeVert[2e+1]); rows set by the edge's owner. */
 PetscErrorCode CSOperatorDECd0(CSMesh m, Mat *d0)
 {
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(CS_EVENT_Assemble, 0, 0, 0, 0));
-  PetscCall(CreateRectangular(m->dmE1, m->dmV1, 2, d0));
+  PetscCall(CSOperatorCreatePointMatrix(m->dmE1, m->dmV1, 2, d0));
   for (PetscInt e = 0; e < m->ne; e++) {
     PetscScalar v[2] = {-1.0, 1.0};
     if (!m->edgeOwned[e]) continue;
@@ -47,7 +26,7 @@ PetscErrorCode CSOperatorDECd1(CSMesh m, Mat *d1)
 {
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(CS_EVENT_Assemble, 0, 0, 0, 0));
-  PetscCall(CreateRectangular(m->dmF1, m->dmE1, 3, d1));
+  PetscCall(CSOperatorCreatePointMatrix(m->dmF1, m->dmE1, 3, d1));
   for (CSFaceIter F = CS_FACE_ITER_INIT; CSMeshFaceNext(m, NULL, &F);) {
     PetscScalar s[3];
     for (int a = 0; a < 3; a++) s[a] = CSMeshEdgeSide(m, &F, a) == 0 ? 1.0 : -1.0;

@@ -8,25 +8,12 @@
    edge are always in the local closure). */
 PetscErrorCode CSOperatorLogLengthDerivative(CSMesh m, Vec x, const PetscBool fixed[], MatReuse reuse, Mat *D)
 {
-  Vec              xl, vE, vV;
+  Vec              xl;
   const PetscReal *p;
-  PetscInt         nE, nV;
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(CS_EVENT_Assemble, 0, 0, 0, 0));
-  if (reuse == MAT_INITIAL_MATRIX) {
-    ISLocalToGlobalMapping lE, lV;
-    PetscCall(DMGetGlobalVector(m->dmE1, &vE));
-    PetscCall(DMGetGlobalVector(m->dmV3, &vV));
-    PetscCall(VecGetLocalSize(vE, &nE));
-    PetscCall(VecGetLocalSize(vV, &nV));
-    PetscCall(DMRestoreGlobalVector(m->dmE1, &vE));
-    PetscCall(DMRestoreGlobalVector(m->dmV3, &vV));
-    PetscCall(MatCreateAIJ(m->comm, nE, nV, PETSC_DETERMINE, PETSC_DETERMINE, 6, NULL, 6, NULL, D));
-    PetscCall(DMGetLocalToGlobalMapping(m->dmE1, &lE));
-    PetscCall(DMGetLocalToGlobalMapping(m->dmV3, &lV));
-    PetscCall(MatSetLocalToGlobalMapping(*D, lE, lV));
-    PetscCall(MatSetOption(*D, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE));
-  } else PetscCall(MatZeroEntries(*D));
+  if (reuse == MAT_INITIAL_MATRIX) PetscCall(CSOperatorCreatePointMatrix(m->dmE1, m->dmV3, 6, D));
+  else PetscCall(MatZeroEntries(*D));
   PetscCall(CSMeshGetLocalPositions(m, x, &xl, &p));
   for (PetscInt e = 0; e < m->ne; e++) {
     PetscInt    i = m->edgeVert[2 * e], j = m->edgeVert[2 * e + 1], cols[6], nc = 0;

@@ -1,4 +1,5 @@
-/* Preallocated vertex-by-vertex matrices (the 1-ring pattern), for every operator on vertex fields. */
+/* Preallocated operator matrices: vertex-by-vertex (the 1-ring pattern) and point-by-point (edges x vertices,
+   faces x edges, ...) with a fixed number of entries per row. */
 #include "cs_operators.h"
 
 /* A vertex-by-vertex matrix with bs dofs per vertex on dm (the 1-ring pattern), preallocated from the local
@@ -40,5 +41,26 @@ PetscErrorCode CSOperatorCreateVertexMatrix(CSMesh mesh, DM dm, PetscInt bs, Mat
   PetscCall(DMGetLocalToGlobalMapping(dm, &ltog));
   PetscCall(MatSetLocalToGlobalMapping(*A, ltog, ltog));
   PetscCall(PetscFree2(dnnz, onnz));
+  PetscFunctionReturn(0);
+}
+
+/* An AIJ matrix with rows of dmRow and columns of dmCol (both per-point DMs of the mesh), nz per row. */
+PetscErrorCode CSOperatorCreatePointMatrix(DM dmRow, DM dmCol, PetscInt nz, Mat *A)
+{
+  Vec                    r, c;
+  PetscInt               nr, nc;
+  ISLocalToGlobalMapping lr, lc;
+  PetscFunctionBeginUser;
+  PetscCall(DMGetGlobalVector(dmRow, &r));
+  PetscCall(DMGetGlobalVector(dmCol, &c));
+  PetscCall(VecGetLocalSize(r, &nr));
+  PetscCall(VecGetLocalSize(c, &nc));
+  PetscCall(DMRestoreGlobalVector(dmRow, &r));
+  PetscCall(DMRestoreGlobalVector(dmCol, &c));
+  PetscCall(MatCreateAIJ(PetscObjectComm((PetscObject)dmRow), nr, nc, PETSC_DETERMINE, PETSC_DETERMINE, nz, NULL, nz, NULL, A));
+  PetscCall(DMGetLocalToGlobalMapping(dmRow, &lr));
+  PetscCall(DMGetLocalToGlobalMapping(dmCol, &lc));
+  PetscCall(MatSetLocalToGlobalMapping(*A, lr, lc));
+  PetscCall(MatSetOption(*A, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE));
   PetscFunctionReturn(0);
 }

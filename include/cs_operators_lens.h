@@ -1,0 +1,63 @@
+/* Triangle fields and the lens complex of soliman2021 Sec. 5.1, 5.2, App. A, D.1 (docs/dec.md, "Lens complex").
+
+   Index maps. The lens complex has V~ = V, E~ = H (halfedges), F~ = E u F (a lens per edge, the triangles).
+   A halfedge is an edge with a side: h = (e, s), s = 0 the halfedge running along e's orientation
+   (edgeVert[2e] -> edgeVert[2e+1]) in the face on side 0 (cs_mesh_adjacency.h), s = 1 the opposite one in the
+   face on side 1; twin(e, s) = (e, 1 - s). Halfedge fields live on the edges: a scalar per halfedge is dof s of
+   edge e (local index 2e + s, CSLensCreateHalfedgeDM with dof 1), a vector (a triangle field omega_ij in R^3) is
+   dofs 3s..3s+2 (local index 6e + 3s + c, dof 3). So twin, next and previous halfedges of a face are always in the
+   local closure, on any number of ranks. In face f the halfedge opposite corner a (running v[a+1] -> v[a+2]) is
+   (faceEdge[3f+a], CSMeshEdgeSide(mesh, F, a)); its next is the one opposite corner a+1, its previous the one
+   opposite corner a+2. Lenses are edges (dmE1), triangles faces (dmF1). */
+#ifndef CS_OPERATORS_LENS_H
+#define CS_OPERATORS_LENS_H
+#include "cs_operators_dec.h"
+
+/* mesh->dm with 2*dof unknowns per edge: dof per halfedge (1: scalar, e.g. log lengths; 3: triangle fields). */
+PETSC_EXTERN PetscErrorCode CSLensCreateHalfedgeDM(CSMesh mesh, PetscInt dof, DM *dmH);
+
+/* A~ (soliman2021 Eq. 14): H x V, (A~ u)_ij = (u_i + u_j)/2. Rows of dmH (dof 1), columns dmV1. */
+PETSC_EXTERN PetscErrorCode CSOperatorLensAverage(CSMesh mesh, DM dmH, Mat *A);
+/* C~ (soliman2021 Eq. 14, per face Eq. 30): H x H, (C~ lambda)_ij = log m(l)_ij
+     = (lambda_il - lambda_lj + lambda_jk - lambda_ki) + (lambda_ji - lambda_ij),
+   ijk the face of ij, jil the face of ji. C~ A~ = 0 and rank C~ = |H| - |V| (Lemma A.1). */
+PETSC_EXTERN PetscErrorCode CSOperatorLensCrossRatio(CSMesh mesh, DM dmH, Mat *C);
+/* The lens integrability d1 (soliman2021 Eq. 31, Sec. 5.1): E x H, (d1 omega)_e = -(omega_(e,0) + omega_(e,1)),
+   scalar (apply it per component of a triangle field). */
+PETSC_EXTERN PetscErrorCode CSOperatorLensD1(CSMesh mesh, DM dmH, Mat *d1);
+
+/* The harmonic dual 1-form Y of an edge 1-form eta (e.g. a CSHarmonicBasis form) on halfedges (dmH1 global
+   vector y), with the cotans at positions x: <<Y|omega>> = sum_h y_h omega_h, per component of a triangle field,
+   is the constraint row of soliman2021 Eq. 13 / Algorithm 2; for omega = df it is <<eta, df>> = 0 for harmonic eta. */
+PETSC_EXTERN PetscErrorCode CSLensHarmonicDual(CSMesh mesh, Vec x, Vec eta, DM dmH1, Vec y);
+
+/* The lens d0 (H x V): (d0 u)_h = u_head - u_tail; per component of the positions it gives df. */
+PETSC_EXTERN PetscErrorCode CSOperatorLensD0(CSMesh mesh, DM dmH, Mat *d0);
+/* Dlambda on halfedges (soliman2021 Sec. 5.2, cf. Eq. 5): (Dlambda omega-dot)_h = <omega_h, omega-dot_h>/|omega_h|^2,
+   H x 3H (rows dmH1, columns dmH3), at the triangle field omega. */
+PETSC_EXTERN PetscErrorCode CSOperatorLensLogLengthDerivative(CSMesh mesh, DM dmH1, DM dmH3, Vec omega, MatReuse reuse, Mat *D);
+/* The triangle field's metric (Sec. 5.1): star1_h = 1/2 cot theta_h (dmH1) with theta_h the angle opposite h in
+   omega's own triangle, star0_i = a third of the incident triangle field areas (dmV1). */
+PETSC_EXTERN PetscErrorCode CSTriangleFieldStars(CSMesh mesh, DM dmH3, Vec omega, DM dmH1, Vec star1, Vec star0);
+/* I_H1 = *1 + *1 d0 *0^{-1} d0^T *1 (soliman2021 Eq. 32) on halfedges, scalar H x H (per component of a
+   triangle field), from the stars of CSTriangleFieldStars; d0^T I_H1 d0 = L + L *0^{-1} L for omega = df. */
+PETSC_EXTERN PetscErrorCode CSOperatorLensH1Metric(CSMesh mesh, DM dmH, Vec star1, Vec star0, Mat *H1);
+
+/* I_Q on halfedges (Eq. 25 for triangle fields): (I_Q)_h = 1/(w_h |omega_h|^2), w_h = 1/2 cot theta_h of omega's
+   triangle floored at wmin (*nguard floored halfedges, may be NULL); dmH1 global vector iq. For omega = df the two
+   halfedges of an edge in series give Eq. 25's 1/(w_ij l_ij^2). */
+PETSC_EXTERN PetscErrorCode CSTriangleFieldQuadDiffMetric(CSMesh mesh, DM dmH3, Vec omega, DM dmH1, PetscReal wmin, Vec iq, PetscInt *nguard);
+
+/* omega = df: omega_(e,s) = f_head - f_tail of the halfedge (dmH with dof 3, global vector). */
+PETSC_EXTERN PetscErrorCode CSTriangleFieldFromPositions(CSMesh mesh, Vec x, DM dmH3, Vec omega);
+/* Log halfedge lengths lambda_h = log |omega_h| (dmH3 -> dmH1 global vectors). */
+PETSC_EXTERN PetscErrorCode CSTriangleFieldLogLengths(CSMesh mesh, DM dmH3, Vec omega, DM dmH1, Vec lambda);
+/* The triangle-field Willmore energy (soliman2021 App. D.1) W~(omega) = 1/4 <d*omega, d*omega>
+   = 1/4 sum_i |sum_ij w_ij omega_ij|^2 / A_i with the cotans and areas of the triangle field's own triangles;
+   W~(df) = W(f). grad (may be NULL; W may be NULL): the partial derivatives with respect to the stored halfedge
+   vectors (dmH3), of W~ as computed from them (per face: the cotans from the two halfedges at each corner, the
+   area from |omega_2 x omega_1|; on face-closed fields every such formula agrees, off them this is the extension
+   differentiated). */
+PETSC_EXTERN PetscErrorCode CSTriangleFieldWillmore(CSMesh mesh, DM dmH3, Vec omega, PetscReal *W, Vec grad);
+
+#endif
