@@ -90,6 +90,7 @@ PetscErrorCode CSWillmoreFlowSetType(CSWillmoreFlow F, CSWillmoreFlowType type)
   PetscCall(RegisterAll());
   PetscCall(PetscFunctionListFind(CSWillmoreFlowList, type, &create));
   PetscCheck(create, F->comm, PETSC_ERR_ARG_UNKNOWN_TYPE, "-%stype %s: unknown Willmore flow type", F->prefix, type);
+  if (F->ops.destroy) PetscCall((*F->ops.destroy)(F)); /* the previous kind's data */
   PetscCall(PetscMemzero(&F->ops, sizeof(F->ops)));
   PetscCall(PetscStrncpy(F->type, type, sizeof(F->type)));
   PetscCall((*create)(F));

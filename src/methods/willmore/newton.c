@@ -41,6 +41,19 @@ static PetscErrorCode HessMult(Mat A, Vec v, Vec y)
   PetscFunctionReturn(0);
 }
 
+/* The kind's data with its option defaults (allocated by SetFromOptions, or at the first use without it). */
+static PetscErrorCode GetData(CSWillmoreFlow F, Newton **d)
+{
+  PetscFunctionBeginUser;
+  if (!F->data) {
+    PetscCall(PetscNew(d));
+    (*d)->reuse_its = 0; /* refactoring every iteration: kept factors changed the inexact steps and, on the bumpy sphere, the mesh quality (min angle 20 -> 4.6 deg) */
+    F->data         = *d;
+  }
+  *d = (Newton *)F->data;
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode CreateData(CSWillmoreFlow F)
 {
   Newton  *d;
@@ -49,8 +62,7 @@ static PetscErrorCode CreateData(CSWillmoreFlow F)
   PC          pc;
   char        prefix[96];
   PetscFunctionBeginUser;
-  PetscCall(PetscNew(&d));
-  F->data   = d;
+  d         = (Newton *)F->data; /* allocated by SetUpNewton with the options */
   d->it_dir = -1;
   PetscCall(VecDuplicate(F->x, &d->nrm));
   PetscCall(VecDuplicate(F->x, &d->u));
@@ -80,10 +92,6 @@ static PetscErrorCode CreateData(CSWillmoreFlow F)
   }
   PetscCall(KSPSetTolerances(d->ksp, 1e-2, PETSC_DEFAULT, PETSC_DEFAULT, 100)); /* inexact Newton */
   PetscCall(KSPSetFromOptions(d->ksp));
-  d->reuse_its = 0; /* refactoring every iteration: kept factors changed the inexact steps and, on the bumpy sphere, the mesh quality (min angle 20 -> 4.6 deg) */
-  PetscOptionsBegin(F->comm, F->prefix, "Newton flow", NULL);
-  PetscCall(PetscOptionsInt("-newton_reuse_its", "Keep the factored metric preconditioner of an earlier iteration while CG needed at most this many iterations (0: refactor every iteration)", NULL, d->reuse_its, &d->reuse_its, NULL));
-  PetscOptionsEnd();
   PetscFunctionReturn(0);
 }
 
@@ -117,8 +125,8 @@ static PetscErrorCode NewtonResidual(CSWillmoreFlow F, PetscReal *el)
 {
   Newton *d;
   PetscFunctionBeginUser;
-  if (!F->data) PetscCall(CreateData(F));
-  d = (Newton *)F->data;
+  PetscCall(GetData(F, &d));
+  if (!d->nrm) PetscCall(CreateData(F));
   PetscCall(FillNormals(F, d));
   PetscCall(MatMultTranspose(d->N, F->g, d->gn));
   PetscCall(VecNorm(d->gn, NORM_2, el));
@@ -190,7 +198,13 @@ static PetscErrorCode AcceptNewton(CSWillmoreFlow F)
 static PetscErrorCode SetUpNewton(CSWillmoreFlow F)
 {
   const char *p = F->prefix;
+  Newton     *d;
   PetscFunctionBeginUser;
+  PetscCall(GetData(F, &d));
+  PetscOptionsBegin(F->comm, F->prefix, "Newton flow (-flow_type newton)", NULL);
+  PetscCall(PetscOptionsInt("-newton_reuse_its", "Keep the factored metric preconditioner of an earlier iteration while CG needed at most this many iterations (0: refactor every iteration)", NULL, d->reuse_its, &d->reuse_its, NULL));
+  PetscOptionsEnd();
+  PetscCheck(d->reuse_its >= 0, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%snewton_reuse_its %" PetscInt_FMT ": must be >= 0", p, d->reuse_its);
   PetscCheck(!F->conformal, F->comm, PETSC_ERR_ARG_INCOMP, "-%stype newton is unconstrained: -%sconformal true is not supported (use cgd or pgd)", p, p);
   PetscCheck(!F->area_set && !F->vol_set && !F->points[0] && !F->mobius && !F->target[0], F->comm, PETSC_ERR_ARG_INCOMP, "-%stype newton supports no constraints (area, volume, points, Moebius, target mesh): use gd or cgd", p);
   PetscCheck(F->mesh->topo.boundary_loops == 0, F->comm, PETSC_ERR_ARG_INCOMP, "-%stype newton: the mesh %s has %" PetscInt_FMT " boundary loop(s); newton supports closed surfaces only (use gd or cgd)", p, F->mesh->name, F->mesh->topo.boundary_loops);
@@ -202,6 +216,10 @@ static PetscErrorCode DestroyNewton(CSWillmoreFlow F)
   Newton *d = (Newton *)F->data;
   PetscFunctionBeginUser;
   if (!d) PetscFunctionReturn(0);
+  if (!d->nrm) {
+    PetscCall(PetscFree(F->data));
+    PetscFunctionReturn(0);
+  }
   PetscCall(PetscInfo(NULL, "newton: %" PetscInt_FMT " CG iterations, %" PetscInt_FMT " truncated solves, %" PetscInt_FMT " metric steps, %" PetscInt_FMT " factorisations\n", d->cg_its, d->truncated, d->fallbacks, d->setups));
   PetscCall(MatDestroy(&d->N));
   PetscCall(MatDestroy(&d->A));

@@ -38,7 +38,7 @@ static PetscErrorCode StepOptions(CSWillmoreFlow F, PetscOptionItems *PetscOptio
   PetscCall(PetscOptionsReal("-energy_target", "Stop when the energy is at or below this value (stop_reason energy_target)", NULL, F->energy_target, &F->energy_target, &F->energy_target_set));
   if (!F->max_step_set) F->max_step = F->ops.max_step;
   if (!F->fold_guard_set) F->fold_guard = F->ops.fold_guard;
-  PetscCall(PetscOptionsReal("-max_step", "Reject a trial step that moves a vertex by more than this times the mean edge length, or turns a face over (0: off; default 0.5 for gd and newton, 0 otherwise)", NULL, F->max_step, &F->max_step, &F->max_step_set));
+  PetscCall(PetscOptionsReal("-max_step", "Reject a trial step that moves a vertex by more than this times the mean edge length, or turns a face over (0: off; default 0.5 for gd, 2 for newton, 0 otherwise)", NULL, F->max_step, &F->max_step, &F->max_step_set));
   PetscCall(PetscOptionsBool("-fold_guard", "Stop at the last good state when the enclosed volume changes sign or a face turns over against the input (default on for gd and newton)", NULL, F->fold_guard, &F->fold_guard, &F->fold_guard_set));
   PetscCall(PetscOptionsReal("-merit_rho", "Weight of the quadratic constraint penalty in the merit function, relative to |E(input)|", NULL, F->rho, &F->rho, NULL));
   PetscCall(PetscOptionsReal("-vmax", "Step control: reject steps whose constraint violation exceeds max(v, this), v that of the current state", NULL, F->vmax, &F->vmax, NULL));
