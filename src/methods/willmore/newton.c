@@ -26,6 +26,10 @@ typedef struct {
   PetscInt  it_dir;              /* iteration whose direction phi holds (-1: none) */
   PetscInt  cg_its, fallbacks, truncated;
   PetscInt  reuse_its, last_its, setups; /* keep the factored metric while CG needs at most reuse_its */
+  PetscBool factored;                    /* PC: (s M + L_n) M^-1 (s M + L_n) (default), else M_n itself */
+  Mat       L3, Ln;                      /* cotan Laplacian (dmV3) and L_n = N^T L3 N + s M (V x V, 1-ring) */
+  Vec       m1, w1;                      /* vertex areas M, work (dmV1) */
+  KSP       inner;                       /* factorisation of L_n + s M (prefix <flow prefix>newton_inner_) */
 } Newton;
 
 static PetscErrorCode HessMult(Mat A, Vec v, Vec y)
@@ -41,12 +45,28 @@ static PetscErrorCode HessMult(Mat A, Vec v, Vec y)
   PetscFunctionReturn(0);
 }
 
+/* The factored form of the metric in normal coordinates, as the PC csh2 does on the full metric (h2_pc.c):
+     P = (s M + L_n) M^{-1} (s M + L_n) = N^T I_H2 N + (2 s L_n - lower-order terms of N's variation),
+   L_n = N^T L N, M = *0, s = sqrt(w): two solves with a 1-ring matrix instead of a factorisation of the 2-ring
+   N^T I_H2 N. */
+static PetscErrorCode FactoredApply(PC pc, Vec r, Vec y)
+{
+  Newton *d;
+  PetscFunctionBeginUser;
+  PetscCall(PCShellGetContext(pc, &d));
+  PetscCall(KSPSolve(d->inner, r, d->w1));
+  PetscCall(VecPointwiseMult(d->w1, d->w1, d->m1));
+  PetscCall(KSPSolve(d->inner, d->w1, y));
+  PetscFunctionReturn(0);
+}
+
 /* The kind's data with its option defaults (allocated by SetFromOptions, or at the first use without it). */
 static PetscErrorCode GetData(CSWillmoreFlow F, Newton **d)
 {
   PetscFunctionBeginUser;
   if (!F->data) {
     PetscCall(PetscNew(d));
+    (*d)->factored  = PETSC_TRUE;
     (*d)->reuse_its = 0; /* refactoring every iteration: kept factors changed the inexact steps and, on the bumpy sphere, the mesh quality (min angle 20 -> 4.6 deg) */
     F->data         = *d;
   }
@@ -82,14 +102,29 @@ static PetscErrorCode CreateData(CSWillmoreFlow F)
   PetscCall(KSPCreate(F->comm, &d->ksp));
   PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "%snewton_", F->prefix));
   PetscCall(KSPSetOptionsPrefix(d->ksp, prefix));
+  PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "%snewton_inner_", F->prefix));
   PetscCall(KSPSetType(d->ksp, KSPCG));
-  PetscCall(KSPGetPC(d->ksp, &pc));
   PetscCallMPI(MPI_Comm_size(F->comm, &size));
+  if (d->factored) {
+    PetscCall(KSPGetPC(d->ksp, &pc));
+    PetscCall(PCSetType(pc, PCSHELL));
+    PetscCall(PCShellSetContext(pc, d));
+    PetscCall(PCShellSetApply(pc, FactoredApply));
+    PetscCall(PCShellSetName(pc, "(s M + L_n) M^-1 (s M + L_n)"));
+    PetscCall(DMCreateGlobalVector(F->mesh->dmV1, &d->m1));
+    PetscCall(VecDuplicate(d->m1, &d->w1));
+    PetscCall(KSPCreate(F->comm, &d->inner));
+    PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "%snewton_inner_", F->prefix));
+    PetscCall(KSPSetOptionsPrefix(d->inner, prefix));
+    PetscCall(KSPSetType(d->inner, KSPPREONLY));
+    PetscCall(KSPGetPC(d->inner, &pc));
+  } else PetscCall(KSPGetPC(d->ksp, &pc));
   if (size > 1) PetscCall(PCSetType(pc, "cssubchol")); /* as the saddle solver's Schur complement (docs/solvers.md) */
   else {
     PetscCall(PCSetType(pc, PCCHOLESKY));
     PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERCHOLMOD));
   }
+  if (d->inner) PetscCall(KSPSetFromOptions(d->inner));
   PetscCall(KSPSetTolerances(d->ksp, 1e-2, PETSC_DEFAULT, PETSC_DEFAULT, 100)); /* inexact Newton */
   PetscCall(KSPSetFromOptions(d->ksp));
   PetscFunctionReturn(0);
@@ -133,7 +168,22 @@ static PetscErrorCode NewtonResidual(CSWillmoreFlow F, PetscReal *el)
   PetscFunctionReturn(0);
 }
 
-/* phi = -(N^T I_H2 N)^{-1} N^T g: the H^2 gradient step in normal coordinates (the fallback). */
+static PetscErrorCode FactoredSetUp(CSWillmoreFlow F, Newton *d)
+{
+  PetscReal s = PetscSqrtReal(F->metric.mass_weight);
+  PetscFunctionBeginUser;
+  PetscCall(CSOperatorLaplacian3(F->mesh, F->x, d->L3 ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX, &d->L3));
+  PetscCall(MatPtAP(d->L3, d->N, d->Ln ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX, 2.0, &d->Ln));
+  PetscCall(CSOperatorMass(F->mesh, F->x, d->m1));
+  PetscCall(VecScale(d->m1, s));
+  PetscCall(MatDiagonalSet(d->Ln, d->m1, ADD_VALUES));
+  PetscCall(VecScale(d->m1, 1.0 / s));
+  PetscCall(MatSetOption(d->Ln, MAT_SYMMETRIC, PETSC_TRUE));
+  PetscCall(KSPSetOperators(d->inner, d->Ln, d->Ln));
+  PetscFunctionReturn(0);
+}
+
+/* phi = -P^{-1} N^T g: the H^2 gradient step in normal coordinates (the fallback). */
 static PetscErrorCode MetricStep(Newton *d)
 {
   PC pc;
@@ -154,10 +204,13 @@ static PetscErrorCode Direction(CSWillmoreFlow F, Newton *d)
   PetscFunctionBeginUser;
   PetscCall(CSGeometryMeanEdgeLength(F->mesh, F->x, &h));
   d->eps = 1e-5 * h;
-  if (!d->Mn || d->last_its > d->reuse_its) { /* the metric at x, restricted to normal motion, factored anew */
-    PetscCall(CSMetricUpdate(&F->metric, F->x));
-    PetscCall(MatPtAP(F->metric.H, d->N, d->Mn ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX, 2.0, &d->Mn));
-    PetscCall(KSPSetOperators(d->ksp, d->A, d->Mn));
+  if (d->setups == 0 || d->last_its > d->reuse_its) { /* the metric at x, restricted to normal motion, factored anew */
+    if (d->factored) PetscCall(FactoredSetUp(F, d));
+    else {
+      PetscCall(CSMetricUpdate(&F->metric, F->x));
+      PetscCall(MatPtAP(F->metric.H, d->N, d->Mn ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX, 2.0, &d->Mn));
+    }
+    PetscCall(KSPSetOperators(d->ksp, d->A, d->factored ? d->A : d->Mn));
     PetscCall(KSPSetReusePreconditioner(d->ksp, PETSC_FALSE));
     d->setups++;
   } else PetscCall(KSPSetReusePreconditioner(d->ksp, PETSC_TRUE)); /* an earlier state's metric: still a good PC */
@@ -202,6 +255,7 @@ static PetscErrorCode SetUpNewton(CSWillmoreFlow F)
   PetscFunctionBeginUser;
   PetscCall(GetData(F, &d));
   PetscOptionsBegin(F->comm, F->prefix, "Newton flow (-flow_type newton)", NULL);
+  PetscCall(PetscOptionsBool("-newton_factored_pc", "Precondition CG with (s M + L_n) M^-1 (s M + L_n) (two 1-ring solves) instead of a factorisation of N^T I_H2 N", NULL, d->factored, &d->factored, NULL));
   PetscCall(PetscOptionsInt("-newton_reuse_its", "Keep the factored metric preconditioner of an earlier iteration while CG needed at most this many iterations (0: refactor every iteration)", NULL, d->reuse_its, &d->reuse_its, NULL));
   PetscOptionsEnd();
   PetscCheck(d->reuse_its >= 0, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%snewton_reuse_its %" PetscInt_FMT ": must be >= 0", p, d->reuse_its);
@@ -224,6 +278,11 @@ static PetscErrorCode DestroyNewton(CSWillmoreFlow F)
   PetscCall(MatDestroy(&d->N));
   PetscCall(MatDestroy(&d->A));
   PetscCall(MatDestroy(&d->Mn));
+  PetscCall(MatDestroy(&d->L3));
+  PetscCall(MatDestroy(&d->Ln));
+  PetscCall(VecDestroy(&d->m1));
+  PetscCall(VecDestroy(&d->w1));
+  PetscCall(KSPDestroy(&d->inner));
   PetscCall(KSPDestroy(&d->ksp));
   PetscCall(VecDestroy(&d->nrm));
   PetscCall(VecDestroy(&d->u));
