@@ -5,11 +5,12 @@
    iteration solves
      (N^T H_E N) phi = -N^T g
    by CG (KSP prefix <flow prefix>newton_) without assembling H_E: its products are central differences of the
-   analytic gradient (CSEnergyHessianMult), preconditioned by a Cholesky factorisation of the H^2 metric restricted
-   to normal motion, N^T I_H2 N (soliman2021 Eq. 26; MatPtAP of the assembled metric). Negative curvature: CG
+   analytic gradient (CSEnergyHessianMult), preconditioned by the H^2 metric restricted to normal motion (soliman2021
+   Eq. 26) in csh2's factored form P = (s M + L_n) M^-1 (s M + L_n), L_n = N^T L N (FactoredApply), or by a
+   Cholesky factorisation of N^T I_H2 N itself (-flow_newton_factored_pc false). Negative curvature: CG
    stops when p^T A p <= 0 (KSP_DIVERGED_INDEFINITE_MAT); the iterate it has reached is a descent direction
    (truncated CG, Steihaug) and is taken if it is not zero, otherwise (and whenever the direction is not a descent
-   direction) the H^2 metric step phi = -(N^T I_H2 N)^{-1} N^T g, i.e. one Sobolev gradient step in normal
+   direction) the H^2 metric step phi = -P^{-1} N^T g, i.e. one Sobolev gradient step in normal
    coordinates. Step length: t = 1 first, halved on rejection (energy increase, -flow_max_step, a face turned
    over), doubled after an accepted step up to -flow_t_max (default 1 here). Stopping: the normal residual
    ||N^T g||_2 < -flow_rtol (or -flow_energy_target). Constraints: none (no conformal, area, volume or point
@@ -26,7 +27,7 @@ typedef struct {
   PetscInt  it_dir;              /* iteration whose direction phi holds (-1: none) */
   PetscInt  cg_its, fallbacks, truncated;
   PetscInt  reuse_its, last_its, setups; /* keep the factored metric while CG needs at most reuse_its */
-  PetscBool factored;                    /* PC: (s M + L_n) M^-1 (s M + L_n) (default), else M_n itself */
+  PetscBool factored;                    /* PC: (s M + L_n) M^-1 (s M + L_n) (default), else N^T I_H2 N itself */
   Mat       L3, Ln;                      /* cotan Laplacian (dmV3) and L_n = N^T L3 N + s M (V x V, 1-ring) */
   Vec       m1, w1;                      /* vertex areas M, work (dmV1) */
   KSP       inner;                       /* factorisation of L_n + s M (prefix <flow prefix>newton_inner_) */
@@ -67,7 +68,7 @@ static PetscErrorCode GetData(CSWillmoreFlow F, Newton **d)
   if (!F->data) {
     PetscCall(PetscNew(d));
     (*d)->factored  = PETSC_TRUE;
-    (*d)->reuse_its = 0; /* refactoring every iteration: kept factors changed the inexact steps and, on the bumpy sphere, the mesh quality (min angle 20 -> 4.6 deg) */
+    (*d)->reuse_its = 0; /* refactor every iteration: kept factors change the inexact steps, and the final mesh quality moved both ways (docs/willmore_flow.md) */
     F->data         = *d;
   }
   *d = (Newton *)F->data;
