@@ -18,6 +18,9 @@ struct _p_CSEnergy {
 PETSC_EXTERN PetscErrorCode CSEnergyValue(CSEnergy e, Vec x, PetscReal *E);
 PETSC_EXTERN PetscErrorCode CSEnergyGradient(CSEnergy e, Vec x, PetscReal *E, Vec g);
 PETSC_EXTERN PetscErrorCode CSEnergyDestroy(CSEnergy *e);
+/* y = H v, the Hessian of e at x applied to v, by a central difference of the gradient with the largest vertex
+   displacement eps (energy.c); work: two vectors like x, or NULL. */
+PETSC_EXTERN PetscErrorCode CSEnergyHessianMult(CSEnergy e, Vec x, Vec v, PetscReal eps, Vec work[2], Vec y);
 /* For implementations: allocate an energy shell with a name. */
 PETSC_EXTERN PetscErrorCode CSEnergyCreateShell(CSMesh mesh, const char name[], CSEnergy *e);
 

@@ -154,4 +154,7 @@ PETSC_EXTERN PetscErrorCode CSGeometryAreaVolume(CSMesh mesh, Vec x, PetscReal *
    the reference triangle to the current one; q_mean is weighted by reference face area. q may be NULL. */
 PETSC_EXTERN PetscErrorCode CSGeometryQuasiConformal(CSMesh mesh, Vec xref, Vec x, Vec q, PetscReal *qmean, PetscReal *qmax);
 
+/* Number of faces (over all ranks) whose area vector in x does not point the way it does in xref. */
+PETSC_EXTERN PetscErrorCode CSGeometryFoldedFaces(CSMesh mesh, Vec xref, Vec x, PetscInt *nfolded);
+
 #endif

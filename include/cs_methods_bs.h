@@ -17,7 +17,9 @@
    Boundaries (-bs_boundary fixed|free, Sec. 3.3), heuristic threshold -bs_beta_eps (Sec. 3.2), -bs_perturb f
    (random move of the free vertices by f mean edge lengths first), -bs_hessian_eps s (diamonds with
    sin beta < s left out of K), -bs_monotone false (accept steps that increase W: the paper's plain stepping).
-   Stopping: W < -bs_atol, or a relative decrease below -bs_rtol, or -bs_max_it steps. dt has units of
+   Stopping: W < -bs_atol, or a relative decrease below -bs_rtol, or -bs_max_it steps; semi also stops as stalled
+   when dt falls below -bs_dt_min (default 1e-6 dt0), at -bs_energy_target, and by the guard -bs_max_area_ratio
+   (the total area, or the spread of the vertex areas relative to the input, beyond it: the last good state). dt has units of
    length^2; the default -bs_dt_rel 1 takes dt = (mean edge length)^2. */
 #ifndef CS_METHODS_BS_H
 #define CS_METHODS_BS_H
@@ -39,11 +41,15 @@ PETSC_EXTERN const char *const CSBSProblems[];
 
 /* Why the flow stopped; CSBSConvergedReasons[reason] is the summary's stop_reason. */
 typedef enum {
+  CS_BS_STALLED             = -5, /* semi: dt fell below -bs_dt_min (rejected steps): no progress, not converged */
+  CS_BS_DIVERGED_GUARD      = -4, /* semi: the total area or the vertex-area spread beyond -bs_max_area_ratio:
+                                     stopped with the last good state */
   CS_BS_DIVERGED_TAO        = -3, /* tao: TAO did not converge, or -bs_max_it backward Euler steps */
   CS_BS_DIVERGED_REJECTIONS = -2, /* semi: more than -bs_max_rejections consecutive rejected steps */
   CS_BS_DIVERGED_MAX_IT     = -1, /* semi: -bs_max_it accepted steps */
   CS_BS_ITERATING           = 0,
-  CS_BS_CONVERGED           = 1 /* W < atol or relative decrease < rtol (tao static: TAO's own tests too) */
+  CS_BS_CONVERGED           = 1, /* W < atol or relative decrease < rtol (tao static: TAO's own tests too) */
+  CS_BS_CONVERGED_ENERGY_TARGET = 2 /* semi: W reached -bs_energy_target */
 } CSBSConvergedReason;
 PETSC_EXTERN const char *const *CSBSConvergedReasons;
 

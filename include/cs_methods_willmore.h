@@ -19,6 +19,7 @@ typedef const char *CSWillmoreFlowType;
 #define CSWILLMOREFLOWCGD "cgd"
 #define CSWILLMOREFLOWPGD "pgd"
 #define CSWILLMOREFLOWGD  "gd"
+#define CSWILLMOREFLOWNEWTON "newton"
 
 /* Why Solve stopped; CSWillmoreFlowConvergedReasons[reason] names it, CSWillmoreFlowStopReasons[reason] is the
    summary's stop_reason. */
@@ -28,8 +29,14 @@ typedef enum {
   CS_WILLMORE_FLOW_DIVERGED_MAX_IT,          /* -flow_max_it reached */
   CS_WILLMORE_FLOW_DIVERGED_REJECTIONS,      /* -flow_max_rejections consecutive rejected steps */
   CS_WILLMORE_FLOW_DIVERGED_AREA,            /* total area beyond -flow_max_area_ratio */
-  CS_WILLMORE_FLOW_DIVERGED_MESH_DEGENERATE  /* vertex-area spread beyond -flow_max_area_ratio */
+  CS_WILLMORE_FLOW_DIVERGED_MESH_DEGENERATE, /* vertex-area spread beyond -flow_max_area_ratio */
+  CS_WILLMORE_FLOW_STALLED,                  /* the step size t fell below -flow_t_min: no progress, not converged */
+  CS_WILLMORE_FLOW_CONVERGED_ENERGY_TARGET,  /* the energy reached -flow_energy_target */
+  CS_WILLMORE_FLOW_DIVERGED_FOLDED           /* the enclosed volume changed sign or faces turned over against the
+                                                input (-flow_fold_guard): stopped at the last good state */
 } CSWillmoreFlowConvergedReason;
+/* Whether a reason is a convergence (rtol, or the energy target). */
+#define CSWillmoreFlowReasonConverged(r) ((r) == CS_WILLMORE_FLOW_CONVERGED_RTOL || (r) == CS_WILLMORE_FLOW_CONVERGED_ENERGY_TARGET)
 PETSC_EXTERN const char *const CSWillmoreFlowConvergedReasons[];
 PETSC_EXTERN const char *const CSWillmoreFlowStopReasons[];
 

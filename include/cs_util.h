@@ -56,6 +56,7 @@ PETSC_EXTERN PetscErrorCode CSHistoryMonitorDestroy(void **ctx);
 PETSC_EXTERN PetscErrorCode CSArrayGrow(size_t size, PetscInt n, PetscInt initial, PetscInt *cap, void **a);
 PETSC_EXTERN PetscErrorCode CSPathExtension(const char path[], char ext[], size_t len); /* lower-case, without dot */
 PETSC_EXTERN PetscErrorCode CSPathMakeDir(const char dir[]);       /* mkdir -p of a folder */
+PETSC_EXTERN PetscErrorCode CSFunctionListNames(PetscFunctionList list, char *buf, size_t len); /* "a b c": the registered names */
 PETSC_EXTERN PetscErrorCode CSPathMakeParents(const char path[]); /* mkdir -p of the folders above a file to write */
 /* Numeric options: each value finite and ok (the caller's range test), else an error "-<prefix><name> <v>: <want>". */
 typedef struct {

@@ -178,8 +178,13 @@ static PetscErrorCode Run(MPI_Comm comm)
   PetscCall(PetscOptionsFList("-task", "What to do", NULL, tasks, task, task, sizeof(task), NULL));
   PetscOptionsEnd();
   PetscCall(PetscFunctionListFind(tasks, task, &run));
+  if (!run) {
+    char known[256];
+    PetscCall(CSFunctionListNames(tasks, known, sizeof(known)));
+    PetscCall(PetscFunctionListDestroy(&tasks));
+    SETERRQ(comm, PETSC_ERR_ARG_UNKNOWN_TYPE, "-task %s: unknown task (known: %s)", task, known);
+  }
   PetscCall(PetscFunctionListDestroy(&tasks));
-  PetscCheck(run, comm, PETSC_ERR_ARG_UNKNOWN_TYPE, "-task %s: unknown task (known: info flow spin spectrum curveflow)", task);
   PetscCall((*run)(comm));
   PetscFunctionReturn(0);
 }

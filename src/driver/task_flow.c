@@ -61,6 +61,7 @@ static PetscErrorCode FlowRegisterAll(void)
   PetscCall(PetscFunctionListAdd(&CSFlowList, "cgd", CSFlowWillmore));
   PetscCall(PetscFunctionListAdd(&CSFlowList, "pgd", CSFlowWillmore));
   PetscCall(PetscFunctionListAdd(&CSFlowList, "gd", CSFlowWillmore));
+  PetscCall(PetscFunctionListAdd(&CSFlowList, "newton", CSFlowWillmore));
   PetscCall(PetscFunctionListAdd(&CSFlowList, "bs", CSFlowBS));
   PetscCall(PetscFunctionListAdd(&CSFlowList, "conformal", CSFlowConformal));
   PetscCall(PetscRegisterFinalize(FlowListDestroy));
@@ -79,7 +80,11 @@ PetscErrorCode CSTaskFlow(MPI_Comm comm)
   PetscCall(PetscOptionsFList("-flow_type", "Flow", NULL, CSFlowList, type, type, sizeof(type), NULL));
   PetscOptionsEnd();
   PetscCall(PetscFunctionListFind(CSFlowList, type, &run));
-  PetscCheck(run, comm, PETSC_ERR_ARG_OUTOFRANGE, "-flow_type %s: unknown flow (known: cgd pgd gd bs conformal)", type);
+  if (!run) {
+    char known[256];
+    PetscCall(CSFunctionListNames(CSFlowList, known, sizeof(known)));
+    SETERRQ(comm, PETSC_ERR_ARG_OUTOFRANGE, "-flow_type %s: unknown flow (known: %s)", type, known);
+  }
   PetscCall(CSOutputFromOptions(comm, &out));
   ierr = (*run)(comm, &out);
   if (ierr) PetscCall(CSOutputDestroy(&out)); /* no leak on the error path */

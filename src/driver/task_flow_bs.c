@@ -35,7 +35,7 @@ static PetscErrorCode Report(CSBSFlow flow, CSMesh mesh, CSOutput *out)
   PetscCall(CSBSFlowGetStepSeconds(flow, &t));
   PetscCall(CSBSFlowGetSchemeName(flow, &scheme));
   PetscCall(CSBSFlowGetSolution(flow, &x));
-  PetscCall(PetscPrintf(mesh->comm, "bs flow: %s after %" PetscInt_FMT " steps (%" PetscInt_FMT " rejected), willmore_bs=%.12g, %.3g s per step\n", reason > 0 ? "converged" : "NOT converged", i.it, i.rejected, (double)i.W, (double)(i.it + i.rejected ? t / (i.it + i.rejected) : 0)));
+  PetscCall(PetscPrintf(mesh->comm, "bs flow: %s after %" PetscInt_FMT " steps (%s; %" PetscInt_FMT " rejected), willmore_bs=%.12g, %.3g s per step\n", reason > 0 ? "converged" : "NOT converged", i.it, CSBSConvergedReasons[reason], i.rejected, (double)i.W, (double)(i.it + i.rejected ? t / (i.it + i.rejected) : 0)));
   PetscCall(CSOutputAddMeshFacts(out, mesh, x, mesh->x));
   PetscCall(CSJSONAddReal(out->json, "willmore_bs", i.W));
   PetscCall(CSJSONAddInt(out->json, "iterations", i.it));

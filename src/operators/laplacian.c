@@ -2,7 +2,7 @@
 #include "cs_operators.h"
 
 /* Adds the face blocks to A (dof block size bs: the same weight on each of the bs components). */
-static PetscErrorCode AssembleCotanLaplacian(CSMesh m, Vec x, DM dmX, PetscInt bs, MatReuse reuse, Mat *A)
+static PetscErrorCode AssembleCotanLaplacian(CSMesh m, Vec x, DM dmX, PetscInt bs, MatReuse reuse, Mat *A, PetscBool uniform)
 {
   Vec              xl;
   const PetscReal *p;
@@ -17,7 +17,8 @@ static PetscErrorCode AssembleCotanLaplacian(CSMesh m, Vec x, DM dmX, PetscInt b
     const PetscInt *v = F.v;
     PetscReal       cot[3];
     PetscScalar     K[9] = {0};
-    CSTriangleCotans(F.c, cot);
+    if (uniform) cot[0] = cot[1] = cot[2] = 1; /* each interior edge in two faces: weight 1 */
+    else CSTriangleCotans(F.c, cot);
     for (int k = 0; k < 3; k++) {
       int       i = (k + 1) % 3, j = (k + 2) % 3;
       PetscReal w = 0.5 * cot[k];
@@ -41,14 +42,22 @@ static PetscErrorCode AssembleCotanLaplacian(CSMesh m, Vec x, DM dmX, PetscInt b
 PetscErrorCode CSOperatorLaplacian(CSMesh m, Vec x, MatReuse reuse, Mat *L)
 {
   PetscFunctionBeginUser;
-  PetscCall(AssembleCotanLaplacian(m, x, m->dmV1, 1, reuse, L));
+  PetscCall(AssembleCotanLaplacian(m, x, m->dmV1, 1, reuse, L, PETSC_FALSE));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode CSOperatorLaplacian3(CSMesh m, Vec x, MatReuse reuse, Mat *L3)
 {
   PetscFunctionBeginUser;
-  PetscCall(AssembleCotanLaplacian(m, x, m->dmV3, 3, reuse, L3));
+  PetscCall(AssembleCotanLaplacian(m, x, m->dmV3, 3, reuse, L3, PETSC_FALSE));
+  PetscFunctionReturn(0);
+}
+
+/* The graph (umbrella) Laplacian on each coordinate: weight 1 per interior edge (1/2 on boundary edges). */
+PetscErrorCode CSOperatorGraphLaplacian3(CSMesh m, Vec x, MatReuse reuse, Mat *A3)
+{
+  PetscFunctionBeginUser;
+  PetscCall(AssembleCotanLaplacian(m, x, m->dmV3, 3, reuse, A3, PETSC_TRUE));
   PetscFunctionReturn(0);
 }
 

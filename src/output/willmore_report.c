@@ -18,7 +18,7 @@ static PetscErrorCode SummaryKeys(CSWillmoreFlow flow, CSOutput *out, const CSWi
   PetscCall(CSJSONAddString(out->json, "flow_type", type));
   PetscCall(CSJSONAddString(out->json, "energy_name", energy));
   PetscCall(CSJSONAddInt(out->json, "iterations", i->it));
-  PetscCall(CSJSONAddBool(out->json, "converged", (PetscBool)(reason == CS_WILLMORE_FLOW_CONVERGED_RTOL)));
+  PetscCall(CSJSONAddBool(out->json, "converged", (PetscBool)CSWillmoreFlowReasonConverged(reason)));
   PetscCall(CSJSONAddString(out->json, "stop_reason", CSWillmoreFlowStopReasons[reason]));
   PetscCall(CSJSONAddString(out->json, "degeneration", CSWillmoreFlowDegenerations[i->degeneration]));
   PetscCall(CSJSONAddReal(out->json, "energy_initial", E0)); /* of the input (after any -gen_deform_*) */
@@ -52,7 +52,7 @@ PetscErrorCode CSWillmoreFlowReport(CSWillmoreFlow flow, CSOutput *out)
   PetscCall(CSWillmoreFlowGetMesh(flow, &mesh));
   PetscCall(CSWillmoreFlowGetSolution(flow, &x));
   PetscCall(CSWillmoreFlowGetInitial(flow, &x0));
-  PetscCall(PetscPrintf(mesh->comm, "flow %s: %s after %" PetscInt_FMT " iterations (%" PetscInt_FMT " rejected steps, %" PetscInt_FMT " KSP iterations, %" PetscInt_FMT " edges with guarded I_Q weight), %.3f s\n", type, reason == CS_WILLMORE_FLOW_CONVERGED_RTOL ? "converged" : "NOT converged", i.it, i.rejections, i.ksp_its_total, i.nguard, i.seconds));
+  PetscCall(PetscPrintf(mesh->comm, "flow %s: %s after %" PetscInt_FMT " iterations (%s; %" PetscInt_FMT " rejected steps, %" PetscInt_FMT " KSP iterations, %" PetscInt_FMT " edges with guarded I_Q weight), %.3f s\n", type, CSWillmoreFlowReasonConverged(reason) ? "converged" : "NOT converged", i.it, CSWillmoreFlowStopReasons[reason], i.rejections, i.ksp_its_total, i.nguard, i.seconds));
   PetscCall(SummaryKeys(flow, out, &i));
   PetscCall(CSOutputAddMeshFacts(out, mesh, x, x0));
   PetscCall(CSOutputFinish(out, mesh, x));

@@ -5,8 +5,8 @@
 
 const char *const CSBSSchemes[]  = {"semi", "tao", "CSBSScheme", "CS_BS_SCHEME_", NULL};
 const char *const CSBSProblems[] = {"static", "euler", "CSBSProblem", "CS_BS_PROBLEM_", NULL};
-static const char *const ReasonsShifted[] = {"not_converged", "rejections", "max_it", "iterating", "converged"};
-const char *const       *CSBSConvergedReasons = ReasonsShifted + 3;
+static const char *const ReasonsShifted[] = {"stalled", "diverged", "not_converged", "rejections", "max_it", "iterating", "converged", "energy_target"};
+const char *const       *CSBSConvergedReasons = ReasonsShifted + 5;
 
 PetscErrorCode CSBSFlowCreate(CSMesh mesh, CSBSFlow *flow)
 {
@@ -26,6 +26,8 @@ PetscErrorCode CSBSFlowCreate(CSMesh mesh, CSBSFlow *flow)
   F->max_it     = 100;
   F->max_rej    = 30;
   F->monotone   = PETSC_TRUE;
+  F->dt_min_rel = 1e-6;
+  F->max_area_ratio = 200; /* as the Willmore flow's resolution guard */
   *flow = F;
   PetscFunctionReturn(0);
 }
@@ -60,6 +62,9 @@ static PetscErrorCode CheckOptions(CSBSFlow F)
     {"perturb", F->perturb, F->perturb >= 0 && F->perturb < 1, "must lie in [0, 1)"},
     {"max_it", (PetscReal)F->max_it, F->max_it >= 0, "must be >= 0"},
     {"max_rejections", (PetscReal)F->max_rej, F->max_rej >= 0, "must be >= 0"},
+    {"dt_min_rel", F->dt_min_rel, F->dt_min_rel >= 0 && F->dt_min_rel < 1, "must lie in [0, 1)"},
+    {"max_area_ratio", F->max_area_ratio, F->max_area_ratio == 0 || F->max_area_ratio > 1, "use 0 (off) or a ratio above 1"},
+    {"energy_target", F->energy_target, !PetscIsInfOrNanReal(F->energy_target), "must be finite"},
     {"hessian_eps", F->hessian_eps, !F->hessian_eps_set || (F->hessian_eps >= F->beta_eps && F->hessian_eps < 1), "must lie in [beta_eps, 1)"},
   };
   PetscFunctionBeginUser;
@@ -85,6 +90,9 @@ PetscErrorCode CSBSFlowSetFromOptions(CSBSFlow F)
   PetscCall(PetscOptionsEnum("-problem", "tao: static minimises W in one TaoSolve; euler: backward Euler steps through TAO", "CSBSFlowSetFromOptions", CSBSProblems, (PetscEnum)F->problem, (PetscEnum *)&F->problem, NULL));
   PetscCall(PetscOptionsReal("-hessian_eps", "Leave diamonds with sin beta below this out of K (default -beta_eps)", NULL, F->hessian_eps, &F->hessian_eps, &F->hessian_eps_set));
   PetscCall(PetscOptionsReal("-perturb", "Move the free vertices randomly by this fraction of the mean edge length before flowing (breaks co-circular diamonds, beta = 0, of grid-like meshes)", NULL, F->perturb, &F->perturb, NULL));
+  PetscCall(PetscOptionsReal("-dt_min_rel", "semi: stop as stalled when dt falls below this times the initial dt", NULL, F->dt_min_rel, &F->dt_min_rel, NULL));
+  PetscCall(PetscOptionsReal("-max_area_ratio", "semi: stop with the last good state when the total area, or max(A/A0)/min(A/A0) of the vertex areas, exceeds this (0: off)", NULL, F->max_area_ratio, &F->max_area_ratio, NULL));
+  PetscCall(PetscOptionsReal("-energy_target", "semi: stop when W is at or below this (stop_reason energy_target)", NULL, F->energy_target, &F->energy_target, &F->energy_target_set));
   PetscCall(PetscOptionsBool("-monotone", "semi: reject steps that increase W (false: accept them, as needed when many diamonds start at beta = 0)", NULL, F->monotone, &F->monotone, NULL));
   PetscOptionsEnd();
   PetscCall(CheckOptions(F));
@@ -150,10 +158,39 @@ PetscErrorCode CSBSFlowSetUp(CSBSFlow F)
   if (F->perturb > 0) PetscCall(Perturb(F));
   F->dt     = F->dt_set ? F->dt_opt : F->dt_rel * F->h * F->h;
   F->dt_max = F->dt_max_opt == 0 ? 1e4 * F->dt : F->dt_max_opt;
+  F->dt0    = F->dt;
+  F->dt_min = F->dt_min_rel * F->dt;
+  PetscCall(DMCreateGlobalVector(mesh->dmV1, &F->area0));
+  PetscCall(VecDuplicate(F->area0, &F->areat));
+  PetscCall(CSGeometryVertexAreas(mesh, F->x0, F->area0));
   PetscCall(PetscPrintf(mesh->comm, "bs flow: scheme %s, boundary %s (%" PetscInt_FMT " fixed vertices), beta_eps %g, dt0 %.3e (mean edge %.3e)\n", CSBSSchemes[F->scheme], CSBSBoundaries[F->bc], F->nfixed, (double)F->beta_eps, (double)F->dt, (double)F->h));
   F->ops = F->scheme == CS_BS_SCHEME_SEMI ? &CSBSSchemeSemi : &CSBSSchemeTao;
   PetscCall(F->ops->setup(F));
   F->setupcalled = PETSC_TRUE;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSBSFlowCheckGuard(CSBSFlow F, Vec x, PetscBool *ok)
+{
+  PetscScalar a, a0;
+  PetscReal   amax, amin, ratio, spread, lim = F->max_area_ratio, V = 1, V0 = 1;
+  PetscFunctionBeginUser;
+  *ok = PETSC_TRUE;
+  if (!(lim > 0)) PetscFunctionReturn(0);
+  if (F->mesh->topo.boundary_loops == 0) { /* a closed surface turned inside out, or through itself */
+    PetscCall(CSGeometryAreaVolume(F->mesh, x, NULL, &V));
+    PetscCall(CSGeometryAreaVolume(F->mesh, F->x0, NULL, &V0));
+  }
+  PetscCall(CSGeometryVertexAreas(F->mesh, x, F->areat));
+  PetscCall(VecSum(F->areat, &a));
+  PetscCall(VecSum(F->area0, &a0));
+  ratio = PetscRealPart(a) / PetscRealPart(a0);
+  PetscCall(VecPointwiseDivide(F->areat, F->areat, F->area0));
+  PetscCall(VecMax(F->areat, NULL, &amax));
+  PetscCall(VecMin(F->areat, NULL, &amin));
+  spread = amin > 0 ? amax / amin : PETSC_INFINITY;
+  *ok    = (PetscBool)(ratio < lim && ratio > 1 / lim && spread <= lim && V * V0 > 0);
+  if (!*ok) PetscCall(PetscPrintf(F->mesh->comm, "bs flow: the flow diverges at step %" PetscInt_FMT ": the total area would be %g times the input's, the vertex areas relative to the input spread by %g (-%smax_area_ratio %g), the enclosed volume %g (input %g); stopping with the last good state\n", F->it + 1, (double)ratio, (double)spread, F->hdr.prefix, (double)lim, (double)V, (double)V0));
   PetscFunctionReturn(0);
 }
 
@@ -229,6 +266,8 @@ PetscErrorCode CSBSFlowDestroy(CSBSFlow *flow)
   if (F->ops) PetscCall(F->ops->destroy(F));
   PetscCall(VecDestroy(&F->x));
   PetscCall(VecDestroy(&F->x0));
+  PetscCall(VecDestroy(&F->area0));
+  PetscCall(VecDestroy(&F->areat));
   PetscCall(CSEnergyDestroy(&F->bs));
   PetscCall(CSObjectDestroy((CSObject *)flow));
   PetscFunctionReturn(0);

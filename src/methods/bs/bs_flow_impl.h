@@ -27,6 +27,8 @@ struct _p_CSBSFlow {
   CSBSProblem  problem;
   CSBSBoundary bc;
   PetscReal    beta_eps, hessian_eps, dt_opt, dt_rel, dt_grow, dt_max_opt, atol, rtol, perturb;
+  PetscReal    dt_min_rel, dt_min, dt0, max_area_ratio, energy_target;
+  PetscBool    energy_target_set;
   PetscBool    hessian_eps_set, dt_set, monotone;
   PetscInt     max_it, max_rej;
 
@@ -35,6 +37,7 @@ struct _p_CSBSFlow {
   const PetscBool *fixed;
   PetscInt         nfixed;
   Vec              x, x0;  /* the iterate; the input positions (fixed vertices are reset to them) */
+  Vec              area0, areat; /* vertex areas of the input and of a trial state (the guard) */
   Vec              xmon;   /* the state the monitors see (x, or TAO's iterate with fixed vertices reset) */
   PetscReal        h, dt, dt_max, W;
   PetscInt         it, rejected, row;
@@ -47,6 +50,9 @@ struct _p_CSBSFlow {
 };
 
 PETSC_INTERN PetscErrorCode CSBSFlowResetFixed(CSBSFlow, Vec);
+/* The divergence guard (-bs_max_area_ratio): *ok false (and a message) when x's total area or vertex-area spread
+   relative to the input is beyond the ratio. */
+PETSC_INTERN PetscErrorCode CSBSFlowCheckGuard(CSBSFlow, Vec x, PetscBool *ok);
 /* Calls the monitors on flow->xmon; START and STEP advance the history row (START only when not resumed). */
 PETSC_INTERN PetscErrorCode CSBSFlowMonitor(CSBSFlow, CSBSMonitorInfo *);
 

@@ -85,7 +85,12 @@ static PetscErrorCode SemiReject(CSBSFlow F, KSPConvergedReason reason)
   F->rejected++;
   PetscCall(PetscPrintf(F->mesh->comm, "bs semi: step rejected (%s), dt %.3e -> %.3e\n", reason < 0 ? KSPConvergedReasons[reason] : "energy increased", (double)F->dt, (double)(F->dt / 4)));
   F->dt /= 4;
-  if (++S->consecutive > F->max_rej) {
+  if (F->dt < F->dt_min) {
+    /* an accepted step at such a dt moves nothing: "converged" by the relative decrease would be false (the
+       co-circular torus, bobenko-schroeder2005 Sec. 4: no descent from beta = 0) */
+    PetscCall(PetscPrintf(F->mesh->comm, "bs semi: dt %.3e fell below -%sdt_min_rel times the initial dt (%.3e): stalled, stopping with the last accepted state (step %" PetscInt_FMT ")\n", (double)F->dt, F->hdr.prefix, (double)F->dt_min, F->it));
+    F->reason = CS_BS_STALLED;
+  } else if (++S->consecutive > F->max_rej) {
     PetscCall(PetscPrintf(F->mesh->comm, "bs semi: %" PetscInt_FMT " consecutive rejected steps (-%smax_rejections), stopping with the last accepted state (step %" PetscInt_FMT ")\n", S->consecutive, F->hdr.prefix, F->it));
     F->reason = CS_BS_DIVERGED_REJECTIONS;
   }
@@ -115,12 +120,21 @@ static PetscErrorCode SemiStep(CSBSFlow F)
     PetscCall(SemiReject(F, reason));
     PetscFunctionReturn(0);
   }
+  PetscCall(CSBSFlowCheckGuard(F, S->xnew, &ok));
+  if (!ok) {
+    F->reason = CS_BS_DIVERGED_GUARD; /* x is the last accepted state */
+    PetscFunctionReturn(0);
+  }
   S->consecutive = 0;
   F->it++;
   PetscCall(VecCopy(S->xnew, F->x));
   PetscCall(CSEnergyWillmoreBSHessian(F->bs, F->x, 0, MAT_REUSE_MATRIX, &S->K, &F->W, S->g));
   S->shift = 0;
-  if (F->W < F->atol || (F->W <= Wold && Wold - F->W <= F->rtol * Wold)) F->reason = CS_BS_CONVERGED;
+  if (F->energy_target_set && F->W <= F->energy_target) {
+    PetscCall(PetscPrintf(F->mesh->comm, "bs semi: W = %.10g reached -%senergy_target %.10g\n", (double)F->W, F->hdr.prefix, (double)F->energy_target));
+    F->reason = CS_BS_CONVERGED_ENERGY_TARGET;
+  } else if (F->W < F->atol || (F->W <= Wold && Wold - F->W <= F->rtol * Wold && dtstep >= F->dt0)) F->reason = CS_BS_CONVERGED;
+  /* a small decrease at a dt cut down by rejections is no evidence of a minimum: dt grows back first */
   else F->dt = PetscMin(F->dt * F->dt_grow, F->dt_max);
   PetscCall(PetscMemzero(&info, sizeof(info)));
   info.event     = CS_BS_MONITOR_STEP;

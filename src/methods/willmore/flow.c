@@ -3,10 +3,10 @@
 #include "willmore_impl.h"
 #include "cs_package.h"
 
-const char *const CSWillmoreFlowConvergedReasons[] = {"ITERATING", "CONVERGED_RTOL", "DIVERGED_MAX_IT", "DIVERGED_REJECTIONS", "DIVERGED_AREA", "DIVERGED_MESH_DEGENERATE", NULL};
+const char *const CSWillmoreFlowConvergedReasons[] = {"ITERATING", "CONVERGED_RTOL", "DIVERGED_MAX_IT", "DIVERGED_REJECTIONS", "DIVERGED_AREA", "DIVERGED_MESH_DEGENERATE", "STALLED", "CONVERGED_ENERGY_TARGET", "DIVERGED_FOLDED", NULL};
 /* the summary's stop_reason (unchanged from before the object) */
 const char *const CSWillmoreFlowDegenerations[] = {"none", "fins", "squeeze", "smooth", NULL};
-const char *const CSWillmoreFlowStopReasons[] = {"iterating", "converged", "max_it", "rejections", "diverged", "mesh_degenerate", NULL};
+const char *const CSWillmoreFlowStopReasons[] = {"iterating", "converged", "max_it", "rejections", "diverged", "mesh_degenerate", "stalled", "energy_target", "folded", NULL};
 
 static PetscFunctionList CSWillmoreFlowList = NULL;
 
@@ -31,6 +31,7 @@ static PetscErrorCode RegisterAll(void)
   PetscCall(CSWillmoreFlowRegister(CSWILLMOREFLOWCGD, CSWillmoreFlowCreate_CGD));
   PetscCall(CSWillmoreFlowRegister(CSWILLMOREFLOWPGD, CSWillmoreFlowCreate_PGD));
   PetscCall(CSWillmoreFlowRegister(CSWILLMOREFLOWGD, CSWillmoreFlowCreate_GD));
+  PetscCall(CSWillmoreFlowRegister(CSWILLMOREFLOWNEWTON, CSWillmoreFlowCreate_Newton));
   PetscCall(PetscRegisterFinalize(ListDestroy));
   PetscFunctionReturn(0);
 }
@@ -47,6 +48,7 @@ static void SetDefaults(CSWillmoreFlow F)
   F->wmin            = 1e-2;
   F->max_it          = 100;
   F->max_rej         = 30;
+  F->t_min           = 1e-10; /* 2^-33: far below any step that still moves the surface */
   F->proj_max_it     = 20;
   F->soc_max_it      = 2;
   F->proj_tmu        = 1e6;
@@ -88,6 +90,7 @@ PetscErrorCode CSWillmoreFlowSetType(CSWillmoreFlow F, CSWillmoreFlowType type)
   PetscCall(RegisterAll());
   PetscCall(PetscFunctionListFind(CSWillmoreFlowList, type, &create));
   PetscCheck(create, F->comm, PETSC_ERR_ARG_UNKNOWN_TYPE, "-%stype %s: unknown Willmore flow type", F->prefix, type);
+  if (F->ops.destroy) PetscCall((*F->ops.destroy)(F)); /* the previous kind's data */
   PetscCall(PetscMemzero(&F->ops, sizeof(F->ops)));
   PetscCall(PetscStrncpy(F->type, type, sizeof(F->type)));
   PetscCall((*create)(F));
@@ -213,6 +216,8 @@ PetscErrorCode CSWillmoreFlowDestroy(CSWillmoreFlow *flow)
   PetscFunctionBeginUser;
   if (!F) PetscFunctionReturn(0);
   PetscCall(CSWillmoreFlowMonitorCancel(F));
+  if (F->ops.destroy) PetscCall((*F->ops.destroy)(F));
+  PetscCall(VecDestroy(&F->xgood));
   if (F->setupcalled) {
     PetscCall(CSSaddleDestroy(&F->saddle));
     PetscCall(CSMetricDestroy(&F->metric));

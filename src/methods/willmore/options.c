@@ -34,6 +34,12 @@ static PetscErrorCode StepOptions(CSWillmoreFlow F, PetscOptionItems *PetscOptio
   PetscCall(PetscOptionsReal("-t_grow", "Factor on t after an accepted step", NULL, F->grow, &F->grow, NULL));
   PetscCall(PetscOptionsBool("-step_control", "Accept a step only if the merit function decreases (else halve t)", NULL, F->step_control, &F->step_control, NULL));
   PetscCall(PetscOptionsInt("-max_rejections", "Consecutive rejected steps before giving up", NULL, F->max_rej, &F->max_rej, NULL));
+  PetscCall(PetscOptionsReal("-t_min", "Stop as stalled (not converged) when the step size t falls below this", NULL, F->t_min, &F->t_min, NULL));
+  PetscCall(PetscOptionsReal("-energy_target", "Stop when the energy is at or below this value (stop_reason energy_target)", NULL, F->energy_target, &F->energy_target, &F->energy_target_set));
+  if (!F->max_step_set) F->max_step = F->ops.max_step;
+  if (!F->fold_guard_set) F->fold_guard = F->ops.fold_guard;
+  PetscCall(PetscOptionsReal("-max_step", "Reject a trial step that moves a vertex by more than this times the mean edge length, or turns a face over (0: off; default 0.5 for gd, 2 for newton, 0 otherwise)", NULL, F->max_step, &F->max_step, &F->max_step_set));
+  PetscCall(PetscOptionsBool("-fold_guard", "Stop at the last good state when the enclosed volume changes sign or a face turns over against the input (default on for gd and newton)", NULL, F->fold_guard, &F->fold_guard, &F->fold_guard_set));
   PetscCall(PetscOptionsReal("-merit_rho", "Weight of the quadratic constraint penalty in the merit function, relative to |E(input)|", NULL, F->rho, &F->rho, NULL));
   PetscCall(PetscOptionsReal("-vmax", "Step control: reject steps whose constraint violation exceeds max(v, this), v that of the current state", NULL, F->vmax, &F->vmax, NULL));
   PetscCall(PetscOptionsReal("-restore_above", "CGD/GD: project an accepted state whose constraint violation exceeds this back onto the constraints (0: never)", NULL, F->vrestore, &F->vrestore, NULL));
@@ -95,6 +101,9 @@ static PetscErrorCode CheckValues(CSWillmoreFlow F)
     {"fairing_epsilon", F->eps, F->eps > 0, "must be > 0"},
     {"max_it", (PetscReal)F->max_it, F->max_it >= 0, "must be >= 0"},
     {"max_rejections", (PetscReal)F->max_rej, F->max_rej >= 1, "must be >= 1"},
+    {"t_min", F->t_min, F->t_min >= 0 && F->t_min <= F->t, "must lie in [0, t]"},
+    {"max_step", F->max_step, F->max_step >= 0, "use 0 (off) or a positive fraction of the mean edge length"},
+    {"energy_target", F->energy_target, !PetscIsInfOrNanReal(F->energy_target), "must be finite"},
     {"soc_max_it", (PetscReal)F->soc_max_it, F->soc_max_it >= 0, "use 0 (no corrections) or a positive count"},
   };
   PetscFunctionBeginUser;
@@ -124,7 +133,7 @@ PetscErrorCode CSWillmoreFlowSetFromOptions(CSWillmoreFlow F)
   PetscCall(CSWillmoreFlowEnergyList(&energies));
   PetscCall(PetscStrncpy(type, F->type, sizeof(type)));
   PetscOptionsBegin(F->comm, F->prefix, "Constrained Willmore flow (soliman2021)", NULL);
-  PetscCall(PetscOptionsString("-type", "cgd|pgd|gd", NULL, type, type, sizeof(type), &set));
+  PetscCall(PetscOptionsString("-type", "cgd|pgd|gd|newton", NULL, type, type, sizeof(type), &set));
   if (set) PetscCall(CSWillmoreFlowSetType(F, type));
   PetscCall(StepOptions(F, PetscOptionsObject));
   PetscCall(ProblemOptions(F, energies, PetscOptionsObject));

@@ -138,6 +138,8 @@ static PetscErrorCode SetUpPositions(CSWillmoreFlow F)
   PetscCall(CSGeometryVertexAreas(F->mesh, F->x0, F->area0));
   PetscCall(VecSum(F->area0, &a0));
   F->area0_total = PetscRealPart(a0);
+  PetscCall(CSGeometryAreaVolume(F->mesh, F->x0, NULL, &F->V0));
+  if (F->fold_guard) PetscCall(VecDuplicate(F->x, &F->xgood));
   PetscFunctionReturn(0);
 }
 

@@ -8,7 +8,8 @@ static PetscErrorCode Evaluate(CSWillmoreFlow F)
   PetscCall(CSEnergyGradient(F->energy, F->x, &F->E, F->g));
   PetscCall(CSWFZeroFixed(F, F->g));
   PetscCall(CSWFEvalConstraints(F, F->x, F->c, F->cx, PETSC_TRUE));
-  PetscCall(CSWFResidual(F, &F->el));
+  if (F->ops.residual) PetscCall((*F->ops.residual)(F, &F->el));
+  else PetscCall(CSWFResidual(F, &F->el));
   PetscCall(CSWFViolation(F, F->c, F->cx, &F->conf, &F->glob));
   PetscCall(CSGeometryAreaVolume(F->mesh, F->x, &F->A, &F->V));
   PetscCall(CSWFMeasureQuality(F));
@@ -19,7 +20,7 @@ static PetscErrorCode Evaluate(CSWillmoreFlow F)
 static PetscErrorCode Operators(CSWillmoreFlow F)
 {
   PetscFunctionBeginUser;
-  PetscCall(CSMetricUpdate(&F->metric, F->x));
+  if (!F->ops.own_metric) PetscCall(CSMetricUpdate(&F->metric, F->x));
   if (F->conformal) {
     PetscInt ng;
     PetscCall(CSWFQuadDiffMetric(F, F->x, &ng));
@@ -29,13 +30,20 @@ static PetscErrorCode Operators(CSWillmoreFlow F)
   PetscFunctionReturn(0);
 }
 
-/* Trial steps with halved t until one is accepted (*accepted) or -flow_max_rejections is exceeded. */
+/* Trial steps with halved t until one is accepted (*accepted), -flow_max_rejections is exceeded (reason
+   DIVERGED_REJECTIONS) or t falls below -flow_t_min (STALLED); x stays the last accepted state. */
 static PetscErrorCode StepWithRejections(CSWillmoreFlow F, PetscBool *accepted)
 {
   PetscFunctionBeginUser;
   F->kspits = 0;
   for (PetscInt rej = 0;; rej++) {
     PetscBool accept;
+    if (F->t < F->t_min) {
+      PetscCall(PetscPrintf(F->comm, "flow: the step size t = %g fell below -%st_min (%g) at iteration %" PetscInt_FMT ": stalled, stopping with the last accepted state (not converged: el_residual %.3e)\n", (double)F->t, F->prefix, (double)F->t_min, F->it, (double)F->el));
+      *accepted = PETSC_FALSE;
+      F->reason = CS_WILLMORE_FLOW_STALLED;
+      PetscFunctionReturn(0);
+    }
     if (rej > F->max_rej) {
       /* stop cleanly: x is the last accepted state, and E, el, c belong to it */
       PetscCall(PetscPrintf(F->comm, "flow: %" PetscInt_FMT " consecutive steps rejected at iteration %" PetscInt_FMT " (t = %g, -%smax_rejections): stopping with the last accepted state\n", rej, F->it, (double)F->t, F->prefix));
@@ -43,6 +51,7 @@ static PetscErrorCode StepWithRejections(CSWillmoreFlow F, PetscBool *accepted)
       PetscFunctionReturn(0);
     }
     PetscCall((*F->ops.trial)(F, &accept));
+    if (accept) PetscCall(CSWFCheckStepGeometry(F, &accept));
     if (accept && !F->step_control) PetscCall(CSWFCheckFinite(F, &accept));
     else if (accept) PetscCall((*F->ops.filter)(F, &accept));
     if (accept) break;
@@ -76,6 +85,20 @@ static PetscErrorCode ProjectAtStop(CSWillmoreFlow F)
   PetscFunctionReturn(0);
 }
 
+/* The fold guard (guards.c): a folded state is replaced by the last good one, which the monitors then show and
+   the flow returns. */
+static PetscErrorCode StopIfFolded(CSWillmoreFlow F)
+{
+  PetscBool folded;
+  PetscFunctionBeginUser;
+  PetscCall(CSWFCheckFolds(F, &folded));
+  if (!folded) PetscFunctionReturn(0);
+  PetscCall(VecCopy(F->xgood, F->x));
+  PetscCall(Evaluate(F));
+  F->reason = CS_WILLMORE_FLOW_DIVERGED_FOLDED;
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode CSWillmoreFlowStep(CSWillmoreFlow F, CSWillmoreFlowConvergedReason *reason)
 {
   PetscBool accepted;
@@ -87,18 +110,23 @@ PetscErrorCode CSWillmoreFlowStep(CSWillmoreFlow F, CSWillmoreFlowConvergedReaso
   }
   F->reason = CS_WILLMORE_FLOW_ITERATING;
   PetscCall(Evaluate(F));
+  PetscCall(StopIfFolded(F));
   /* the guard (and the projection of the state it stops at) before the monitors, so the history, the ParaView
      series and the progress line show the state the flow returns; a NaN state is left to the check below */
-  if (F->E == F->E && F->el == F->el) PetscCall(CSWFCheckResolution(F, &F->reason));
+  if (!F->reason && F->E == F->E && F->el == F->el) PetscCall(CSWFCheckResolution(F, &F->reason));
   if (F->reason == CS_WILLMORE_FLOW_DIVERGED_MESH_DEGENERATE) PetscCall(ProjectAtStop(F));
   for (PetscInt i = 0; i < F->nmonitor; i++) PetscCall((*F->monitor[i].fn)(F, F->it, F->monitor[i].ctx));
   PetscCheck(F->E == F->E && F->el == F->el, F->comm, PETSC_ERR_FP, "flow: the energy or the residual is not a number at iteration %" PetscInt_FMT " (degenerate triangles?); try a smaller -%st", F->it, F->prefix);
   if (!F->reason && F->el < F->rtol && PetscMax(F->conf, F->glob) < F->ctol) F->reason = CS_WILLMORE_FLOW_CONVERGED_RTOL;
+  if (!F->reason && F->energy_target_set && F->E <= F->energy_target) {
+    PetscCall(PetscPrintf(F->comm, "flow: the energy %.10g reached -%senergy_target %.10g at iteration %" PetscInt_FMT "\n", (double)F->E, F->prefix, (double)F->energy_target, F->it));
+    F->reason = CS_WILLMORE_FLOW_CONVERGED_ENERGY_TARGET;
+  }
   if (!F->reason && F->it >= F->max_it) F->reason = CS_WILLMORE_FLOW_DIVERGED_MAX_IT;
   if (!F->reason) {
     PetscCall(Operators(F));
     PetscCall(StepWithRejections(F, &accepted));
-    if (!accepted) F->reason = CS_WILLMORE_FLOW_DIVERGED_REJECTIONS;
+    if (!accepted && !F->reason) F->reason = CS_WILLMORE_FLOW_DIVERGED_REJECTIONS;
   }
   if (!F->reason) {
     PetscCall(VecCopy(F->xt, F->x));

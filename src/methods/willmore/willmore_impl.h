@@ -67,6 +67,11 @@ struct _CSWillmoreFlowOps {
   PetscErrorCode (*accept)(CSWillmoreFlow);              /* x = xt done: multipliers, restoration */
   PetscErrorCode (*grow)(CSWillmoreFlow);                /* step sizes after an accepted step */
   PetscErrorCode (*shrink)(CSWillmoreFlow);              /* step sizes after a rejected step */
+  PetscErrorCode (*residual)(CSWillmoreFlow, PetscReal *); /* the stopping residual at x (NULL: el_residual) */
+  PetscErrorCode (*destroy)(CSWillmoreFlow);             /* the kind's own data (NULL: none) */
+  PetscReal max_step;       /* default of -flow_max_step (0: off) */
+  PetscBool fold_guard;     /* default of -flow_fold_guard */
+  PetscBool own_metric;     /* the kind updates the metric itself, when it needs it (newton) */
 };
 
 typedef struct {
@@ -131,6 +136,16 @@ struct _p_CSWillmoreFlow {
   PetscReal             tmu_grow, tmu_max; /* own schedule of the dual step (0: t_mu follows t) */
   PetscReal             tmu_ratio_max;     /* following t: t_mu <= this * t (1e3 times the initial t_mu / t) */
 
+  /* geometric step control and guards (gd, newton: docs/willmore_flow.md "Unconstrained descent") */
+  PetscReal             max_step;      /* reject a trial step moving a vertex by more than this times the mean edge length */
+  PetscBool             max_step_set, fold_guard, fold_guard_set;
+  PetscReal             t_min;         /* t below this: stalled */
+  PetscReal             energy_target; /* stop when E <= this */
+  PetscBool             energy_target_set;
+  Vec                   xgood;         /* the last state that passed the fold guard */
+  PetscReal             V0;            /* enclosed volume of the input */
+  void                 *data;          /* the kind's own data */
+
   /* loop state */
   PetscInt              it, rejections, kspits_total, kspits, nguard;
   PetscBool             resumed, started;
@@ -162,6 +177,8 @@ PETSC_INTERN PetscErrorCode CSWFRestore(CSWillmoreFlow F, PetscInt *kspits);
 /* guards.c */
 PETSC_INTERN PetscErrorCode CSWFMeasureQuality(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFCheckResolution(CSWillmoreFlow F, CSWillmoreFlowConvergedReason *reason);
+PETSC_INTERN PetscErrorCode CSWFCheckFolds(CSWillmoreFlow F, PetscBool *folded);
+PETSC_INTERN PetscErrorCode CSWFCheckStepGeometry(CSWillmoreFlow F, PetscBool *accept);
 /* setup.c */
 PETSC_INTERN PetscErrorCode CSWFSetUpBoundary(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFSetUpConstraints(CSWillmoreFlow F);
@@ -173,6 +190,7 @@ PETSC_INTERN PetscErrorCode CSWillmoreFlowEnergyList(PetscFunctionList *list);
 PETSC_INTERN PetscErrorCode CSWillmoreFlowCreate_CGD(CSWillmoreFlow);
 PETSC_INTERN PetscErrorCode CSWillmoreFlowCreate_PGD(CSWillmoreFlow);
 PETSC_INTERN PetscErrorCode CSWillmoreFlowCreate_GD(CSWillmoreFlow);
+PETSC_INTERN PetscErrorCode CSWillmoreFlowCreate_Newton(CSWillmoreFlow);
 PETSC_INTERN PetscErrorCode CSWFAcceptCGD(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFGrowCGD(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFShrinkCGD(CSWillmoreFlow F);

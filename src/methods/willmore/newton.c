@@ -1,0 +1,402 @@
+/* -flow_type newton: Newton-Krylov minimisation of the energy (unconstrained) in normal coordinates.
+   The iterate moves along the unit vertex normals n_i of the current state, x(phi) = x + N phi (N: 3V x V, column
+   i = n_i at vertex i), as Surface Evolver's hessian_seek does with hessian_normal: the tangential part of the
+   discrete gradient only slides vertices and is what degrades the mesh (docs/willmore_flow.md "Newton"). Each
+   iteration solves
+     (N^T H_E N) phi = -N^T g
+   by CG (KSP prefix <flow prefix>newton_) without assembling H_E: its products are central differences of the
+   analytic gradient (CSEnergyHessianMult), preconditioned by the H^2 metric restricted to normal motion (soliman2021
+   Eq. 26) in csh2's factored form P = (s M + L_n) M^-1 (s M + L_n), L_n = N^T L N (FactoredApply), or by a
+   Cholesky factorisation of N^T I_H2 N itself (-flow_newton_factored_pc false). Negative curvature: CG
+   stops when p^T A p <= 0 (KSP_DIVERGED_INDEFINITE_MAT); the iterate it has reached is a descent direction
+   (truncated CG, Steihaug) and is taken if it is not zero, otherwise (and whenever the direction is not a descent
+   direction) the H^2 metric step phi = -P^{-1} N^T g, i.e. one Sobolev gradient step in normal
+   coordinates. After an accepted step the vertices relax within their tangent planes toward the graph-harmonic
+   distribution (Relax, -flow_newton_relax). Step length: t = 1 first, halved on rejection (energy increase, -flow_max_step, a face turned
+   over), doubled after an accepted step up to -flow_t_max (default 1 here). Stopping: the normal residual
+   ||N^T g||_2 < -flow_rtol (or -flow_energy_target). Constraints: none (no conformal, area, volume or point
+   constraint; closed surfaces only): refused with a message. */
+#include "willmore_impl.h"
+#include "cs_geometry.h"
+
+typedef struct {
+  Mat       N, A, Mn; /* normals, the shell Hessian N^T H N, the metric N^T I_H2 N */
+  KSP       ksp;
+  Vec       nrm, u, hu, *work; /* dmV3 (work: 2) */
+  Vec       gn, phi, b;          /* dmV1 */
+  PetscReal eps;                 /* displacement of the Hessian's central difference */
+  PetscInt  it_dir;              /* iteration whose direction phi holds (-1: none) */
+  PetscInt  cg_its, fallbacks, truncated;
+  PetscInt  reuse_its, last_its, setups; /* keep the factored metric while CG needs at most reuse_its */
+  PetscBool factored;                    /* PC: (s M + L_n) M^-1 (s M + L_n) (default), else N^T I_H2 N itself */
+  Mat       L3, Ln;                      /* cotan Laplacian (dmV3) and L_n = N^T L3 N + s M (V x V, 1-ring) */
+  Vec       m1, w1;                      /* vertex areas M, work (dmV1) */
+  KSP       inner;                       /* factorisation of L_n + s M (prefix <flow prefix>newton_inner_) */
+  PetscReal relax;                       /* tangential relaxation after an accepted step (Relax), 0: off */
+  Mat       G, PGP;                      /* graph Laplacian (dmV3) and its tangential part (shell) */
+  KSP       kspT;
+  Vec       at, bt;
+} Newton;
+
+static PetscErrorCode ProjectTangent(Newton *d, Vec v)
+{
+  PetscScalar       *a;
+  const PetscScalar *n;
+  PetscInt           nl;
+  PetscFunctionBeginUser;
+  PetscCall(VecGetLocalSize(v, &nl));
+  PetscCall(VecGetArray(v, &a));
+  PetscCall(VecGetArrayRead(d->nrm, &n));
+  for (PetscInt i = 0; i < nl / 3; i++) {
+    PetscReal un = a[3 * i] * n[3 * i] + a[3 * i + 1] * n[3 * i + 1] + a[3 * i + 2] * n[3 * i + 2];
+    for (int c = 0; c < 3; c++) a[3 * i + c] -= un * n[3 * i + c];
+  }
+  PetscCall(VecRestoreArrayRead(d->nrm, &n));
+  PetscCall(VecRestoreArray(v, &a));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode PGPMult(Mat A, Vec v, Vec y)
+{
+  Newton *d;
+  PetscFunctionBeginUser;
+  PetscCall(MatShellGetContext(A, &d));
+  PetscCall(VecCopy(v, d->bt));
+  PetscCall(ProjectTangent(d, d->bt));
+  PetscCall(MatMult(d->G, d->bt, y));
+  PetscCall(ProjectTangent(d, y));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode HessMult(Mat A, Vec v, Vec y)
+{
+  CSWillmoreFlow F;
+  Newton        *d;
+  PetscFunctionBeginUser;
+  PetscCall(MatShellGetContext(A, &F));
+  d = (Newton *)F->data;
+  PetscCall(MatMult(d->N, v, d->u));
+  PetscCall(CSEnergyHessianMult(F->energy, F->x, d->u, d->eps, d->work, d->hu));
+  PetscCall(MatMultTranspose(d->N, d->hu, y));
+  PetscFunctionReturn(0);
+}
+
+/* The factored form of the metric in normal coordinates, as the PC csh2 does on the full metric (h2_pc.c):
+     P = (s M + L_n) M^{-1} (s M + L_n) = N^T I_H2 N + (2 s L_n - lower-order terms of N's variation),
+   L_n = N^T L N, M = *0, s = sqrt(w): two solves with a 1-ring matrix instead of a factorisation of the 2-ring
+   N^T I_H2 N. */
+static PetscErrorCode FactoredApply(PC pc, Vec r, Vec y)
+{
+  Newton *d;
+  PetscFunctionBeginUser;
+  PetscCall(PCShellGetContext(pc, &d));
+  PetscCall(KSPSolve(d->inner, r, d->w1));
+  PetscCall(VecPointwiseMult(d->w1, d->w1, d->m1));
+  PetscCall(KSPSolve(d->inner, d->w1, y));
+  PetscFunctionReturn(0);
+}
+
+/* The kind's data with its option defaults (allocated by SetFromOptions, or at the first use without it). */
+static PetscErrorCode GetData(CSWillmoreFlow F, Newton **d)
+{
+  PetscFunctionBeginUser;
+  if (!F->data) {
+    PetscCall(PetscNew(d));
+    (*d)->factored  = PETSC_TRUE;
+    (*d)->relax     = 0.3; /* bumpy level-4 sphere: smallest angle 22 -> 49 degrees, q_max 2.8 -> 1.6; torus unchanged */
+    (*d)->reuse_its = 0; /* refactor every iteration: kept factors change the inexact steps, and the final mesh quality moved both ways (docs/willmore_flow.md) */
+    F->data         = *d;
+  }
+  *d = (Newton *)F->data;
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode CreateData(CSWillmoreFlow F)
+{
+  Newton  *d;
+  PetscInt    n3, n1, N1;
+  PetscMPIInt size;
+  PC          pc;
+  char        prefix[96];
+  PetscFunctionBeginUser;
+  d         = (Newton *)F->data; /* allocated by SetUpNewton with the options */
+  d->it_dir = -1;
+  PetscCall(VecDuplicate(F->x, &d->nrm));
+  PetscCall(VecDuplicate(F->x, &d->u));
+  PetscCall(VecDuplicate(F->x, &d->hu));
+  PetscCall(VecDuplicateVecs(F->x, 2, &d->work));
+  PetscCall(DMCreateGlobalVector(F->mesh->dmV1, &d->gn));
+  PetscCall(VecDuplicate(d->gn, &d->phi));
+  PetscCall(VecDuplicate(d->gn, &d->b));
+  PetscCall(VecGetLocalSize(F->x, &n3));
+  PetscCall(VecGetLocalSize(d->gn, &n1));
+  PetscCall(VecGetSize(d->gn, &N1));
+  PetscCall(MatCreateAIJ(F->comm, n3, n1, 3 * N1, N1, 1, NULL, 1, NULL, &d->N));
+  PetscCall(MatSetOption(d->N, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE));
+  PetscCall(MatCreateShell(F->comm, n1, n1, N1, N1, F, &d->A));
+  PetscCall(MatShellSetOperation(d->A, MATOP_MULT, (void (*)(void))HessMult));
+  PetscCall(MatSetOption(d->A, MAT_SYMMETRIC, PETSC_TRUE));
+  PetscCall(KSPCreate(F->comm, &d->ksp));
+  PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "%snewton_", F->prefix));
+  PetscCall(KSPSetOptionsPrefix(d->ksp, prefix));
+  PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "%snewton_inner_", F->prefix));
+  PetscCall(KSPSetType(d->ksp, KSPCG));
+  PetscCallMPI(MPI_Comm_size(F->comm, &size));
+  if (d->factored) {
+    PetscCall(KSPGetPC(d->ksp, &pc));
+    PetscCall(PCSetType(pc, PCSHELL));
+    PetscCall(PCShellSetContext(pc, d));
+    PetscCall(PCShellSetApply(pc, FactoredApply));
+    PetscCall(PCShellSetName(pc, "(s M + L_n) M^-1 (s M + L_n)"));
+    PetscCall(DMCreateGlobalVector(F->mesh->dmV1, &d->m1));
+    PetscCall(VecDuplicate(d->m1, &d->w1));
+    PetscCall(KSPCreate(F->comm, &d->inner));
+    PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "%snewton_inner_", F->prefix));
+    PetscCall(KSPSetOptionsPrefix(d->inner, prefix));
+    PetscCall(KSPSetType(d->inner, KSPPREONLY));
+    PetscCall(KSPGetPC(d->inner, &pc));
+  } else PetscCall(KSPGetPC(d->ksp, &pc));
+  if (size > 1) PetscCall(PCSetType(pc, "cssubchol")); /* as the saddle solver's Schur complement (docs/solvers.md) */
+  else {
+    PetscCall(PCSetType(pc, PCCHOLESKY));
+    PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERCHOLMOD));
+  }
+  if (d->inner) PetscCall(KSPSetFromOptions(d->inner));
+  PetscCall(KSPSetTolerances(d->ksp, 1e-2, PETSC_DEFAULT, PETSC_DEFAULT, 100)); /* inexact Newton */
+  PetscCall(KSPSetFromOptions(d->ksp));
+  PetscFunctionReturn(0);
+}
+
+/* N from the unit vertex normals at x (rows of owned vertices; dmV3 and dmV1 own the same vertices in order). */
+static PetscErrorCode FillNormals(CSWillmoreFlow F, Newton *d)
+{
+  const PetscScalar *n;
+  PetscInt           r3, r1, nl;
+  PetscFunctionBeginUser;
+  PetscCall(CSGeometryVertexNormals(F->mesh, F->x, d->nrm));
+  PetscCall(VecGetOwnershipRange(d->nrm, &r3, NULL));
+  PetscCall(VecGetOwnershipRange(d->gn, &r1, NULL));
+  PetscCall(VecGetLocalSize(d->gn, &nl));
+  PetscCall(VecGetArrayRead(d->nrm, &n));
+  for (PetscInt i = 0; i < nl; i++) {
+    PetscInt col = r1 + i;
+    for (PetscInt c = 0; c < 3; c++) {
+      PetscInt row = r3 + 3 * i + c;
+      PetscCall(MatSetValues(d->N, 1, &row, 1, &col, &n[3 * i + c], INSERT_VALUES));
+    }
+  }
+  PetscCall(VecRestoreArrayRead(d->nrm, &n));
+  PetscCall(MatAssemblyBegin(d->N, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(d->N, MAT_FINAL_ASSEMBLY));
+  PetscFunctionReturn(0);
+}
+
+/* The stopping residual: ||N^T g||_2, the normal part of the gradient 2-form at x (the tangential part of the
+   discrete gradient does not vanish at a discrete critical point of the normal motion). */
+static PetscErrorCode NewtonResidual(CSWillmoreFlow F, PetscReal *el)
+{
+  Newton *d;
+  PetscFunctionBeginUser;
+  PetscCall(GetData(F, &d));
+  if (!d->nrm) PetscCall(CreateData(F));
+  PetscCall(FillNormals(F, d));
+  PetscCall(MatMultTranspose(d->N, F->g, d->gn));
+  PetscCall(VecNorm(d->gn, NORM_2, el));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode FactoredSetUp(CSWillmoreFlow F, Newton *d)
+{
+  PetscReal s = PetscSqrtReal(F->metric.mass_weight);
+  PetscFunctionBeginUser;
+  PetscCall(CSOperatorLaplacian3(F->mesh, F->x, d->L3 ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX, &d->L3));
+  PetscCall(MatPtAP(d->L3, d->N, d->Ln ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX, 2.0, &d->Ln));
+  PetscCall(CSOperatorMass(F->mesh, F->x, d->m1));
+  PetscCall(VecScale(d->m1, s));
+  PetscCall(MatDiagonalSet(d->Ln, d->m1, ADD_VALUES));
+  PetscCall(VecScale(d->m1, 1.0 / s));
+  PetscCall(MatSetOption(d->Ln, MAT_SYMMETRIC, PETSC_TRUE));
+  PetscCall(KSPSetOperators(d->inner, d->Ln, d->Ln));
+  PetscFunctionReturn(0);
+}
+
+/* phi = -P^{-1} N^T g: the H^2 gradient step in normal coordinates (the fallback). */
+static PetscErrorCode MetricStep(Newton *d)
+{
+  PC pc;
+  PetscFunctionBeginUser;
+  PetscCall(KSPGetPC(d->ksp, &pc));
+  PetscCall(PCApply(pc, d->b, d->phi));
+  d->fallbacks++;
+  PetscFunctionReturn(0);
+}
+
+/* The Newton direction phi at x (once per iteration; the rejections of the iteration only shorten t). */
+static PetscErrorCode Direction(CSWillmoreFlow F, Newton *d)
+{
+  KSPConvergedReason reason;
+  PetscInt           its;
+  PetscScalar        slope;
+  PetscReal          h;
+  PetscFunctionBeginUser;
+  PetscCall(CSGeometryMeanEdgeLength(F->mesh, F->x, &h));
+  d->eps = 1e-5 * h;
+  if (d->setups == 0 || d->last_its > d->reuse_its) { /* the metric at x, restricted to normal motion, factored anew */
+    if (d->factored) PetscCall(FactoredSetUp(F, d));
+    else {
+      PetscCall(CSMetricUpdate(&F->metric, F->x));
+      PetscCall(MatPtAP(F->metric.H, d->N, d->Mn ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX, 2.0, &d->Mn));
+    }
+    PetscCall(KSPSetOperators(d->ksp, d->A, d->factored ? d->A : d->Mn));
+    PetscCall(KSPSetReusePreconditioner(d->ksp, PETSC_FALSE));
+    d->setups++;
+  } else PetscCall(KSPSetReusePreconditioner(d->ksp, PETSC_TRUE)); /* an earlier state's metric: still a good PC */
+  PetscCall(VecCopy(d->gn, d->b));
+  PetscCall(VecScale(d->b, -1.0));
+  PetscCall(KSPSolve(d->ksp, d->b, d->phi));
+  PetscCall(KSPGetConvergedReason(d->ksp, &reason));
+  PetscCall(KSPGetIterationNumber(d->ksp, &its));
+  F->kspits += its;
+  d->cg_its += its;
+  d->last_its = its;
+  PetscCall(VecDot(d->phi, d->gn, &slope));
+  if (reason < 0) d->truncated++;
+  if (!(PetscRealPart(slope) < 0)) PetscCall(MetricStep(d)); /* zero (indefinite at once) or not a descent direction */
+  if (reason < 0) PetscCall(PetscPrintf(F->comm, "     newton: CG stopped after %" PetscInt_FMT " iterations (%s): %s\n", its, KSPConvergedReasons[reason], PetscRealPart(slope) < 0 ? "the truncated CG iterate is taken" : "H^2 metric step"));
+  d->it_dir = F->it;
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode TrialNewton(CSWillmoreFlow F, PetscBool *accept)
+{
+  Newton *d = (Newton *)F->data;
+  PetscFunctionBeginUser;
+  if (d->it_dir != F->it) PetscCall(Direction(F, d));
+  PetscCall(MatMult(d->N, d->phi, F->df));
+  PetscCall(VecScale(F->df, F->t));
+  PetscCall(VecWAXPY(F->xt, 1.0, F->df, F->x));
+  *accept = PETSC_TRUE;
+  PetscFunctionReturn(0);
+}
+
+/* Tangential relaxation (-flow_newton_relax lambda): the vertices move within their tangent planes toward the
+   minimiser of the graph Dirichlet energy sum_edges |x_i - x_j|^2 (CG on P G P a = -P G x), by lambda of the way,
+   the largest move capped at -flow_max_step / 2 mean edge lengths. */
+static PetscErrorCode Relax(CSWillmoreFlow F, Newton *d)
+{
+  PetscInt  n, N;
+  PetscReal amax, h;
+  PC        pc;
+  char      prefix[96];
+  PetscFunctionBeginUser;
+  if (!(d->relax > 0)) PetscFunctionReturn(0);
+  PetscCall(CSOperatorGraphLaplacian3(F->mesh, F->x, d->G ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX, &d->G));
+  if (!d->PGP) {
+    PetscCall(VecGetLocalSize(F->x, &n));
+    PetscCall(VecGetSize(F->x, &N));
+    PetscCall(MatCreateShell(F->comm, n, n, N, N, d, &d->PGP));
+    PetscCall(MatShellSetOperation(d->PGP, MATOP_MULT, (void (*)(void))PGPMult));
+    PetscCall(VecDuplicate(F->x, &d->at));
+    PetscCall(VecDuplicate(F->x, &d->bt));
+    PetscCall(KSPCreate(F->comm, &d->kspT));
+    PetscCall(KSPSetType(d->kspT, KSPCG));
+    PetscCall(KSPSetTolerances(d->kspT, 1e-3, PETSC_DEFAULT, PETSC_DEFAULT, 200));
+    PetscCall(KSPGetPC(d->kspT, &pc));
+    PetscCall(PCSetType(pc, PCNONE));
+    PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "%snewton_relax_", F->prefix));
+    PetscCall(KSPSetOptionsPrefix(d->kspT, prefix));
+    PetscCall(KSPSetFromOptions(d->kspT));
+  }
+  PetscCall(CSGeometryVertexNormals(F->mesh, F->x, d->nrm));
+  PetscCall(KSPSetOperators(d->kspT, d->PGP, d->PGP));
+  PetscCall(MatMult(d->G, F->x, d->u));
+  PetscCall(ProjectTangent(d, d->u));
+  PetscCall(VecScale(d->u, -1.0));
+  PetscCall(KSPSolve(d->kspT, d->u, d->at));
+  PetscCall(ProjectTangent(d, d->at));
+  PetscCall(VecNorm(d->at, NORM_INFINITY, &amax));
+  PetscCall(CSGeometryMeanEdgeLength(F->mesh, F->x, &h));
+  PetscCall(VecAXPY(F->x, PetscMin(d->relax, 0.5 * F->max_step * h / PetscMax(amax, 1e-300)), d->at));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode AcceptNewton(CSWillmoreFlow F)
+{
+  PetscFunctionBeginUser;
+  PetscCall(Relax(F, (Newton *)F->data));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode SetUpNewton(CSWillmoreFlow F)
+{
+  const char *p = F->prefix;
+  Newton     *d;
+  PetscFunctionBeginUser;
+  PetscCall(GetData(F, &d));
+  PetscOptionsBegin(F->comm, F->prefix, "Newton flow (-flow_type newton)", NULL);
+  PetscCall(PetscOptionsBool("-newton_factored_pc", "Precondition CG with (s M + L_n) M^-1 (s M + L_n) (two 1-ring solves) instead of a factorisation of N^T I_H2 N", NULL, d->factored, &d->factored, NULL));
+  PetscCall(PetscOptionsReal("-newton_relax", "Tangential relaxation toward the graph-harmonic vertex distribution after each accepted step: fraction of the way (0: off)", NULL, d->relax, &d->relax, NULL));
+  PetscCall(PetscOptionsInt("-newton_reuse_its", "Keep the factored metric preconditioner of an earlier iteration while CG needed at most this many iterations (0: refactor every iteration)", NULL, d->reuse_its, &d->reuse_its, NULL));
+  PetscOptionsEnd();
+  PetscCheck(d->relax >= 0 && d->relax <= 1, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%snewton_relax %g: must lie in [0, 1]", p, (double)d->relax);
+  PetscCheck(d->reuse_its >= 0, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%snewton_reuse_its %" PetscInt_FMT ": must be >= 0", p, d->reuse_its);
+  PetscCheck(!F->conformal, F->comm, PETSC_ERR_ARG_INCOMP, "-%stype newton is unconstrained: -%sconformal true is not supported (use cgd or pgd)", p, p);
+  PetscCheck(!F->area_set && !F->vol_set && !F->points[0] && !F->mobius && !F->target[0], F->comm, PETSC_ERR_ARG_INCOMP, "-%stype newton supports no constraints (area, volume, points, Moebius, target mesh): use gd or cgd", p);
+  PetscCheck(F->mesh->topo.boundary_loops == 0, F->comm, PETSC_ERR_ARG_INCOMP, "-%stype newton: the mesh %s has %" PetscInt_FMT " boundary loop(s); newton supports closed surfaces only (use gd or cgd)", p, F->mesh->name, F->mesh->topo.boundary_loops);
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode DestroyNewton(CSWillmoreFlow F)
+{
+  Newton *d = (Newton *)F->data;
+  PetscFunctionBeginUser;
+  if (!d) PetscFunctionReturn(0);
+  if (!d->nrm) {
+    PetscCall(PetscFree(F->data));
+    PetscFunctionReturn(0);
+  }
+  PetscCall(PetscInfo(NULL, "newton: %" PetscInt_FMT " CG iterations, %" PetscInt_FMT " truncated solves, %" PetscInt_FMT " metric steps, %" PetscInt_FMT " factorisations\n", d->cg_its, d->truncated, d->fallbacks, d->setups));
+  PetscCall(MatDestroy(&d->N));
+  PetscCall(MatDestroy(&d->A));
+  PetscCall(MatDestroy(&d->Mn));
+  PetscCall(MatDestroy(&d->L3));
+  PetscCall(MatDestroy(&d->Ln));
+  PetscCall(VecDestroy(&d->m1));
+  PetscCall(VecDestroy(&d->w1));
+  PetscCall(KSPDestroy(&d->inner));
+  PetscCall(MatDestroy(&d->G));
+  PetscCall(MatDestroy(&d->PGP));
+  PetscCall(KSPDestroy(&d->kspT));
+  PetscCall(VecDestroy(&d->at));
+  PetscCall(VecDestroy(&d->bt));
+  PetscCall(KSPDestroy(&d->ksp));
+  PetscCall(VecDestroy(&d->nrm));
+  PetscCall(VecDestroy(&d->u));
+  PetscCall(VecDestroy(&d->hu));
+  PetscCall(VecDestroyVecs(2, &d->work));
+  PetscCall(VecDestroy(&d->gn));
+  PetscCall(VecDestroy(&d->phi));
+  PetscCall(VecDestroy(&d->b));
+  PetscCall(PetscFree(F->data));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSWillmoreFlowCreate_Newton(CSWillmoreFlow F)
+{
+  PetscFunctionBeginUser;
+  F->ops.id         = 3;
+  F->ops.conformal  = PETSC_FALSE;
+  F->ops.setup      = SetUpNewton;
+  F->ops.trial      = TrialNewton;
+  F->ops.filter     = CSWFFilterEnergy;
+  F->ops.accept     = AcceptNewton;
+  F->ops.grow       = CSWFGrowCGD;
+  F->ops.shrink     = CSWFShrinkCGD;
+  F->ops.residual   = NewtonResidual;
+  F->ops.destroy    = DestroyNewton;
+  F->ops.max_step   = 2; /* mean edge lengths per step (guards.c) */
+  F->ops.fold_guard = PETSC_TRUE;
+  F->ops.own_metric = PETSC_TRUE;
+  F->tmax           = 1; /* the full Newton step */
+  PetscFunctionReturn(0);
+}
