@@ -91,6 +91,14 @@ PETSC_EXTERN PetscErrorCode CSSpinSetBoundaryTangents(CSSpin spin, Vec x, Vec Tt
 PETSC_EXTERN PetscErrorCode CSSpinSolveEigen(CSSpin spin, Vec x, CSRhoLocation loc, Vec rho, Vec lambda);
 /* The nev smallest eigenvalues of Eq. 7 (rho = 0 unless given), ascending, unscaled (Fig. 8). */
 PETSC_EXTERN PetscErrorCode CSSpinSpectrum(CSSpin spin, Vec x, CSRhoLocation loc, Vec rho, PetscInt nev, PetscReal eig[], PetscInt *nconv);
+/* The signed spectrum of Eq. 6 with rho = 0 (Sec. 6.2, Fig. 8; spin_signed.c): the nev eigenvalues of smallest
+   |gamma| (ties ascending), the kernel of A (gamma = 0) first; *nkernel its dimension. With nvec > 0 the first
+   nvec eigenvectors are created in vecs[] (global on spin->dm; the caller destroys them). EPS prefixes
+   spin_kernel_ and spin_signed_. */
+PETSC_EXTERN PetscErrorCode CSSpinSpectrumSigned(CSSpin spin, Vec x, PetscInt nev, PetscReal eig[], PetscInt nvec, Vec vecs[], PetscInt *nkernel);
+/* A Dirac sphere (Sec. 6.2, Fig. 9, 11): the surface of the eigenvector lambda (changed in place: its constant
+   component removed unless it lies in the kernel, then normalised), scaled to the area of x. */
+PETSC_EXTERN PetscErrorCode CSSpinDiracSphere(CSSpin spin, Vec x, Vec lambda, PetscBool kernel, Vec xnew);
 /* lambda is determined up to a constant right factor c in H (a global similarity): choose c by least squares
    against mu (a dm vector), or with mu = NULL the rotation that best maps lambda to 1 and unit mean |lambda|^2;
    only a positive scale when rotation_too is false (prescribed boundary tangents must not turn). */
