@@ -37,6 +37,11 @@ PETSC_EXTERN PetscErrorCode CSEnergyWillmoreBSVertex(CSEnergy e, Vec x, Vec Wv, 
    and the global count. The gradient is exactly 0 there. */
 PETSC_EXTERN PetscErrorCode CSEnergyWillmoreBSGetFixed(CSEnergy e, const PetscBool **fixed, PetscInt *nfixed);
 
+/* Islands (Sec. 3.3: "one can fix some islands of internal vertices (or faces)"): the vertices with vmask > 0.5
+   (a dmV1 global vector) are fixed with their one-ring, in either boundary mode, in addition to the boundary
+   strip of FIXED mode. Collective; call before the first evaluation. */
+PETSC_EXTERN PetscErrorCode CSEnergyWillmoreBSSetIslands(CSEnergy e, Vec vmask);
+
 /* The linearised Hessian K (Sec. 4): n x n scalar AIJ on dmV1's layout with grad W = K x per coordinate
    (K collects the Eq. 1 coefficients of every diamond; rows sum to zero). Rows and columns of fixed
    vertices are dropped and fixdiag put on their diagonal. MAT_INITIAL_MATRIX creates *K (preallocated for

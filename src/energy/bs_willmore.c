@@ -43,6 +43,7 @@ typedef struct {
   const PetscInt *gid;   /* nv: global vertex numbers (dmV1 local-to-global) */
   PetscBool   *fixed;    /* nv */
   PetscInt     nfixed;
+  PetscBool   *islands;  /* nv, or NULL: user-fixed vertices (Sec. 3.3 "islands"), fixed with their one-ring */
   PetscReal   *wEdge;    /* ne: multiplicity of beta(e) in W */
   Vec          Wg;       /* dmV1 work vector: per-vertex W_i when the caller does not want them */
   PetscReal   *gkl;      /* 6*ne scratch: weighted gradient rows of l (side 0) and k (side 1) */
@@ -135,16 +136,17 @@ static PetscErrorCode BSFixedSet(CSEnergy en)
   CSLocalSum s;
   PetscInt   nint = 0, nbdv = 0, N[3], Nsum[3];
   PetscFunctionBeginUser;
+  PetscCall(PetscFree(c->fixed));
   PetscCall(PetscCalloc1(m->nv, &c->fixed));
   PetscCall(CSLocalSumBegin(m->dmV1, &s));
-  if (c->bc == CS_BS_BOUNDARY_FIXED) {
-    for (PetscInt v = 0; v < m->nv; v++)
-      if (m->vertBoundary[v]) s.a[v] = 1;
-    for (PetscInt e = 0; e < m->ne; e++) {
-      PetscInt i = m->edgeVert[2 * e], j = m->edgeVert[2 * e + 1];
-      if (m->vertBoundary[i]) s.a[j] = 1;
-      if (m->vertBoundary[j]) s.a[i] = 1;
-    }
+  /* seeds: the boundary (FIXED mode) and the islands, known on every copy of a vertex; then their one-ring */
+  for (PetscInt v = 0; v < m->nv; v++) c->fixed[v] = (PetscBool)((c->bc == CS_BS_BOUNDARY_FIXED && m->vertBoundary[v]) || (c->islands && c->islands[v]));
+  for (PetscInt v = 0; v < m->nv; v++)
+    if (c->fixed[v]) s.a[v] = 1;
+  for (PetscInt e = 0; e < m->ne; e++) {
+    PetscInt i = m->edgeVert[2 * e], j = m->edgeVert[2 * e + 1];
+    if (c->fixed[i]) s.a[j] = 1;
+    if (c->fixed[j]) s.a[i] = 1;
   }
   PetscCall(CSLocalSumShare(&s));
   N[0] = 0;
@@ -160,6 +162,22 @@ static PetscErrorCode BSFixedSet(CSEnergy en)
   PetscCall(MPIU_Allreduce(N, Nsum, 3, MPIU_INT, MPI_SUM, m->comm));
   c->nfixed = Nsum[0];
   c->freebd = (PetscBool)(c->bc == CS_BS_BOUNDARY_FREE && Nsum[2] > 0);
+  PetscFunctionReturn(0);
+}
+
+/* the far vertices' fixed flags (their positions travel per evaluation through dmE6) */
+static PetscErrorCode BSOppositeFixed(CSEnergy en)
+{
+  BSCtx    *c = (BSCtx *)en->ctx;
+  CSMesh    m = en->mesh;
+  PetscInt *fx;
+  PetscFunctionBeginUser;
+  PetscCall(PetscFree(c->oppFixed));
+  PetscCall(PetscMalloc1(m->nv, &fx));
+  PetscCall(PetscMalloc1(2 * m->ne, &c->oppFixed));
+  for (PetscInt v = 0; v < m->nv; v++) fx[v] = c->fixed[v] ? 1 : 0;
+  PetscCall(CSMeshAdjacencyGatherOpposite(m, fx, 0, c->oppFixed));
+  PetscCall(PetscFree(fx));
   PetscFunctionReturn(0);
 }
 
@@ -202,7 +220,6 @@ static PetscErrorCode BSSetUp(CSEnergy en)
 {
   BSCtx   *c = (BSCtx *)en->ctx;
   CSMesh   m = en->mesh;
-  PetscInt *fx;
   PetscFunctionBeginUser;
   PetscCall(CSMeshGetAdjacency(m, &c->adj));
   c->gid = c->adj->vertGlobal;
@@ -219,13 +236,8 @@ static PetscErrorCode BSSetUp(CSEnergy en)
     else c->wEdge[e] = (PetscReal)(!m->vertBoundary[i]) + (PetscReal)(!m->vertBoundary[j]);
   }
 
-  /* the far vertices' fixed flags (their positions travel per evaluation through dmE6) */
   PetscCall(CSMeshCreateFieldDM(m->dm, 1, 6, "bs_edge6", &c->dmE6));
-  PetscCall(PetscMalloc1(m->nv, &fx));
-  PetscCall(PetscMalloc1(2 * m->ne, &c->oppFixed));
-  for (PetscInt v = 0; v < m->nv; v++) fx[v] = c->fixed[v] ? 1 : 0;
-  PetscCall(CSMeshAdjacencyGatherOpposite(m, fx, 0, c->oppFixed));
-  PetscCall(PetscFree(fx));
+  PetscCall(BSOppositeFixed(en));
 
   if (c->freebd) {
     PetscCheck(c->adj->bdManifold, m->comm, PETSC_ERR_PLIB, "bs_willmore: some boundary vertices do not have one incoming and one outgoing boundary edge");
@@ -558,6 +570,7 @@ static PetscErrorCode BSDestroy(CSEnergy e)
   PetscCall(DMDestroy(&c->dmV6));
   PetscCall(PetscFree(c->oppFixed));
   PetscCall(PetscFree(c->fixed));
+  PetscCall(PetscFree(c->islands));
   PetscCall(PetscFree(c->wEdge));
   PetscCall(PetscFree(c->nnz));
   PetscCall(PetscFree3(c->gkl, c->Mkl, c->act));
@@ -592,6 +605,26 @@ PetscErrorCode CSEnergyWillmoreBSVertex(CSEnergy e, Vec x, Vec Wv, PetscReal *W)
   PetscCall(BSEvaluate(e, x, &Wt, Wv, NULL, NULL, 0));
   PetscCall(PetscLogEventEnd(CS_EVENT_Energy, 0, 0, 0, 0));
   if (W) *W = Wt;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSEnergyWillmoreBSSetIslands(CSEnergy e, Vec vmask)
+{
+  BSCtx             *c = (BSCtx *)e->ctx;
+  CSMesh             m = e->mesh;
+  Vec                l;
+  const PetscScalar *a;
+  PetscFunctionBeginUser;
+  PetscCall(PetscFree(c->islands));
+  PetscCall(PetscCalloc1(m->nv, &c->islands));
+  PetscCall(DMGetLocalVector(m->dmV1, &l));
+  PetscCall(DMGlobalToLocal(m->dmV1, vmask, INSERT_VALUES, l)); /* ghost copies too: their rings cross the cut */
+  PetscCall(VecGetArrayRead(l, &a));
+  for (PetscInt v = 0; v < m->nv; v++) c->islands[v] = (PetscBool)(PetscRealPart(a[v]) > 0.5);
+  PetscCall(VecRestoreArrayRead(l, &a));
+  PetscCall(DMRestoreLocalVector(m->dmV1, &l));
+  PetscCall(BSFixedSet(e));
+  PetscCall(BSOppositeFixed(e));
   PetscFunctionReturn(0);
 }
 

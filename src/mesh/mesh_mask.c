@@ -2,6 +2,7 @@
    Sec. 3.3: "islands" of vertices or faces held fixed), as a vertex field. */
 #include "cs_mesh.h"
 #include "cs_util.h"
+#include <stdio.h>
 
 /* rank 0: the natural vector nat (Nv or Nf entries) gets 1 at every index of the file */
 static PetscErrorCode MarkIndices(const char option[], const char path[], PetscInt N, const char what[], PetscScalar nat[])
@@ -13,11 +14,12 @@ static PetscErrorCode MarkIndices(const char option[], const char path[], PetscI
   for (PetscInt i = 0; i < n; i++) {
     PetscBool ok = (PetscBool)(v[i] >= 0 && v[i] < N && v[i] == PetscFloorReal(v[i]));
     if (!ok) {
-      PetscReal bad = v[i];
-      PetscInt  l   = line[i];
+      char     num[32];
+      PetscInt l = line[i];
+      snprintf(num, sizeof(num), "%g", (double)v[i]); /* C's %g: PETSc's prints 162 as "162." */
       PetscCall(PetscFree(v));
       PetscCall(PetscFree(line));
-      SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "%s %s: line %" PetscInt_FMT ": %g is not a %s index in 0..%" PetscInt_FMT, option, path, l, (double)bad, what, N - 1);
+      SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "%s %s: line %" PetscInt_FMT ": %s is not a %s index in 0..%" PetscInt_FMT, option, path, l, num, what, N - 1);
     }
     nat[(PetscInt)v[i]] = 1;
   }

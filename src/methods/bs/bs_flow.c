@@ -85,6 +85,13 @@ PetscErrorCode CSBSFlowSetFromOptions(CSBSFlow F)
   PetscCall(PetscOptionsEnum("-problem", "tao: static minimises W in one TaoSolve; euler: backward Euler steps through TAO", "CSBSFlowSetFromOptions", CSBSProblems, (PetscEnum)F->problem, (PetscEnum *)&F->problem, NULL));
   PetscCall(PetscOptionsReal("-hessian_eps", "Leave diamonds with sin beta below this out of K (default -beta_eps)", NULL, F->hessian_eps, &F->hessian_eps, &F->hessian_eps_set));
   PetscCall(PetscOptionsReal("-perturb", "Move the free vertices randomly by this fraction of the mean edge length before flowing (breaks co-circular diamonds, beta = 0, of grid-like meshes)", NULL, F->perturb, &F->perturb, NULL));
+  {
+    const char *types[] = {"vertex", "face"};
+    PetscInt    it      = F->islands_faces;
+    PetscCall(PetscOptionsString("-islands", "File of 0-based vertex (or face) indices in file order held fixed with their one-ring (Sec. 3.3, islands)", NULL, F->islands, F->islands, sizeof(F->islands), NULL));
+    PetscCall(PetscOptionsEList("-islands_type", "What -islands lists", NULL, types, 2, types[it], &it, NULL));
+    F->islands_faces = (PetscBool)(it == 1);
+  }
   PetscCall(PetscOptionsBool("-monotone", "semi: reject steps that increase W (false: accept them, as needed when many diamonds start at beta = 0)", NULL, F->monotone, &F->monotone, NULL));
   PetscOptionsEnd();
   PetscCall(CheckOptions(F));
@@ -132,6 +139,22 @@ static PetscErrorCode Perturb(CSBSFlow F)
   PetscFunctionReturn(0);
 }
 
+/* Sec. 3.3: "one can fix some islands of internal vertices (or faces)", held like the boundary strip (the G1
+   data of the islands: the masked vertices and their one-ring) */
+static PetscErrorCode SetIslands(CSBSFlow F)
+{
+  Vec  m;
+  char opt[128];
+  PetscFunctionBeginUser;
+  PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%sislands", F->hdr.prefix ? F->hdr.prefix : ""));
+  PetscCheck(F->bc == CS_BS_BOUNDARY_FIXED, F->mesh->comm, PETSC_ERR_ARG_INCOMP, "%s needs -%sboundary fixed (islands are G1 data, Sec. 3.3)", opt, F->hdr.prefix ? F->hdr.prefix : "");
+  PetscCall(DMCreateGlobalVector(F->mesh->dmV1, &m));
+  PetscCall(CSMeshReadIndexMask(F->mesh, opt, F->islands, F->islands_faces, m));
+  PetscCall(CSEnergyWillmoreBSSetIslands(F->bs, m));
+  PetscCall(VecDestroy(&m));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode CSBSFlowSetUp(CSBSFlow F)
 {
   CSMesh mesh = F->mesh;
@@ -140,6 +163,7 @@ PetscErrorCode CSBSFlowSetUp(CSBSFlow F)
   PetscCall(PetscTime(&F->t0));
   PetscCall(CSEnergyCreateWillmoreBS(mesh, F->bc, F->beta_eps, &F->bs));
   if (F->hessian_eps_set) PetscCall(CSEnergyWillmoreBSSetHessianEps(F->bs, F->hessian_eps));
+  if (F->islands[0]) PetscCall(SetIslands(F));
   PetscCall(CSEnergyWillmoreBSGetFixed(F->bs, &F->fixed, &F->nfixed));
   PetscCall(VecDuplicate(mesh->x, &F->x0));
   PetscCall(VecCopy(mesh->x, F->x0));

@@ -29,6 +29,8 @@ struct _p_CSBSFlow {
   PetscReal    beta_eps, hessian_eps, dt_opt, dt_rel, dt_grow, dt_max_opt, atol, rtol, perturb;
   PetscBool    hessian_eps_set, dt_set, monotone;
   PetscInt     max_it, max_rej;
+  char         islands[PETSC_MAX_PATH_LEN]; /* -bs_islands FILE (Sec. 3.3), "" for none */
+  PetscBool    islands_faces;               /* -bs_islands_type face: the file lists faces */
 
   /* state */
   CSEnergy         bs;
