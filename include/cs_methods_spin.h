@@ -114,6 +114,10 @@ PETSC_EXTERN PetscErrorCode CSSpinDestroy(CSSpin *spin);
    -rho_mean_curvature s, -target_mesh FILE (Sec. 7.2). On return *loc and *rho describe rho (NULL if zero), and
    with -target_mesh *xtarget holds the target positions and *mu the averaged best-fit similarities. */
 PETSC_EXTERN PetscErrorCode CSSpinRhoFromOptions(CSSpin spin, Vec x, CSRhoLocation *loc, Vec *rho, Vec *xtarget, Vec *mu);
+/* rho += (L g) / (2 M) for a normal displacement g (dmV1; Sec. 7.1, Fig. 20), and the heat filter
+   (M + t L) rho~ = M rho of a per-vertex rho (Fig. 13; KSP prefix spin_smooth_). spin_rho_filters.c. */
+PETSC_EXTERN PetscErrorCode CSSpinRhoFromDisplacement(CSSpin spin, Vec x, Vec g, Vec rho);
+PETSC_EXTERN PetscErrorCode CSSpinRhoSmooth(CSSpin spin, Vec x, PetscReal t, Vec rho);
 /* Target tangents for -spin_boundary file|target (-spin_boundary_file FILE); *Tt = NULL for none|keep. */
 PETSC_EXTERN PetscErrorCode CSSpinBoundaryFromOptions(CSSpin spin, Vec xtarget, Vec *Tt);
 /* Best-fit similarity per face averaged to vertices (Sec. 7.2), mu global on spin->dm. */
