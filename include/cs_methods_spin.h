@@ -118,6 +118,11 @@ PETSC_EXTERN PetscErrorCode CSSpinRhoFromOptions(CSSpin spin, Vec x, CSRhoLocati
    (M + t L) rho~ = M rho of a per-vertex rho (Fig. 13; KSP prefix spin_smooth_). spin_rho_filters.c. */
 PETSC_EXTERN PetscErrorCode CSSpinRhoFromDisplacement(CSSpin spin, Vec x, Vec g, Vec rho);
 PETSC_EXTERN PetscErrorCode CSSpinRhoSmooth(CSSpin spin, Vec x, PetscReal t, Vec rho);
+/* Sec. 7.2 / Fig. 21 (spin_interpolate.c): the surface f_t of the similarities lambda_t = exp(t log mu) between x
+   (t = 0) and the deformation xt (t = 1, mu its best-fit similarities), with the reconstruction residuals of the
+   ends r0, r1 (from CSSpinInterpolateSetUp) blended in so that both ends are reproduced exactly. */
+PETSC_EXTERN PetscErrorCode CSSpinInterpolateSetUp(CSSpin spin, Vec x, Vec xt, Vec mu, Vec r0, Vec r1);
+PETSC_EXTERN PetscErrorCode CSSpinInterpolate(CSSpin spin, Vec x, Vec mu, Vec r0, Vec r1, PetscReal t, Vec xs);
 /* Target tangents for -spin_boundary file|target (-spin_boundary_file FILE); *Tt = NULL for none|keep. */
 PETSC_EXTERN PetscErrorCode CSSpinBoundaryFromOptions(CSSpin spin, Vec xtarget, Vec *Tt);
 /* Best-fit similarity per face averaged to vertices (Sec. 7.2), mu global on spin->dm. */

@@ -107,18 +107,85 @@ static PetscErrorCode SpinView(CSSpin spin, CSMesh mesh, const SpinRun *r, const
   PetscFunctionReturn(0);
 }
 
+/* -spin_interpolate N (Sec. 7.2, Fig. 21): meshes PREFIX_k.obj, k = 0..N, of the similarity interpolation from the
+   input (k = 0) to -spin_target_mesh (k = N); q_mean against the input of each and of the linear interpolation
+   (1 - t) x + t xt of the positions, and the distance of the ends to the input and the target. */
+static PetscErrorCode SpinInterpolate(CSSpin spin, CSMesh mesh, PetscInt N, const char prefix[], CSOutput *out)
+{
+  SpinRun    r;
+  Vec        r0, r1, xs, xl;
+  PetscReal *q, end[2];
+  PetscFunctionBeginUser;
+  PetscCall(PetscMemzero(&r, sizeof(r)));
+  PetscCall(CSSpinRhoFromOptions(spin, mesh->x, &r.loc, &r.rho, &r.xt, &r.mu));
+  PetscCheck(r.xt, mesh->comm, PETSC_ERR_ARG_WRONG, "-spin_interpolate needs -spin_target_mesh FILE (the other end, same connectivity)");
+  PetscCall(VecDuplicate(mesh->x, &r0));
+  PetscCall(VecDuplicate(mesh->x, &r1));
+  PetscCall(VecDuplicate(mesh->x, &xs));
+  PetscCall(VecDuplicate(mesh->x, &xl));
+  PetscCall(PetscMalloc1(2 * (N + 1), &q));
+  PetscCall(CSSpinInterpolateSetUp(spin, mesh->x, r.xt, r.mu, r0, r1));
+  for (PetscInt k = 0; k <= N; k++) {
+    char      path[PETSC_MAX_PATH_LEN];
+    PetscReal t = (PetscReal)k / N, qmax;
+    PetscCall(CSSpinInterpolate(spin, mesh->x, r.mu, r0, r1, t, xs));
+    PetscCall(VecCopy(mesh->x, xl)); /* xl = (1 - t) x + t xt */
+    PetscCall(VecScale(xl, 1 - t));
+    PetscCall(VecAXPY(xl, t, r.xt));
+    PetscCall(CSGeometryQuasiConformal(mesh, mesh->x, xs, NULL, &q[k], &qmax));
+    PetscCall(CSGeometryQuasiConformal(mesh, mesh->x, xl, NULL, &q[N + 1 + k], &qmax));
+    PetscCall(PetscSNPrintf(path, sizeof(path), "%s_%" PetscInt_FMT ".obj", prefix, k));
+    PetscCall(CSMeshWrite(mesh, xs, path));
+    PetscCall(PetscPrintf(mesh->comm, "spin interpolation t=%.3f: %s, q_mean %.6f (linear interpolation %.6f)\n", (double)t, path, (double)q[k], (double)q[N + 1 + k]));
+    if (k == 0 || k == N) {
+      PetscCall(VecAXPY(xs, -1, k ? r.xt : mesh->x));
+      PetscCall(VecNorm(xs, NORM_INFINITY, &end[k ? 1 : 0]));
+    }
+  }
+  PetscCall(CSJSONAddRealArray(out->json, "interpolation_q_mean", N + 1, q));
+  PetscCall(CSJSONAddRealArray(out->json, "linear_q_mean", N + 1, q + N + 1));
+  PetscCall(CSJSONAddReal(out->json, "interpolation_start_error", end[0]));
+  PetscCall(CSJSONAddReal(out->json, "interpolation_end_error", end[1]));
+  PetscCall(PetscFree(q));
+  PetscCall(VecDestroy(&r0));
+  PetscCall(VecDestroy(&r1));
+  PetscCall(VecDestroy(&xs));
+  PetscCall(VecDestroy(&xl));
+  PetscCall(VecDestroy(&r.rho));
+  PetscCall(VecDestroy(&r.xt));
+  PetscCall(VecDestroy(&r.mu));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode CSTaskSpin(MPI_Comm comm)
 {
   CSOutput out;
   CSMesh   mesh;
-  CSSpin   spin;
-  SpinRun  r;
+  CSSpin    spin;
+  SpinRun   r;
+  PetscInt  ninterp = 8;
+  PetscBool interp  = PETSC_FALSE;
+  char      iprefix[PETSC_MAX_PATH_LEN] = "spin_interpolate";
   PetscFunctionBeginUser;
   PetscCall(PetscMemzero(&r, sizeof(r)));
   PetscCall(CSOutputFromOptions(comm, &out));
   PetscCall(CSMeshCreateFromOptions(comm, NULL, &mesh));
   PetscCall(CSSpinCreate(mesh, &spin));
   PetscCall(CSSpinSetFromOptions(spin));
+  PetscOptionsBegin(comm, NULL, "Similarity interpolation (crane2011 Sec. 7.2, Fig. 21)", NULL);
+  PetscCall(PetscOptionsInt("-spin_interpolate", "Meshes 0..N of the similarity interpolation from the input to -spin_target_mesh instead of a spin transformation", NULL, ninterp, &ninterp, &interp));
+  PetscCall(PetscOptionsString("-spin_interpolate_prefix", "Interpolated mesh k is written to PREFIX_k.obj", NULL, iprefix, iprefix, sizeof(iprefix), NULL));
+  PetscOptionsEnd();
+  PetscCheck(!interp || ninterp >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-spin_interpolate %" PetscInt_FMT ": need at least 1 step", ninterp);
+  if (interp) {
+    PetscCall(SpinInterpolate(spin, mesh, ninterp, iprefix, &out));
+    PetscCall(CSOutputAddMeshFacts(&out, mesh, mesh->x, NULL));
+    PetscCall(CSOutputFinish(&out, mesh, mesh->x));
+    PetscCall(CSSpinDestroy(&spin));
+    PetscCall(CSMeshDestroy(&mesh));
+    PetscCall(CSOutputDestroy(&out));
+    PetscFunctionReturn(0);
+  }
   PetscCall(SpinSolve(spin, mesh, &r));
   PetscCall(SpinReport(spin, mesh, &r, &out));
   PetscCall(CSOutputAddMeshFacts(&out, mesh, r.xnew, mesh->x));
