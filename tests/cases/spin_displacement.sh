@@ -3,7 +3,7 @@
 # result to the displaced surface (point to surface, after the best similarity fit) shrinks at least at second
 # order in the amplitude of g (measured: order ~3 between amplitudes 0.32 and 0.16 on a 24-ring disk; a wrong
 # factor 1/2 or 2 in rho gives order ~1 or a distance of the size of the bump). At small amplitudes a
-# discretisation error O(h^2 amplitude) is left (docs/spin_editing.md). -rho_smooth t (heat filter, Fig. 13)
+# discretisation error O(h^2 amplitude) is left (docs/spin_applications.md). -rho_smooth t (heat filter, Fig. 13)
 # lowers the peak of rho; a bad t is refused.
 # nprocs: 1 2
 source tests/lib.sh

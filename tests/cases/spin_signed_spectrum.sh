@@ -1,7 +1,7 @@
 # crane2011 Sec. 6.2 / Fig. 8 on the generalised problem Eq. 6 (-spectrum_signed): on the unit sphere the Dirac
 # eigenvalues are the integers n != -1 with real multiplicity 4|n+1|. Level-3 icosphere (1280 faces): the first
 # 11 distinct values (0, 1, -2, 2, ..., 5, -6) come with exactly these multiplicities and signs; 2 % holds for the
-# first 5 (0, 1, -2, 2, -3: 1.3 % at n = 2); the error grows like n^2 h^2 (docs/spin_spectrum.md: 2.4 % at n = 3,
+# first 5 (0, 1, -2, 2, -3: 1.3 % at n = 2); the error grows like n^2 h^2 (docs/spin_applications.md: 2.4 % at n = 3,
 # 4.7 % at n = 10 on level 3, a quarter of that on level 4).
 # Dirac spheres (Fig. 9, 11): the ground state (the kernel, constants) gives the round sphere, q_max - 1 < 1e-6;
 # a k beyond the computed eigenvectors is a clear error.
