@@ -42,6 +42,10 @@ PETSC_EXTERN PetscErrorCode CSEnergyWillmoreBSGetFixed(CSEnergy e, const PetscBo
    strip of FIXED mode. Collective; call before the first evaluation. */
 PETSC_EXTERN PetscErrorCode CSEnergyWillmoreBSSetIslands(CSEnergy e, Vec vmask);
 
+/* Sec. 2: W_i + K_i (>= 0) per vertex into wk (dmV1 global; 0 on boundary vertices, where W_i is not defined),
+   its minimum over the interior vertices and the number below -1e-10 (src/energy/bs_gauss_bound.c). */
+PETSC_EXTERN PetscErrorCode CSEnergyWillmoreBSGaussBound(CSEnergy e, Vec x, Vec wk, PetscReal *wkmin, PetscInt *nneg);
+
 /* The linearised Hessian K (Sec. 4): n x n scalar AIJ on dmV1's layout with grad W = K x per coordinate
    (K collects the Eq. 1 coefficients of every diamond; rows sum to zero). Rows and columns of fixed
    vertices are dropped and fixdiag put on their diagonal. MAT_INITIAL_MATRIX creates *K (preallocated for

@@ -2,7 +2,7 @@
 # face) indices held fixed with their one-ring, as the boundary strip of the G1 condition. A noisy level-2
 # icosphere (-bs_perturb) flows 8 steps: the masked vertices and their rings are bit-identical to the input
 # (the OBJ writer round-trips doubles), the others move, W falls. Indices out of range or not integers: a clear
-# error naming the option, file and line.
+# error naming the option, file and line. The summary's W_i + K_i (Sec. 2) is >= 0 at every vertex.
 # nprocs: 1 2
 source tests/lib.sh
 $MPIEXEC "$CS_BIN" -task info -gen icosphere -gen_level 2 -o "$TMP/in.obj" > /dev/null
@@ -31,7 +31,8 @@ for name, seeds in (("v", {0, 5, 17}), ("f", set(F[3]) | set(F[40]))):
     checks = [(s["fixed_vertices"] == len(R), "%s: %d fixed vertices = islands + one-ring %d" % (name, s["fixed_vertices"], len(R))),
               (all(V0[i] == V1[i] for i in R), "%s: islands and rings bit-identical" % name),
               (min(math.dist(V0[i], V1[i]) for i in range(len(V0)) if i not in R) > 0, "%s: every other vertex moved" % name),
-              (W[-1] < 0.1 * W[0], "%s: W %.4g -> %.4g" % (name, W[0], W[-1]))]
+              (W[-1] < 0.1 * W[0], "%s: W %.4g -> %.4g" % (name, W[0], W[-1])),
+              (s["w_plus_k_negative"] == 0 and s["w_plus_k_min"] >= -1e-10, "%s: W_i + K_i >= 0 at every vertex (min %.3g; Sec. 2)" % (name, s["w_plus_k_min"]))]
     for ok, msg in checks:
         print(("ok  " if ok else "BAD ") + msg); bad += not ok
 sys.exit(bad)
