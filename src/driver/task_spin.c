@@ -146,6 +146,8 @@ static PetscErrorCode SpinInterpolate(CSSpin spin, CSMesh mesh, PetscInt N, cons
   PetscCall(CSJSONAddRealArray(out->json, "linear_q_mean", N + 1, q + N + 1));
   PetscCall(CSJSONAddReal(out->json, "interpolation_start_error", end[0]));
   PetscCall(CSJSONAddReal(out->json, "interpolation_end_error", end[1]));
+  PetscCall(CSOutputAddMeshFacts(out, mesh, mesh->x, NULL)); /* -o writes the input (the meshes are PREFIX_k.obj) */
+  PetscCall(CSOutputFinish(out, mesh, mesh->x));
   PetscCall(PetscFree(q));
   PetscCall(VecDestroy(&r0));
   PetscCall(VecDestroy(&r1));
@@ -177,26 +179,20 @@ PetscErrorCode CSTaskSpin(MPI_Comm comm)
   PetscCall(PetscOptionsString("-spin_interpolate_prefix", "Interpolated mesh k is written to PREFIX_k.obj", NULL, iprefix, iprefix, sizeof(iprefix), NULL));
   PetscOptionsEnd();
   PetscCheck(!interp || ninterp >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-spin_interpolate %" PetscInt_FMT ": need at least 1 step", ninterp);
-  if (interp) {
-    PetscCall(SpinInterpolate(spin, mesh, ninterp, iprefix, &out));
-    PetscCall(CSOutputAddMeshFacts(&out, mesh, mesh->x, NULL));
-    PetscCall(CSOutputFinish(&out, mesh, mesh->x));
-    PetscCall(CSSpinDestroy(&spin));
-    PetscCall(CSMeshDestroy(&mesh));
-    PetscCall(CSOutputDestroy(&out));
-    PetscFunctionReturn(0);
+  if (interp) PetscCall(SpinInterpolate(spin, mesh, ninterp, iprefix, &out));
+  else {
+    PetscCall(SpinSolve(spin, mesh, &r));
+    PetscCall(SpinReport(spin, mesh, &r, &out));
+    PetscCall(CSOutputAddMeshFacts(&out, mesh, r.xnew, mesh->x));
+    if (out.has_viewer) PetscCall(SpinView(spin, mesh, &r, out.viewer_dir));
+    PetscCall(CSOutputFinish(&out, mesh, r.xnew));
+    PetscCall(VecDestroy(&r.xnew));
+    PetscCall(VecDestroy(&r.lambda));
+    PetscCall(VecDestroy(&r.rho));
+    PetscCall(VecDestroy(&r.xt));
+    PetscCall(VecDestroy(&r.mu));
+    PetscCall(VecDestroy(&r.Tt));
   }
-  PetscCall(SpinSolve(spin, mesh, &r));
-  PetscCall(SpinReport(spin, mesh, &r, &out));
-  PetscCall(CSOutputAddMeshFacts(&out, mesh, r.xnew, mesh->x));
-  if (out.has_viewer) PetscCall(SpinView(spin, mesh, &r, out.viewer_dir));
-  PetscCall(CSOutputFinish(&out, mesh, r.xnew));
-  PetscCall(VecDestroy(&r.xnew));
-  PetscCall(VecDestroy(&r.lambda));
-  PetscCall(VecDestroy(&r.rho));
-  PetscCall(VecDestroy(&r.xt));
-  PetscCall(VecDestroy(&r.mu));
-  PetscCall(VecDestroy(&r.Tt));
   PetscCall(CSSpinDestroy(&spin));
   PetscCall(CSMeshDestroy(&mesh));
   PetscCall(CSOutputDestroy(&out));
