@@ -92,6 +92,12 @@ PetscErrorCode CSBSFlowSetFromOptions(CSBSFlow F)
     PetscCall(PetscOptionsEList("-islands_type", "What -islands lists", NULL, types, 2, types[it], &it, NULL));
     F->islands_faces = (PetscBool)(it == 1);
   }
+  {
+    const char *rules[] = {"heuristic", "single"};
+    PetscInt    ir      = F->singular_single;
+    PetscCall(PetscOptionsEList("-singular", "Vanishing beta (Sec. 3.2): heuristic (its gradient set to 0) or single (the paper's steepest descent where one beta at a vertex vanishes)", NULL, rules, 2, rules[ir], &ir, NULL));
+    F->singular_single = (PetscBool)(ir == 1);
+  }
   PetscCall(PetscOptionsBool("-monotone", "semi: reject steps that increase W (false: accept them, as needed when many diamonds start at beta = 0)", NULL, F->monotone, &F->monotone, NULL));
   PetscOptionsEnd();
   PetscCall(CheckOptions(F));
@@ -164,6 +170,7 @@ PetscErrorCode CSBSFlowSetUp(CSBSFlow F)
   PetscCall(CSEnergyCreateWillmoreBS(mesh, F->bc, F->beta_eps, &F->bs));
   if (F->hessian_eps_set) PetscCall(CSEnergyWillmoreBSSetHessianEps(F->bs, F->hessian_eps));
   if (F->islands[0]) PetscCall(SetIslands(F));
+  PetscCall(CSEnergyWillmoreBSSetSingularRule(F->bs, F->singular_single));
   PetscCall(CSEnergyWillmoreBSGetFixed(F->bs, &F->fixed, &F->nfixed));
   PetscCall(VecDuplicate(mesh->x, &F->x0));
   PetscCall(VecCopy(mesh->x, F->x0));

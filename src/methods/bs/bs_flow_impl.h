@@ -31,6 +31,7 @@ struct _p_CSBSFlow {
   PetscInt     max_it, max_rej;
   char         islands[PETSC_MAX_PATH_LEN]; /* -bs_islands FILE (Sec. 3.3), "" for none */
   PetscBool    islands_faces;               /* -bs_islands_type face: the file lists faces */
+  PetscBool    singular_single;             /* -bs_singular single (Sec. 3.2) */
 
   /* state */
   CSEnergy         bs;
