@@ -123,6 +123,8 @@ PETSC_EXTERN PetscErrorCode CSSpinRhoSmooth(CSSpin spin, Vec x, PetscReal t, Vec
    ends r0, r1 (from CSSpinInterpolateSetUp) blended in so that both ends are reproduced exactly. */
 PETSC_EXTERN PetscErrorCode CSSpinInterpolateSetUp(CSSpin spin, Vec x, Vec xt, Vec mu, Vec r0, Vec r1);
 PETSC_EXTERN PetscErrorCode CSSpinInterpolate(CSSpin spin, Vec x, Vec mu, Vec r0, Vec r1, PetscReal t, Vec xs);
+/* rho += s H with the signed vertex mean curvature H = (L f).N / (2 M) (spin_rho.c; s = -1: crane2011 Sec. 7.3). */
+PETSC_EXTERN PetscErrorCode CSSpinRhoAddMeanCurvature(CSMesh mesh, Vec x, PetscReal s, Vec rho);
 /* Target tangents for -spin_boundary file|target (-spin_boundary_file FILE); *Tt = NULL for none|keep. */
 PETSC_EXTERN PetscErrorCode CSSpinBoundaryFromOptions(CSSpin spin, Vec xtarget, Vec *Tt);
 /* Best-fit similarity per face averaged to vertices (Sec. 7.2), mu global on spin->dm. */

@@ -159,14 +159,80 @@ static PetscErrorCode SpinInterpolate(CSSpin spin, CSMesh mesh, PetscInt N, cons
   PetscFunctionReturn(0);
 }
 
+/* total length of the boundary edges (each lies in one face, and every face on one rank) */
+static PetscErrorCode BoundaryLength(CSMesh mesh, Vec x, PetscReal *len)
+{
+  Vec              xl;
+  const PetscReal *p;
+  PetscReal        l = 0;
+  PetscFunctionBeginUser;
+  PetscCall(CSMeshGetLocalPositions(mesh, x, &xl, &p));
+  for (CSFaceIter F = CS_FACE_ITER_INIT; CSMeshFaceNext(mesh, p, &F);)
+    for (int k = 0; k < 3; k++)
+      if (mesh->edgeBoundary[F.e[k]]) {
+        PetscReal e[3];
+        CSVecSub(F.c[(k + 1) % 3], F.c[(k + 2) % 3], e);
+        l += CSVecNorm(e);
+      }
+  PetscCall(CSMeshRestoreLocalPositions(mesh, x, &xl, &p));
+  PetscCall(MPIU_Allreduce(&l, len, 1, MPIU_REAL, MPIU_SUM, mesh->comm));
+  PetscFunctionReturn(0);
+}
+
+/* -spin_flow_steps N (crane2011 Sec. 7.3, Fig. 16, 17): the conformal Willmore flow on a disk, rho(t) = -t H,
+   taken as N steps of rho = -tau H of the current surface, each a spin transformation with the boundary
+   condition of Sec. 5.7 (-spin_boundary, default keep). History per step: area, boundary length, the ratio
+   area / length^2 (1/(4 pi) for a flat disk bounded by a circle), q_mean against the input. */
+static PetscErrorCode SpinFlow(CSSpin spin, CSMesh mesh, PetscInt N, PetscReal tau, CSOutput *out)
+{
+  Vec       x, rho, lambda, xnew;
+  CSHistory hist = NULL;
+  PetscReal area, vol, len, qmean = 1, qmax;
+  PetscFunctionBeginUser;
+  PetscCheck(mesh->topo.boundary_loops > 0, mesh->comm, PETSC_ERR_ARG_WRONG, "-spin_flow_steps: mesh %s has no boundary (the flow rho = -t H is the closed form on disks, Sec. 7.3)", mesh->name);
+  PetscCall(VecDuplicate(mesh->x, &x));
+  PetscCall(VecDuplicate(mesh->x, &xnew));
+  PetscCall(VecCopy(mesh->x, x));
+  PetscCall(DMCreateGlobalVector(mesh->dmV1, &rho));
+  PetscCall(DMCreateGlobalVector(spin->dm, &lambda));
+  PetscCall(CSOutputHistoryCreate(out, mesh->comm, "it,area,boundary_length,area_over_length2,q_mean", 0, &hist));
+  for (PetscInt k = 0; k <= N; k++) {
+    PetscReal row[5];
+    PetscCall(CSGeometryAreaVolume(mesh, x, &area, &vol));
+    PetscCall(BoundaryLength(mesh, x, &len));
+    if (k) PetscCall(CSGeometryQuasiConformal(mesh, mesh->x, x, NULL, &qmean, &qmax));
+    row[0] = k; row[1] = area; row[2] = len; row[3] = area / (len * len); row[4] = qmean;
+    if (hist) PetscCall(CSHistoryAppend(hist, 5, row));
+    PetscCall(PetscPrintf(mesh->comm, "spin flow %3" PetscInt_FMT ": area %.6f boundary length %.6f area/length^2 %.6f q_mean %.6f\n", k, (double)area, (double)len, (double)row[3], (double)qmean));
+    if (k == N) break;
+    PetscCall(VecSet(rho, 0));
+    PetscCall(CSSpinRhoAddMeanCurvature(mesh, x, -tau, rho));
+    PetscCall(CSSpinSolveEigen(spin, x, CS_RHO_VERTEX, rho, lambda));
+    PetscCall(CSSpinNormalize(spin, lambda, NULL, (PetscBool)(spin->boundary == CS_SPIN_BOUNDARY_NONE)));
+    PetscCall(CSSpinReconstruct(spin, x, lambda, x, xnew));
+    PetscCall(VecCopy(xnew, x));
+  }
+  PetscCall(CSJSONAddReal(out->json, "flow_area_over_length2", area / (len * len)));
+  PetscCall(CSJSONAddInt(out->json, "flow_steps", N));
+  PetscCall(CSOutputAddMeshFacts(out, mesh, x, mesh->x));
+  PetscCall(CSOutputFinish(out, mesh, x));
+  PetscCall(CSHistoryDestroy(&hist));
+  PetscCall(VecDestroy(&x));
+  PetscCall(VecDestroy(&xnew));
+  PetscCall(VecDestroy(&rho));
+  PetscCall(VecDestroy(&lambda));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode CSTaskSpin(MPI_Comm comm)
 {
   CSOutput out;
   CSMesh   mesh;
   CSSpin    spin;
   SpinRun   r;
-  PetscInt  ninterp = 8;
-  PetscBool interp  = PETSC_FALSE;
+  PetscInt  ninterp = 8, nflow = 10;
+  PetscBool interp  = PETSC_FALSE, flow = PETSC_FALSE;
+  PetscReal tau     = 0.1;
   char      iprefix[PETSC_MAX_PATH_LEN] = "spin_interpolate";
   PetscFunctionBeginUser;
   PetscCall(PetscMemzero(&r, sizeof(r)));
@@ -176,10 +242,17 @@ PetscErrorCode CSTaskSpin(MPI_Comm comm)
   PetscCall(CSSpinSetFromOptions(spin));
   PetscOptionsBegin(comm, NULL, "Similarity interpolation (crane2011 Sec. 7.2, Fig. 21)", NULL);
   PetscCall(PetscOptionsInt("-spin_interpolate", "Meshes 0..N of the similarity interpolation from the input to -spin_target_mesh instead of a spin transformation", NULL, ninterp, &ninterp, &interp));
+  PetscCall(PetscOptionsInt("-spin_flow_steps", "Conformal Willmore flow on a disk (Sec. 7.3): this many spin transformations with rho = -tau H of the current surface", NULL, nflow, &nflow, &flow));
+  PetscCall(PetscOptionsReal("-spin_flow_tau", "Step of -spin_flow_steps (tau = 1: the minimal surface in one step)", NULL, tau, &tau, NULL));
   PetscCall(PetscOptionsString("-spin_interpolate_prefix", "Interpolated mesh k is written to PREFIX_k.obj", NULL, iprefix, iprefix, sizeof(iprefix), NULL));
   PetscOptionsEnd();
   PetscCheck(!interp || ninterp >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-spin_interpolate %" PetscInt_FMT ": need at least 1 step", ninterp);
+  {
+    const CSOptionCheck checks[] = {{"spin_flow_steps", (PetscReal)nflow, nflow >= 1, "must be >= 1"}, {"spin_flow_tau", tau, tau > 0, "must be > 0"}};
+    PetscCall(CSCheckOptionValues(comm, NULL, 2, checks));
+  }
   if (interp) PetscCall(SpinInterpolate(spin, mesh, ninterp, iprefix, &out));
+  else if (flow) PetscCall(SpinFlow(spin, mesh, nflow, tau, &out));
   else {
     PetscCall(SpinSolve(spin, mesh, &r));
     PetscCall(SpinReport(spin, mesh, &r, &out));

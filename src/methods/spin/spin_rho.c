@@ -60,7 +60,7 @@ static PetscErrorCode ReadField(CSMesh mesh, const char option[], const char pat
 /* rho += s H with the signed pointwise mean curvature H_i = (L f)_i . N_i / (2 M_i) (positive on a sphere with
    outward normals; (L f)_i ~ 2 H N M_i for the positive cotan Laplacian). crane2011 Sec. 7.3 takes |HN| = |Lf|,
    which loses the sign on saddle-shaped regions; the projection on the vertex normal keeps it. */
-static PetscErrorCode AddMeanCurvature(CSMesh mesh, Vec x, PetscReal s, Vec rho)
+PetscErrorCode CSSpinRhoAddMeanCurvature(CSMesh mesh, Vec x, PetscReal s, Vec rho)
 {
   Vec                Lf, M, N;
   const PetscScalar *l, *m, *nn;
@@ -261,7 +261,7 @@ PetscErrorCode CSSpinRhoFromOptions(CSSpin spin, Vec x, CSRhoLocation *loc, Vec 
       PetscCall(VecRestoreArray(*rho, &r));
       PetscCall(VecRestoreArrayRead(x, &p));
     }
-    if (hash) PetscCall(AddMeanCurvature(mesh, x, hs, *rho));
+    if (hash) PetscCall(CSSpinRhoAddMeanCurvature(mesh, x, hs, *rho));
     if (hasdisp) {
       Vec g;
       PetscCall(VecDuplicate(*rho, &g));
