@@ -159,6 +159,38 @@ static PetscErrorCode SpinInterpolate(CSSpin spin, CSMesh mesh, PetscInt N, cons
   PetscFunctionReturn(0);
 }
 
+/* -spin_least_squares (crane2011 Fig. 22, the baseline the paper compares with): positions straight from the
+   best-fit similarities mu of -spin_target_mesh by Eq. 8 and the least-squares Poisson step, without the
+   eigenproblem (mu is not integrable, so the result is not a spin transformation). Summary: q_mean, q_max against
+   the input and target_distance_max, as for the spin result. */
+static PetscErrorCode SpinLeastSquares(CSSpin spin, CSMesh mesh, CSOutput *out)
+{
+  SpinRun   r;
+  Vec       d;
+  PetscReal nd, area, vol;
+  PetscFunctionBeginUser;
+  PetscCall(PetscMemzero(&r, sizeof(r)));
+  PetscCall(CSSpinRhoFromOptions(spin, mesh->x, &r.loc, &r.rho, &r.xt, &r.mu));
+  PetscCheck(r.xt, mesh->comm, PETSC_ERR_ARG_WRONG, "-spin_least_squares needs -spin_target_mesh FILE");
+  PetscCall(VecDuplicate(mesh->x, &r.xnew));
+  PetscCall(CSSpinReconstruct(spin, mesh->x, r.mu, r.xt, r.xnew));
+  PetscCall(VecDuplicate(r.xnew, &d));
+  PetscCall(VecWAXPY(d, -1, r.xt, r.xnew));
+  PetscCall(VecNorm(d, NORM_INFINITY, &nd));
+  PetscCall(CSGeometryAreaVolume(mesh, r.xt, &area, &vol));
+  PetscCall(CSJSONAddReal(out->json, "target_distance_max", nd / PetscSqrtReal(area)));
+  PetscCall(CSJSONAddString(out->json, "method", "least_squares"));
+  PetscCall(PetscPrintf(mesh->comm, "least squares from mu (Fig. 22): max distance to -spin_target_mesh %.3e (relative to sqrt(area))\n", (double)(nd / PetscSqrtReal(area))));
+  PetscCall(CSOutputAddMeshFacts(out, mesh, r.xnew, mesh->x));
+  PetscCall(CSOutputFinish(out, mesh, r.xnew));
+  PetscCall(VecDestroy(&d));
+  PetscCall(VecDestroy(&r.xnew));
+  PetscCall(VecDestroy(&r.rho));
+  PetscCall(VecDestroy(&r.xt));
+  PetscCall(VecDestroy(&r.mu));
+  PetscFunctionReturn(0);
+}
+
 /* total length of the boundary edges (each lies in one face, and every face on one rank) */
 static PetscErrorCode BoundaryLength(CSMesh mesh, Vec x, PetscReal *len)
 {
@@ -231,7 +263,7 @@ PetscErrorCode CSTaskSpin(MPI_Comm comm)
   CSSpin    spin;
   SpinRun   r;
   PetscInt  ninterp = 8, nflow = 10;
-  PetscBool interp  = PETSC_FALSE, flow = PETSC_FALSE;
+  PetscBool interp  = PETSC_FALSE, flow = PETSC_FALSE, lsq = PETSC_FALSE;
   PetscReal tau     = 0.1;
   char      iprefix[PETSC_MAX_PATH_LEN] = "spin_interpolate";
   PetscFunctionBeginUser;
@@ -244,6 +276,7 @@ PetscErrorCode CSTaskSpin(MPI_Comm comm)
   PetscCall(PetscOptionsInt("-spin_interpolate", "Meshes 0..N of the similarity interpolation from the input to -spin_target_mesh instead of a spin transformation", NULL, ninterp, &ninterp, &interp));
   PetscCall(PetscOptionsInt("-spin_flow_steps", "Conformal Willmore flow on a disk (Sec. 7.3): this many spin transformations with rho = -tau H of the current surface", NULL, nflow, &nflow, &flow));
   PetscCall(PetscOptionsReal("-spin_flow_tau", "Step of -spin_flow_steps (tau = 1: the minimal surface in one step)", NULL, tau, &tau, NULL));
+  PetscCall(PetscOptionsBool("-spin_least_squares", "Positions from the best-fit similarities of -spin_target_mesh by least squares, without the eigenproblem (the baseline of Fig. 22)", NULL, lsq, &lsq, NULL));
   PetscCall(PetscOptionsString("-spin_interpolate_prefix", "Interpolated mesh k is written to PREFIX_k.obj", NULL, iprefix, iprefix, sizeof(iprefix), NULL));
   PetscOptionsEnd();
   PetscCheck(!interp || ninterp >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-spin_interpolate %" PetscInt_FMT ": need at least 1 step", ninterp);
@@ -253,6 +286,7 @@ PetscErrorCode CSTaskSpin(MPI_Comm comm)
   }
   if (interp) PetscCall(SpinInterpolate(spin, mesh, ninterp, iprefix, &out));
   else if (flow) PetscCall(SpinFlow(spin, mesh, nflow, tau, &out));
+  else if (lsq) PetscCall(SpinLeastSquares(spin, mesh, &out));
   else {
     PetscCall(SpinSolve(spin, mesh, &r));
     PetscCall(SpinReport(spin, mesh, &r, &out));
