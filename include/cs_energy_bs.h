@@ -37,6 +37,22 @@ PETSC_EXTERN PetscErrorCode CSEnergyWillmoreBSVertex(CSEnergy e, Vec x, Vec Wv, 
    and the global count. The gradient is exactly 0 there. */
 PETSC_EXTERN PetscErrorCode CSEnergyWillmoreBSGetFixed(CSEnergy e, const PetscBool **fixed, PetscInt *nfixed);
 
+/* Islands (Sec. 3.3: "one can fix some islands of internal vertices (or faces)"): the vertices with vmask > 0.5
+   (a dmV1 global vector) are fixed with their one-ring, in either boundary mode, in addition to the boundary
+   strip of FIXED mode. Collective; call before the first evaluation. */
+PETSC_EXTERN PetscErrorCode CSEnergyWillmoreBSSetIslands(CSEnergy e, Vec vmask);
+
+/* Sec. 2: W_i + K_i (>= 0) per vertex into wk (dmV1 global; 0 on boundary vertices, where W_i is not defined),
+   its minimum over the interior vertices and the number below -1e-10 (src/energy/bs_gauss_bound.c). */
+PETSC_EXTERN PetscErrorCode CSEnergyWillmoreBSGaussBound(CSEnergy e, Vec x, Vec wk, PetscReal *wkmin, PetscInt *nneg);
+
+/* Sec. 3.2 "Gradient Singularity": with single, a vertex where exactly one beta of its gradient's support vanishes
+   (|sin beta| < beta_eps) gets the paper's steepest descent direction (the regular negative gradient g split along
+   the circle of the four co-circular points: g_p, plus g_o (1 - R/|g_o|) when the rate R of that beta is below
+   |g_o|) instead of the heuristic's plain omission; vertices with several keep the heuristic. Gradient only (K
+   leaves those diamonds out either way). */
+PETSC_EXTERN PetscErrorCode CSEnergyWillmoreBSSetSingularRule(CSEnergy e, PetscBool single);
+
 /* The linearised Hessian K (Sec. 4): n x n scalar AIJ on dmV1's layout with grad W = K x per coordinate
    (K collects the Eq. 1 coefficients of every diamond; rows sum to zero). Rows and columns of fixed
    vertices are dropped and fixdiag put on their diagonal. MAT_INITIAL_MATRIX creates *K (preallocated for

@@ -125,6 +125,8 @@ PETSC_EXTERN PetscErrorCode CSMeshRestoreLocalPositions(CSMesh mesh, Vec x, Vec 
 typedef void (*CSFaceAdd)(CSMesh mesh, const PetscReal *p, const CSFaceIter *F, PetscScalar *a);
 PETSC_EXTERN PetscErrorCode CSGeometryFaceSum(CSMesh mesh, Vec x, DM dm, CSFaceAdd add, Vec g);
 
+/* Sum of the corner angles at each vertex (a dmV1 vector; K_i = 2 pi - sum at interior vertices). */
+PETSC_EXTERN PetscErrorCode CSGeometryAngleSums(CSMesh mesh, Vec x, Vec s);
 /* Barycentric vertex dual areas A_i = sum of one third of the incident face areas (the diagonal *0). */
 PETSC_EXTERN PetscErrorCode CSGeometryVertexAreas(CSMesh mesh, Vec x, Vec area);
 /* Cotan edge weights w_ij = (cot a_ij + cot b_ij)/2 (one term on boundary edges), a dmE1 vector. */

@@ -111,6 +111,15 @@ PETSC_EXTERN PetscErrorCode CSCheckpointRead(CSMesh mesh, const char path[], Pet
    scattered into a new global positions vector. */
 PETSC_EXTERN PetscErrorCode CSMeshLoadCompatiblePositions(CSMesh mesh, const char option[], const char path[], Vec *x);
 
+/* A mask of vertices (faces = false) or faces from a file of 0-based indices in file order (read on rank 0 by
+   CSReadNumberFile; indices out of range or not integers are refused naming the option, file and line), as the
+   dmV1 global vector vmask: 1 on the masked vertices, or on the vertices of the masked faces (src/mesh/mesh_mask.c). */
+PETSC_EXTERN PetscErrorCode CSMeshReadIndexMask(CSMesh mesh, const char option[], const char path[], PetscBool faces, Vec vmask);
+
+/* One number per vertex in file order from a text file (CSReadNumberFile on rank 0) into the dmV1 global vector g;
+   a wrong count is refused naming the option and file (src/mesh/mesh_values.c). */
+PETSC_EXTERN PetscErrorCode CSMeshReadVertexValues(CSMesh mesh, const char option[], const char path[], Vec g);
+
 /* Writes the mesh with positions x (global, dmV3) to .obj/.ply (by extension), in file order, from rank 0. */
 PETSC_EXTERN PetscErrorCode CSMeshWrite(CSMesh mesh, Vec x, const char path[]);
 

@@ -109,6 +109,14 @@ PETSC_EXTERN PetscErrorCode CSSpinSolveEigen(CSSpin spin, Vec x, CSRhoLocation l
 PETSC_EXTERN PetscErrorCode CSSpinResetStart(CSSpin spin);
 /* The nev smallest eigenvalues of Eq. 7 (rho = 0 unless given), ascending, unscaled (Fig. 8). */
 PETSC_EXTERN PetscErrorCode CSSpinSpectrum(CSSpin spin, Vec x, CSRhoLocation loc, Vec rho, PetscInt nev, PetscReal eig[], PetscInt *nconv);
+/* The signed spectrum of Eq. 6 with rho = 0 (Sec. 6.2, Fig. 8; spin_signed.c): the nev eigenvalues of smallest
+   |gamma| (ties ascending), the kernel of A (gamma = 0) first; *nkernel its dimension. With nvec > 0 the first
+   nvec eigenvectors are created in vecs[] (global on spin->dm; the caller destroys them). EPS prefixes
+   spin_kernel_ and spin_signed_. */
+PETSC_EXTERN PetscErrorCode CSSpinSpectrumSigned(CSSpin spin, Vec x, PetscInt nev, PetscReal eig[], PetscInt nvec, Vec vecs[], PetscInt *nkernel);
+/* A Dirac sphere (Sec. 6.2, Fig. 9, 11): the surface of the eigenvector lambda (changed in place: its constant
+   component removed unless it lies in the kernel, then normalised), scaled to the area of x. */
+PETSC_EXTERN PetscErrorCode CSSpinDiracSphere(CSSpin spin, Vec x, Vec lambda, PetscBool kernel, Vec xnew);
 /* lambda is determined up to a constant right factor c in H (a global similarity): choose c by least squares
    against mu (a dm vector), or with mu = NULL the rotation that best maps lambda to 1 and unit mean |lambda|^2;
    only a positive scale when rotation_too is false (prescribed boundary tangents must not turn). */
@@ -124,6 +132,17 @@ PETSC_EXTERN PetscErrorCode CSSpinDestroy(CSSpin *spin);
    -rho_mean_curvature s, -target_mesh FILE (Sec. 7.2). On return *loc and *rho describe rho (NULL if zero), and
    with -target_mesh *xtarget holds the target positions and *mu the averaged best-fit similarities. */
 PETSC_EXTERN PetscErrorCode CSSpinRhoFromOptions(CSSpin spin, Vec x, CSRhoLocation *loc, Vec *rho, Vec *xtarget, Vec *mu);
+/* rho += (L g) / (2 M) for a normal displacement g (dmV1; Sec. 7.1, Fig. 20), and the heat filter
+   (M + t L) rho~ = M rho of a per-vertex rho (Fig. 13; KSP prefix spin_smooth_). spin_rho_filters.c. */
+PETSC_EXTERN PetscErrorCode CSSpinRhoFromDisplacement(CSSpin spin, Vec x, Vec g, Vec rho);
+PETSC_EXTERN PetscErrorCode CSSpinRhoSmooth(CSSpin spin, Vec x, PetscReal t, Vec rho);
+/* Sec. 7.2 / Fig. 21 (spin_interpolate.c): the surface f_t of the similarities lambda_t = exp(t log mu) between x
+   (t = 0) and the deformation xt (t = 1, mu its best-fit similarities), with the reconstruction residuals of the
+   ends r0, r1 (from CSSpinInterpolateSetUp) blended in so that both ends are reproduced exactly. */
+PETSC_EXTERN PetscErrorCode CSSpinInterpolateSetUp(CSSpin spin, Vec x, Vec xt, Vec mu, Vec r0, Vec r1);
+PETSC_EXTERN PetscErrorCode CSSpinInterpolate(CSSpin spin, Vec x, Vec mu, Vec r0, Vec r1, PetscReal t, Vec xs);
+/* rho += s H with the signed vertex mean curvature H = (L f).N / (2 M) (spin_rho.c; s = -1: crane2011 Sec. 7.3). */
+PETSC_EXTERN PetscErrorCode CSSpinRhoAddMeanCurvature(CSMesh mesh, Vec x, PetscReal s, Vec rho);
 /* Target tangents for -spin_boundary file|target (-spin_boundary_file FILE); *Tt = NULL for none|keep. */
 PETSC_EXTERN PetscErrorCode CSSpinBoundaryFromOptions(CSSpin spin, Vec xtarget, Vec *Tt);
 /* Best-fit similarity per face averaged to vertices (Sec. 7.2), mu global on spin->dm. */

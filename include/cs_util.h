@@ -50,6 +50,10 @@ PETSC_EXTERN PetscErrorCode CSHistoryDestroy(CSHistory *h);
 /* the destroy callback of a monitor whose context is a CSHistory (MonitorSet(flow, fn, h, CSHistoryMonitorDestroy)) */
 PETSC_EXTERN PetscErrorCode CSHistoryMonitorDestroy(void **ctx);
 
+/* Rank-local: every number of a text file (white space or commas, '#' comments; no line length limit) into
+   *values (PetscMalloc'd, *n of them) with the line of each in *lines (src/util/value_file.c). Errors name
+   option, path and line. */
+PETSC_EXTERN PetscErrorCode CSReadNumberFile(const char option[], const char path[], PetscInt *n, PetscReal **values, PetscInt **lines);
 /* Path helpers */
 /* Room for one more element in a growing array *a of n elements of size bytes, capacity *cap: when full, the
    capacity doubles (first = initial) and the n elements move to the new storage. */

@@ -47,6 +47,18 @@ static PetscErrorCode Report(CSBSFlow flow, CSMesh mesh, CSOutput *out)
   PetscCall(CSJSONAddReal(out->json, "seconds_per_step", i.it + i.rejected ? (PetscReal)t / (i.it + i.rejected) : 0));
   PetscCall(CSJSONAddString(out->json, "scheme", scheme));
   PetscCall(CSJSONAddString(out->json, "boundary", CSBSBoundaries[i.bc]));
+  {
+    CSEnergy  bs;
+    Vec       wk;
+    PetscReal wkmin;
+    PetscInt  nneg;
+    PetscCall(CSBSFlowGetEnergy(flow, &bs));
+    PetscCall(DMCreateGlobalVector(mesh->dmV1, &wk));
+    PetscCall(CSEnergyWillmoreBSGaussBound(bs, x, wk, &wkmin, &nneg)); /* Sec. 2: W_i + K_i >= 0 */
+    PetscCall(CSJSONAddReal(out->json, "w_plus_k_min", wkmin));
+    PetscCall(CSJSONAddInt(out->json, "w_plus_k_negative", nneg));
+    PetscCall(VecDestroy(&wk));
+  }
   PetscCall(CSOutputFinish(out, mesh, x));
   PetscFunctionReturn(0);
 }

@@ -107,29 +107,199 @@ static PetscErrorCode SpinView(CSSpin spin, CSMesh mesh, const SpinRun *r, const
   PetscFunctionReturn(0);
 }
 
+/* -spin_interpolate N (Sec. 7.2, Fig. 21): meshes PREFIX_k.obj, k = 0..N, of the similarity interpolation from the
+   input (k = 0) to -spin_target_mesh (k = N); q_mean against the input of each and of the linear interpolation
+   (1 - t) x + t xt of the positions, and the distance of the ends to the input and the target. */
+static PetscErrorCode SpinInterpolate(CSSpin spin, CSMesh mesh, PetscInt N, const char prefix[], CSOutput *out)
+{
+  SpinRun    r;
+  Vec        r0, r1, xs, xl;
+  PetscReal *q, end[2];
+  PetscFunctionBeginUser;
+  PetscCall(PetscMemzero(&r, sizeof(r)));
+  PetscCall(CSSpinRhoFromOptions(spin, mesh->x, &r.loc, &r.rho, &r.xt, &r.mu));
+  PetscCheck(r.xt, mesh->comm, PETSC_ERR_ARG_WRONG, "-spin_interpolate needs -spin_target_mesh FILE (the other end, same connectivity)");
+  PetscCall(VecDuplicate(mesh->x, &r0));
+  PetscCall(VecDuplicate(mesh->x, &r1));
+  PetscCall(VecDuplicate(mesh->x, &xs));
+  PetscCall(VecDuplicate(mesh->x, &xl));
+  PetscCall(PetscMalloc1(2 * (N + 1), &q));
+  PetscCall(CSSpinInterpolateSetUp(spin, mesh->x, r.xt, r.mu, r0, r1));
+  for (PetscInt k = 0; k <= N; k++) {
+    char      path[PETSC_MAX_PATH_LEN];
+    PetscReal t = (PetscReal)k / N, qmax;
+    PetscCall(CSSpinInterpolate(spin, mesh->x, r.mu, r0, r1, t, xs));
+    PetscCall(VecCopy(mesh->x, xl)); /* xl = (1 - t) x + t xt */
+    PetscCall(VecScale(xl, 1 - t));
+    PetscCall(VecAXPY(xl, t, r.xt));
+    PetscCall(CSGeometryQuasiConformal(mesh, mesh->x, xs, NULL, &q[k], &qmax));
+    PetscCall(CSGeometryQuasiConformal(mesh, mesh->x, xl, NULL, &q[N + 1 + k], &qmax));
+    PetscCall(PetscSNPrintf(path, sizeof(path), "%s_%" PetscInt_FMT ".obj", prefix, k));
+    PetscCall(CSMeshWrite(mesh, xs, path));
+    PetscCall(PetscPrintf(mesh->comm, "spin interpolation t=%.3f: %s, q_mean %.6f (linear interpolation %.6f)\n", (double)t, path, (double)q[k], (double)q[N + 1 + k]));
+    if (k == 0 || k == N) {
+      PetscCall(VecAXPY(xs, -1, k ? r.xt : mesh->x));
+      PetscCall(VecNorm(xs, NORM_INFINITY, &end[k ? 1 : 0]));
+    }
+  }
+  PetscCall(CSJSONAddRealArray(out->json, "interpolation_q_mean", N + 1, q));
+  PetscCall(CSJSONAddRealArray(out->json, "linear_q_mean", N + 1, q + N + 1));
+  PetscCall(CSJSONAddReal(out->json, "interpolation_start_error", end[0]));
+  PetscCall(CSJSONAddReal(out->json, "interpolation_end_error", end[1]));
+  PetscCall(CSOutputAddMeshFacts(out, mesh, mesh->x, NULL)); /* -o writes the input (the meshes are PREFIX_k.obj) */
+  PetscCall(CSOutputFinish(out, mesh, mesh->x));
+  PetscCall(PetscFree(q));
+  PetscCall(VecDestroy(&r0));
+  PetscCall(VecDestroy(&r1));
+  PetscCall(VecDestroy(&xs));
+  PetscCall(VecDestroy(&xl));
+  PetscCall(VecDestroy(&r.rho));
+  PetscCall(VecDestroy(&r.xt));
+  PetscCall(VecDestroy(&r.mu));
+  PetscFunctionReturn(0);
+}
+
+/* -spin_least_squares (crane2011 Fig. 22, the baseline the paper compares with): positions straight from the
+   best-fit similarities mu of -spin_target_mesh by Eq. 8 and the least-squares Poisson step, without the
+   eigenproblem (mu is not integrable, so the result is not a spin transformation). Summary: q_mean, q_max against
+   the input and target_distance_max, as for the spin result. */
+static PetscErrorCode SpinLeastSquares(CSSpin spin, CSMesh mesh, CSOutput *out)
+{
+  SpinRun   r;
+  Vec       d;
+  PetscReal nd, area, vol;
+  PetscFunctionBeginUser;
+  PetscCall(PetscMemzero(&r, sizeof(r)));
+  PetscCall(CSSpinRhoFromOptions(spin, mesh->x, &r.loc, &r.rho, &r.xt, &r.mu));
+  PetscCheck(r.xt, mesh->comm, PETSC_ERR_ARG_WRONG, "-spin_least_squares needs -spin_target_mesh FILE");
+  PetscCall(VecDuplicate(mesh->x, &r.xnew));
+  PetscCall(CSSpinReconstruct(spin, mesh->x, r.mu, r.xt, r.xnew));
+  PetscCall(VecDuplicate(r.xnew, &d));
+  PetscCall(VecWAXPY(d, -1, r.xt, r.xnew));
+  PetscCall(VecNorm(d, NORM_INFINITY, &nd));
+  PetscCall(CSGeometryAreaVolume(mesh, r.xt, &area, &vol));
+  PetscCall(CSJSONAddReal(out->json, "target_distance_max", nd / PetscSqrtReal(area)));
+  PetscCall(CSJSONAddString(out->json, "method", "least_squares"));
+  PetscCall(PetscPrintf(mesh->comm, "least squares from mu (Fig. 22): max distance to -spin_target_mesh %.3e (relative to sqrt(area))\n", (double)(nd / PetscSqrtReal(area))));
+  PetscCall(CSOutputAddMeshFacts(out, mesh, r.xnew, mesh->x));
+  PetscCall(CSOutputFinish(out, mesh, r.xnew));
+  PetscCall(VecDestroy(&d));
+  PetscCall(VecDestroy(&r.xnew));
+  PetscCall(VecDestroy(&r.rho));
+  PetscCall(VecDestroy(&r.xt));
+  PetscCall(VecDestroy(&r.mu));
+  PetscFunctionReturn(0);
+}
+
+/* total length of the boundary edges (each lies in one face, and every face on one rank) */
+static PetscErrorCode BoundaryLength(CSMesh mesh, Vec x, PetscReal *len)
+{
+  Vec              xl;
+  const PetscReal *p;
+  PetscReal        l = 0;
+  PetscFunctionBeginUser;
+  PetscCall(CSMeshGetLocalPositions(mesh, x, &xl, &p));
+  for (CSFaceIter F = CS_FACE_ITER_INIT; CSMeshFaceNext(mesh, p, &F);)
+    for (int k = 0; k < 3; k++)
+      if (mesh->edgeBoundary[F.e[k]]) {
+        PetscReal e[3];
+        CSVecSub(F.c[(k + 1) % 3], F.c[(k + 2) % 3], e);
+        l += CSVecNorm(e);
+      }
+  PetscCall(CSMeshRestoreLocalPositions(mesh, x, &xl, &p));
+  PetscCall(MPIU_Allreduce(&l, len, 1, MPIU_REAL, MPIU_SUM, mesh->comm));
+  PetscFunctionReturn(0);
+}
+
+/* -spin_flow_steps N (crane2011 Sec. 7.3, Fig. 16, 17): the conformal Willmore flow on a disk, rho(t) = -t H,
+   taken as N steps of rho = -tau H of the current surface, each a spin transformation with the boundary
+   condition of Sec. 5.7 (-spin_boundary, default keep). History per step: area, boundary length, the ratio
+   area / length^2 (1/(4 pi) for a flat disk bounded by a circle), q_mean against the input. */
+static PetscErrorCode SpinFlow(CSSpin spin, CSMesh mesh, PetscInt N, PetscReal tau, CSOutput *out)
+{
+  Vec       x, rho, lambda, xnew;
+  CSHistory hist = NULL;
+  PetscReal area, vol, len, qmean = 1, qmax;
+  PetscFunctionBeginUser;
+  PetscCheck(mesh->topo.boundary_loops > 0, mesh->comm, PETSC_ERR_ARG_WRONG, "-spin_flow_steps: mesh %s has no boundary (the flow rho = -t H is the closed form on disks, Sec. 7.3)", mesh->name);
+  PetscCall(VecDuplicate(mesh->x, &x));
+  PetscCall(VecDuplicate(mesh->x, &xnew));
+  PetscCall(VecCopy(mesh->x, x));
+  PetscCall(DMCreateGlobalVector(mesh->dmV1, &rho));
+  PetscCall(DMCreateGlobalVector(spin->dm, &lambda));
+  PetscCall(CSOutputHistoryCreate(out, mesh->comm, "it,area,boundary_length,area_over_length2,q_mean", 0, &hist));
+  for (PetscInt k = 0; k <= N; k++) {
+    PetscReal row[5];
+    PetscCall(CSGeometryAreaVolume(mesh, x, &area, &vol));
+    PetscCall(BoundaryLength(mesh, x, &len));
+    if (k) PetscCall(CSGeometryQuasiConformal(mesh, mesh->x, x, NULL, &qmean, &qmax));
+    row[0] = k; row[1] = area; row[2] = len; row[3] = area / (len * len); row[4] = qmean;
+    if (hist) PetscCall(CSHistoryAppend(hist, 5, row));
+    PetscCall(PetscPrintf(mesh->comm, "spin flow %3" PetscInt_FMT ": area %.6f boundary length %.6f area/length^2 %.6f q_mean %.6f\n", k, (double)area, (double)len, (double)row[3], (double)qmean));
+    if (k == N) break;
+    PetscCall(VecSet(rho, 0));
+    PetscCall(CSSpinRhoAddMeanCurvature(mesh, x, -tau, rho));
+    PetscCall(CSSpinSolveEigen(spin, x, CS_RHO_VERTEX, rho, lambda));
+    PetscCall(CSSpinNormalize(spin, lambda, NULL, (PetscBool)(spin->boundary == CS_SPIN_BOUNDARY_NONE)));
+    PetscCall(CSSpinReconstruct(spin, x, lambda, x, xnew));
+    PetscCall(VecCopy(xnew, x));
+  }
+  PetscCall(CSJSONAddReal(out->json, "flow_area_over_length2", area / (len * len)));
+  PetscCall(CSJSONAddInt(out->json, "flow_steps", N));
+  PetscCall(CSOutputAddMeshFacts(out, mesh, x, mesh->x));
+  PetscCall(CSOutputFinish(out, mesh, x));
+  PetscCall(CSHistoryDestroy(&hist));
+  PetscCall(VecDestroy(&x));
+  PetscCall(VecDestroy(&xnew));
+  PetscCall(VecDestroy(&rho));
+  PetscCall(VecDestroy(&lambda));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode CSTaskSpin(MPI_Comm comm)
 {
   CSOutput out;
   CSMesh   mesh;
-  CSSpin   spin;
-  SpinRun  r;
+  CSSpin    spin;
+  SpinRun   r;
+  PetscInt  ninterp = 8, nflow = 10;
+  PetscBool interp  = PETSC_FALSE, flow = PETSC_FALSE, lsq = PETSC_FALSE;
+  PetscReal tau     = 0.1;
+  char      iprefix[PETSC_MAX_PATH_LEN] = "spin_interpolate";
   PetscFunctionBeginUser;
   PetscCall(PetscMemzero(&r, sizeof(r)));
   PetscCall(CSOutputFromOptions(comm, &out));
   PetscCall(CSMeshCreateFromOptions(comm, NULL, &mesh));
   PetscCall(CSSpinCreate(mesh, &spin));
   PetscCall(CSSpinSetFromOptions(spin));
-  PetscCall(SpinSolve(spin, mesh, &r));
-  PetscCall(SpinReport(spin, mesh, &r, &out));
-  PetscCall(CSOutputAddMeshFacts(&out, mesh, r.xnew, mesh->x));
-  if (out.has_viewer) PetscCall(SpinView(spin, mesh, &r, out.viewer_dir));
-  PetscCall(CSOutputFinish(&out, mesh, r.xnew));
-  PetscCall(VecDestroy(&r.xnew));
-  PetscCall(VecDestroy(&r.lambda));
-  PetscCall(VecDestroy(&r.rho));
-  PetscCall(VecDestroy(&r.xt));
-  PetscCall(VecDestroy(&r.mu));
-  PetscCall(VecDestroy(&r.Tt));
+  PetscOptionsBegin(comm, NULL, "Similarity interpolation (crane2011 Sec. 7.2, Fig. 21)", NULL);
+  PetscCall(PetscOptionsInt("-spin_interpolate", "Meshes 0..N of the similarity interpolation from the input to -spin_target_mesh instead of a spin transformation", NULL, ninterp, &ninterp, &interp));
+  PetscCall(PetscOptionsInt("-spin_flow_steps", "Conformal Willmore flow on a disk (Sec. 7.3): this many spin transformations with rho = -tau H of the current surface", NULL, nflow, &nflow, &flow));
+  PetscCall(PetscOptionsReal("-spin_flow_tau", "Step of -spin_flow_steps (tau = 1: the minimal surface in one step)", NULL, tau, &tau, NULL));
+  PetscCall(PetscOptionsBool("-spin_least_squares", "Positions from the best-fit similarities of -spin_target_mesh by least squares, without the eigenproblem (the baseline of Fig. 22)", NULL, lsq, &lsq, NULL));
+  PetscCall(PetscOptionsString("-spin_interpolate_prefix", "Interpolated mesh k is written to PREFIX_k.obj", NULL, iprefix, iprefix, sizeof(iprefix), NULL));
+  PetscOptionsEnd();
+  PetscCheck(!interp || ninterp >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-spin_interpolate %" PetscInt_FMT ": need at least 1 step", ninterp);
+  {
+    const CSOptionCheck checks[] = {{"spin_flow_steps", (PetscReal)nflow, nflow >= 1, "must be >= 1"}, {"spin_flow_tau", tau, tau > 0, "must be > 0"}};
+    PetscCall(CSCheckOptionValues(comm, NULL, 2, checks));
+  }
+  if (interp) PetscCall(SpinInterpolate(spin, mesh, ninterp, iprefix, &out));
+  else if (flow) PetscCall(SpinFlow(spin, mesh, nflow, tau, &out));
+  else if (lsq) PetscCall(SpinLeastSquares(spin, mesh, &out));
+  else {
+    PetscCall(SpinSolve(spin, mesh, &r));
+    PetscCall(SpinReport(spin, mesh, &r, &out));
+    PetscCall(CSOutputAddMeshFacts(&out, mesh, r.xnew, mesh->x));
+    if (out.has_viewer) PetscCall(SpinView(spin, mesh, &r, out.viewer_dir));
+    PetscCall(CSOutputFinish(&out, mesh, r.xnew));
+    PetscCall(VecDestroy(&r.xnew));
+    PetscCall(VecDestroy(&r.lambda));
+    PetscCall(VecDestroy(&r.rho));
+    PetscCall(VecDestroy(&r.xt));
+    PetscCall(VecDestroy(&r.mu));
+    PetscCall(VecDestroy(&r.Tt));
+  }
   PetscCall(CSSpinDestroy(&spin));
   PetscCall(CSMeshDestroy(&mesh));
   PetscCall(CSOutputDestroy(&out));

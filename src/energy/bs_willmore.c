@@ -43,6 +43,9 @@ typedef struct {
   const PetscInt *gid;   /* nv: global vertex numbers (dmV1 local-to-global) */
   PetscBool   *fixed;    /* nv */
   PetscInt     nfixed;
+  PetscBool   *islands;  /* nv, or NULL: user-fixed vertices (Sec. 3.3 "islands"), fixed with their one-ring */
+  PetscBool    single;   /* Sec. 3.2 rule for a single vanishing beta at a vertex (else the eps heuristic) */
+  DM           dmV5;     /* 5 dofs per vertex: count, circle tangent, rate R of the vanishing betas */
   PetscReal   *wEdge;    /* ne: multiplicity of beta(e) in W */
   Vec          Wg;       /* dmV1 work vector: per-vertex W_i when the caller does not want them */
   PetscReal   *gkl;      /* 6*ne scratch: weighted gradient rows of l (side 0) and k (side 1) */
@@ -135,16 +138,17 @@ static PetscErrorCode BSFixedSet(CSEnergy en)
   CSLocalSum s;
   PetscInt   nint = 0, nbdv = 0, N[3], Nsum[3];
   PetscFunctionBeginUser;
+  PetscCall(PetscFree(c->fixed));
   PetscCall(PetscCalloc1(m->nv, &c->fixed));
   PetscCall(CSLocalSumBegin(m->dmV1, &s));
-  if (c->bc == CS_BS_BOUNDARY_FIXED) {
-    for (PetscInt v = 0; v < m->nv; v++)
-      if (m->vertBoundary[v]) s.a[v] = 1;
-    for (PetscInt e = 0; e < m->ne; e++) {
-      PetscInt i = m->edgeVert[2 * e], j = m->edgeVert[2 * e + 1];
-      if (m->vertBoundary[i]) s.a[j] = 1;
-      if (m->vertBoundary[j]) s.a[i] = 1;
-    }
+  /* seeds: the boundary (FIXED mode) and the islands, known on every copy of a vertex; then their one-ring */
+  for (PetscInt v = 0; v < m->nv; v++) c->fixed[v] = (PetscBool)((c->bc == CS_BS_BOUNDARY_FIXED && m->vertBoundary[v]) || (c->islands && c->islands[v]));
+  for (PetscInt v = 0; v < m->nv; v++)
+    if (c->fixed[v]) s.a[v] = 1;
+  for (PetscInt e = 0; e < m->ne; e++) {
+    PetscInt i = m->edgeVert[2 * e], j = m->edgeVert[2 * e + 1];
+    if (c->fixed[i]) s.a[j] = 1;
+    if (c->fixed[j]) s.a[i] = 1;
   }
   PetscCall(CSLocalSumShare(&s));
   N[0] = 0;
@@ -160,6 +164,22 @@ static PetscErrorCode BSFixedSet(CSEnergy en)
   PetscCall(MPIU_Allreduce(N, Nsum, 3, MPIU_INT, MPI_SUM, m->comm));
   c->nfixed = Nsum[0];
   c->freebd = (PetscBool)(c->bc == CS_BS_BOUNDARY_FREE && Nsum[2] > 0);
+  PetscFunctionReturn(0);
+}
+
+/* the far vertices' fixed flags (their positions travel per evaluation through dmE6) */
+static PetscErrorCode BSOppositeFixed(CSEnergy en)
+{
+  BSCtx    *c = (BSCtx *)en->ctx;
+  CSMesh    m = en->mesh;
+  PetscInt *fx;
+  PetscFunctionBeginUser;
+  PetscCall(PetscFree(c->oppFixed));
+  PetscCall(PetscMalloc1(m->nv, &fx));
+  PetscCall(PetscMalloc1(2 * m->ne, &c->oppFixed));
+  for (PetscInt v = 0; v < m->nv; v++) fx[v] = c->fixed[v] ? 1 : 0;
+  PetscCall(CSMeshAdjacencyGatherOpposite(m, fx, 0, c->oppFixed));
+  PetscCall(PetscFree(fx));
   PetscFunctionReturn(0);
 }
 
@@ -202,7 +222,6 @@ static PetscErrorCode BSSetUp(CSEnergy en)
 {
   BSCtx   *c = (BSCtx *)en->ctx;
   CSMesh   m = en->mesh;
-  PetscInt *fx;
   PetscFunctionBeginUser;
   PetscCall(CSMeshGetAdjacency(m, &c->adj));
   c->gid = c->adj->vertGlobal;
@@ -219,13 +238,8 @@ static PetscErrorCode BSSetUp(CSEnergy en)
     else c->wEdge[e] = (PetscReal)(!m->vertBoundary[i]) + (PetscReal)(!m->vertBoundary[j]);
   }
 
-  /* the far vertices' fixed flags (their positions travel per evaluation through dmE6) */
   PetscCall(CSMeshCreateFieldDM(m->dm, 1, 6, "bs_edge6", &c->dmE6));
-  PetscCall(PetscMalloc1(m->nv, &fx));
-  PetscCall(PetscMalloc1(2 * m->ne, &c->oppFixed));
-  for (PetscInt v = 0; v < m->nv; v++) fx[v] = c->fixed[v] ? 1 : 0;
-  PetscCall(CSMeshAdjacencyGatherOpposite(m, fx, 0, c->oppFixed));
-  PetscCall(PetscFree(fx));
+  PetscCall(BSOppositeFixed(en));
 
   if (c->freebd) {
     PetscCheck(c->adj->bdManifold, m->comm, PETSC_ERR_PLIB, "bs_willmore: some boundary vertices do not have one incoming and one outgoing boundary edge");
@@ -452,6 +466,103 @@ static PetscErrorCode BSFreeBoundaryVertices(BSCtx *c, CSMesh m, BSEval *E)
   PetscFunctionReturn(0);
 }
 
+/* Sec. 3.2, one vanishing beta: tangent t at P[r] of the circle through the diamond (P[r] and its diamond
+   neighbours P[r+1], P[r+3]) and the rate R at which beta grows for a unit move orthogonal to it (equal in all
+   orthogonal directions; measured along the normal of the circle's plane, beta(h)/h with h = 1e-4 |edge|). */
+static void SingularData(const PetscReal *const P[4], int r, PetscReal h, PetscReal t[3], PetscReal *R)
+{
+  PetscReal a[3], b[3], n[3], u[3], v[3], o[3], q[3], beta, nn;
+  const PetscReal *Q[4] = {P[0], P[1], P[2], P[3]};
+  PetscBool active;
+  CSVecSub(P[(r + 1) % 4], P[r], a);
+  CSVecSub(P[(r + 3) % 4], P[r], b);
+  CSVecCross(a, b, n);
+  nn = CSVecNorm(n);
+  for (int d = 0; d < 3; d++) {
+    u[d] = CSVecDot(a, a) * b[d] - CSVecDot(b, b) * a[d];
+    n[d] /= nn;
+  }
+  CSVecCross(u, n, v); /* (|a|^2 b - |b|^2 a) x (a x b) / (2 |a x b|^2): the centre - P[r] */
+  for (int d = 0; d < 3; d++) o[d] = v[d] / (2 * nn);
+  CSVecCross(n, o, t);
+  nn = CSVecNorm(t);
+  for (int d = 0; d < 3; d++) {
+    t[d] /= nn;
+    q[d] = P[r][d] + h * n[d];
+  }
+  Q[r] = q;
+  CSBSDiamond(Q, 0, &beta, NULL, &active);
+  *R = beta / h;
+}
+
+/* Sec. 3.2: where exactly one beta in the support of the gradient at v_i vanishes (|sin beta| < eps), with g the
+   sum of the regular negative gradients and R the rate of that beta for moves orthogonal to its circle C, the
+   steepest descent is g_p if R > |g_o|, else g_p + g_o (1 - R/|g_o|) (g = g_p + g_o, parallel/orthogonal to C).
+   Each vertex of an inactive diamond is counted by one rank (i, j: the edge owner; k, l: the rank of their face);
+   vertices with several vanishing betas keep the eps heuristic (the delta minimisation is not built). */
+static PetscErrorCode BSSingularRule(BSCtx *c, CSMesh m, const PetscReal *p, const PetscScalar *ea, Vec g)
+{
+  CSLocalSum         s;
+  Vec                S;
+  const PetscScalar *sa;
+  PetscScalar       *ga;
+  PetscInt           k = 0;
+  PetscFunctionBeginUser;
+  if (!c->dmV5) PetscCall(CSMeshCreateFieldDM(m->dm, 0, 5, "bs_singular5", &c->dmV5));
+  PetscCall(CSLocalSumBegin(c->dmV5, &s));
+  for (PetscInt e = 0; e < m->ne; e++) {
+    PetscInt         i = m->edgeVert[2 * e], j = m->edgeVert[2 * e + 1], vtx[4];
+    PetscBool        mine[4];
+    const PetscReal *P[4];
+    PetscReal        h;
+    if (m->edgeBoundary[e] || c->act[e] || c->wEdge[e] == 0) continue;
+    P[0] = ea + 6 * e + 3; P[1] = p + 3 * j; P[2] = ea + 6 * e; P[3] = p + 3 * i;
+    vtx[0] = c->adj->edgeOpp[2 * e + 1]; vtx[1] = j; vtx[2] = c->adj->edgeOpp[2 * e]; vtx[3] = i;
+    mine[0] = (PetscBool)(c->adj->edgeFace[2 * e + 1] >= 0); mine[2] = (PetscBool)(c->adj->edgeFace[2 * e] >= 0);
+    mine[1] = mine[3] = m->edgeOwned[e];
+    {
+      PetscReal d[3];
+      CSVecSub(P[1], P[3], d);
+      h = 1e-4 * CSVecNorm(d);
+    }
+    for (int r = 0; r < 4; r++) {
+      PetscReal t[3], R;
+      if (!mine[r] || c->fixed[vtx[r]]) continue;
+      SingularData(P, r, h, t, &R);
+      s.a[5 * vtx[r]] += 1;
+      for (int d = 0; d < 3; d++) s.a[5 * vtx[r] + 1 + d] += t[d];
+      s.a[5 * vtx[r] + 4] += c->wEdge[e] * R;
+    }
+  }
+  PetscCall(DMGetGlobalVector(c->dmV5, &S));
+  PetscCall(CSLocalSumEnd(&s, S));
+  PetscCall(VecGetArrayRead(S, &sa));
+  PetscCall(VecGetArray(g, &ga));
+  for (PetscInt v = 0; v < m->nv; v++) {
+    PetscReal dn[3], t[3], dp = 0, dO[3], no = 0, f;
+    if (!m->vertOwned[v]) continue;
+    if (PetscRealPart(sa[5 * k]) == 1) {
+      for (int d = 0; d < 3; d++) {
+        dn[d] = -PetscRealPart(ga[3 * k + d]); /* the regular negative gradient */
+        t[d]  = PetscRealPart(sa[5 * k + 1 + d]);
+        dp += dn[d] * t[d];
+      }
+      for (int d = 0; d < 3; d++) {
+        dO[d] = dn[d] - dp * t[d];
+        no += dO[d] * dO[d];
+      }
+      no = PetscSqrtReal(no);
+      f  = no > PetscRealPart(sa[5 * k + 4]) ? 1 - PetscRealPart(sa[5 * k + 4]) / no : 0;
+      for (int d = 0; d < 3; d++) ga[3 * k + d] = -(dp * t[d] + f * dO[d]);
+    }
+    k++;
+  }
+  PetscCall(VecRestoreArray(g, &ga));
+  PetscCall(VecRestoreArrayRead(S, &sa));
+  PetscCall(DMRestoreGlobalVector(c->dmV5, &S));
+  PetscFunctionReturn(0);
+}
+
 /* One pass: W (always), per-vertex W_i (Wv, dmV1 global, may be NULL), gradient (g, dmV3 global, may be
    NULL), K (may be NULL, already zeroed and preallocated; assembled here with fixdiag on fixed rows). */
 static PetscErrorCode BSEvaluate(CSEnergy en, Vec x, PetscReal *Wout, Vec Wv, Vec g, Mat K, PetscReal fixdiag)
@@ -503,10 +614,10 @@ static PetscErrorCode BSEvaluate(CSEnergy en, Vec x, PetscReal *Wout, Vec Wv, Ve
     PetscCall(BSFreeBoundaryVertices(c, m, &E));
     PetscCall(CSLocalSumEnd(&vs, NULL));
   }
+  if (g) PetscCall(CSLocalSumEnd(&gs, g));
+  if (g && c->single) PetscCall(BSSingularRule(c, m, p, es.a, g));
   PetscCall(CSLocalSumEnd(&es, NULL));
   PetscCall(CSMeshRestoreLocalPositions(m, x, &xl, &p));
-
-  if (g) PetscCall(CSLocalSumEnd(&gs, g));
   {
     PetscScalar *w;
     PetscInt     n = 0;
@@ -556,8 +667,10 @@ static PetscErrorCode BSDestroy(CSEnergy e)
   PetscCall(DMDestroy(&c->dmE6));
   PetscCall(VecDestroy(&c->Wg));
   PetscCall(DMDestroy(&c->dmV6));
+  PetscCall(DMDestroy(&c->dmV5));
   PetscCall(PetscFree(c->oppFixed));
   PetscCall(PetscFree(c->fixed));
+  PetscCall(PetscFree(c->islands));
   PetscCall(PetscFree(c->wEdge));
   PetscCall(PetscFree(c->nnz));
   PetscCall(PetscFree3(c->gkl, c->Mkl, c->act));
@@ -592,6 +705,33 @@ PetscErrorCode CSEnergyWillmoreBSVertex(CSEnergy e, Vec x, Vec Wv, PetscReal *W)
   PetscCall(BSEvaluate(e, x, &Wt, Wv, NULL, NULL, 0));
   PetscCall(PetscLogEventEnd(CS_EVENT_Energy, 0, 0, 0, 0));
   if (W) *W = Wt;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSEnergyWillmoreBSSetIslands(CSEnergy e, Vec vmask)
+{
+  BSCtx             *c = (BSCtx *)e->ctx;
+  CSMesh             m = e->mesh;
+  Vec                l;
+  const PetscScalar *a;
+  PetscFunctionBeginUser;
+  PetscCall(PetscFree(c->islands));
+  PetscCall(PetscCalloc1(m->nv, &c->islands));
+  PetscCall(DMGetLocalVector(m->dmV1, &l));
+  PetscCall(DMGlobalToLocal(m->dmV1, vmask, INSERT_VALUES, l)); /* ghost copies too: their rings cross the cut */
+  PetscCall(VecGetArrayRead(l, &a));
+  for (PetscInt v = 0; v < m->nv; v++) c->islands[v] = (PetscBool)(PetscRealPart(a[v]) > 0.5);
+  PetscCall(VecRestoreArrayRead(l, &a));
+  PetscCall(DMRestoreLocalVector(m->dmV1, &l));
+  PetscCall(BSFixedSet(e));
+  PetscCall(BSOppositeFixed(e));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSEnergyWillmoreBSSetSingularRule(CSEnergy e, PetscBool single)
+{
+  PetscFunctionBeginUser;
+  ((BSCtx *)e->ctx)->single = single;
   PetscFunctionReturn(0);
 }
 

@@ -85,6 +85,7 @@ PetscErrorCode CSBSFlowMonitorSetHistory(CSBSFlow flow, CSOutput *out)
 typedef struct {
   CSViewer v;
   Vec      Wv; /* per-vertex W_i */
+  Vec      WK; /* per-vertex W_i + K_i */
   PetscInt every;
 } ViewerCtx;
 
@@ -93,12 +94,16 @@ static PetscErrorCode MonitorViewer(CSBSFlow flow, const CSBSMonitorInfo *info, 
   ViewerCtx *V = (ViewerCtx *)ctx;
   CSEnergy   bs;
   Vec        x;
+  PetscReal  wkmin;
+  PetscInt   nneg;
   PetscFunctionBeginUser;
   if (!Records(info) || info->row % V->every) PetscFunctionReturn(0);
   PetscCall(CSBSFlowGetEnergy(flow, &bs));
   PetscCall(CSBSFlowGetSolution(flow, &x));
   PetscCall(CSEnergyWillmoreBSVertex(bs, x, V->Wv, NULL));
   PetscCall(CSViewerAddVertexField(V->v, "W_i", V->Wv));
+  PetscCall(CSEnergyWillmoreBSGaussBound(bs, x, V->WK, &wkmin, &nneg));
+  PetscCall(CSViewerAddVertexField(V->v, "W_plus_K", V->WK)); /* Sec. 2: >= 0 */
   PetscCall(CSViewerWriteStep(V->v, x, (PetscReal)info->row));
   PetscFunctionReturn(0);
 }
@@ -109,6 +114,7 @@ static PetscErrorCode ViewerDestroy(void **ctx)
   PetscFunctionBeginUser;
   PetscCall(CSViewerDestroy(&V->v));
   PetscCall(VecDestroy(&V->Wv));
+  PetscCall(VecDestroy(&V->WK));
   PetscCall(PetscFree(*ctx));
   PetscFunctionReturn(0);
 }
@@ -124,6 +130,7 @@ PetscErrorCode CSBSFlowMonitorSetViewer(CSBSFlow flow, CSOutput *out, PetscInt e
   V->every = every;
   PetscCall(CSViewerCreate(mesh, out->viewer_dir, &V->v));
   PetscCall(DMCreateGlobalVector(mesh->dmV1, &V->Wv));
+  PetscCall(DMCreateGlobalVector(mesh->dmV1, &V->WK));
   PetscCall(CSBSFlowMonitorSet(flow, MonitorViewer, V, ViewerDestroy));
   PetscFunctionReturn(0);
 }

@@ -93,6 +93,19 @@ PetscErrorCode CSBSFlowSetFromOptions(CSBSFlow F)
   PetscCall(PetscOptionsReal("-dt_min_rel", "semi: stop as stalled when dt falls below this times the initial dt", NULL, F->dt_min_rel, &F->dt_min_rel, NULL));
   PetscCall(PetscOptionsReal("-max_area_ratio", "semi: stop with the last good state when the total area, or max(A/A0)/min(A/A0) of the vertex areas, exceeds this (0: off)", NULL, F->max_area_ratio, &F->max_area_ratio, NULL));
   PetscCall(PetscOptionsReal("-energy_target", "semi: stop when W is at or below this (stop_reason energy_target)", NULL, F->energy_target, &F->energy_target, &F->energy_target_set));
+  {
+    const char *types[] = {"vertex", "face"};
+    PetscInt    it      = F->islands_faces;
+    PetscCall(PetscOptionsString("-islands", "File of 0-based vertex (or face) indices in file order held fixed with their one-ring (Sec. 3.3, islands)", NULL, F->islands, F->islands, sizeof(F->islands), NULL));
+    PetscCall(PetscOptionsEList("-islands_type", "What -islands lists", NULL, types, 2, types[it], &it, NULL));
+    F->islands_faces = (PetscBool)(it == 1);
+  }
+  {
+    const char *rules[] = {"heuristic", "single"};
+    PetscInt    ir      = F->singular_single;
+    PetscCall(PetscOptionsEList("-singular", "Vanishing beta (Sec. 3.2): heuristic (its gradient set to 0) or single (the paper's steepest descent where one beta at a vertex vanishes)", NULL, rules, 2, rules[ir], &ir, NULL));
+    F->singular_single = (PetscBool)(ir == 1);
+  }
   PetscCall(PetscOptionsBool("-monotone", "semi: reject steps that increase W (false: accept them, as needed when many diamonds start at beta = 0)", NULL, F->monotone, &F->monotone, NULL));
   PetscOptionsEnd();
   PetscCall(CheckOptions(F));
@@ -140,6 +153,22 @@ static PetscErrorCode Perturb(CSBSFlow F)
   PetscFunctionReturn(0);
 }
 
+/* Sec. 3.3: "one can fix some islands of internal vertices (or faces)", held like the boundary strip (the G1
+   data of the islands: the masked vertices and their one-ring) */
+static PetscErrorCode SetIslands(CSBSFlow F)
+{
+  Vec  m;
+  char opt[128];
+  PetscFunctionBeginUser;
+  PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%sislands", F->hdr.prefix ? F->hdr.prefix : ""));
+  PetscCheck(F->bc == CS_BS_BOUNDARY_FIXED, F->mesh->comm, PETSC_ERR_ARG_INCOMP, "%s needs -%sboundary fixed (islands are G1 data, Sec. 3.3)", opt, F->hdr.prefix ? F->hdr.prefix : "");
+  PetscCall(DMCreateGlobalVector(F->mesh->dmV1, &m));
+  PetscCall(CSMeshReadIndexMask(F->mesh, opt, F->islands, F->islands_faces, m));
+  PetscCall(CSEnergyWillmoreBSSetIslands(F->bs, m));
+  PetscCall(VecDestroy(&m));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode CSBSFlowSetUp(CSBSFlow F)
 {
   CSMesh mesh = F->mesh;
@@ -148,6 +177,8 @@ PetscErrorCode CSBSFlowSetUp(CSBSFlow F)
   PetscCall(PetscTime(&F->t0));
   PetscCall(CSEnergyCreateWillmoreBS(mesh, F->bc, F->beta_eps, &F->bs));
   if (F->hessian_eps_set) PetscCall(CSEnergyWillmoreBSSetHessianEps(F->bs, F->hessian_eps));
+  if (F->islands[0]) PetscCall(SetIslands(F));
+  PetscCall(CSEnergyWillmoreBSSetSingularRule(F->bs, F->singular_single));
   PetscCall(CSEnergyWillmoreBSGetFixed(F->bs, &F->fixed, &F->nfixed));
   PetscCall(VecDuplicate(mesh->x, &F->x0));
   PetscCall(VecCopy(mesh->x, F->x0));

@@ -31,6 +31,9 @@ struct _p_CSBSFlow {
   PetscBool    energy_target_set;
   PetscBool    hessian_eps_set, dt_set, monotone;
   PetscInt     max_it, max_rej;
+  char         islands[PETSC_MAX_PATH_LEN]; /* -bs_islands FILE (Sec. 3.3), "" for none */
+  PetscBool    islands_faces;               /* -bs_islands_type face: the file lists faces */
+  PetscBool    singular_single;             /* -bs_singular single (Sec. 3.2) */
 
   /* state */
   CSEnergy         bs;

@@ -60,7 +60,7 @@ static PetscErrorCode ReadField(CSMesh mesh, const char option[], const char pat
 /* rho += s H with the signed pointwise mean curvature H_i = (L f)_i . N_i / (2 M_i) (positive on a sphere with
    outward normals; (L f)_i ~ 2 H N M_i for the positive cotan Laplacian). crane2011 Sec. 7.3 takes |HN| = |Lf|,
    which loses the sign on saddle-shaped regions; the projection on the vertex normal keeps it. */
-static PetscErrorCode AddMeanCurvature(CSMesh mesh, Vec x, PetscReal s, Vec rho)
+PetscErrorCode CSSpinRhoAddMeanCurvature(CSMesh mesh, Vec x, PetscReal s, Vec rho)
 {
   Vec H;
   PetscFunctionBeginUser;
@@ -178,8 +178,9 @@ PetscErrorCode CSSpinRhoFromOptions(CSSpin spin, Vec x, CSRhoLocation *loc, Vec 
   char        file[PETSC_MAX_PATH_LEN] = "", target[PETSC_MAX_PATH_LEN] = "";
   const char *locs[]                   = {"vertex", "face"};
   PetscInt    iloc = 0, nc = 30;
-  PetscReal   scale = 1, centers[30], radius = 0.3, height = 1, hs = 0;
-  PetscBool   hasfile, hastarget, hasbump, hash;
+  PetscReal   scale = 1, centers[30], radius = 0.3, height = 1, hs = 0, smooth = 0;
+  PetscBool   hasfile, hastarget, hasbump, hash, hasdisp, hassmooth;
+  char        disp[PETSC_MAX_PATH_LEN] = "";
   PetscFunctionBeginUser;
   *loc     = CS_RHO_NONE;
   *rho     = NULL;
@@ -193,9 +194,17 @@ PetscErrorCode CSSpinRhoFromOptions(CSSpin spin, Vec x, CSRhoLocation *loc, Vec 
   PetscCall(PetscOptionsReal("-rho_bump_radius", "Bump radius", NULL, radius, &radius, NULL));
   PetscCall(PetscOptionsReal("-rho_bump_height", "Bump height", NULL, height, &height, NULL));
   PetscCall(PetscOptionsReal("-rho_mean_curvature", "rho += s H (s = -1: minimal surface, crane2011 Sec. 7.3)", NULL, hs, &hs, &hash));
+  PetscCall(PetscOptionsString("-rho_from_displacement", "rho += (L g)/(2 M) for a normal displacement g (file: one value per vertex in file order; crane2011 Sec. 7.1)", NULL, disp, disp, sizeof(disp), &hasdisp));
+  PetscCall(PetscOptionsReal("-rho_smooth", "Heat-diffusion filter of the per-vertex rho: (M + t L) rho~ = M rho, t in length^2 (crane2011 Fig. 13)", NULL, smooth, &smooth, &hassmooth));
   PetscCall(PetscOptionsString("-spin_target_mesh", "Nearest spin transformation of this deformation (same connectivity; crane2011 Sec. 7.2)", NULL, target, target, sizeof(target), &hastarget));
   PetscOptionsEnd();
   if (!hasbump) nc = 0;
+  {
+    const CSOptionCheck checks[] = {{"rho_smooth", smooth, !hassmooth || smooth > 0, "must be a positive time (length^2)"}};
+    PetscCall(CSCheckOptionValues(mesh->comm, NULL, 1, checks));
+  }
+  PetscCheck(!hasdisp || !(hastarget || (hasfile && iloc == 1)), mesh->comm, PETSC_ERR_ARG_INCOMP, "-rho_from_displacement gives a per-vertex rho: not with -spin_target_mesh or -rho_location face");
+  PetscCheck(!hassmooth || !(hastarget || (hasfile && iloc == 1)), mesh->comm, PETSC_ERR_ARG_INCOMP, "-rho_smooth filters a per-vertex rho: not with -spin_target_mesh or -rho_location face");
   PetscCheck(nc % 3 == 0, mesh->comm, PETSC_ERR_ARG_WRONG, "-rho_bump_center: %" PetscInt_FMT " numbers; need x,y,z triples", nc);
   PetscCheck(radius > 0, mesh->comm, PETSC_ERR_ARG_OUTOFRANGE, "-rho_bump_radius %g: must be positive", (double)radius);
   PetscCheck(!(hastarget && (hasfile || nc || hash)), mesh->comm, PETSC_ERR_ARG_INCOMP, "-spin_target_mesh computes rho itself (crane2011 Sec. 7.2): do not combine it with -rho, -rho_bump_center or -rho_mean_curvature");
@@ -211,7 +220,7 @@ PetscErrorCode CSSpinRhoFromOptions(CSSpin spin, Vec x, CSRhoLocation *loc, Vec 
     PetscCall(DMCreateGlobalVector(mesh->dmF1, rho));
     PetscCall(ReadField(mesh, "-rho", file, 2, 1, "one per face in file order (-rho_location face)", *rho));
     *loc = CS_RHO_FACE;
-  } else if (hasfile || nc || hash) {
+  } else if (hasfile || nc || hash || hasdisp) {
     PetscCall(DMCreateGlobalVector(mesh->dmV1, rho));
     if (hasfile) PetscCall(ReadField(mesh, "-rho", file, 0, 1, "one per vertex in file order; -rho_location face for one per face", *rho));
     else PetscCall(VecSet(*rho, 0));
@@ -231,7 +240,15 @@ PetscErrorCode CSSpinRhoFromOptions(CSSpin spin, Vec x, CSRhoLocation *loc, Vec 
       PetscCall(VecRestoreArray(*rho, &r));
       PetscCall(VecRestoreArrayRead(x, &p));
     }
-    if (hash) PetscCall(AddMeanCurvature(mesh, x, hs, *rho));
+    if (hash) PetscCall(CSSpinRhoAddMeanCurvature(mesh, x, hs, *rho));
+    if (hasdisp) {
+      Vec g;
+      PetscCall(VecDuplicate(*rho, &g));
+      PetscCall(CSMeshReadVertexValues(mesh, "-rho_from_displacement", disp, g));
+      PetscCall(CSSpinRhoFromDisplacement(spin, x, g, *rho));
+      PetscCall(VecDestroy(&g));
+    }
+    if (hassmooth) PetscCall(CSSpinRhoSmooth(spin, x, smooth, *rho));
     *loc = CS_RHO_VERTEX;
   }
   if (*rho && scale != 1) PetscCall(VecScale(*rho, scale));
