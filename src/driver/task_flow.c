@@ -60,6 +60,7 @@ static PetscErrorCode FlowRegisterAll(void)
   PetscCall(PetscFunctionListAdd(&CSFlowList, "cgd", CSFlowWillmore));
   PetscCall(PetscFunctionListAdd(&CSFlowList, "pgd", CSFlowWillmore));
   PetscCall(PetscFunctionListAdd(&CSFlowList, "gd", CSFlowWillmore));
+  PetscCall(PetscFunctionListAdd(&CSFlowList, "alm", CSFlowWillmore));
   PetscCall(PetscFunctionListAdd(&CSFlowList, "bs", CSFlowBS));
   PetscCall(PetscRegisterFinalize(FlowListDestroy));
   PetscFunctionReturn(0);
@@ -77,7 +78,7 @@ PetscErrorCode CSTaskFlow(MPI_Comm comm)
   PetscCall(PetscOptionsFList("-flow_type", "Flow", NULL, CSFlowList, type, type, sizeof(type), NULL));
   PetscOptionsEnd();
   PetscCall(PetscFunctionListFind(CSFlowList, type, &run));
-  PetscCheck(run, comm, PETSC_ERR_ARG_OUTOFRANGE, "-flow_type %s: unknown flow (known: cgd pgd gd bs)", type);
+  PetscCheck(run, comm, PETSC_ERR_ARG_OUTOFRANGE, "-flow_type %s: unknown flow (known: cgd pgd gd alm bs)", type);
   PetscCall(CSOutputFromOptions(comm, &out));
   ierr = (*run)(comm, &out);
   if (ierr) PetscCall(CSOutputDestroy(&out)); /* no leak on the error path */

@@ -4,6 +4,7 @@
 
 const char *const CSFlowMetricTypes[]   = {"h2", "l2", "CSFlowMetricType", "CS_FLOW_METRIC_", NULL};
 const char *const CSFlowBoundaryTypes[] = {"dirichlet", "free", "normals", "CSFlowBoundaryType", "CS_FLOW_BOUNDARY_", NULL};
+const char *const CSALMMetricTypes[]    = {"plain", "gauss_newton", "CSALMMetricType", "CS_ALM_METRIC_", NULL};
 const char *const CSSaddleMatTypes[]    = {"nest", "aij", "CSSaddleMatType", "CS_SADDLE_MAT_", NULL};
 
 /* "-<prefix>constraint_area [value]": no value means the initial value. */
@@ -50,6 +51,11 @@ static PetscErrorCode StepOptions(CSWillmoreFlow F, PetscOptionItems *PetscOptio
   PetscCall(PetscOptionsInt("-pgd_projection_max_it", "PGD: Gauss-Newton iterations of the projection onto the constraint set", NULL, F->proj_max_it, &F->proj_max_it, NULL));
   PetscCall(PetscOptionsInt("-factor_reuse_its", "Keep the preconditioner (factorisation) of an earlier step while the last solve needed at most this many Krylov iterations (0: refactor every step; default 10 with the conformal constraint, else 0; ignored with a preonly saddle KSP)", NULL, F->reuse_its, &F->reuse_its, &set));
   PetscCheck(!set || F->reuse_its >= 0, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sfactor_reuse_its %" PetscInt_FMT ": use 0 (refactor every step) or a positive iteration count", p, F->reuse_its);
+  PetscCall(PetscOptionsReal("-alm_rho", "ALM: initial penalty rho of the augmented Lagrangian, relative to |E(input)|", NULL, F->alm_rho, &F->alm_rho, NULL));
+  PetscCall(PetscOptionsReal("-alm_rho_grow", "ALM: factor on rho at a multiplier update that did not reduce the violation 4-fold", NULL, F->alm_grow, &F->alm_grow, NULL));
+  PetscCall(PetscOptionsReal("-alm_rho_max", "ALM: largest rho (relative to |E(input)|)", NULL, F->alm_rho_max, &F->alm_rho_max, NULL));
+  PetscCall(PetscOptionsEnum("-alm_metric", "ALM: metric of the inner gradient steps: the flow's metric alone (plain) or with the penalty's Gauss-Newton curvature", NULL, CSALMMetricTypes, (PetscEnum)F->alm_metric, (PetscEnum *)&F->alm_metric, NULL));
+  PetscCall(PetscOptionsInt("-alm_inner_it", "ALM: accepted gradient steps between multiplier updates", NULL, F->alm_inner_it, &F->alm_inner_it, NULL));
   PetscCall(PetscOptionsEnum("-matrix_type", "The saddle matrix as MATNEST (fieldsplit) or converted to AIJ (monolithic direct solvers)", NULL, CSSaddleMatTypes, (PetscEnum)F->saddle_mat, (PetscEnum *)&F->saddle_mat, NULL));
   PetscFunctionReturn(0);
 }
@@ -95,6 +101,10 @@ static PetscErrorCode CheckValues(CSWillmoreFlow F)
     {"fairing_epsilon", F->eps, F->eps > 0, "must be > 0"},
     {"max_it", (PetscReal)F->max_it, F->max_it >= 0, "must be >= 0"},
     {"max_rejections", (PetscReal)F->max_rej, F->max_rej >= 1, "must be >= 1"},
+    {"alm_rho", F->alm_rho, F->alm_rho > 0, "must be > 0"},
+    {"alm_rho_grow", F->alm_grow, F->alm_grow >= 1, "must be >= 1"},
+    {"alm_rho_max", F->alm_rho_max, F->alm_rho_max >= F->alm_rho, "must be >= -alm_rho"},
+    {"alm_inner_it", (PetscReal)F->alm_inner_it, F->alm_inner_it >= 1, "must be >= 1"},
     {"soc_max_it", (PetscReal)F->soc_max_it, F->soc_max_it >= 0, "use 0 (no corrections) or a positive count"},
   };
   PetscFunctionBeginUser;
@@ -124,7 +134,7 @@ PetscErrorCode CSWillmoreFlowSetFromOptions(CSWillmoreFlow F)
   PetscCall(CSWillmoreFlowEnergyList(&energies));
   PetscCall(PetscStrncpy(type, F->type, sizeof(type)));
   PetscOptionsBegin(F->comm, F->prefix, "Constrained Willmore flow (soliman2021)", NULL);
-  PetscCall(PetscOptionsString("-type", "cgd|pgd|gd", NULL, type, type, sizeof(type), &set));
+  PetscCall(PetscOptionsString("-type", "cgd|pgd|gd|alm", NULL, type, type, sizeof(type), &set));
   if (set) PetscCall(CSWillmoreFlowSetType(F, type));
   PetscCall(StepOptions(F, PetscOptionsObject));
   PetscCall(ProblemOptions(F, energies, PetscOptionsObject));

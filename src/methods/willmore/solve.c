@@ -20,7 +20,7 @@ static PetscErrorCode Operators(CSWillmoreFlow F)
 {
   PetscFunctionBeginUser;
   PetscCall(CSMetricUpdate(&F->metric, F->x));
-  if (F->conformal) {
+  if (F->conformal && !F->ops.penalty) { /* ALM penalises |c|^2 unweighted (alm.c) */
     PetscInt ng;
     PetscCall(CSWFQuadDiffMetric(F, F->x, &ng));
     F->nguard = PetscMax(F->nguard, ng);

@@ -60,6 +60,7 @@ struct _CSWillmoreFlowOps {
   PetscInt  id;             /* stored in checkpoints (a resume must use the same kind) */
   PetscBool conformal;      /* default of -flow_conformal */
   PetscBool projected;      /* PGD: the constraint set is kept by projection, not by the step's filter */
+  PetscBool penalty;        /* ALM: the constraints enter L_A as penalty terms; the saddle solve is the metric alone */
   PetscErrorCode (*setup)(CSWillmoreFlow);               /* checks of the options against the kind */
   PetscErrorCode (*start)(CSWillmoreFlow);               /* before the first iteration (not after a resume) */
   PetscErrorCode (*trial)(CSWillmoreFlow, PetscBool *);  /* the trial point xt of step t (false: rejected) */
@@ -130,6 +131,11 @@ struct _p_CSWillmoreFlow {
   PetscReal             proj_tmu;
   PetscReal             tmu_grow, tmu_max; /* own schedule of the dual step (0: t_mu follows t) */
   PetscReal             tmu_ratio_max;     /* following t: t_mu <= this * t (1e3 times the initial t_mu / t) */
+  PetscReal             alm_rho, alm_grow, alm_rho_max; /* ALM penalty (relative to |E(input)|), its growth, ceiling */
+  PetscInt              alm_inner_it;      /* ALM: accepted steps per inner loop */
+  CSALMMetricType       alm_metric;        /* ALM: metric of the inner steps */
+  PetscInt              alm_inner, alm_update, alm_updates; /* ALM loop state: steps in this inner loop, iteration of the last update, updates */
+  PetscReal             alm_vlast;         /* ALM: violation at the last multiplier update */
 
   /* loop state */
   PetscInt              it, rejections, kspits_total, kspits, nguard;
@@ -173,6 +179,8 @@ PETSC_INTERN PetscErrorCode CSWillmoreFlowEnergyList(PetscFunctionList *list);
 PETSC_INTERN PetscErrorCode CSWillmoreFlowCreate_CGD(CSWillmoreFlow);
 PETSC_INTERN PetscErrorCode CSWillmoreFlowCreate_PGD(CSWillmoreFlow);
 PETSC_INTERN PetscErrorCode CSWillmoreFlowCreate_GD(CSWillmoreFlow);
+PETSC_INTERN PetscErrorCode CSWillmoreFlowCreate_ALM(CSWillmoreFlow);
+PETSC_INTERN PetscErrorCode CSWFMultiplierEstimate(CSWillmoreFlow F, Vec c, const PetscReal cx[]);
 PETSC_INTERN PetscErrorCode CSWFAcceptCGD(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFGrowCGD(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFShrinkCGD(CSWillmoreFlow F);
