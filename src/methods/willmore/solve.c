@@ -95,6 +95,14 @@ PetscErrorCode CSWillmoreFlowStep(CSWillmoreFlow F, CSWillmoreFlowConvergedReaso
   PetscCheck(F->E == F->E && F->el == F->el, F->comm, PETSC_ERR_FP, "flow: the energy or the residual is not a number at iteration %" PetscInt_FMT " (degenerate triangles?); try a smaller -%st", F->it, F->prefix);
   if (!F->reason && F->el < F->rtol && PetscMax(F->conf, F->glob) < F->ctol) F->reason = CS_WILLMORE_FLOW_CONVERGED_RTOL;
   if (!F->reason && F->it >= F->max_it) F->reason = CS_WILLMORE_FLOW_DIVERGED_MAX_IT;
+  if (!F->reason && F->max_seconds > 0) { /* a wall-time budget (studies at equal time, runs/study_optimizers.sh) */
+    PetscLogDouble now;
+    PetscMPIInt    over;
+    PetscCall(PetscTime(&now));
+    over = (PetscMPIInt)(now - F->t0 >= F->max_seconds);
+    PetscCallMPI(MPI_Bcast(&over, 1, MPI_INT, 0, F->comm)); /* rank 0's clock decides for all: no rank stops alone */
+    if (over) F->reason = CS_WILLMORE_FLOW_DIVERGED_MAX_IT;
+  }
   if (!F->reason) {
     PetscCall(Operators(F));
     PetscCall(StepWithRejections(F, &accepted));

@@ -127,6 +127,7 @@ struct _p_CSWillmoreFlow {
   PetscReal             fin_q;        /* q_max above which the guard reports fins rather than a smooth concentration */
   CSWillmoreFlowDegeneration degeneration;
   PetscInt              max_it, max_rej, proj_max_it, soc_max_it;
+  PetscReal             max_seconds; /* wall-time budget (0: none); its stop is reported as DIVERGED_MAX_IT */
   PetscBool             step_control;
   PetscReal             proj_tmu;
   PetscReal             tmu_grow, tmu_max; /* own schedule of the dual step (0: t_mu follows t) */
