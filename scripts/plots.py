@@ -7,8 +7,10 @@
   /usr/bin/python3 scripts/plots.py panel OUT.png [--title T] [--view ELEV,AZIM] [--input IN.obj] LABEL=MESH.obj ...
       the final shapes side by side (the input first with --input), each from the same camera direction and
       coloured by its signed mean curvature (scripts/pictures.py), each framed on its own bounding box
-  /usr/bin/python3 scripts/plots.py table OUT.md COLUMNS LABEL=SUMMARY.json ...
-      a markdown table of summary keys (COLUMNS comma separated; a missing key prints as -)
+  /usr/bin/python3 scripts/plots.py table OUT.md|- COLUMNS [--ref LABEL] LABEL=SUMMARY.json ...
+      a markdown table of summary keys (COLUMNS comma separated; a missing key prints as -), and derived columns:
+      min_angle (degrees, from the .obj beside the summary), s_per_step (seconds per iteration), step_cost_rel
+      (s_per_step relative to the run --ref)
 
 The studies call these three; a new study reuses them."""
 import argparse
@@ -96,18 +98,53 @@ def fmt(v):
     return str(v)
 
 
-def table(out, columns, runs):
+def min_angle(path):
+    """Smallest interior angle (degrees) of the triangles of an OBJ file."""
+    V, F = read_obj(path)
+    T = V[F]
+    best = 180.0
+    for k in range(3):
+        u, w = T[:, (k + 1) % 3] - T[:, k], T[:, (k + 2) % 3] - T[:, k]
+        c = np.einsum("ij,ij->i", u, w) / (np.linalg.norm(u, axis=1) * np.linalg.norm(w, axis=1) + 1e-300)
+        best = min(best, float(np.degrees(np.arccos(np.clip(c, -1, 1))).min()))
+    return best
+
+
+def derived(s, path):
+    """Columns computed from a summary and the mesh beside it (same name, .obj): min_angle, s_per_step."""
+    obj = os.path.splitext(path)[0] + ".obj"
+    if os.path.exists(obj):
+        s["min_angle"] = min_angle(obj)
+    spi = s.get("seconds_per_iteration", s.get("seconds_per_step"))
+    if spi is None and s.get("iterations"):
+        spi = s["seconds"] / s["iterations"]
+    if spi is not None:
+        s["s_per_step"] = spi
+    return s
+
+
+def table(out, columns, runs, ref=None):
     cols = columns.split(",")
-    lines = ["| run | " + " | ".join(cols) + " |", "|---" * (len(cols) + 1) + "|"]
+    rows = []
     for label, p in runs:
         try:
             with open(p) as f:
-                s = json.load(f)
+                s = derived(json.load(f), p)
         except (OSError, ValueError):
             s = {}
+        rows.append((label, s))
+    base = dict(rows).get(ref, {}).get("s_per_step") if ref else None
+    lines = ["| run | " + " | ".join(cols) + " |", "|---" * (len(cols) + 1) + "|"]
+    for label, s in rows:
+        if base and "s_per_step" in s:
+            s["step_cost_rel"] = s["s_per_step"] / base
         lines.append("| %s | " % label + " | ".join(fmt(s[c]) if c in s else "-" for c in cols) + " |")
-    with open(out, "w") as f:
-        f.write("\n".join(lines) + "\n")
+    text = "\n".join(lines) + "\n"
+    if out == "-":
+        sys.stdout.write(text)
+    else:
+        with open(out, "w") as f:
+            f.write(text)
 
 
 def main(argv=None):
@@ -127,6 +164,7 @@ def main(argv=None):
     t = sub.add_parser("table")
     t.add_argument("out")
     t.add_argument("columns")
+    t.add_argument("--ref", help="label of the run whose s_per_step is 1 in the column step_cost_rel")
     t.add_argument("runs", nargs="+")
     a = ap.parse_args(argv)
     if a.cmd == "curves":
@@ -135,7 +173,7 @@ def main(argv=None):
         meshes = ([("input", read_obj(a.input))] if a.input else []) + [(lb, read_obj(pth)) for lb, pth in pairs(a.runs)]
         panel(a.out, meshes, tuple(float(v) for v in a.view.split(",")), a.title)
     else:
-        table(a.out, a.columns, pairs(a.runs))
+        table(a.out, a.columns, pairs(a.runs), a.ref)
 
 
 if __name__ == "__main__":

@@ -61,6 +61,10 @@ static PetscErrorCode FlowRegisterAll(void)
   PetscCall(PetscFunctionListAdd(&CSFlowList, "pgd", CSFlowWillmore));
   PetscCall(PetscFunctionListAdd(&CSFlowList, "gd", CSFlowWillmore));
   PetscCall(PetscFunctionListAdd(&CSFlowList, "alm", CSFlowWillmore));
+  for (int i = 0; i < 5; i++) { /* the fairing baselines (crane2013 Fig. 17) */
+    const char *baseline[] = {"emcf", "ebilap", "imcf", "ibilap", "cmcf"};
+    PetscCall(PetscFunctionListAdd(&CSFlowList, baseline[i], CSFlowWillmore));
+  }
   PetscCall(PetscFunctionListAdd(&CSFlowList, "bs", CSFlowBS));
   PetscCall(PetscRegisterFinalize(FlowListDestroy));
   PetscFunctionReturn(0);
@@ -78,7 +82,7 @@ PetscErrorCode CSTaskFlow(MPI_Comm comm)
   PetscCall(PetscOptionsFList("-flow_type", "Flow", NULL, CSFlowList, type, type, sizeof(type), NULL));
   PetscOptionsEnd();
   PetscCall(PetscFunctionListFind(CSFlowList, type, &run));
-  PetscCheck(run, comm, PETSC_ERR_ARG_OUTOFRANGE, "-flow_type %s: unknown flow (known: cgd pgd gd alm bs)", type);
+  PetscCheck(run, comm, PETSC_ERR_ARG_OUTOFRANGE, "-flow_type %s: unknown flow (known: cgd pgd gd alm bs; baselines emcf ebilap imcf ibilap cmcf)", type);
   PetscCall(CSOutputFromOptions(comm, &out));
   ierr = (*run)(comm, &out);
   if (ierr) PetscCall(CSOutputDestroy(&out)); /* no leak on the error path */

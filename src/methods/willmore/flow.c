@@ -32,6 +32,12 @@ static PetscErrorCode RegisterAll(void)
   PetscCall(CSWillmoreFlowRegister(CSWILLMOREFLOWPGD, CSWillmoreFlowCreate_PGD));
   PetscCall(CSWillmoreFlowRegister(CSWILLMOREFLOWGD, CSWillmoreFlowCreate_GD));
   PetscCall(CSWillmoreFlowRegister(CSWILLMOREFLOWALM, CSWillmoreFlowCreate_ALM));
+  /* baselines of the fairing comparison (crane2013 Fig. 17; fairing_baselines.c) */
+  PetscCall(CSWillmoreFlowRegister("emcf", CSWillmoreFlowCreate_EMCF));
+  PetscCall(CSWillmoreFlowRegister("ebilap", CSWillmoreFlowCreate_EBILAP));
+  PetscCall(CSWillmoreFlowRegister("imcf", CSWillmoreFlowCreate_IMCF));
+  PetscCall(CSWillmoreFlowRegister("ibilap", CSWillmoreFlowCreate_IBILAP));
+  PetscCall(CSWillmoreFlowRegister("cmcf", CSWillmoreFlowCreate_CMCF));
   PetscCall(PetscRegisterFinalize(ListDestroy));
   PetscFunctionReturn(0);
 }
@@ -94,6 +100,7 @@ PetscErrorCode CSWillmoreFlowSetType(CSWillmoreFlow F, CSWillmoreFlowType type)
   PetscCall(RegisterAll());
   PetscCall(PetscFunctionListFind(CSWillmoreFlowList, type, &create));
   PetscCheck(create, F->comm, PETSC_ERR_ARG_UNKNOWN_TYPE, "-%stype %s: unknown Willmore flow type", F->prefix, type);
+  if (F->ops.destroy) PetscCall((*F->ops.destroy)(F));
   PetscCall(PetscMemzero(&F->ops, sizeof(F->ops)));
   PetscCall(PetscStrncpy(F->type, type, sizeof(F->type)));
   PetscCall((*create)(F));
@@ -226,6 +233,7 @@ PetscErrorCode CSWillmoreFlowDestroy(CSWillmoreFlow *flow)
   PetscFunctionBeginUser;
   if (!F) PetscFunctionReturn(0);
   PetscCall(CSWillmoreFlowMonitorCancel(F));
+  if (F->ops.destroy) PetscCall((*F->ops.destroy)(F));
   if (F->setupcalled) {
     PetscCall(CSSaddleDestroy(&F->saddle));
     PetscCall(CSMetricDestroy(&F->metric));

@@ -136,7 +136,7 @@ PetscErrorCode CSWillmoreFlowSetFromOptions(CSWillmoreFlow F)
   PetscCall(CSWillmoreFlowEnergyList(&energies));
   PetscCall(PetscStrncpy(type, F->type, sizeof(type)));
   PetscOptionsBegin(F->comm, F->prefix, "Constrained Willmore flow (soliman2021)", NULL);
-  PetscCall(PetscOptionsString("-type", "cgd|pgd|gd|alm", NULL, type, type, sizeof(type), &set));
+  PetscCall(PetscOptionsString("-type", "cgd|pgd|gd|alm; fairing baselines emcf|ebilap|imcf|ibilap|cmcf", NULL, type, type, sizeof(type), &set));
   if (set) PetscCall(CSWillmoreFlowSetType(F, type));
   PetscCall(StepOptions(F, PetscOptionsObject));
   PetscCall(ProblemOptions(F, energies, PetscOptionsObject));

@@ -68,6 +68,7 @@ struct _CSWillmoreFlowOps {
   PetscErrorCode (*accept)(CSWillmoreFlow);              /* x = xt done: multipliers, restoration */
   PetscErrorCode (*grow)(CSWillmoreFlow);                /* step sizes after an accepted step */
   PetscErrorCode (*shrink)(CSWillmoreFlow);              /* step sizes after a rejected step */
+  PetscErrorCode (*destroy)(CSWillmoreFlow);             /* the kind's own data F->kctx (may be NULL) */
 };
 
 typedef struct {
@@ -82,6 +83,7 @@ struct _p_CSWillmoreFlow {
   CSMesh                mesh; /* given, referenced by the caller; not destroyed here */
   char                  type[16], prefix[64];
   struct _CSWillmoreFlowOps ops;
+  void                 *kctx; /* data of the kind (fairing_baselines.c), freed by ops.destroy */
   PetscBool             setupcalled;
   CSWillmoreFlowConvergedReason reason;
   CSWillmoreFlowMonitor monitor[CS_WILLMORE_FLOW_MAX_MONITORS];
@@ -181,6 +183,11 @@ PETSC_INTERN PetscErrorCode CSWillmoreFlowCreate_CGD(CSWillmoreFlow);
 PETSC_INTERN PetscErrorCode CSWillmoreFlowCreate_PGD(CSWillmoreFlow);
 PETSC_INTERN PetscErrorCode CSWillmoreFlowCreate_GD(CSWillmoreFlow);
 PETSC_INTERN PetscErrorCode CSWillmoreFlowCreate_ALM(CSWillmoreFlow);
+PETSC_INTERN PetscErrorCode CSWillmoreFlowCreate_EMCF(CSWillmoreFlow);
+PETSC_INTERN PetscErrorCode CSWillmoreFlowCreate_EBILAP(CSWillmoreFlow);
+PETSC_INTERN PetscErrorCode CSWillmoreFlowCreate_IMCF(CSWillmoreFlow);
+PETSC_INTERN PetscErrorCode CSWillmoreFlowCreate_IBILAP(CSWillmoreFlow);
+PETSC_INTERN PetscErrorCode CSWillmoreFlowCreate_CMCF(CSWillmoreFlow);
 PETSC_INTERN PetscErrorCode CSWFMultiplierEstimate(CSWillmoreFlow F, Vec c, const PetscReal cx[]);
 PETSC_INTERN PetscErrorCode CSWFAcceptCGD(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFGrowCGD(CSWillmoreFlow F);
