@@ -92,6 +92,9 @@ PETSC_EXTERN PetscErrorCode CSWillmoreFlowDestroy(CSWillmoreFlow *flow);
    constraints). Zero without the conformal constraint. After the first CSWillmoreFlowStep (e.g. in a monitor). */
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetConformalMultiplier(CSWillmoreFlow flow, Vec q, Vec force);
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetConformal(CSWillmoreFlow flow, PetscBool *conformal);
+/* The Euler-Lagrange residual r = g + X^T mu + sum_j nu_j row_j at the current state (dmV3, borrowed; its norm is
+   the reported el_residual). After the first CSWillmoreFlowStep. */
+PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetResidual(CSWillmoreFlow flow, Vec *r);
 
 /* Monitors, called after the evaluation at the top of every iteration (it = accepted steps so far). */
 typedef PetscErrorCode (*CSWillmoreFlowMonitorFn)(CSWillmoreFlow flow, PetscInt it, void *ctx);

@@ -2,8 +2,9 @@
    the steps written during the flow and the final state land in one DIR/series.pvd. With N = 0 (the default)
    only the final state is written, as before the flow had monitors. Every step carries the fields
    mean_curvature (|h|, pointwise, as -task info), vertex_area (point data), face_area and Q (cell data: the
-   quasi-conformal error of each face against the flow's input, as the summary's q_max); constrained flows add
-   the conformal multiplier's fields (AddMultiplierFields). */
+   quasi-conformal error of each face against the flow's input, as the summary's q_max), el_residual (the
+   Euler-Lagrange residual per vertex, a vector); constrained flows add the conformal multiplier's fields
+   (AddMultiplierFields). */
 #include "cs_output_willmore.h"
 #include "cs_geometry.h"
 #include "cs_linalg.h"
@@ -46,7 +47,7 @@ static PetscErrorCode AddMultiplierFields(CSWillmoreFlow flow, CSMesh mesh, CSVi
 
 static PetscErrorCode WriteStep(CSWillmoreFlow flow, CSWillmoreViewer V, PetscInt it)
 {
-  Vec    x, x0, h, hn, area, farea, q;
+  Vec    x, x0, h, hn, area, farea, q, r;
   CSMesh mesh;
   PetscFunctionBeginUser;
   PetscCall(CSWillmoreFlowGetSolution(flow, &x));
@@ -67,6 +68,8 @@ static PetscErrorCode WriteStep(CSWillmoreFlow flow, CSWillmoreViewer V, PetscIn
   PetscCall(CSViewerAddFaceField(V->v, "face_area", farea));
   PetscCall(CSViewerAddFaceField(V->v, "Q", q));
   PetscCall(AddMultiplierFields(flow, mesh, V->v, x));
+  PetscCall(CSWillmoreFlowGetResidual(flow, &r));
+  PetscCall(CSViewerAddVertexField(V->v, "el_residual", r)); /* its norm is the reported EL residual */
   PetscCall(CSViewerWriteStep(V->v, x, (PetscReal)it));
   PetscCall(VecDestroy(&h));
   PetscCall(VecDestroy(&hn));

@@ -6,7 +6,7 @@ source tests/lib.sh
 timeout 120 $MPIEXEC "$CS_TESTS/test_multipliers" -cyl_energy area -cyl_t_max 10 -alm_alm_metric gauss_newton || exit 1
 d=$(mktemp -d); trap 'rm -rf "$d"' EXIT
 timeout 60 $MPIEXEC bin/confsurf -task flow -gen icosphere -gen_level 2 -gen_deform_bump 0.1 -flow_max_it 3 -flow_viewer_every 1 -viewer_dir "$d/vtu" > "$d/log" || { cat "$d/log"; exit 1; }
-for f in conformal_force stress_direction stress_max stress_min; do
+for f in conformal_force stress_direction stress_max stress_min el_residual; do
   grep -q "Name=\"$f\"" "$d"/vtu/*.pvtu || { echo "FAIL: field $f missing in the ParaView series"; exit 1; }
 done
-echo "ok   ParaView fields conformal_force, stress_direction, stress_max, stress_min at every step"
+echo "ok   ParaView fields conformal_force, stress_direction, stress_max, stress_min, el_residual at every step"

@@ -109,20 +109,6 @@ static PetscErrorCode AcceptALM(CSWillmoreFlow F)
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode GrowALM(CSWillmoreFlow F)
-{
-  PetscFunctionBeginUser;
-  if (F->t * F->grow <= F->tmax) F->t *= F->grow;
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode ShrinkALM(CSWillmoreFlow F)
-{
-  PetscFunctionBeginUser;
-  F->t *= 0.5;
-  PetscFunctionReturn(0);
-}
-
 PetscErrorCode CSWillmoreFlowCreate_ALM(CSWillmoreFlow F)
 {
   PetscFunctionBeginUser;
@@ -134,7 +120,7 @@ PetscErrorCode CSWillmoreFlowCreate_ALM(CSWillmoreFlow F)
   F->ops.trial     = TrialALM;
   F->ops.filter    = FilterALM;
   F->ops.accept    = AcceptALM;
-  F->ops.grow      = GrowALM;
-  F->ops.shrink    = ShrinkALM;
+  F->ops.grow      = CSWFGrowPrimal;
+  F->ops.shrink    = CSWFShrinkPrimal;
   PetscFunctionReturn(0);
 }

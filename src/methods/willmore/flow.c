@@ -33,11 +33,10 @@ static PetscErrorCode RegisterAll(void)
   PetscCall(CSWillmoreFlowRegister(CSWILLMOREFLOWGD, CSWillmoreFlowCreate_GD));
   PetscCall(CSWillmoreFlowRegister(CSWILLMOREFLOWALM, CSWillmoreFlowCreate_ALM));
   /* baselines of the fairing comparison (crane2013 Fig. 17; fairing_baselines.c) */
-  PetscCall(CSWillmoreFlowRegister("emcf", CSWillmoreFlowCreate_EMCF));
-  PetscCall(CSWillmoreFlowRegister("ebilap", CSWillmoreFlowCreate_EBILAP));
-  PetscCall(CSWillmoreFlowRegister("imcf", CSWillmoreFlowCreate_IMCF));
-  PetscCall(CSWillmoreFlowRegister("ibilap", CSWillmoreFlowCreate_IBILAP));
-  PetscCall(CSWillmoreFlowRegister("cmcf", CSWillmoreFlowCreate_CMCF));
+  for (int k = 0; k < 5; k++) {
+    const char *baseline[] = {"emcf", "ebilap", "imcf", "ibilap", "cmcf"};
+    PetscCall(CSWillmoreFlowRegister(baseline[k], CSWillmoreFlowCreate_Fairing));
+  }
   PetscCall(PetscRegisterFinalize(ListDestroy));
   PetscFunctionReturn(0);
 }

@@ -34,3 +34,11 @@ PetscErrorCode CSWillmoreFlowGetConformalMultiplier(CSWillmoreFlow F, Vec q, Vec
   }
   PetscFunctionReturn(0);
 }
+
+PetscErrorCode CSWillmoreFlowGetResidual(CSWillmoreFlow F, Vec *r)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(F->setupcalled && F->started, F->comm, PETSC_ERR_ORDER, "CSWillmoreFlowGetResidual before the first CSWillmoreFlowStep");
+  *r = F->r;
+  PetscFunctionReturn(0);
+}

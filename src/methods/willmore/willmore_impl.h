@@ -183,14 +183,12 @@ PETSC_INTERN PetscErrorCode CSWillmoreFlowCreate_CGD(CSWillmoreFlow);
 PETSC_INTERN PetscErrorCode CSWillmoreFlowCreate_PGD(CSWillmoreFlow);
 PETSC_INTERN PetscErrorCode CSWillmoreFlowCreate_GD(CSWillmoreFlow);
 PETSC_INTERN PetscErrorCode CSWillmoreFlowCreate_ALM(CSWillmoreFlow);
-PETSC_INTERN PetscErrorCode CSWillmoreFlowCreate_EMCF(CSWillmoreFlow);
-PETSC_INTERN PetscErrorCode CSWillmoreFlowCreate_EBILAP(CSWillmoreFlow);
-PETSC_INTERN PetscErrorCode CSWillmoreFlowCreate_IMCF(CSWillmoreFlow);
-PETSC_INTERN PetscErrorCode CSWillmoreFlowCreate_IBILAP(CSWillmoreFlow);
-PETSC_INTERN PetscErrorCode CSWillmoreFlowCreate_CMCF(CSWillmoreFlow);
+PETSC_INTERN PetscErrorCode CSWillmoreFlowCreate_Fairing(CSWillmoreFlow); /* the kind named by F->type */
 PETSC_INTERN PetscErrorCode CSWFMultiplierEstimate(CSWillmoreFlow F, Vec c, const PetscReal cx[]);
 PETSC_INTERN PetscErrorCode CSWFAcceptCGD(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFGrowCGD(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFShrinkCGD(CSWillmoreFlow F);
+PETSC_INTERN PetscErrorCode CSWFGrowPrimal(CSWillmoreFlow F);
+PETSC_INTERN PetscErrorCode CSWFShrinkPrimal(CSWillmoreFlow F);
 
 #endif
