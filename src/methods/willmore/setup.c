@@ -55,6 +55,10 @@ PetscErrorCode CSWFSetUpConstraints(CSWillmoreFlow F)
     PetscCheck(F->conformal, F->comm, PETSC_ERR_ARG_INCOMP, "-%sconstraint_mobius fixes the Moebius gauge of the conformal constraint: it needs -%sconformal (cgd, pgd)", F->prefix, F->prefix);
     PetscCall(CSConstraintCreateMobiusBalance(m, F->x0, &F->gc[F->ng++]));
   }
+  if (F->rotation) {
+    PetscCheck(F->conformal && F->mobius, F->comm, PETSC_ERR_ARG_INCOMP, "-%sconstraint_rotation fixes the rotations of the domain left free by the conformal constraint and the Moebius balancing: it needs -%sconformal and -%sconstraint_mobius", F->prefix, F->prefix, F->prefix);
+    PetscCall(CSConstraintCreateRotationGauge(m, F->x0, &F->gc[F->ng++]));
+  }
   for (PetscInt j = 0; j < F->ng; j++) F->k += F->gc[j]->k;
   PetscCheck(F->conformal || F->k == 0 || !F->ops.projected, F->comm, PETSC_ERR_ARG_INCOMP, "pgd without the conformal constraint is not supported");
   PetscFunctionReturn(0);

@@ -94,7 +94,7 @@ struct _p_CSWillmoreFlow {
   PetscReal             eps; /* fairing weight */
   CSFlowMetricType      metric_type;
   CSFlowBoundaryType    boundary;
-  PetscBool             boundary_set, conformal_set, mobius;
+  PetscBool             boundary_set, conformal_set, mobius, rotation;
   char                  target[PETSC_MAX_PATH_LEN], points[PETSC_MAX_PATH_LEN];
   PetscBool             area_set, area_given, vol_set, vol_given;
   PetscReal             area_target, vol_target;
@@ -111,7 +111,7 @@ struct _p_CSWillmoreFlow {
   IS                    isM[2];       /* edge / normal rows in the multiplier layout */
   Vec                   cE, cN, iqE, iqN;
   PetscInt              ng, k;
-  CSGlobalConstraint    gc[4];
+  CSGlobalConstraint    gc[5]; /* area, volume, points, Moebius balance, rotation gauge */
   PetscBool            *fixed;   /* local vertices held fixed (Dirichlet), or NULL */
   IS                    fixedIS; /* global dmV3 dofs of owned fixed vertices */
   CSMetric              metric;
