@@ -27,3 +27,6 @@ sys.exit(0 if ok and ok2 else 1)
 PY
 EXPECT="-flow_alm_rho -1: must be > 0" expect_fail bin/confsurf $S -flow_type alm -flow_alm_rho -1
 EXPECT="without any constraint" expect_fail bin/confsurf $S -flow_type alm -flow_conformal false
+# the options of this studies and gauge: a negative time budget, the rotation gauge without the balancing
+EXPECT="-flow_max_seconds -1: use 0" expect_fail bin/confsurf $S -flow_max_seconds -1
+EXPECT="needs -flow_conformal and -flow_constraint_mobius" expect_fail bin/confsurf $S -flow_constraint_rotation
