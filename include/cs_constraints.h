@@ -68,6 +68,9 @@ PETSC_EXTERN PetscErrorCode CSConstraintCreatePointsFromFile(CSMesh mesh, const 
    discrete Willmore energy is not invariant): the 3 rows sum_i A_i(f) (f0_i - c0) = 0, normalised by
    A(f0)^(3/2); see constraints_global.c. */
 PETSC_EXTERN PetscErrorCode CSConstraintCreateMobiusBalance(CSMesh mesh, Vec x0, CSGlobalConstraint *g);
+/* Rotation gauge of the domain (the rotations of the Moebius group the balancing leaves free): the 3 off-diagonal
+   second moments sum_i A_i(f) (y_i - ybar) of the area distribution on the input's vertices; constraints_global.c. */
+PETSC_EXTERN PetscErrorCode CSConstraintCreateRotationGauge(CSMesh mesh, Vec x0, CSGlobalConstraint *g);
 
 /* Fairing energy E = 1/2 ||f - f0||^2_{L2} + eps W(f) (soliman2021 Eq. 21), with the L2 norm of the input
    mesh (mass *0(f0), fixed), so grad E = *0(f0) (f - f0) + eps grad W. */

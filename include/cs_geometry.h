@@ -155,6 +155,11 @@ PETSC_EXTERN PetscErrorCode CSGeometryAreaVolume(CSMesh mesh, Vec x, PetscReal *
 /* Quasi-conformal error (crane2011 Sec. 6.1): per face the ratio sigma_max/sigma_min of the affine map from
    the reference triangle to the current one; q_mean is weighted by reference face area. q may be NULL. */
 PETSC_EXTERN PetscErrorCode CSGeometryQuasiConformal(CSMesh mesh, Vec xref, Vec x, Vec q, PetscReal *qmean, PetscReal *qmax);
+/* The conformal stress of an edge field q (dmE1; soliman2021 Eq. 20): per face the principal stress direction
+   (unit, 3 per face, a vector laid out like dmF1 times 3), the larger and smaller eigenvalues (dmF1). */
+PETSC_EXTERN PetscErrorCode CSGeometryConformalStress(CSMesh mesh, Vec x, Vec q, Vec dir, Vec smax, Vec smin);
+/* s_i = sum of q over the edges at vertex i (dmE1 -> dmV1): zero for a quadratic differential (Eq. 6). */
+PETSC_EXTERN PetscErrorCode CSGeometryEdgeSumAtVertices(CSMesh mesh, Vec q, Vec s);
 
 /* Number of faces (over all ranks) whose area vector in x does not point the way it does in xref. */
 PETSC_EXTERN PetscErrorCode CSGeometryFoldedFaces(CSMesh mesh, Vec xref, Vec x, PetscInt *nfolded);

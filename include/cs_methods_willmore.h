@@ -20,6 +20,7 @@ typedef const char *CSWillmoreFlowType;
 #define CSWILLMOREFLOWPGD "pgd"
 #define CSWILLMOREFLOWGD  "gd"
 #define CSWILLMOREFLOWNEWTON "newton"
+#define CSWILLMOREFLOWALM "alm"
 
 /* Why Solve stopped; CSWillmoreFlowConvergedReasons[reason] names it, CSWillmoreFlowStopReasons[reason] is the
    summary's stop_reason. */
@@ -53,6 +54,8 @@ PETSC_EXTERN const char *const CSWillmoreFlowDegenerations[];
 typedef enum { CS_FLOW_METRIC_H2, CS_FLOW_METRIC_L2 } CSFlowMetricType;
 typedef enum { CS_FLOW_BOUNDARY_DIRICHLET, CS_FLOW_BOUNDARY_FREE, CS_FLOW_BOUNDARY_NORMALS } CSFlowBoundaryType;
 typedef enum { CS_SADDLE_MAT_NEST, CS_SADDLE_MAT_AIJ } CSSaddleMatType;
+typedef enum { CS_ALM_METRIC_PLAIN, CS_ALM_METRIC_GAUSS_NEWTON } CSALMMetricType;
+PETSC_EXTERN const char *const CSALMMetricTypes[];
 PETSC_EXTERN const char *const CSFlowMetricTypes[];
 PETSC_EXTERN const char *const CSFlowBoundaryTypes[];
 PETSC_EXTERN const char *const CSSaddleMatTypes[];
@@ -89,6 +92,16 @@ PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetEnergyName(CSWillmoreFlow flow, con
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetInitialEnergy(CSWillmoreFlow flow, PetscReal *E0);
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowView(CSWillmoreFlow flow, PetscViewer viewer); /* NULL: stdout */
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowDestroy(CSWillmoreFlow *flow);
+
+/* The conformal Lagrange multiplier at the current state (soliman2021 Sec. 3.2): q (dmE1, or NULL) the
+   quadratic differential in the paper's sign (Eq. 7), force (dmV3, or NULL) the conformal tension force
+   sum_j q_ij df_ij / |df_ij|^2 per vertex, so that grad E + force is the Euler-Lagrange residual (without global
+   constraints). Zero without the conformal constraint. After the first CSWillmoreFlowStep (e.g. in a monitor). */
+PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetConformalMultiplier(CSWillmoreFlow flow, Vec q, Vec force);
+PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetConformal(CSWillmoreFlow flow, PetscBool *conformal);
+/* The Euler-Lagrange residual r = g + X^T mu + sum_j nu_j row_j at the current state (dmV3, borrowed; its norm is
+   the reported el_residual). After the first CSWillmoreFlowStep. */
+PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetResidual(CSWillmoreFlow flow, Vec *r);
 
 /* Monitors, called after the evaluation at the top of every iteration (it = accepted steps so far). */
 typedef PetscErrorCode (*CSWillmoreFlowMonitorFn)(CSWillmoreFlow flow, PetscInt it, void *ctx);

@@ -8,7 +8,7 @@ static const char help[] = "confsurf: conformal geometry processing of triangle 
 /* The tasks and what they do, for -help (the same names as RegisterTasks). */
 static const char *const task_help[][2] = {
   {"info",     "facts of a mesh: counts, genus, boundary loops, area, volume, Willmore energies"},
-  {"flow",     "-flow_type cgd|pgd|gd: conformally constrained Willmore (area, fairing) flow (soliman2021); bs: Bobenko-Schroeder flow"},
+  {"flow",     "-flow_type cgd|pgd|gd|alm: conformally constrained Willmore (area, fairing) flow (soliman2021); bs: Bobenko-Schroeder flow"},
   {"spin",     "spin transformation (crane2011): curvature change rho, or the nearest one to -spin_target_mesh"},
   {"spectrum", "the smallest eigenvalues of the Dirac problem with rho = 0 (crane2011 Fig. 8)"},
   {"curveflow", "isometric curvature flow of a closed planar curve (crane2013 Sec. 5): -curve FILE or -gen_curve SHAPE"},

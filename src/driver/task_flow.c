@@ -62,6 +62,11 @@ static PetscErrorCode FlowRegisterAll(void)
   PetscCall(PetscFunctionListAdd(&CSFlowList, "pgd", CSFlowWillmore));
   PetscCall(PetscFunctionListAdd(&CSFlowList, "gd", CSFlowWillmore));
   PetscCall(PetscFunctionListAdd(&CSFlowList, "newton", CSFlowWillmore));
+  PetscCall(PetscFunctionListAdd(&CSFlowList, "alm", CSFlowWillmore));
+  for (int i = 0; i < 5; i++) { /* the fairing baselines (crane2013 Fig. 17) */
+    const char *baseline[] = {"emcf", "ebilap", "imcf", "ibilap", "cmcf"};
+    PetscCall(PetscFunctionListAdd(&CSFlowList, baseline[i], CSFlowWillmore));
+  }
   PetscCall(PetscFunctionListAdd(&CSFlowList, "bs", CSFlowBS));
   PetscCall(PetscFunctionListAdd(&CSFlowList, "conformal", CSFlowConformal));
   PetscCall(PetscRegisterFinalize(FlowListDestroy));

@@ -288,30 +288,74 @@ static PetscErrorCode MobiusDestroy(CSGlobalConstraint g)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CSConstraintCreateMobiusBalance(CSMesh mesh, Vec x0, CSGlobalConstraint *g)
+/* Sums over the faces of x0 (local positions p) of A_f and A_f times the mean of y over the corners (y NULL:
+   of the corner positions): t[0..2], t[3] = area, summed over the ranks. */
+static PetscErrorCode InputAreaSums(CSMesh mesh, const PetscReal *p, const PetscReal *y, PetscReal t[4])
 {
-  MobiusCtx       *ctx;
-  Vec              xl;
-  const PetscReal *p;
-  PetscReal        s[4] = {0, 0, 0, 0}, t[4], c0[3], scale;
+  PetscReal s[4] = {0, 0, 0, 0};
   PetscFunctionBeginUser;
-  PetscCall(CSMeshGetLocalPositions(mesh, x0, &xl, &p));
   for (CSFaceIter F = CS_FACE_ITER_INIT; CSMeshFaceNext(mesh, p, &F);) {
     PetscReal an[3], A;
     CSTriangleAreaVector(F.c, an);
     A = CSVecNorm(an);
     s[3] += A;
-    for (int d = 0; d < 3; d++) s[d] += A * (F.c[0][d] + F.c[1][d] + F.c[2][d]) / 3;
+    for (int d = 0; d < 3; d++) s[d] += A * (y ? y[3 * F.v[0] + d] + y[3 * F.v[1] + d] + y[3 * F.v[2] + d] : F.c[0][d] + F.c[1][d] + F.c[2][d]) / 3;
   }
   PetscCall(MPIU_Allreduce(s, t, 4, MPIU_REAL, MPIU_SUM, mesh->comm));
-  PetscCheck(t[3] > 0, mesh->comm, PETSC_ERR_ARG_WRONG, "-flow_constraint_mobius: the input mesh %s has zero area", mesh->name);
+  PetscFunctionReturn(0);
+}
+
+/* The balancing rows (rotation false) or the rotation gauge (true, below) on the input x0. */
+static PetscErrorCode CreateAreaMoments(CSMesh mesh, Vec x0, PetscBool rotation, CSGlobalConstraint *g)
+{
+  MobiusCtx       *ctx;
+  Vec              xl;
+  const PetscReal *p;
+  PetscReal        t[4], c0[3], scale, mean[4];
+  PetscFunctionBeginUser;
+  PetscCall(CSMeshGetLocalPositions(mesh, x0, &xl, &p));
+  PetscCall(InputAreaSums(mesh, p, NULL, t));
+  PetscCheck(t[3] > 0, mesh->comm, PETSC_ERR_ARG_WRONG, "-flow_constraint_%s: the input mesh %s has zero area", rotation ? "rotation" : "mobius", mesh->name);
   for (int d = 0; d < 3; d++) c0[d] = t[d] / t[3];
   scale = 1.0 / (t[3] * PetscSqrtReal(t[3]));
   PetscCall(PetscNew(&ctx));
   PetscCall(PetscMalloc1(3 * mesh->nv, &ctx->y));
-  for (PetscInt i = 0; i < mesh->nv; i++)
-    for (int d = 0; d < 3; d++) ctx->y[3 * i + d] = (p[3 * i + d] - c0[d]) * scale;
+  for (PetscInt i = 0; i < mesh->nv; i++) {
+    const PetscReal *q = p + 3 * i;
+    const int        a[3] = {0, 0, 1}, b[3] = {1, 2, 2}; /* the off-diagonal pairs xy, xz, yz */
+    for (int d = 0; d < 3; d++) ctx->y[3 * i + d] = rotation ? (q[a[d]] - c0[a[d]]) * (q[b[d]] - c0[b[d]]) * scale / PetscSqrtReal(t[3]) : (q[d] - c0[d]) * scale;
+  }
+  if (rotation) { /* minus the input's area-weighted mean, so that the rows vanish at x0 */
+    PetscCall(InputAreaSums(mesh, p, ctx->y, mean));
+    for (PetscInt i = 0; i < mesh->nv; i++)
+      for (int d = 0; d < 3; d++) ctx->y[3 * i + d] -= mean[d] / mean[3];
+  }
   PetscCall(CSMeshRestoreLocalPositions(mesh, x0, &xl, &p));
-  PetscCall(GlobalConstraintNew(mesh, "mobius", 3, ctx, MobiusEvaluate, MobiusDestroy, g));
+  PetscCall(GlobalConstraintNew(mesh, rotation ? "rotation" : "mobius", 3, ctx, MobiusEvaluate, MobiusDestroy, g));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSConstraintCreateMobiusBalance(CSMesh mesh, Vec x0, CSGlobalConstraint *g)
+{
+  PetscFunctionBeginUser;
+  PetscCall(CreateAreaMoments(mesh, x0, PETSC_FALSE, g));
+  PetscFunctionReturn(0);
+}
+
+/* ---- rotation gauge of the domain ----
+   The balancing fixes the three boosts of the Moebius group of the domain sphere; its three rotations stay free:
+   f o R keeps the conformal class, W, area, volume and the balance. The discrete W depends on them at O(h^2) only,
+   a very flat direction along which a nearly axisymmetric vesicle tumbles for hundreds of iterations with the EL
+   residual stuck (docs/vesicle.md). These rows fix them as the balancing fixes the boosts: the off-diagonal entries
+   of the second moment of the current area distribution placed on the input's vertices,
+     r(f) = sum_i A_i(f) (y_i - ybar),  y_i = ((p_x p_y), (p_x p_z), (p_y p_z)) / A(f0)^2,  p = f0_i - c0,
+   ybar the input's area-weighted mean of y (so r(f0) = 0). r only sees the areas: rotations and scalings of f in
+   space (exact symmetries) leave it unchanged; a rotation of the domain turns the quadrupole of the area
+   distribution and changes r once the conformal factor is anisotropic (a prolate's poles against its waist).
+   The rotation about an axis of symmetry of that quadrupole stays free. */
+PetscErrorCode CSConstraintCreateRotationGauge(CSMesh mesh, Vec x0, CSGlobalConstraint *g)
+{
+  PetscFunctionBeginUser;
+  PetscCall(CreateAreaMoments(mesh, x0, PETSC_TRUE, g));
   PetscFunctionReturn(0);
 }

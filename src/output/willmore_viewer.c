@@ -2,7 +2,9 @@
    the steps written during the flow and the final state land in one DIR/series.pvd. With N = 0 (the default)
    only the final state is written, as before the flow had monitors. Every step carries the fields
    mean_curvature (|h|, pointwise, as -task info), vertex_area (point data), face_area and Q (cell data: the
-   quasi-conformal error of each face against the flow's input, as the summary's q_max). */
+   quasi-conformal error of each face against the flow's input, as the summary's q_max), el_residual (the
+   Euler-Lagrange residual per vertex, a vector); constrained flows add the conformal multiplier's fields
+   (AddMultiplierFields). */
 #include "cs_output_willmore.h"
 #include "cs_geometry.h"
 #include "cs_linalg.h"
@@ -12,9 +14,40 @@ struct _n_CSWillmoreViewer {
   PetscInt every, last; /* last: the iteration of the last step written, -1 before any */
 };
 
+/* The conformal multiplier (constrained flows): vertex field conformal_force (soliman2021 Eq. 7, 8: the tension
+   force of q, so grad E + conformal_force is the EL residual), face fields stress_direction (the principal
+   direction of the stress tensor, Eq. 20, a line field: its sign is arbitrary), stress_max, stress_min. */
+static PetscErrorCode AddMultiplierFields(CSWillmoreFlow flow, CSMesh mesh, CSViewer v, Vec x)
+{
+  Vec       q, force, dir, s1, s2;
+  PetscInt  nf;
+  PetscBool conformal;
+  PetscFunctionBeginUser;
+  PetscCall(CSWillmoreFlowGetConformal(flow, &conformal));
+  if (!conformal) PetscFunctionReturn(0);
+  PetscCall(DMCreateGlobalVector(mesh->dmE1, &q));
+  PetscCall(DMCreateGlobalVector(mesh->dmV3, &force));
+  PetscCall(DMCreateGlobalVector(mesh->dmF1, &s1));
+  PetscCall(VecDuplicate(s1, &s2));
+  PetscCall(VecGetLocalSize(s1, &nf));
+  PetscCall(VecCreateMPI(mesh->comm, 3 * nf, PETSC_DETERMINE, &dir));
+  PetscCall(CSWillmoreFlowGetConformalMultiplier(flow, q, force));
+  PetscCall(CSGeometryConformalStress(mesh, x, q, dir, s1, s2));
+  PetscCall(CSViewerAddVertexField(v, "conformal_force", force));
+  PetscCall(CSViewerAddFaceField(v, "stress_direction", dir));
+  PetscCall(CSViewerAddFaceField(v, "stress_max", s1));
+  PetscCall(CSViewerAddFaceField(v, "stress_min", s2));
+  PetscCall(VecDestroy(&q));
+  PetscCall(VecDestroy(&force));
+  PetscCall(VecDestroy(&dir));
+  PetscCall(VecDestroy(&s1));
+  PetscCall(VecDestroy(&s2));
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode WriteStep(CSWillmoreFlow flow, CSWillmoreViewer V, PetscInt it)
 {
-  Vec    x, x0, h, hn, area, farea, q;
+  Vec    x, x0, h, hn, area, farea, q, r;
   CSMesh mesh;
   PetscFunctionBeginUser;
   PetscCall(CSWillmoreFlowGetSolution(flow, &x));
@@ -34,6 +67,9 @@ static PetscErrorCode WriteStep(CSWillmoreFlow flow, CSWillmoreViewer V, PetscIn
   PetscCall(CSViewerAddVertexField(V->v, "vertex_area", area));
   PetscCall(CSViewerAddFaceField(V->v, "face_area", farea));
   PetscCall(CSViewerAddFaceField(V->v, "Q", q));
+  PetscCall(AddMultiplierFields(flow, mesh, V->v, x));
+  PetscCall(CSWillmoreFlowGetResidual(flow, &r));
+  PetscCall(CSViewerAddVertexField(V->v, "el_residual", r)); /* its norm is the reported EL residual */
   PetscCall(CSViewerWriteStep(V->v, x, (PetscReal)it));
   PetscCall(VecDestroy(&h));
   PetscCall(VecDestroy(&hn));

@@ -279,11 +279,11 @@ static PetscErrorCode CheckNormals(MPI_Comm comm)
   PetscFunctionReturn(0);
 }
 
-/* Moebius balancing rows (constraints_global.c): m(f0) = 0; rows against central differences of m; m = 0 after
+/* Moebius balancing rows (constraints_global.c), and the same checks but the boost for the rotation gauge: m(f0) = 0; rows against central differences of m; m = 0 after
    a similarity of f0 (scaling, rotation and translation stay free); and the infinitesimal Moebius boost of the
    unit sphere v(x) = b - (b.x) x (area change dA = -2 (b.x) A) moves m at the rate of the smooth identity
    dm = -2 (sum_i A_i x_i x_i^T) b / A^(3/2) = -(2/3) b / sqrt(4 pi): the rows do fix the boosts. */
-static PetscErrorCode CheckMobius(MPI_Comm comm)
+static PetscErrorCode CheckMoments(MPI_Comm comm, PetscBool rotation)
 {
   CSMesh             m;
   CSGlobalConstraint g;
@@ -292,15 +292,19 @@ static PetscErrorCode CheckMobius(MPI_Comm comm)
   PetscReal          c[3], cp[3], cm[3], err = 0, nrm = 0, h = 1e-6, expect;
   const PetscReal    b[3] = {0.3, -0.5, 0.2}, w[3] = {0.2, 0.9, -0.4};
   PetscScalar        jd[3];
+  char               what[128];
+  const char        *nm = rotation ? "rotation gauge" : "mobius";
   PetscFunctionBeginUser;
   PetscCall(MakeMesh(comm, PETSC_FALSE, 0.0, &m)); /* level-2 icosphere, vertices on the unit sphere */
-  PetscCall(CSConstraintCreateMobiusBalance(m, m->x, &g));
+  if (rotation) PetscCall(CSConstraintCreateRotationGauge(m, m->x, &g));
+  else PetscCall(CSConstraintCreateMobiusBalance(m, m->x, &g));
   PetscCall(VecDuplicateVecs(m->x, 3, &rows));
   PetscCall(VecDuplicate(m->x, &d));
   PetscCall(VecDuplicate(m->x, &xp));
   PetscCall(CSGlobalConstraintEvaluate(g, m->x, c, rows));
   err = PetscMax(PetscAbsReal(c[0]), PetscMax(PetscAbsReal(c[1]), PetscAbsReal(c[2])));
-  PetscCall(CSTestCheck(comm, (PetscBool)(err < 1e-15), "mobius: m(f0) = 0", err, 1e-15));
+  PetscCall(PetscSNPrintf(what, sizeof(what), "%s: m(f0) = 0", nm));
+  PetscCall(CSTestCheck(comm, (PetscBool)(err < 1e-15), what, err, 1e-15));
   /* rows vs central differences along a random direction */
   PetscCall(CSTestRandom(comm, 0, 1, 7, &rnd));
   PetscCall(VecSetRandom(d, rnd));
@@ -314,7 +318,8 @@ static PetscErrorCode CheckMobius(MPI_Comm comm)
     err = PetscMax(err, PetscAbsReal((cp[k] - cm[k]) / (2 * h) - PetscRealPart(jd[k])));
     nrm = PetscMax(nrm, PetscAbsReal(PetscRealPart(jd[k])));
   }
-  PetscCall(CSTestCheck(comm, (PetscBool)(err / nrm < 1e-6), "mobius: rows vs central differences of m (relative)", err / nrm, 1e-6));
+  PetscCall(PetscSNPrintf(what, sizeof(what), "%s: rows vs central differences (relative)", nm));
+  PetscCall(CSTestCheck(comm, (PetscBool)(err / nrm < 1e-6), what, err / nrm, 1e-6));
   /* a similarity: x -> 1.7 R x + t, R the rotation exp([w]x) to first order made exact by Rodrigues */
   {
     PetscInt           nl;
@@ -335,10 +340,11 @@ static PetscErrorCode CheckMobius(MPI_Comm comm)
     PetscCall(VecRestoreArray(xp, &y));
     PetscCall(CSGlobalConstraintEvaluate(g, xp, cp, NULL));
     err = PetscMax(PetscAbsReal(cp[0]), PetscMax(PetscAbsReal(cp[1]), PetscAbsReal(cp[2])));
-    PetscCall(CSTestCheck(comm, (PetscBool)(err < 1e-13), "mobius: m = 0 after a similarity (scaling, rotation, translation free)", err, 1e-13));
+    PetscCall(PetscSNPrintf(what, sizeof(what), "%s: zero after a similarity of f0 in space (scaling, rotation, translation free)", nm));
+    PetscCall(CSTestCheck(comm, (PetscBool)(err < 1e-13), what, err, 1e-13));
   }
-  /* the boost field */
-  {
+  /* the boost field (the balancing's own job) */
+  if (!rotation) {
     PetscInt           nl;
     const PetscScalar *x;
     PetscScalar       *v;
@@ -374,6 +380,7 @@ int main(int argc, char **argv)
   PetscCall(RunChecks(PETSC_COMM_WORLD, PETSC_FALSE));
   PetscCall(RunChecks(PETSC_COMM_WORLD, PETSC_TRUE));
   PetscCall(CheckNormals(PETSC_COMM_WORLD));
-  PetscCall(CheckMobius(PETSC_COMM_WORLD));
+  PetscCall(CheckMoments(PETSC_COMM_WORLD, PETSC_FALSE));
+  PetscCall(CheckMoments(PETSC_COMM_WORLD, PETSC_TRUE)); /* the rotation gauge of the domain (docs/vesicle.md) */
   return CSTestFinalize(PETSC_COMM_WORLD, PetscFinalize);
 }

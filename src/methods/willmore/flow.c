@@ -32,6 +32,12 @@ static PetscErrorCode RegisterAll(void)
   PetscCall(CSWillmoreFlowRegister(CSWILLMOREFLOWPGD, CSWillmoreFlowCreate_PGD));
   PetscCall(CSWillmoreFlowRegister(CSWILLMOREFLOWGD, CSWillmoreFlowCreate_GD));
   PetscCall(CSWillmoreFlowRegister(CSWILLMOREFLOWNEWTON, CSWillmoreFlowCreate_Newton));
+  PetscCall(CSWillmoreFlowRegister(CSWILLMOREFLOWALM, CSWillmoreFlowCreate_ALM));
+  /* baselines of the fairing comparison (crane2013 Fig. 17; fairing_baselines.c) */
+  for (int k = 0; k < 5; k++) {
+    const char *baseline[] = {"emcf", "ebilap", "imcf", "ibilap", "cmcf"};
+    PetscCall(CSWillmoreFlowRegister(baseline[k], CSWillmoreFlowCreate_Fairing));
+  }
   PetscCall(PetscRegisterFinalize(ListDestroy));
   PetscFunctionReturn(0);
 }
@@ -60,6 +66,11 @@ static void SetDefaults(CSWillmoreFlow F)
   F->fin_q           = 3; /* measured at the guard's stop: smooth squeezes 1.15-2.4, eight_cgal's fins 4.9 and growing */
   F->eps             = 1e-3;
   F->reuse_its       = -1; /* the saddle solver's default */
+  F->alm_rho         = 10;
+  F->alm_grow        = 10;
+  F->alm_rho_max     = 1e8;
+  F->alm_inner_it    = 10;
+  F->alm_update      = -1;
   F->metric_type     = CS_FLOW_METRIC_H2;
   F->boundary        = CS_FLOW_BOUNDARY_DIRICHLET;
   F->saddle_mat      = CS_SADDLE_MAT_NEST;
@@ -165,6 +176,13 @@ PetscErrorCode CSWillmoreFlowGetMesh(CSWillmoreFlow F, CSMesh *mesh)
 {
   PetscFunctionBeginUser;
   *mesh = F->mesh;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSWillmoreFlowGetConformal(CSWillmoreFlow F, PetscBool *conformal)
+{
+  PetscFunctionBeginUser;
+  *conformal = F->conformal;
   PetscFunctionReturn(0);
 }
 

@@ -4,6 +4,7 @@
 
 const char *const CSFlowMetricTypes[]   = {"h2", "l2", "CSFlowMetricType", "CS_FLOW_METRIC_", NULL};
 const char *const CSFlowBoundaryTypes[] = {"dirichlet", "free", "normals", "CSFlowBoundaryType", "CS_FLOW_BOUNDARY_", NULL};
+const char *const CSALMMetricTypes[]    = {"plain", "gauss_newton", "CSALMMetricType", "CS_ALM_METRIC_", NULL};
 const char *const CSSaddleMatTypes[]    = {"nest", "aij", "CSSaddleMatType", "CS_SADDLE_MAT_", NULL};
 
 /* "-<prefix>constraint_area [value]": no value means the initial value. */
@@ -50,12 +51,18 @@ static PetscErrorCode StepOptions(CSWillmoreFlow F, PetscOptionItems *PetscOptio
   PetscCall(PetscOptionsReal("-rtol", "Stop when ||g + X^T mu||_2 is below this", NULL, F->rtol, &F->rtol, NULL));
   PetscCall(PetscOptionsReal("-ctol", "... and the constraint violation (inf-norm) below this", NULL, F->ctol, &F->ctol, NULL));
   PetscCall(PetscOptionsInt("-max_it", "Maximum number of iterations", NULL, F->max_it, &F->max_it, NULL));
+  PetscCall(PetscOptionsReal("-max_seconds", "Stop (as at max_it) once this many seconds have passed since the set-up (0: no limit); rank 0's clock decides for all ranks", NULL, F->max_seconds, &F->max_seconds, NULL));
   PetscCall(PetscOptionsReal("-iq_wmin", "Floor on cotan weights in I_Q (Eq. 25) for non-Delaunay edges", NULL, F->wmin, &F->wmin, NULL));
   PetscCall(PetscOptionsReal("-pgd_t_mu", "PGD: regularising dual step of the (singular) PGD system and of the projection", NULL, F->proj_tmu, &F->proj_tmu, NULL));
   PetscCall(PetscOptionsInt("-soc_max_it", "CGD/GD: second-order corrections of each trial step toward the constraints (0: none)", NULL, F->soc_max_it, &F->soc_max_it, NULL));
   PetscCall(PetscOptionsInt("-pgd_projection_max_it", "PGD: Gauss-Newton iterations of the projection onto the constraint set", NULL, F->proj_max_it, &F->proj_max_it, NULL));
   PetscCall(PetscOptionsInt("-factor_reuse_its", "Keep the preconditioner (factorisation) of an earlier step while the last solve needed at most this many Krylov iterations (0: refactor every step; default 10 with the conformal constraint, else 0; ignored with a preonly saddle KSP)", NULL, F->reuse_its, &F->reuse_its, &set));
   PetscCheck(!set || F->reuse_its >= 0, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sfactor_reuse_its %" PetscInt_FMT ": use 0 (refactor every step) or a positive iteration count", p, F->reuse_its);
+  PetscCall(PetscOptionsReal("-alm_rho", "ALM: initial penalty rho of the augmented Lagrangian, relative to |E(input)|", NULL, F->alm_rho, &F->alm_rho, NULL));
+  PetscCall(PetscOptionsReal("-alm_rho_grow", "ALM: factor on rho at a multiplier update that did not reduce the violation 4-fold", NULL, F->alm_grow, &F->alm_grow, NULL));
+  PetscCall(PetscOptionsReal("-alm_rho_max", "ALM: largest rho (relative to |E(input)|)", NULL, F->alm_rho_max, &F->alm_rho_max, NULL));
+  PetscCall(PetscOptionsEnum("-alm_metric", "ALM: metric of the inner gradient steps: the flow's metric alone (plain) or with the penalty's Gauss-Newton curvature", NULL, CSALMMetricTypes, (PetscEnum)F->alm_metric, (PetscEnum *)&F->alm_metric, NULL));
+  PetscCall(PetscOptionsInt("-alm_inner_it", "ALM: accepted gradient steps between multiplier updates", NULL, F->alm_inner_it, &F->alm_inner_it, NULL));
   PetscCall(PetscOptionsEnum("-matrix_type", "The saddle matrix as MATNEST (fieldsplit) or converted to AIJ (monolithic direct solvers)", NULL, CSSaddleMatTypes, (PetscEnum)F->saddle_mat, (PetscEnum *)&F->saddle_mat, NULL));
   PetscFunctionReturn(0);
 }
@@ -75,6 +82,7 @@ static PetscErrorCode ProblemOptions(CSWillmoreFlow F, PetscFunctionList energie
   PetscCall(OptionalTarget("-constraint_volume", "Enclosed volume constraint [target value, default the initial volume]", &F->vol_set, &F->vol_target, &F->vol_given, PetscOptionsObject));
   PetscCall(PetscOptionsString("-constraint_points", "File of point constraints: lines 'vertex_index x y z' (0-based)", NULL, F->points, F->points, sizeof(F->points), NULL));
   PetscCall(PetscOptionsBool("-constraint_mobius", "Moebius balancing: fix the three Moebius boosts that the conformal constraint leaves free (closed surfaces; needs the conformal constraint)", NULL, F->mobius, &F->mobius, NULL));
+  PetscCall(PetscOptionsBool("-constraint_rotation", "Rotation gauge of the domain: fix the three rotations of the Moebius group that the balancing leaves free (closed genus-0 surfaces; with -constraint_mobius; docs/vesicle.md)", NULL, F->rotation, &F->rotation, NULL));
   PetscCall(PetscOptionsEnum("-boundary", "Boundary vertices fixed, free (C0 only), or fixed with fixed boundary-face normals (App. D)", NULL, CSFlowBoundaryTypes, (PetscEnum)F->boundary, (PetscEnum *)&F->boundary, &F->boundary_set));
   PetscFunctionReturn(0);
 }
@@ -99,11 +107,16 @@ static PetscErrorCode CheckValues(CSWillmoreFlow F)
     {"ctol", F->ctol, F->ctol >= 0, "must be >= 0"},
     {"pgd_t_mu", F->proj_tmu, F->proj_tmu > 0, "must be > 0"},
     {"fairing_epsilon", F->eps, F->eps > 0, "must be > 0"},
+    {"max_seconds", F->max_seconds, F->max_seconds >= 0, "use 0 (no limit) or a positive number of seconds"},
     {"max_it", (PetscReal)F->max_it, F->max_it >= 0, "must be >= 0"},
     {"max_rejections", (PetscReal)F->max_rej, F->max_rej >= 1, "must be >= 1"},
     {"t_min", F->t_min, F->t_min >= 0 && F->t_min <= F->t, "must lie in [0, t]"},
     {"max_step", F->max_step, F->max_step >= 0, "use 0 (off) or a positive fraction of the mean edge length"},
     {"energy_target", F->energy_target, !PetscIsInfOrNanReal(F->energy_target), "must be finite"},
+    {"alm_rho", F->alm_rho, F->alm_rho > 0, "must be > 0"},
+    {"alm_rho_grow", F->alm_grow, F->alm_grow >= 1, "must be >= 1"},
+    {"alm_rho_max", F->alm_rho_max, F->alm_rho_max >= F->alm_rho, "must be >= -alm_rho"},
+    {"alm_inner_it", (PetscReal)F->alm_inner_it, F->alm_inner_it >= 1, "must be >= 1"},
     {"soc_max_it", (PetscReal)F->soc_max_it, F->soc_max_it >= 0, "use 0 (no corrections) or a positive count"},
   };
   PetscFunctionBeginUser;
@@ -133,7 +146,7 @@ PetscErrorCode CSWillmoreFlowSetFromOptions(CSWillmoreFlow F)
   PetscCall(CSWillmoreFlowEnergyList(&energies));
   PetscCall(PetscStrncpy(type, F->type, sizeof(type)));
   PetscOptionsBegin(F->comm, F->prefix, "Constrained Willmore flow (soliman2021)", NULL);
-  PetscCall(PetscOptionsString("-type", "cgd|pgd|gd|newton", NULL, type, type, sizeof(type), &set));
+  PetscCall(PetscOptionsString("-type", "cgd|pgd|gd|newton|alm; fairing baselines emcf|ebilap|imcf|ibilap|cmcf", NULL, type, type, sizeof(type), &set));
   if (set) PetscCall(CSWillmoreFlowSetType(F, type));
   PetscCall(StepOptions(F, PetscOptionsObject));
   PetscCall(ProblemOptions(F, energies, PetscOptionsObject));

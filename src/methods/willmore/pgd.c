@@ -28,14 +28,15 @@ static PetscErrorCode AcceptPGD(CSWillmoreFlow F)
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode GrowPGD(CSWillmoreFlow F)
+/* t grows by -flow_t_grow up to -flow_t_max after an accepted step, halves after a rejected one (PGD, ALM) */
+PetscErrorCode CSWFGrowPrimal(CSWillmoreFlow F)
 {
   PetscFunctionBeginUser;
   if (F->t * F->grow <= F->tmax) F->t *= F->grow;
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode ShrinkPGD(CSWillmoreFlow F)
+PetscErrorCode CSWFShrinkPrimal(CSWillmoreFlow F)
 {
   PetscFunctionBeginUser;
   F->t *= 0.5;
@@ -53,7 +54,7 @@ PetscErrorCode CSWillmoreFlowCreate_PGD(CSWillmoreFlow F)
   F->ops.trial     = CSWFTrialPGD;
   F->ops.filter    = CSWFFilterEnergy;
   F->ops.accept    = AcceptPGD;
-  F->ops.grow      = GrowPGD;
-  F->ops.shrink    = ShrinkPGD;
+  F->ops.grow      = CSWFGrowPrimal;
+  F->ops.shrink    = CSWFShrinkPrimal;
   PetscFunctionReturn(0);
 }

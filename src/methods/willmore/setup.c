@@ -55,6 +55,10 @@ PetscErrorCode CSWFSetUpConstraints(CSWillmoreFlow F)
     PetscCheck(F->conformal, F->comm, PETSC_ERR_ARG_INCOMP, "-%sconstraint_mobius fixes the Moebius gauge of the conformal constraint: it needs -%sconformal (cgd, pgd)", F->prefix, F->prefix);
     PetscCall(CSConstraintCreateMobiusBalance(m, F->x0, &F->gc[F->ng++]));
   }
+  if (F->rotation) {
+    PetscCheck(F->conformal && F->mobius, F->comm, PETSC_ERR_ARG_INCOMP, "-%sconstraint_rotation fixes the rotations of the domain left free by the conformal constraint and the Moebius balancing: it needs -%sconformal and -%sconstraint_mobius", F->prefix, F->prefix, F->prefix);
+    PetscCall(CSConstraintCreateRotationGauge(m, F->x0, &F->gc[F->ng++]));
+  }
   for (PetscInt j = 0; j < F->ng; j++) F->k += F->gc[j]->k;
   PetscCheck(F->conformal || F->k == 0 || !F->ops.projected, F->comm, PETSC_ERR_ARG_INCOMP, "pgd without the conformal constraint is not supported");
   PetscFunctionReturn(0);
@@ -122,6 +126,7 @@ PetscErrorCode CSWFSetUpScaling(CSWillmoreFlow F)
   /* merit weight relative to the size of the energy (W ~ 4 pi and a fairing energy eps W differ by orders) */
   PetscCall(CSEnergyValue(F->energy, F->x0, &E0));
   F->rho *= PetscMax(PetscAbsReal(E0), PETSC_SMALL);
+  if (F->ops.penalty) F->alm_rho_max *= PetscMax(PetscAbsReal(E0), PETSC_SMALL);
   PetscFunctionReturn(0);
 }
 
@@ -145,7 +150,8 @@ static PetscErrorCode SetUpPositions(CSWillmoreFlow F)
 
 PetscErrorCode CSWillmoreFlowSetUp(CSWillmoreFlow F)
 {
-  char prefix[80];
+  char      prefix[80];
+  PetscBool plain;
   PetscFunctionBeginUser;
   if (F->setupcalled) PetscFunctionReturn(0);
   PetscCall(PetscTime(&F->t0));
@@ -157,7 +163,9 @@ PetscErrorCode CSWillmoreFlowSetUp(CSWillmoreFlow F)
   PetscCall(CSMetricCreate(F->mesh, (PetscBool)(F->metric_type == CS_FLOW_METRIC_H2), &F->metric));
   PetscCall(CSWFSetUpScaling(F));
   PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "%ssaddle_", F->prefix));
-  PetscCall(CSSaddleCreate(F->mesh, prefix, F->conformal, (PetscBool)(F->metric_type == CS_FLOW_METRIC_H2), (PetscBool)(F->saddle_mat == CS_SADDLE_MAT_AIJ), F->reuse_its, F->k, &F->saddle));
+  /* ALM with the plain metric: the metric solve alone, no multiplier block and no bordering */
+  plain = (PetscBool)(F->ops.penalty && F->alm_metric == CS_ALM_METRIC_PLAIN);
+  PetscCall(CSSaddleCreate(F->mesh, prefix, (PetscBool)(F->conformal && !plain), (PetscBool)(F->metric_type == CS_FLOW_METRIC_H2), (PetscBool)(F->saddle_mat == CS_SADDLE_MAT_AIJ), F->reuse_its, plain ? 0 : F->k, &F->saddle));
   F->saddle.fixed = F->fixedIS;
   F->setupcalled  = PETSC_TRUE;
   PetscFunctionReturn(0);

@@ -21,7 +21,7 @@ static PetscErrorCode Operators(CSWillmoreFlow F)
 {
   PetscFunctionBeginUser;
   if (!F->ops.own_metric) PetscCall(CSMetricUpdate(&F->metric, F->x));
-  if (F->conformal) {
+  if (F->conformal && !F->ops.penalty) { /* ALM penalises |c|^2 unweighted (alm.c) */
     PetscInt ng;
     PetscCall(CSWFQuadDiffMetric(F, F->x, &ng));
     F->nguard = PetscMax(F->nguard, ng);
@@ -123,6 +123,14 @@ PetscErrorCode CSWillmoreFlowStep(CSWillmoreFlow F, CSWillmoreFlowConvergedReaso
     F->reason = CS_WILLMORE_FLOW_CONVERGED_ENERGY_TARGET;
   }
   if (!F->reason && F->it >= F->max_it) F->reason = CS_WILLMORE_FLOW_DIVERGED_MAX_IT;
+  if (!F->reason && F->max_seconds > 0) { /* a wall-time budget (studies at equal time, runs/study_optimizers.sh) */
+    PetscLogDouble now;
+    PetscMPIInt    over;
+    PetscCall(PetscTime(&now));
+    over = (PetscMPIInt)(now - F->t0 >= F->max_seconds);
+    PetscCallMPI(MPI_Bcast(&over, 1, MPI_INT, 0, F->comm)); /* rank 0's clock decides for all: no rank stops alone */
+    if (over) F->reason = CS_WILLMORE_FLOW_DIVERGED_MAX_IT;
+  }
   if (!F->reason) {
     PetscCall(Operators(F));
     PetscCall(StepWithRejections(F, &accepted));

@@ -60,6 +60,7 @@ struct _CSWillmoreFlowOps {
   PetscInt  id;             /* stored in checkpoints (a resume must use the same kind) */
   PetscBool conformal;      /* default of -flow_conformal */
   PetscBool projected;      /* PGD: the constraint set is kept by projection, not by the step's filter */
+  PetscBool penalty;        /* ALM: the constraints enter L_A as penalty terms; the saddle solve is the metric alone */
   PetscErrorCode (*setup)(CSWillmoreFlow);               /* checks of the options against the kind */
   PetscErrorCode (*start)(CSWillmoreFlow);               /* before the first iteration (not after a resume) */
   PetscErrorCode (*trial)(CSWillmoreFlow, PetscBool *);  /* the trial point xt of step t (false: rejected) */
@@ -96,7 +97,7 @@ struct _p_CSWillmoreFlow {
   PetscReal             eps; /* fairing weight */
   CSFlowMetricType      metric_type;
   CSFlowBoundaryType    boundary;
-  PetscBool             boundary_set, conformal_set, mobius;
+  PetscBool             boundary_set, conformal_set, mobius, rotation;
   char                  target[PETSC_MAX_PATH_LEN], points[PETSC_MAX_PATH_LEN];
   PetscBool             area_set, area_given, vol_set, vol_given;
   PetscReal             area_target, vol_target;
@@ -113,7 +114,7 @@ struct _p_CSWillmoreFlow {
   IS                    isM[2];       /* edge / normal rows in the multiplier layout */
   Vec                   cE, cN, iqE, iqN;
   PetscInt              ng, k;
-  CSGlobalConstraint    gc[4];
+  CSGlobalConstraint    gc[5]; /* area, volume, points, Moebius balance, rotation gauge */
   PetscBool            *fixed;   /* local vertices held fixed (Dirichlet), or NULL */
   IS                    fixedIS; /* global dmV3 dofs of owned fixed vertices */
   CSMetric              metric;
@@ -131,10 +132,16 @@ struct _p_CSWillmoreFlow {
   PetscReal             fin_q;        /* q_max above which the guard reports fins rather than a smooth concentration */
   CSWillmoreFlowDegeneration degeneration;
   PetscInt              max_it, max_rej, proj_max_it, soc_max_it;
+  PetscReal             max_seconds; /* wall-time budget (0: none); its stop is reported as DIVERGED_MAX_IT */
   PetscBool             step_control;
   PetscReal             proj_tmu;
   PetscReal             tmu_grow, tmu_max; /* own schedule of the dual step (0: t_mu follows t) */
   PetscReal             tmu_ratio_max;     /* following t: t_mu <= this * t (1e3 times the initial t_mu / t) */
+  PetscReal             alm_rho, alm_grow, alm_rho_max; /* ALM penalty (relative to |E(input)|), its growth, ceiling */
+  PetscInt              alm_inner_it;      /* ALM: accepted steps per inner loop */
+  CSALMMetricType       alm_metric;        /* ALM: metric of the inner steps */
+  PetscInt              alm_inner, alm_update, alm_updates; /* ALM loop state: steps in this inner loop, iteration of the last update, updates */
+  PetscReal             alm_vlast;         /* ALM: violation at the last multiplier update */
 
   /* geometric step control and guards (gd, newton: docs/willmore_flow.md "Unconstrained descent") */
   PetscReal             max_step;      /* reject a trial step moving a vertex by more than this times the mean edge length */
@@ -191,8 +198,13 @@ PETSC_INTERN PetscErrorCode CSWillmoreFlowCreate_CGD(CSWillmoreFlow);
 PETSC_INTERN PetscErrorCode CSWillmoreFlowCreate_PGD(CSWillmoreFlow);
 PETSC_INTERN PetscErrorCode CSWillmoreFlowCreate_GD(CSWillmoreFlow);
 PETSC_INTERN PetscErrorCode CSWillmoreFlowCreate_Newton(CSWillmoreFlow);
+PETSC_INTERN PetscErrorCode CSWillmoreFlowCreate_ALM(CSWillmoreFlow);
+PETSC_INTERN PetscErrorCode CSWillmoreFlowCreate_Fairing(CSWillmoreFlow); /* the kind named by F->type */
+PETSC_INTERN PetscErrorCode CSWFMultiplierEstimate(CSWillmoreFlow F, Vec c, const PetscReal cx[]);
 PETSC_INTERN PetscErrorCode CSWFAcceptCGD(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFGrowCGD(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFShrinkCGD(CSWillmoreFlow F);
+PETSC_INTERN PetscErrorCode CSWFGrowPrimal(CSWillmoreFlow F);
+PETSC_INTERN PetscErrorCode CSWFShrinkPrimal(CSWillmoreFlow F);
 
 #endif

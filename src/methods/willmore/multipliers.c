@@ -1,0 +1,44 @@
+/* The conformal Lagrange multiplier made visible (soliman2021 Sec. 3.2): the quadratic differential q per edge
+   and the conformal tension force per vertex. With the flow's convention r = g + X^T mu (X = C Dlambda) the
+   paper's q (Eq. 7: grad E + sum_j q_ij df_ij / |df_ij|^2 = 0, q_ij > 0 compressive) is q = -C^T mu, since
+   (Dlambda^T q)_i = -sum_j q_ij df_ij / |df_ij|^2 (Sec. 3.1); the force sum_j q_ij df_ij / |df_ij|^2 (Eq. 8 summed
+   around i, d tau) is then X^T mu, so grad E + force is the Euler-Lagrange residual the flow reports (without
+   global constraints; their forces nu_j row_j are not included). With -flow_boundary normals the force includes
+   the normal constraint's rows. ALM: the multiplier is its first-order estimate mu + rho c (alm.c). */
+#include "willmore_impl.h"
+
+PetscErrorCode CSWillmoreFlowGetConformalMultiplier(CSWillmoreFlow F, Vec q, Vec force)
+{
+  Vec mu = F->mu, muE;
+  PetscFunctionBeginUser;
+  PetscCheck(F->setupcalled && F->started, F->comm, PETSC_ERR_ORDER, "CSWillmoreFlowGetConformalMultiplier before the first CSWillmoreFlowStep");
+  if (!F->conformal) {
+    if (q) PetscCall(VecSet(q, 0));
+    if (force) PetscCall(VecSet(force, 0));
+    PetscFunctionReturn(0);
+  }
+  if (F->ops.penalty) {
+    PetscCall(CSWFMultiplierEstimate(F, F->c, F->cx));
+    mu = F->mun;
+  }
+  if (force) {
+    PetscCall(MatMultTranspose(F->Xc, mu, force));
+    PetscCall(CSWFZeroFixed(F, force));
+  }
+  if (q) {
+    if (F->normals) PetscCall(VecGetSubVector(mu, F->isM[0], &muE));
+    else muE = mu;
+    PetscCall(MatMultTranspose(F->cc.C, muE, q));
+    PetscCall(VecScale(q, -1.0));
+    if (F->normals) PetscCall(VecRestoreSubVector(mu, F->isM[0], &muE));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSWillmoreFlowGetResidual(CSWillmoreFlow F, Vec *r)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(F->setupcalled && F->started, F->comm, PETSC_ERR_ORDER, "CSWillmoreFlowGetResidual before the first CSWillmoreFlowStep");
+  *r = F->r;
+  PetscFunctionReturn(0);
+}
