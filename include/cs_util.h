@@ -57,6 +57,29 @@ PETSC_EXTERN PetscErrorCode CSArrayGrow(size_t size, PetscInt n, PetscInt initia
 PETSC_EXTERN PetscErrorCode CSPathExtension(const char path[], char ext[], size_t len); /* lower-case, without dot */
 PETSC_EXTERN PetscErrorCode CSPathMakeDir(const char dir[]);       /* mkdir -p of a folder */
 PETSC_EXTERN PetscErrorCode CSPathMakeParents(const char path[]); /* mkdir -p of the folders above a file to write */
+/* a path or name fit to print or write into a header: control characters '?', at most CS_NAME_SHOWN characters */
+#define CS_NAME_SHOWN 300
+PETSC_EXTERN PetscErrorCode CSPathSanitize(const char in[], char out[], size_t len);
+
+/* Files written collectively (src/util/file.c): the ranks with mine write, every step's outcome reaches every
+   rank, a failed write (full disk) or close is an error naming the file, and a failure removes the file. atomic:
+   written under a unique temporary name, fsync'ed, renamed over the target (which must be a regular file). */
+typedef struct {
+  FILE     *fp; /* open on the ranks with mine, after CSFileOpen */
+  PetscBool mine, atomic, regular, created; /* created: ours to remove on failure */
+  char      what[64]; /* the option, for messages */
+  char      path[PETSC_MAX_PATH_LEN], tmp[PETSC_MAX_PATH_LEN];
+} CSFile;
+PETSC_EXTERN PetscErrorCode CSFileOpen(MPI_Comm comm, PetscBool mine, const char what[], const char path[], PetscBool atomic, CSFile *f);
+PETSC_EXTERN PetscErrorCode CSFileFlush(MPI_Comm comm, CSFile *f); /* collective: errors of the writes so far */
+PETSC_EXTERN PetscErrorCode CSFileClose(MPI_Comm comm, CSFile *f);
+PETSC_EXTERN PetscErrorCode CSFileDiscard(CSFile *f); /* not collective: close and remove (error paths) */
+/* Not collective: the whole of a regular file into *buf (NUL-terminated, PetscFree it); a folder, FIFO or device
+   is refused without blocking; what names the option in messages. */
+PETSC_EXTERN PetscErrorCode CSFileLoad(const char what[], const char path[], char **buf, size_t *len);
+/* n elements of size bytes each: an error naming what and the sizes when n*size exceeds PetscInt or the memory */
+PETSC_EXTERN PetscErrorCode CSCheckAllocation(const char what[], PetscInt64 n, size_t size);
+
 /* Numeric options: each value finite and ok (the caller's range test), else an error "-<prefix><name> <v>: <want>". */
 typedef struct {
   const char *name;

@@ -2,7 +2,6 @@
    meshdata_obj.c, meshdata_off.c, meshdata_ply.c), destroy, duplicate. */
 #include "meshdata_reader.h"
 #include "cs_util.h"
-#include <errno.h>
 #include <string.h>
 
 PetscErrorCode CSMeshDataRead(const char path[], CSMeshData *md)
@@ -38,24 +37,26 @@ PetscErrorCode CSMeshDataRead(const char path[], CSMeshData *md)
   PetscFunctionReturn(0);
 }
 
+/* Not collective (the caller's rank writes); the name goes into the header sanitised, a failed write or close
+   removes the file (CSFile) */
 PetscErrorCode CSMeshDataWrite(const char path[], const CSMeshData *md)
 {
-  char      ext[16];
-  FILE     *fp;
-  PetscBool ok = PETSC_TRUE;
+  char       ext[16];
+  CSFile     f;
+  PetscBool  ok = PETSC_TRUE;
+  CSMeshData w  = *md;
 
   PetscFunctionBeginUser;
   PetscCall(CSPathExtension(path, ext, sizeof(ext)));
   PetscCheck(!strcmp(ext, "obj") || !strcmp(ext, "off") || !strcmp(ext, "ply"), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%s: unknown mesh file extension '.%s' (write .obj, .off or .ply)", path, ext);
-  PetscCall(CSPathMakeParents(path));
-  fp = fopen(path, "wb");
-  PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "%s: cannot open for writing (%s)", path, strerror(errno));
-  if (!strcmp(ext, "obj")) PetscCall(CSMeshDataWriteOBJ(fp, md));
-  else if (!strcmp(ext, "off")) PetscCall(CSMeshDataWriteOFF(fp, md));
-  else PetscCall(CSMeshDataWritePLY(fp, md, &ok));
-  ok = (PetscBool)(ok && !ferror(fp));
-  ok = (PetscBool)(!fclose(fp) && ok);
-  PetscCheck(ok, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "%s: write error (%s)", path, strerror(errno));
+  PetscCall(CSPathSanitize(md->name, w.name, sizeof(w.name))); /* a newline in it would add a line to the file */
+  PetscCall(CSFileOpen(PETSC_COMM_SELF, PETSC_TRUE, "-o", path, PETSC_FALSE, &f));
+  if (!strcmp(ext, "obj")) PetscCall(CSMeshDataWriteOBJ(f.fp, &w));
+  else if (!strcmp(ext, "off")) PetscCall(CSMeshDataWriteOFF(f.fp, &w));
+  else PetscCall(CSMeshDataWritePLY(f.fp, &w, &ok));
+  if (!ok) PetscCall(CSFileDiscard(&f));
+  PetscCheck(ok, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "-o %s: write error", path);
+  PetscCall(CSFileClose(PETSC_COMM_SELF, &f));
   PetscFunctionReturn(0);
 }
 

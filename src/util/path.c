@@ -45,3 +45,25 @@ PetscErrorCode CSPathMakeParents(const char path[])
   PetscCall(CSPathMakeDir(dir));
   PetscFunctionReturn(0);
 }
+
+/* A path or name as it may be written into a file header or printed (issue 18, item 8): control characters
+   (a newline would add a line to an OBJ header, a \r breaks the JSON summary, an escape sequence drives the
+   terminal) become '?', and a very long one keeps its head and tail around "...", so a message naming it still
+   fits and ends with its reason. */
+PetscErrorCode CSPathSanitize(const char in[], char out[], size_t len)
+{
+  size_t n = strlen(in), k = 0, keep = len > 8 ? (len - 4) / 2 : 0, cap = PetscMin(len - 1, (size_t)CS_NAME_SHOWN);
+  PetscFunctionBeginUser;
+  if (n > cap) keep = (cap - 3) / 2;
+  for (size_t i = 0; i < n && k + 1 < len; i++) {
+    unsigned char c = (unsigned char)in[i];
+    if (n > cap && i == keep) {
+      for (int d = 0; d < 3; d++) out[k++] = '.';
+      i = n - keep - 1;
+      continue;
+    }
+    out[k++] = (char)((c < 0x20 || c == 0x7f) ? '?' : c);
+  }
+  out[k] = 0;
+  PetscFunctionReturn(0);
+}
