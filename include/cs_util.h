@@ -77,6 +77,21 @@ PETSC_EXTERN PetscErrorCode CSFileDiscard(CSFile *f); /* not collective: close a
 /* Not collective: the whole of a regular file into *buf (NUL-terminated, PetscFree it); a folder, FIFO or device
    is refused without blocking; what names the option in messages. */
 PETSC_EXTERN PetscErrorCode CSFileLoad(const char what[], const char path[], char **buf, size_t *len);
+/* Value files (src/util/values.c): the whole file, tokens separated by blanks, newlines or commas, '#' comments;
+   each token with its line. CSTokensNext returns 0 at the end; the token is not NUL-terminated. */
+typedef struct {
+  char    *buf, *p, *end;
+  size_t   len;
+  PetscInt line;
+  char     name[PETSC_MAX_PATH_LEN]; /* the path, sanitised for messages */
+} CSTokens;
+PETSC_EXTERN PetscErrorCode CSTokensLoad(const char what[], const char path[], CSTokens *t);
+PETSC_EXTERN void           CSTokensInit(CSTokens *t, char *buf, size_t len);
+PETSC_EXTERN int            CSTokensNext(CSTokens *t, const char **tok, size_t *len, PetscInt *line);
+PETSC_EXTERN int            CSTokenReal(const char *tok, size_t len, double *v); /* 0 ok, 1 not a number, 2 not finite */
+PETSC_EXTERN int            CSTokenInt(const char *tok, size_t len, long long *v); /* 0 ok, 1 not an integer */
+PETSC_EXTERN const char    *CSTokenText(const char *tok, size_t len, char out[40]);
+PETSC_EXTERN PetscErrorCode CSTokensDestroy(CSTokens *t);
 /* n elements of size bytes each: an error naming what and the sizes when n*size exceeds PetscInt or the memory */
 PETSC_EXTERN PetscErrorCode CSCheckAllocation(const char what[], PetscInt64 n, size_t size);
 

@@ -4,29 +4,41 @@
 #include "cs_util.h"
 #include <string.h>
 
+static PetscErrorCode ReadFormat(Reader *r, const char ext[])
+{
+  PetscFunctionBeginUser;
+  if (!strcmp(ext, "obj")) PetscCall(CSMeshDataReadOBJ(r));
+  else if (!strcmp(ext, "off")) PetscCall(CSMeshDataReadOFF(r));
+  else PetscCall(CSMeshDataReadPLY(r));
+  PetscFunctionReturn(0);
+}
+
+/* The file is read whole (CSFileLoad: a folder or FIFO refused, a UTF-8 byte-order mark skipped), then parsed; an
+   error of the parser (out of memory included) names the file. */
 PetscErrorCode CSMeshDataRead(const char path[], CSMeshData *md)
 {
   Reader         r;
-  char           ext[16];
-  PetscErrorCode code;
+  char           ext[16], name[PETSC_MAX_PATH_LEN];
+  PetscErrorCode ierr;
 
   PetscFunctionBeginUser;
   PetscCall(PetscMemzero(md, sizeof(*md)));
   PetscCall(PetscMemzero(&r, sizeof(r)));
-  r.path = path;
+  PetscCall(CSPathSanitize(path, name, sizeof(name)));
+  r.path = name;
   PetscCall(CSPathExtension(path, ext, sizeof(ext)));
-  PetscCheck(!strcmp(ext, "obj") || !strcmp(ext, "off") || !strcmp(ext, "ply"), PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "%s: unknown mesh file extension '.%s' (expected .obj, .off or .ply)", path, ext);
-  PetscCall(CSReaderLoad(&r, &code));
-  if (r.msg[0]) {
-    PetscCall(CSReaderFree(&r));
-    SETERRQ(PETSC_COMM_SELF, code, "%s", r.msg);
+  PetscCheck(!strcmp(ext, "obj") || !strcmp(ext, "off") || !strcmp(ext, "ply"), PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "%s: unknown mesh file extension '.%s' (expected .obj, .off or .ply)", name, ext);
+  PetscCall(CSFileLoad("mesh", path, &r.buf, &r.len));
+  CSCaptureError(ierr, ReadFormat(&r, ext));
+  if (ierr && !r.msg[0]) {
+    const char *text;
+    char       *specific = NULL;
+    PetscCall(PetscErrorMessage(ierr, &text, &specific));
+    CSReaderFail(&r, "%s: %s", name, specific ? specific : text);
   }
-  if (!strcmp(ext, "obj")) PetscCall(CSMeshDataReadOBJ(&r));
-  else if (!strcmp(ext, "off")) PetscCall(CSMeshDataReadOFF(&r));
-  else PetscCall(CSMeshDataReadPLY(&r));
   if (r.msg[0]) {
     PetscCall(CSReaderFree(&r));
-    SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "%s", r.msg);
+    SETERRQ(PETSC_COMM_SELF, ierr ? ierr : PETSC_ERR_FILE_UNEXPECTED, "%s", r.msg);
   }
   PetscCall(PetscFree(r.buf));
   md->nv = r.nv;

@@ -1,5 +1,6 @@
 /* Reading a whole file, for the mesh readers and the value files (issue 18, items 3, 6, 11): a folder, a FIFO or a
-   device is refused before anything blocks on it, the size is known before any count from a header is believed,
+   device is refused before anything blocks on it, a UTF-8 byte-order mark (editors on Windows write one) is
+   dropped rather than glued to the first keyword, the size is known before any count from a header is believed,
    and running out of memory names the file. */
 #include "cs_util.h"
 #include <errno.h>
@@ -45,6 +46,10 @@ PetscErrorCode CSFileLoad(const char what[], const char path[], char **buf, size
   if (!ierr) CSCaptureError(ierr, PetscMalloc1((size_t)st.st_size + 1, buf));
   if (!ierr) CSCaptureError(ierr, ReadAll(fd, what, name, (size_t)st.st_size, *buf, len));
   close(fd);
+  if (!ierr && *len >= 3 && !memcmp(*buf, "\xEF\xBB\xBF", 3)) { /* a UTF-8 byte-order mark is not content (item 4) */
+    memmove(*buf, *buf + 3, *len - 3 + 1);
+    *len -= 3;
+  }
   if (ierr) {
     const char *text;
     char       *specific = NULL;
