@@ -1,0 +1,42 @@
+# Issue 18, items 2, 3, 4, 6: hostile input ends in one clear message (file/line/option and sizes), a non-zero exit,
+# no signal and no hang (timeouts), or is read correctly: generator sizes beyond PetscInt or the memory; value files
+# with lines of any length (one tokenizer); a UTF-8 byte-order mark; header counts the file cannot hold; a folder
+# or a FIFO as the mesh (also on 2 ranks: the FIFO must not block rank 0 while rank 1 waits).
+# nprocs: 1
+source tests/lib.sh
+T="timeout 20"
+run() { $T "$CS_BIN" "$@"; }
+# item 2: sizes in 64 bits, checked against PetscInt and the memory, with the sizes
+EXPECT="-gen torus: 4294967296 vertices, 8589934592 faces: .*exceed the largest PetscInt" expect_fail run -task info -gen torus -gen_n 65536 -gen_m 65536
+EXPECT="-gen torus: 200000000 vertices.*need 660 GB, only .* GB of memory are available" expect_fail run -task info -gen torus -gen_n 20000 -gen_m 10000
+EXPECT="-gen disk: .* vertices.*exceed the largest PetscInt" expect_fail run -task info -gen disk -gen_rings 2000000000
+EXPECT="-gen_level 10: not in \[0, 9\]" expect_fail run -task info -gen icosphere -gen_level 10
+# item 3: one value per token whatever the line length (12 kB lines cross the old 4095-byte buffer), comments skipped
+python3 - "$TMP" <<'PY'
+import sys
+t = sys.argv[1]; v = '1.00000000000000000000000000001e-01'
+open(t + '/rho162.txt', 'w').write('# ' + ' '.join(str(i) for i in range(1500)) + '\n' + ' '.join([v] * 162) + '\n')
+open(t + '/rho161.txt', 'w').write(' '.join([v] * 161))
+open(t + '/pts.txt', 'w').write('0 ' + ' '.join(['0.5' + '0' * 400] * 3) + ' # ' + 'x' * 2000 + '\n1 0 0 1 2\n')
+PY
+run -task spin -gen icosphere -gen_level 2 -rho "$TMP/rho162.txt" > "$TMP/log" 2>&1 || { cat "$TMP/log"; echo "BAD: one-line rho file refused"; exit 1; }
+echo "ok  162 values on a 12 kB line after a 7 kB comment: accepted"
+EXPECT="-rho .*rho161.txt: 161 values, expected 162" expect_fail run -task spin -gen icosphere -gen_level 2 -rho "$TMP/rho161.txt"
+EXPECT="-flow_constraint_points .*pts.txt line 2: expected 'vertex_index x y z'" expect_fail run -task flow -gen icosphere -gen_level 1 -flow_max_it 1 -flow_constraint_points "$TMP/pts.txt"
+# item 4: a byte-order mark before the first face line: all four faces read, the tetrahedron closed
+out=$(run -task info -mesh tests/data/bom_first_face.obj 2>&1) || { echo "$out"; exit 1; }
+grep -q "F=4 genus=0 boundary_loops=0" <<< "$out" || { echo "$out"; echo "BAD: BOM file misread"; exit 1; }
+echo "ok  BOM: F=4, closed"
+# item 6: counts checked against the file size before allocating; property-less elements cost nothing
+printf 'OFF\n715827882 715827882 0\n0 0 0\n' > "$TMP/huge.off"
+EXPECT="huge.off:2: truncated: the header claims 715827882 vertices and 715827882 faces, the 6 bytes" expect_fail run -task info -mesh "$TMP/huge.off"
+printf 'ply\nformat ascii 1.0\nelement vertex 700000000\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n' > "$TMP/huge.ply"
+EXPECT="huge.ply:9: truncated: the header's element counts need at least" expect_fail run -task info -mesh "$TMP/huge.ply"
+printf 'ply\nformat ascii 1.0\nelement junk 700000000\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n' > "$TMP/empty_elements.ply"
+timeout 5 "$CS_BIN" -task info -mesh "$TMP/empty_elements.ply" > "$TMP/log" 2>&1 || { cat "$TMP/log"; echo "BAD: 700M property-less elements"; exit 1; }
+echo "ok  700M property-less elements read in < 5 s"
+# item 11 (file kinds): a folder, a FIFO (serial and 2 ranks) as the mesh
+mkdir "$TMP/dir.obj"; mkfifo "$TMP/fifo.obj"
+EXPECT="mesh .*dir.obj: is a folder" expect_fail run -task info -mesh "$TMP/dir.obj"
+EXPECT="mesh .*fifo.obj: not a regular file" expect_fail run -task info -mesh "$TMP/fifo.obj"
+EXPECT="mesh .*fifo.obj: not a regular file" expect_fail $T mpirun -n 2 "$CS_BIN" -task info -mesh "$TMP/fifo.obj"
