@@ -205,6 +205,6 @@ PetscErrorCode CSCurveDataRead(const char path[], CSCurveData *cd)
   }
   PetscCall(Assemble(&c, obj, cd));
   PetscCall(ReaderFree(&c));
-  PetscCall(PetscStrncpy(cd->name, path, sizeof(cd->name)));
+  PetscCall(PetscStrncpy(cd->name, name, sizeof(cd->name)));
   PetscFunctionReturn(0);
 }

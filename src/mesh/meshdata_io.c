@@ -45,7 +45,7 @@ PetscErrorCode CSMeshDataRead(const char path[], CSMeshData *md)
   md->nf = r.nf;
   md->x  = r.x;
   md->f  = r.f;
-  PetscCall(PetscStrncpy(md->name, path, sizeof(md->name)));
+  PetscCall(PetscStrncpy(md->name, name, sizeof(md->name))); /* printed and written into headers: sanitised */
   PetscFunctionReturn(0);
 }
 

@@ -20,14 +20,18 @@ PetscErrorCode CSPathExtension(const char path[], char ext[], size_t len)
    exists as a file is refused here, or by the open that follows. */
 PetscErrorCode CSPathMakeDir(const char dir[])
 {
-  char d[PETSC_MAX_PATH_LEN];
+  char d[PETSC_MAX_PATH_LEN], name[PETSC_MAX_PATH_LEN];
   PetscFunctionBeginUser;
   PetscCall(PetscStrncpy(d, dir, sizeof(d)));
   for (char *s = d + 1;; s++) {
     char c = *s;
     if (c && c != '/') continue;
     *s = 0;
-    PetscCheck(!mkdir(d, 0755) || errno == EEXIST, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "%s: cannot create the folder %s (%s)", dir, d, strerror(errno));
+    if (mkdir(d, 0755) && errno != EEXIST) {
+      int err = errno;
+      PetscCall(CSPathSanitize(d, name, sizeof(name)));
+      SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot create the folder %s (%s)", name, strerror(err));
+    }
     *s = c;
     if (!c) break;
   }

@@ -40,3 +40,25 @@ mkdir "$TMP/dir.obj"; mkfifo "$TMP/fifo.obj"
 EXPECT="mesh .*dir.obj: is a folder" expect_fail run -task info -mesh "$TMP/dir.obj"
 EXPECT="mesh .*fifo.obj: not a regular file" expect_fail run -task info -mesh "$TMP/fifo.obj"
 EXPECT="mesh .*fifo.obj: not a regular file" expect_fail $T mpirun -n 2 "$CS_BIN" -task info -mesh "$TMP/fifo.obj"
+# item 8: a path with a newline or \r goes into headers and the summary sanitised; PLY names printed without escapes
+nl="$TMP/a
+v 9 9 9
+.obj"
+cp tests/data/tetra.obj "$nl"
+run -task info -mesh "$nl" -o "$TMP/nl.obj" -summary "$TMP/nl.json" > "$TMP/log" 2>&1 || { cat "$TMP/log"; exit 1; }
+[ "$(grep -c '^v ' "$TMP/nl.obj")" = 4 ] || { head -3 "$TMP/nl.obj"; echo "BAD: the path added a line to the OBJ"; exit 1; }
+cp tests/data/tetra.obj "$TMP/cr$(printf '\r').obj"
+run -task info -mesh "$TMP/cr$(printf '\r').obj" -summary "$TMP/cr.json" -o "$TMP/cr.ply" > "$TMP/log" 2>&1 || { cat "$TMP/log"; exit 1; }
+python3 -c "import json,sys; json.load(open(sys.argv[1]))" "$TMP/cr.json" || { echo "BAD: summary not JSON"; exit 1; }
+run -task info -mesh "$TMP/cr.ply" > "$TMP/log" 2>&1 || { cat "$TMP/log"; echo "BAD: PLY header broken"; exit 1; }
+echo "ok  newline and \\r in paths: OBJ, PLY and JSON intact"
+python3 - "$TMP/esc.ply" <<'PY'
+import struct, sys
+h = b'ply\nformat binary_little_endian 1.0\nelement \x1b[31mjunk 1\nproperty list uchar int \x1b[2Jq\n' \
+    b'element vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n'
+open(sys.argv[1], 'wb').write(h + bytes([200]) + struct.pack('<9f', 0, 0, 0, 1, 0, 0, 0, 1, 0) + bytes([3]) + struct.pack('<3i', 0, 1, 2))
+PY
+run -task info -mesh "$TMP/esc.ply" > "$TMP/log" 2>&1 && { echo "BAD: accepted"; exit 1; }
+grep -q "element 0 (?\[31mjunk)" "$TMP/log" || { cat -v "$TMP/log"; echo "BAD: message"; exit 1; }
+if grep -q $'\033' "$TMP/log"; then echo "BAD: escape sequence printed"; exit 1; fi
+echo "ok  escape sequences in PLY names not printed: $(grep -m1 error "$TMP/log")"
