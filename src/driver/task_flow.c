@@ -23,7 +23,21 @@ static PetscErrorCode CSFlowWillmoreRun(CSMesh mesh, CSOutput *out)
   PetscCall(CSWillmoreFlowGetOptionsPrefix(flow, &prefix));
   PetscCall(CSOutputViewerEvery(mesh->comm, prefix, "Willmore flow output", "With -viewer_dir: a ParaView step every this many iterations (0: the final state only)", PETSC_TRUE, &every));
   PetscCall(CSWillmoreFlowMonitorViewerSet(flow, out, every, &wv));
-  PetscCall(CSWillmoreFlowSolve(flow));
+  {
+    PetscErrorCode     ierr;
+    CSWillmoreFlowInfo info;
+    Vec                x;
+    char               msg[1024];
+    CSCaptureError(ierr, CSWillmoreFlowSolve(flow));
+    if (ierr) { /* the last accepted state is written, then the error raised */
+      PetscCall(CSWillmoreFlowGetInfo(flow, &info));
+      PetscCall(CSWillmoreFlowGetSolution(flow, &x));
+      PetscCall(CSWillmoreFlowViewerFinish(flow, &wv));
+      PetscCall(CSOutputSaveAfterError(out, mesh, x, info.it, ierr, msg, sizeof(msg)));
+      PetscCall(CSWillmoreFlowDestroy(&flow));
+      SETERRQ(mesh->comm, ierr, "%s", msg);
+    }
+  }
   PetscCall(CSWillmoreFlowViewerFinish(flow, &wv));
   PetscCall(CSWillmoreFlowReport(flow, out));
   PetscCall(CSWillmoreFlowDestroy(&flow));
@@ -37,7 +51,8 @@ static PetscErrorCode CSFlowWillmore(MPI_Comm comm, CSOutput *out)
   PetscErrorCode ierr;
   PetscFunctionBeginUser;
   PetscCall(CSMeshCreateFromOptions(comm, NULL, &mesh));
-  ierr = CSFlowWillmoreRun(mesh, out);
+  ierr = CSMeshQualityCheck(mesh, mesh->x);
+  if (!ierr) ierr = CSFlowWillmoreRun(mesh, out);
   if (ierr) PetscCall(CSMeshDestroy(&mesh)); /* no leak on the error path */
   PetscCall(ierr);
   PetscCall(CSMeshDestroy(&mesh));

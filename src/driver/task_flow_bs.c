@@ -74,7 +74,8 @@ PetscErrorCode CSFlowBS(MPI_Comm comm, CSOutput *out)
   PetscErrorCode ierr;
   PetscFunctionBeginUser;
   PetscCall(CSMeshCreateFromOptions(comm, NULL, &mesh));
-  ierr = RunFlow(mesh, out);
+  ierr = CSMeshQualityCheck(mesh, mesh->x);
+  if (!ierr) ierr = RunFlow(mesh, out);
   PetscCall(CSMeshDestroy(&mesh));
   PetscCall(ierr);
   PetscFunctionReturn(0);

@@ -266,3 +266,23 @@ PetscErrorCode CSOutputHistoryCreate(CSOutput *o, MPI_Comm comm, const char head
   PetscCall(PetscFree(rows));
   PetscFunctionReturn(0);
 }
+
+/* A solver error during a run (issue 18, item 11: a CHOLMOD failure at step 1 left no -o and no -summary): the
+   state of the last accepted iteration it (x: a flow changes its state only when it accepts a step) is written to
+   -o and -summary with stop_reason "error" and the message of ierr, returned in msg for the caller to raise after
+   its clean-up. Collective. */
+PetscErrorCode CSOutputSaveAfterError(CSOutput *o, CSMesh mesh, Vec x, PetscInt it, PetscErrorCode ierr, char msg[], size_t len)
+{
+  const char *text;
+  char       *specific = NULL;
+  PetscFunctionBeginUser;
+  PetscCall(PetscErrorMessage(ierr, &text, &specific));
+  PetscCall(PetscStrncpy(msg, specific ? specific : (text ? text : "unknown error"), len));
+  PetscCall(PetscPrintf(mesh->comm, "flow: failed after iteration %" PetscInt_FMT ": %s\nflow: the last accepted state goes to -o and -summary\n", it, msg));
+  PetscCall(CSJSONAddInt(o->json, "iterations", it));
+  PetscCall(CSJSONAddBool(o->json, "converged", PETSC_FALSE));
+  PetscCall(CSJSONAddString(o->json, "stop_reason", "error"));
+  PetscCall(CSJSONAddString(o->json, "error", msg));
+  PetscCall(CSOutputFinish(o, mesh, x));
+  PetscFunctionReturn(0);
+}

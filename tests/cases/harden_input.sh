@@ -62,3 +62,23 @@ run -task info -mesh "$TMP/esc.ply" > "$TMP/log" 2>&1 && { echo "BAD: accepted";
 grep -q "element 0 (?\[31mjunk)" "$TMP/log" || { cat -v "$TMP/log"; echo "BAD: message"; exit 1; }
 if grep -q $'\033' "$TMP/log"; then echo "BAD: escape sequence printed"; exit 1; fi
 echo "ok  escape sequences in PLY names not printed: $(grep -m1 error "$TMP/log")"
+# item 11: a sliver face is named before a flow (refused, or warned about); a solver failure then writes the last
+# accepted state to -o and -summary and exits non-zero; a 1e300 coordinate is called too large
+run -task info -gen icosphere -gen_level 2 -o "$TMP/ico2.obj" > /dev/null
+python3 - "$TMP/ico2.obj" "$TMP/sliver.obj" <<'PY'
+import sys
+L = open(sys.argv[1]).read().split('\n')
+V = [[float(t) for t in l.split()[1:4]] for l in L if l.startswith('v ')]
+F = [l for l in L if l.startswith('f ')]
+a, b, c = [int(t) - 1 for t in F[100].split()[1:4]]
+m = [(V[a][k] + V[b][k]) / 2 for k in range(3)]
+V[c] = [m[k] + 1e-10 * (V[c][k] - m[k]) for k in range(3)]  # face 100: relative area ~1e-10
+open(sys.argv[2], 'w').write(''.join('v %.17g %.17g %.17g\n' % tuple(v) for v in V) + '\n'.join(F) + '\n')
+PY
+EXPECT="sliver.obj: 1 faces below -mesh_quality_min_area .*smallest relative area 9.*e-11 at face 100 \(vertices 13 46 87\)" expect_fail run -task flow -mesh "$TMP/sliver.obj" -o "$TMP/sl.obj"
+[ -e "$TMP/sl.obj" ] && { echo "BAD: -o written by a refused run"; exit 1; }
+EXPECT="not positive definite" expect_fail run -task flow -mesh "$TMP/sliver.obj" -mesh_quality_action warn -o "$TMP/sl.obj" -summary "$TMP/sl.json"
+[ "$(json stop_reason "$TMP/sl.json")" = error ] && [ "$(grep -c '^v ' "$TMP/sl.obj")" = 162 ] || { echo "BAD: last state not written"; exit 1; }
+echo "ok  solver failure: -o (162 vertices) and -summary (stop_reason error) written"
+printf 'v 0 0 0\nv 1e300 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 3 1 4\n' > "$TMP/big.obj"
+EXPECT="big.obj: vertex 1 has the coordinate 1e\+300, beyond 1e\+100" expect_fail run -task info -mesh "$TMP/big.obj"
