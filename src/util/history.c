@@ -9,14 +9,17 @@ struct _p_CSHistory {
 
 PetscErrorCode CSHistoryCreate(MPI_Comm comm, const char path[], const char header[], CSHistory *h)
 {
-  PetscMPIInt rank;
+  PetscMPIInt    rank;
+  PetscErrorCode ierr;
   PetscFunctionBeginUser;
   PetscCall(PetscNew(h));
   (*h)->comm = comm;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  PetscCall(CSFileOpen(comm, (PetscBool)!rank, "-history_csv", path, PETSC_FALSE, &(*h)->file));
-  if ((*h)->file.fp) fprintf((*h)->file.fp, "%s\n", header);
-  PetscCall(CSFileFlush(comm, &(*h)->file));
+  ierr = CSFileOpen(comm, (PetscBool)!rank, "-history_csv", path, PETSC_FALSE, &(*h)->file);
+  if (!ierr && (*h)->file.fp) fprintf((*h)->file.fp, "%s\n", header);
+  if (!ierr) ierr = CSFileFlush(comm, &(*h)->file);
+  if (ierr) PetscCall(CSHistoryDestroy(h)); /* the error is collective: every rank frees */
+  PetscCall(ierr);
   PetscFunctionReturn(0);
 }
 
