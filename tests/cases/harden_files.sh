@@ -12,6 +12,7 @@ serial() { [ "$NP" = 1 ]; }
 # item 1: a folder through a file, a piece of the last rank that is a folder, a series index that is a folder
 touch "$TMP/plain"
 EXPECT="-history_csv .*plain/h.csv: cannot" expect_fail $T $MPIEXEC "$CS_BIN" $F -history_csv "$TMP/plain/h.csv"
+EXPECT="-history .*plain/h.txt: cannot write there" expect_fail $T $MPIEXEC "$CS_BIN" $F -history "$TMP/plain/h.txt"
 mkdir -p "$TMP/v1/surface_0000_$last.vtu"
 EXPECT="-viewer_dir .*surface_0000_$last.vtu: is a folder" expect_fail $T $MPIEXEC "$CS_BIN" -task info $G -viewer_dir "$TMP/v1"
 [ "$(ls "$TMP/v1")" = "surface_0000_$last.vtu" ] || { ls "$TMP/v1"; echo "BAD: other pieces left behind"; exit 1; }
