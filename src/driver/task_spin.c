@@ -107,23 +107,32 @@ static PetscErrorCode SpinView(CSSpin spin, CSMesh mesh, const SpinRun *r, const
   PetscFunctionReturn(0);
 }
 
+static PetscErrorCode RunSpin(CSSpin spin, CSMesh mesh, SpinRun *r, CSOutput *out)
+{
+  PetscFunctionBeginUser;
+  PetscCall(CSSpinSetFromOptions(spin));
+  PetscCall(SpinSolve(spin, mesh, r));
+  PetscCall(SpinReport(spin, mesh, r, out));
+  PetscCall(CSOutputAddMeshFacts(out, mesh, r->xnew, mesh->x));
+  if (out->has_viewer) PetscCall(SpinView(spin, mesh, r, out->viewer_dir));
+  PetscCall(CSOutputFinish(out, mesh, r->xnew));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode CSTaskSpin(MPI_Comm comm)
 {
-  CSOutput out;
-  CSMesh   mesh;
-  CSSpin   spin;
-  SpinRun  r;
+  CSOutput       out;
+  CSMesh         mesh = NULL;
+  CSSpin         spin = NULL;
+  SpinRun        r;
+  PetscErrorCode ierr;
   PetscFunctionBeginUser;
   PetscCall(PetscMemzero(&r, sizeof(r)));
   PetscCall(CSOutputFromOptions(comm, &out));
-  PetscCall(CSMeshCreateFromOptions(comm, NULL, &mesh));
-  PetscCall(CSSpinCreate(mesh, &spin));
-  PetscCall(CSSpinSetFromOptions(spin));
-  PetscCall(SpinSolve(spin, mesh, &r));
-  PetscCall(SpinReport(spin, mesh, &r, &out));
-  PetscCall(CSOutputAddMeshFacts(&out, mesh, r.xnew, mesh->x));
-  if (out.has_viewer) PetscCall(SpinView(spin, mesh, &r, out.viewer_dir));
-  PetscCall(CSOutputFinish(&out, mesh, r.xnew));
+  ierr = CSMeshCreateFromOptions(comm, NULL, &mesh);
+  if (!ierr) ierr = CSSpinCreate(mesh, &spin);
+  if (!ierr) ierr = RunSpin(spin, mesh, &r, &out);
+  /* on every path: no leak after an error (a bad -rho file) */
   PetscCall(VecDestroy(&r.xnew));
   PetscCall(VecDestroy(&r.lambda));
   PetscCall(VecDestroy(&r.rho));
@@ -133,5 +142,6 @@ PetscErrorCode CSTaskSpin(MPI_Comm comm)
   PetscCall(CSSpinDestroy(&spin));
   PetscCall(CSMeshDestroy(&mesh));
   PetscCall(CSOutputDestroy(&out));
+  PetscCall(ierr);
   PetscFunctionReturn(0);
 }
