@@ -30,6 +30,7 @@ struct _p_CSViewer {
 PetscErrorCode CSViewerCreate(CSMesh mesh, const char dir[], CSViewer *v)
 {
   PetscFunctionBeginUser;
+  CSRootCall(mesh->comm, CSPathMakeDir(dir)); /* before anything is allocated: no leak when it fails */
   PetscCall(PetscNew(v));
   (*v)->mesh = mesh;
   PetscCall(PetscStrncpy((*v)->dir, dir, sizeof((*v)->dir)));
@@ -43,7 +44,6 @@ PetscErrorCode CSViewerCreate(CSMesh mesh, const char dir[], CSViewer *v)
     (*v)->single = (PetscBool)(ip == 1);
   }
   PetscOptionsEnd();
-  CSRootCall(mesh->comm, CSPathMakeDir(dir));
   PetscFunctionReturn(0);
 }
 

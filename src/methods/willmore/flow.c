@@ -213,12 +213,11 @@ PetscErrorCode CSWillmoreFlowDestroy(CSWillmoreFlow *flow)
   PetscFunctionBeginUser;
   if (!F) PetscFunctionReturn(0);
   PetscCall(CSWillmoreFlowMonitorCancel(F));
-  if (F->setupcalled) {
-    PetscCall(CSSaddleDestroy(&F->saddle));
-    PetscCall(CSMetricDestroy(&F->metric));
-    if (F->conformal) PetscCall(CSConformalConstraintDestroy(&F->cc));
-    if (F->normals) PetscCall(CSNormalConstraintDestroy(&F->nc));
-  }
+  /* also after a set-up that failed half-way (the parts are zeroed at creation; their destroys take NULL) */
+  PetscCall(CSSaddleDestroy(&F->saddle));
+  PetscCall(CSMetricDestroy(&F->metric));
+  PetscCall(CSConformalConstraintDestroy(&F->cc));
+  PetscCall(CSNormalConstraintDestroy(&F->nc));
   for (PetscInt j = 0; j < F->ng; j++) PetscCall(CSGlobalConstraintDestroy(&F->gc[j]));
   if (F->k) PetscCall(VecDestroyVecs(F->k, &F->rows));
   PetscCall(PetscFree(F->dnu2));
