@@ -68,8 +68,8 @@ PetscErrorCode CSCheckpointWrite(CSMesh m, const char path[], PetscInt it, Petsc
   PetscCallMPI(MPI_Comm_rank(m->comm, &rank));
   PetscCall(CSMeshGather(&m->natV3, x, &natx));
   if (edgeField) PetscCall(CSMeshGather(&m->natE1, edgeField, &nate));
-  if (!rank) PetscCall(Payload(nreal, reals, natx, nate, &pay, &n));
   PetscCall(CSFileOpen(m->comm, (PetscBool)!rank, "-checkpoint", path, PETSC_TRUE, &f));
+  if (!rank) PetscCall(Payload(nreal, reals, natx, nate, &pay, &n));
   if (f.fp) {
     fprintf(f.fp, "confsurf-checkpoint %d\niteration %" PetscInt_FMT "\nscalars %" PetscInt_FMT "\nvertices %" PetscInt_FMT "\nedges %" PetscInt_FMT "\nedge_field %d\n", CS_CHECKPOINT_VERSION, it, nreal, m->Nv, m->Ne, edgeField ? 1 : 0);
     fprintf(f.fp, "payload_bytes %zu\nchecksum_fnv1a64 %016" PRIx64 "\nend_header\n", n * sizeof(double), Checksum((const unsigned char *)pay, n * sizeof(double)));
