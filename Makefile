@@ -3,7 +3,7 @@
 # `make bench` runs the benchmarks in runs/ (runs/run-all.sh), `make deps` installs the system packages
 # (scripts/install-deps.sh; the other goals do it too when packages are missing). `make WERROR=` builds without -Werror.
 .DEFAULT_GOAL := all
-GOALS := all run demo test test-serial bench clean
+GOALS := all run demo test test-serial bench clean sanitize fuzz
 WERROR ?= -Werror
 
 deps:
@@ -86,6 +86,7 @@ clean:
 	rm -rf build bin
 
 -include $(LIB_OBJ:.o=.d) $(DRV_OBJ:.o=.d) $(TESTS:=.d) $(BENCHES:=.d)
+include mk/hardening.mk
 endif
 
 .PHONY: $(GOALS) deps

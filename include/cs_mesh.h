@@ -122,6 +122,10 @@ PETSC_EXTERN PetscErrorCode CSMeshReadVertexValues(CSMesh mesh, const char optio
 
 /* Writes the mesh with positions x (global, dmV3) to .obj/.ply (by extension), in file order, from rank 0. */
 PETSC_EXTERN PetscErrorCode CSMeshWrite(CSMesh mesh, Vec x, const char path[]);
+/* Before a flow: faces with a relative area below -mesh_quality_min_area (1e-8) or an angle below
+   -mesh_quality_min_angle (1e-5 degrees) are reported (the worst, in file numbering) and the run refused, or warned
+   about with -mesh_quality_action warn (off: no check). Collective. */
+PETSC_EXTERN PetscErrorCode CSMeshQualityCheck(CSMesh mesh, Vec x);
 
 /* ParaView output: one .pvtu per step (a piece per rank, with named per-vertex and per-face fields) plus a
    .pvd series index in dir. Fields are global Vecs of dmV1/dmV3 (vertex) or dmF1 (face). The pieces' data arrays

@@ -50,4 +50,7 @@ PETSC_EXTERN PetscErrorCode CSOutputResume(CSOutput *o, CSMesh mesh, Vec x0, Pet
 PETSC_EXTERN PetscErrorCode CSOutputCheckpoint(CSOutput *o, CSMesh mesh, Vec x0, PetscInt it, PetscBool force, PetscInt nreal, const PetscReal reals[], Vec x, Vec edgeField);
 PETSC_EXTERN PetscErrorCode CSOutputHistoryCreate(CSOutput *o, MPI_Comm comm, const char header[], PetscInt next, CSHistory *h);
 
+/* after a solver error ierr: the last accepted state x (iteration it) to -o and -summary; ierr's message in msg */
+PETSC_EXTERN PetscErrorCode CSOutputSaveAfterError(CSOutput *o, CSMesh mesh, Vec x, PetscInt it, PetscErrorCode ierr, char msg[], size_t len);
+
 #endif

@@ -51,7 +51,7 @@ PETSC_EXTERN PetscErrorCode CSHistoryDestroy(CSHistory *h);
 PETSC_EXTERN PetscErrorCode CSHistoryMonitorDestroy(void **ctx);
 
 /* Rank-local: every number of a text file (white space or commas, '#' comments; no line length limit) into
-   *values (PetscMalloc'd, *n of them) with the line of each in *lines (src/util/value_file.c). Errors name
+   *values (PetscMalloc'd, *n of them) with the line of each in *lines (src/util/values.c, on CSTokens). Errors name
    option, path and line. */
 PETSC_EXTERN PetscErrorCode CSReadNumberFile(const char option[], const char path[], PetscInt *n, PetscReal **values, PetscInt **lines);
 /* Path helpers */
@@ -62,6 +62,44 @@ PETSC_EXTERN PetscErrorCode CSPathExtension(const char path[], char ext[], size_
 PETSC_EXTERN PetscErrorCode CSPathMakeDir(const char dir[]);       /* mkdir -p of a folder */
 PETSC_EXTERN PetscErrorCode CSFunctionListNames(PetscFunctionList list, char *buf, size_t len); /* "a b c": the registered names */
 PETSC_EXTERN PetscErrorCode CSPathMakeParents(const char path[]); /* mkdir -p of the folders above a file to write */
+/* a path or name fit to print or write into a header: control characters '?', at most CS_NAME_SHOWN characters */
+#define CS_NAME_SHOWN 300
+PETSC_EXTERN PetscErrorCode CSPathSanitize(const char in[], char out[], size_t len);
+
+/* Files written collectively (src/util/file.c): the ranks with mine write, every step's outcome reaches every
+   rank, a failed write (full disk) or close is an error naming the file, and a failure removes the file. atomic:
+   written under a unique temporary name, fsync'ed, renamed over the target (which must be a regular file). */
+typedef struct {
+  FILE     *fp; /* open on the ranks with mine, after CSFileOpen */
+  PetscBool mine, atomic, regular, created; /* created: ours to remove on failure */
+  char      what[64]; /* the option, for messages */
+  char      path[PETSC_MAX_PATH_LEN], tmp[PETSC_MAX_PATH_LEN];
+} CSFile;
+PETSC_EXTERN PetscErrorCode CSFileOpen(MPI_Comm comm, PetscBool mine, const char what[], const char path[], PetscBool atomic, CSFile *f);
+PETSC_EXTERN PetscErrorCode CSFileFlush(MPI_Comm comm, CSFile *f); /* collective: errors of the writes so far */
+PETSC_EXTERN PetscErrorCode CSFileClose(MPI_Comm comm, CSFile *f);
+PETSC_EXTERN PetscErrorCode CSFileDiscard(CSFile *f); /* not collective: close and remove (error paths) */
+/* Not collective: the whole of a regular file into *buf (NUL-terminated, PetscFree it); a folder, FIFO or device
+   is refused without blocking; what names the option in messages. */
+PETSC_EXTERN PetscErrorCode CSFileLoad(const char what[], const char path[], char **buf, size_t *len);
+/* Value files (src/util/values.c): the whole file, tokens separated by blanks, newlines or commas, '#' comments;
+   each token with its line. CSTokensNext returns 0 at the end; the token is not NUL-terminated. */
+typedef struct {
+  char    *buf, *p, *end;
+  size_t   len;
+  PetscInt line;
+  char     name[PETSC_MAX_PATH_LEN]; /* the path, sanitised for messages */
+} CSTokens;
+PETSC_EXTERN PetscErrorCode CSTokensLoad(const char what[], const char path[], CSTokens *t);
+PETSC_EXTERN void           CSTokensInit(CSTokens *t, char *buf, size_t len);
+PETSC_EXTERN int            CSTokensNext(CSTokens *t, const char **tok, size_t *len, PetscInt *line);
+PETSC_EXTERN int            CSTokenReal(const char *tok, size_t len, double *v); /* 0 ok, 1 not a number, 2 not finite */
+PETSC_EXTERN int            CSTokenInt(const char *tok, size_t len, long long *v); /* 0 ok, 1 not an integer */
+PETSC_EXTERN const char    *CSTokenText(const char *tok, size_t len, char out[40]);
+PETSC_EXTERN PetscErrorCode CSTokensDestroy(CSTokens *t);
+/* n elements of size bytes each: an error naming what and the sizes when n*size exceeds PetscInt or the memory */
+PETSC_EXTERN PetscErrorCode CSCheckAllocation(const char what[], PetscInt64 n, size_t size);
+
 /* Numeric options: each value finite and ok (the caller's range test), else an error "-<prefix><name> <v>: <want>". */
 typedef struct {
   const char *name;

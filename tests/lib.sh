@@ -20,5 +20,7 @@ expect_fail() {
   # here-strings, not pipes: with pipefail, grep -q closing the pipe early can fail the echo (SIGPIPE)
   if [ -n "${EXPECT:-}" ] && ! grep -qiE -- "$EXPECT" <<< "$out"; then echo "BAD: message does not match /$EXPECT/"; return 1; fi
   if grep -qE "Segmentation|signal [0-9]+|Caught signal" <<< "$out"; then echo "BAD: crashed"; return 1; fi
+  if grep -qE "Sanitizer|runtime error:" <<< "$out"; then echo "BAD: sanitizer report (make sanitize build)"; return 1; fi
+  if [ "$rc" = 124 ]; then echo "BAD: timed out (a hang)"; return 1; fi
   echo "ok: failed cleanly (exit $rc)"
 }

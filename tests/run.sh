@@ -6,7 +6,7 @@
 set -u
 cd "$(dirname "$0")/.."
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
-export CS_ROOT=$PWD CS_BIN=$PWD/bin/confsurf CS_TESTS=$PWD/build/tests
+export CS_ROOT=$PWD CS_BIN=${CS_BIN:-$PWD/bin/confsurf} CS_TESTS=${CS_TESTS:-$PWD/build/tests} # make sanitize: build/san/
 export CS_SHARED=${CS_SHARED:-$PWD/../shared}
 pass=0; fail=0; failed=()
 t_start=$(date +%s)

@@ -15,6 +15,8 @@ static const char *const task_help[][2] = {
 };
 
 #include <slepcsys.h>
+#include <errno.h>
+#include <unistd.h>
 #include "cs_driver.h"
 #include "cs_package.h"
 
@@ -206,12 +208,34 @@ static void SingletonDefaults(void)
   setenv("HWLOC_PLUGINS_BLACKLIST", "hwloc_gl,hwloc_opencl,hwloc_pci,hwloc_xml_libxml", 0);
 }
 
+/* PETSc's own -history FILE is opened by rank 0 inside PetscInitialize, which crashed (or hung the other ranks) when
+   the file cannot be written (issue 18, item 1). Every rank checks it here, before MPI starts, and all come to the
+   same conclusion (the same file system), so all stop with one message. Only the command line is checked. */
+static int HistoryWritable(int argc, char **argv)
+{
+  for (int i = 1; i + 1 < argc; i++) {
+    char        dir[PETSC_MAX_PATH_LEN];
+    const char *path = argv[i + 1], *slash;
+    int         ok;
+    if (strcmp(argv[i], "-history")) continue;
+    slash = strrchr(path, '/');
+    snprintf(dir, sizeof(dir), "%.*s", slash ? (int)(slash - path + (slash == path)) : 1, slash ? path : ".");
+    ok = access(path, F_OK) ? !access(dir, W_OK | X_OK) : !access(path, W_OK);
+    if (!ok) {
+      fprintf(stderr, "confsurf: error: -history %s: cannot write there (%s); PETSc's -history logs the options, the flows' table is -history_csv\n", path, strerror(errno));
+      return 0;
+    }
+  }
+  return 1;
+}
+
 int main(int argc, char **argv)
 {
   PetscErrorCode ierr;
   PetscBool      bad = PETSC_FALSE, traceback = PETSC_FALSE, helpmode, task;
 
   helpmode = HelpFromArgs(&argc, argv);
+  if (!HistoryWritable(argc, argv)) return 1;
   SingletonDefaults();
   PetscCall(SlepcInitialize(&argc, &argv, NULL, help));
   if (helpmode) {

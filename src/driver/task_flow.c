@@ -6,28 +6,58 @@
 #include "cs_output_willmore.h"
 #include "cs_methods_bs.h"
 
-static PetscErrorCode CSFlowWillmoreRun(CSMesh mesh, CSOutput *out)
+/* the solve; after an error the last accepted state is written (CSOutputSaveAfterError), then the error raised */
+static PetscErrorCode SolveOrSave(CSWillmoreFlow flow, CSWillmoreViewer *wv, CSOutput *out)
 {
-  CSWillmoreFlow   flow;
-  CSWillmoreViewer wv;
-  PetscInt         every;
-  const char      *prefix;
+  PetscErrorCode     ierr;
+  CSWillmoreFlowInfo info;
+  CSMesh             mesh;
+  Vec                x;
+  char               msg[1024];
   PetscFunctionBeginUser;
-  PetscCall(CSWillmoreFlowCreate(mesh, &flow));
-  PetscCall(CSWillmoreFlowSetFromOptions(flow));
-  PetscCall(CSWillmoreFlowSetUp(flow));
-  PetscCall(CSWillmoreFlowResume(flow, out));
-  PetscCall(CSWillmoreFlowView(flow, NULL));
+  CSCaptureError(ierr, CSWillmoreFlowSolve(flow));
+  if (!ierr) PetscFunctionReturn(0);
+  PetscCall(CSWillmoreFlowGetInfo(flow, &info));
+  PetscCall(CSWillmoreFlowGetSolution(flow, &x));
+  PetscCall(CSWillmoreFlowGetMesh(flow, &mesh));
+  PetscCall(CSWillmoreFlowViewerFinish(flow, wv));
+  PetscCall(CSOutputSaveAfterError(out, mesh, x, info.it, ierr, msg, sizeof(msg)));
+  SETERRQ(mesh->comm, ierr, "%s", msg);
+}
+
+static PetscErrorCode SetMonitors(CSWillmoreFlow flow, CSOutput *out, CSWillmoreViewer *wv)
+{
+  PetscInt    every;
+  const char *prefix;
+  CSMesh      mesh;
+  PetscFunctionBeginUser;
+  PetscCall(CSWillmoreFlowGetMesh(flow, &mesh));
   PetscCall(CSWillmoreFlowMonitorProgressSet(flow));
   PetscCall(CSWillmoreFlowMonitorHistorySet(flow, out));
   PetscCall(CSWillmoreFlowMonitorCheckpointSet(flow, out));
   PetscCall(CSWillmoreFlowGetOptionsPrefix(flow, &prefix));
   PetscCall(CSOutputViewerEvery(mesh->comm, prefix, "Willmore flow output", "With -viewer_dir: a ParaView step every this many iterations (0: the final state only)", PETSC_TRUE, &every));
-  PetscCall(CSWillmoreFlowMonitorViewerSet(flow, out, every, &wv));
-  PetscCall(CSWillmoreFlowSolve(flow));
-  PetscCall(CSWillmoreFlowViewerFinish(flow, &wv));
-  PetscCall(CSWillmoreFlowReport(flow, out));
-  PetscCall(CSWillmoreFlowDestroy(&flow));
+  PetscCall(CSWillmoreFlowMonitorViewerSet(flow, out, every, wv));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode CSFlowWillmoreRun(CSMesh mesh, CSOutput *out)
+{
+  CSWillmoreFlow   flow;
+  CSWillmoreViewer wv = NULL;
+  PetscErrorCode   ierr;
+  PetscFunctionBeginUser;
+  PetscCall(CSWillmoreFlowCreate(mesh, &flow));
+  ierr = CSWillmoreFlowSetFromOptions(flow);
+  if (!ierr) ierr = CSWillmoreFlowSetUp(flow);
+  if (!ierr) ierr = CSWillmoreFlowResume(flow, out);
+  if (!ierr) ierr = CSWillmoreFlowView(flow, NULL);
+  if (!ierr) ierr = SetMonitors(flow, out, &wv);
+  if (!ierr) ierr = SolveOrSave(flow, &wv, out);
+  if (!ierr) ierr = CSWillmoreFlowViewerFinish(flow, &wv);
+  if (!ierr) ierr = CSWillmoreFlowReport(flow, out);
+  PetscCall(CSWillmoreFlowDestroy(&flow)); /* on every path: no leak after an error */
+  PetscCall(ierr);
   PetscFunctionReturn(0);
 }
 
@@ -38,7 +68,8 @@ static PetscErrorCode CSFlowWillmore(MPI_Comm comm, CSOutput *out)
   PetscErrorCode ierr;
   PetscFunctionBeginUser;
   PetscCall(CSMeshCreateFromOptions(comm, NULL, &mesh));
-  ierr = CSFlowWillmoreRun(mesh, out);
+  ierr = CSMeshQualityCheck(mesh, mesh->x);
+  if (!ierr) ierr = CSFlowWillmoreRun(mesh, out);
   if (ierr) PetscCall(CSMeshDestroy(&mesh)); /* no leak on the error path */
   PetscCall(ierr);
   PetscCall(CSMeshDestroy(&mesh));

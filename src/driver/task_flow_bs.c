@@ -73,7 +73,19 @@ static PetscErrorCode RunFlow(CSMesh mesh, CSOutput *out)
   if (!ierr) ierr = CSBSFlowSetUp(flow);
   if (!ierr) ierr = CSBSFlowResume(flow, out); /* before the history, which continues a resumed run */
   if (!ierr) ierr = SetMonitors(flow, out);
-  if (!ierr) ierr = CSBSFlowSolve(flow);
+  if (!ierr) {
+    CSCaptureError(ierr, CSBSFlowSolve(flow));
+    if (ierr) { /* the last accepted state to -o and -summary, then the error */
+      CSBSFlowInfo i;
+      Vec          x;
+      char         msg[1024];
+      PetscCall(CSBSFlowGetInfo(flow, &i));
+      PetscCall(CSBSFlowGetSolution(flow, &x));
+      PetscCall(CSOutputSaveAfterError(out, mesh, x, i.it, ierr, msg, sizeof(msg)));
+      PetscCall(CSBSFlowDestroy(&flow));
+      SETERRQ(mesh->comm, ierr, "%s", msg);
+    }
+  }
   if (!ierr) ierr = Report(flow, mesh, out);
   PetscCall(CSBSFlowDestroy(&flow)); /* on every path: no leak after an error */
   PetscCall(ierr);
@@ -86,7 +98,8 @@ PetscErrorCode CSFlowBS(MPI_Comm comm, CSOutput *out)
   PetscErrorCode ierr;
   PetscFunctionBeginUser;
   PetscCall(CSMeshCreateFromOptions(comm, NULL, &mesh));
-  ierr = RunFlow(mesh, out);
+  ierr = CSMeshQualityCheck(mesh, mesh->x);
+  if (!ierr) ierr = RunFlow(mesh, out);
   PetscCall(CSMeshDestroy(&mesh));
   PetscCall(ierr);
   PetscFunctionReturn(0);

@@ -6,8 +6,9 @@
 /* ParaView fields of a mesh at rest: mean curvature vector h and |h|, vertex area, face area. */
 static PetscErrorCode WriteInfoFields(CSMesh mesh, const char dir[])
 {
-  CSViewer v;
-  Vec      h, hn, area, farea;
+  CSViewer       v = NULL;
+  Vec            h, hn, area, farea;
+  PetscErrorCode ierr;
   PetscFunctionBeginUser;
   PetscCall(DMCreateGlobalVector(mesh->dmV3, &h));
   PetscCall(DMCreateGlobalVector(mesh->dmV1, &hn));
@@ -17,17 +18,18 @@ static PetscErrorCode WriteInfoFields(CSMesh mesh, const char dir[])
   PetscCall(CSGeometryVertexAreas(mesh, mesh->x, area));
   PetscCall(CSGeometryFaceAreas(mesh, mesh->x, farea));
   PetscCall(CSVecBlockNorms(h, 3, hn));
-  PetscCall(CSViewerCreate(mesh, dir, &v));
-  PetscCall(CSViewerAddVertexField(v, "mean_curvature_vector", h));
-  PetscCall(CSViewerAddVertexField(v, "mean_curvature", hn));
-  PetscCall(CSViewerAddVertexField(v, "vertex_area", area));
-  PetscCall(CSViewerAddFaceField(v, "face_area", farea));
-  PetscCall(CSViewerWriteStep(v, mesh->x, 0));
-  PetscCall(CSViewerDestroy(&v));
+  ierr = CSViewerCreate(mesh, dir, &v);
+  if (!ierr) ierr = CSViewerAddVertexField(v, "mean_curvature_vector", h);
+  if (!ierr) ierr = CSViewerAddVertexField(v, "mean_curvature", hn);
+  if (!ierr) ierr = CSViewerAddVertexField(v, "vertex_area", area);
+  if (!ierr) ierr = CSViewerAddFaceField(v, "face_area", farea);
+  if (!ierr) ierr = CSViewerWriteStep(v, mesh->x, 0);
+  PetscCall(CSViewerDestroy(&v)); /* on every path: a folder that cannot be written leaks nothing */
   PetscCall(VecDestroy(&h));
   PetscCall(VecDestroy(&hn));
   PetscCall(VecDestroy(&area));
   PetscCall(VecDestroy(&farea));
+  PetscCall(ierr);
   PetscCall(PetscPrintf(mesh->comm, "wrote ParaView series %s/series.pvd\n", dir));
   PetscFunctionReturn(0);
 }

@@ -256,21 +256,16 @@ static PetscErrorCode SpinFlow(CSSpin spin, CSMesh mesh, PetscInt N, PetscReal t
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CSTaskSpin(MPI_Comm comm)
+/* The spin task proper, after the mesh and the method exist: one of -spin_interpolate, -spin_flow_steps,
+   -spin_least_squares, or a spin transformation (the default). */
+static PetscErrorCode RunSpin(CSSpin spin, CSMesh mesh, SpinRun *r, CSOutput *out)
 {
-  CSOutput out;
-  CSMesh   mesh;
-  CSSpin    spin;
-  SpinRun   r;
+  MPI_Comm  comm    = mesh->comm;
   PetscInt  ninterp = 8, nflow = 10;
   PetscBool interp  = PETSC_FALSE, flow = PETSC_FALSE, lsq = PETSC_FALSE;
   PetscReal tau     = 0.1;
   char      iprefix[PETSC_MAX_PATH_LEN] = "spin_interpolate";
   PetscFunctionBeginUser;
-  PetscCall(PetscMemzero(&r, sizeof(r)));
-  PetscCall(CSOutputFromOptions(comm, &out));
-  PetscCall(CSMeshCreateFromOptions(comm, NULL, &mesh));
-  PetscCall(CSSpinCreate(mesh, &spin));
   PetscCall(CSSpinSetFromOptions(spin));
   PetscOptionsBegin(comm, NULL, "Similarity interpolation (crane2011 Sec. 7.2, Fig. 21)", NULL);
   PetscCall(PetscOptionsInt("-spin_interpolate", "Meshes 0..N of the similarity interpolation from the input to -spin_target_mesh instead of a spin transformation", NULL, ninterp, &ninterp, &interp));
@@ -279,29 +274,46 @@ PetscErrorCode CSTaskSpin(MPI_Comm comm)
   PetscCall(PetscOptionsBool("-spin_least_squares", "Positions from the best-fit similarities of -spin_target_mesh by least squares, without the eigenproblem (the baseline of Fig. 22)", NULL, lsq, &lsq, NULL));
   PetscCall(PetscOptionsString("-spin_interpolate_prefix", "Interpolated mesh k is written to PREFIX_k.obj", NULL, iprefix, iprefix, sizeof(iprefix), NULL));
   PetscOptionsEnd();
-  PetscCheck(!interp || ninterp >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-spin_interpolate %" PetscInt_FMT ": need at least 1 step", ninterp);
   {
-    const CSOptionCheck checks[] = {{"spin_flow_steps", (PetscReal)nflow, nflow >= 1, "must be >= 1"}, {"spin_flow_tau", tau, tau > 0, "must be > 0"}};
-    PetscCall(CSCheckOptionValues(comm, NULL, 2, checks));
+    const CSOptionCheck checks[] = {{"spin_interpolate", (PetscReal)ninterp, ninterp >= 1, "need at least 1 step"}, {"spin_flow_steps", (PetscReal)nflow, nflow >= 1, "must be >= 1"}, {"spin_flow_tau", tau, tau > 0, "must be > 0"}};
+    PetscCall(CSCheckOptionValues(comm, NULL, 3, checks));
   }
-  if (interp) PetscCall(SpinInterpolate(spin, mesh, ninterp, iprefix, &out));
-  else if (flow) PetscCall(SpinFlow(spin, mesh, nflow, tau, &out));
-  else if (lsq) PetscCall(SpinLeastSquares(spin, mesh, &out));
+  if (interp) PetscCall(SpinInterpolate(spin, mesh, ninterp, iprefix, out));
+  else if (flow) PetscCall(SpinFlow(spin, mesh, nflow, tau, out));
+  else if (lsq) PetscCall(SpinLeastSquares(spin, mesh, out));
   else {
-    PetscCall(SpinSolve(spin, mesh, &r));
-    PetscCall(SpinReport(spin, mesh, &r, &out));
-    PetscCall(CSOutputAddMeshFacts(&out, mesh, r.xnew, mesh->x));
-    if (out.has_viewer) PetscCall(SpinView(spin, mesh, &r, out.viewer_dir));
-    PetscCall(CSOutputFinish(&out, mesh, r.xnew));
-    PetscCall(VecDestroy(&r.xnew));
-    PetscCall(VecDestroy(&r.lambda));
-    PetscCall(VecDestroy(&r.rho));
-    PetscCall(VecDestroy(&r.xt));
-    PetscCall(VecDestroy(&r.mu));
-    PetscCall(VecDestroy(&r.Tt));
+    PetscCall(SpinSolve(spin, mesh, r));
+    PetscCall(SpinReport(spin, mesh, r, out));
+    PetscCall(CSOutputAddMeshFacts(out, mesh, r->xnew, mesh->x));
+    if (out->has_viewer) PetscCall(SpinView(spin, mesh, r, out->viewer_dir));
+    PetscCall(CSOutputFinish(out, mesh, r->xnew));
   }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSTaskSpin(MPI_Comm comm)
+{
+  CSOutput       out;
+  CSMesh         mesh = NULL;
+  CSSpin         spin = NULL;
+  SpinRun        r;
+  PetscErrorCode ierr;
+  PetscFunctionBeginUser;
+  PetscCall(PetscMemzero(&r, sizeof(r)));
+  PetscCall(CSOutputFromOptions(comm, &out));
+  ierr = CSMeshCreateFromOptions(comm, NULL, &mesh);
+  if (!ierr) ierr = CSSpinCreate(mesh, &spin);
+  if (!ierr) ierr = RunSpin(spin, mesh, &r, &out);
+  /* on every path: no leak after an error (a bad -rho file) */
+  PetscCall(VecDestroy(&r.xnew));
+  PetscCall(VecDestroy(&r.lambda));
+  PetscCall(VecDestroy(&r.rho));
+  PetscCall(VecDestroy(&r.xt));
+  PetscCall(VecDestroy(&r.mu));
+  PetscCall(VecDestroy(&r.Tt));
   PetscCall(CSSpinDestroy(&spin));
   PetscCall(CSMeshDestroy(&mesh));
   PetscCall(CSOutputDestroy(&out));
+  PetscCall(ierr);
   PetscFunctionReturn(0);
 }

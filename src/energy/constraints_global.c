@@ -137,61 +137,65 @@ static PetscErrorCode PointsDestroy(CSGlobalConstraint g)
   PetscFunctionReturn(0);
 }
 
+typedef enum {
+  POINT_OK,
+  POINT_END,
+  POINT_FORMAT,
+  POINT_RANGE,
+  POINT_TWICE
+} PointRecord;
+
+/* One record "index x y z" alone on its line *line (CSTokens) */
+static PointRecord ReadPointRecord(CSTokens *t, PetscInt Nv, const PetscBool seen[], long long *idx, double x[3], PetscInt *line)
+{
+  const char *tok;
+  size_t      len;
+  PetscInt    l;
+  CSTokens    peek;
+  if (!CSTokensNext(t, &tok, &len, line)) return POINT_END;
+  if (CSTokenInt(tok, len, idx)) return POINT_FORMAT;
+  for (int d = 0; d < 3; d++)
+    if (!CSTokensNext(t, &tok, &len, &l) || l != *line || CSTokenReal(tok, len, &x[d])) return POINT_FORMAT;
+  peek = *t;
+  if (CSTokensNext(&peek, &tok, &len, &l) && l == *line) return POINT_FORMAT;
+  if (*idx < 0 || *idx >= Nv) return POINT_RANGE;
+  return seen[*idx] ? POINT_TWICE : POINT_OK;
+}
+
 /* Rank 0: read and check the file (errors name option, file, line). */
 static PetscErrorCode ReadPointsFile(const char option[], const char path[], PetscInt Nv, PetscInt *n, PetscInt **vnat, PetscReal **p)
 {
-  FILE     *fp;
-  char      line[1024];
-  PetscInt  cap = 16, cnt = 0, lineno = 0;
-  PetscBool *seen;
+  CSTokens    t;
+  PetscInt    capv = 0, capp = 0, cnt = 0, line = 0;
+  PetscBool  *seen;
+  long long   idx = 0;
+  double      x[3];
+  PointRecord r;
+  char        msg[PETSC_MAX_PATH_LEN + 160] = "";
   PetscFunctionBeginUser;
-  fp = fopen(path, "r");
-  PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "%s %s: cannot open the point-constraint file", option, path);
-  PetscCall(PetscMalloc2(cap, vnat, 3 * cap, p));
+  *vnat = NULL;
+  *p    = NULL;
+  PetscCall(CSTokensLoad(option, path, &t));
   PetscCall(PetscCalloc1(Nv, &seen));
-  while (fgets(line, sizeof(line), fp)) {
-    long   idx;
-    double a, b, c;
-    char  *s = line, extra[2];
-    int    nr;
-    lineno++;
-    while (*s == ' ' || *s == '\t') s++;
-    if (*s == '#' || *s == '\n' || *s == '\r' || *s == 0) continue;
-    nr = sscanf(s, "%ld %lf %lf %lf %1s", &idx, &a, &b, &c, extra);
-    if (nr != 4 || PetscIsInfOrNanReal((PetscReal)a) || PetscIsInfOrNanReal((PetscReal)b) || PetscIsInfOrNanReal((PetscReal)c)) {
-      fclose(fp);
-      PetscCall(PetscFree(seen));
-      PetscCall(PetscFree2(*vnat, *p)); /* the error paths freed only seen (issue 18, item 12) */
-      SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "%s %s line %" PetscInt_FMT ": expected 'vertex_index x y z' (0-based index and three finite numbers)", option, path, lineno);
-    }
-    if (idx < 0 || idx >= Nv || seen[idx]) {
-      fclose(fp);
-      PetscCall(PetscFree(seen));
-      PetscCall(PetscFree2(*vnat, *p)); /* the error paths freed only seen (issue 18, item 12) */
-      PetscCheck(idx >= 0 && idx < Nv, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "%s %s line %" PetscInt_FMT ": vertex index %ld out of range [0, %" PetscInt_FMT ")", option, path, lineno, idx, Nv);
-      SETERRQ(PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%s %s line %" PetscInt_FMT ": vertex %ld is constrained twice", option, path, lineno, idx);
-    }
+  while ((r = ReadPointRecord(&t, Nv, seen, &idx, x, &line)) == POINT_OK) {
     seen[idx] = PETSC_TRUE;
-    if (cnt == cap) {
-      PetscInt  *nv;
-      PetscReal *np;
-      PetscCall(PetscMalloc2(2 * cap, &nv, 6 * cap, &np));
-      PetscCall(PetscArraycpy(nv, *vnat, cnt));
-      PetscCall(PetscArraycpy(np, *p, 3 * cnt));
-      PetscCall(PetscFree2(*vnat, *p));
-      *vnat = nv;
-      *p    = np;
-      cap *= 2;
-    }
-    (*vnat)[cnt]      = (PetscInt)idx;
-    (*p)[3 * cnt]     = a;
-    (*p)[3 * cnt + 1] = b;
-    (*p)[3 * cnt + 2] = c;
+    PetscCall(CSArrayGrow(sizeof(PetscInt), cnt, 16, &capv, (void **)vnat));
+    PetscCall(CSArrayGrow(3 * sizeof(PetscReal), cnt, 16, &capp, (void **)p));
+    (*vnat)[cnt] = (PetscInt)idx;
+    for (int d = 0; d < 3; d++) (*p)[3 * cnt + d] = x[d];
     cnt++;
   }
-  fclose(fp);
+  if (r == POINT_FORMAT) PetscCall(PetscSNPrintf(msg, sizeof(msg), "%s %s line %" PetscInt_FMT ": expected 'vertex_index x y z' (0-based index and three finite numbers)", option, t.name, line));
+  if (r == POINT_RANGE) PetscCall(PetscSNPrintf(msg, sizeof(msg), "%s %s line %" PetscInt_FMT ": vertex index %lld out of range [0, %" PetscInt_FMT ")", option, t.name, line, idx, Nv));
+  if (r == POINT_TWICE) PetscCall(PetscSNPrintf(msg, sizeof(msg), "%s %s line %" PetscInt_FMT ": vertex %lld is constrained twice", option, t.name, line, idx));
+  if (r == POINT_END && !cnt) PetscCall(PetscSNPrintf(msg, sizeof(msg), "%s %s: no point constraints in the file", option, t.name));
   PetscCall(PetscFree(seen));
-  PetscCheck(cnt > 0, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "%s %s: no point constraints in the file", option, path);
+  PetscCall(CSTokensDestroy(&t));
+  if (msg[0]) { /* nothing leaks on the error paths (issue 18, item 12) */
+    PetscCall(PetscFree(*vnat));
+    PetscCall(PetscFree(*p));
+    SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "%s", msg);
+  }
   *n = cnt;
   PetscFunctionReturn(0);
 }
@@ -214,7 +218,8 @@ PetscErrorCode CSConstraintCreatePointsFromFile(CSMesh mesh, const char option[]
   if (!rank) {
     PetscCall(PetscArraycpy(ctx->vnat, vnat, n));
     PetscCall(PetscArraycpy(ctx->p, p, 3 * n));
-    PetscCall(PetscFree2(vnat, p));
+    PetscCall(PetscFree(vnat));
+    PetscCall(PetscFree(p));
   }
   PetscCallMPI(MPI_Bcast(ctx->vnat, n, MPIU_INT, 0, mesh->comm));
   PetscCallMPI(MPI_Bcast(ctx->p, 3 * n, MPIU_REAL, 0, mesh->comm));

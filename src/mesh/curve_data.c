@@ -91,13 +91,13 @@ PetscErrorCode CSCurveDataGenerate(const char shape[], const CSCurveGenParams *p
 
 PetscErrorCode CSCurveDataWrite(const char path[], PetscInt m, const PetscReal x[], const PetscReal kappa[], PetscBool closed)
 {
-  char  ext[16];
-  FILE *fp;
+  char   ext[16];
+  CSFile f;
+  FILE  *fp;
   PetscFunctionBeginUser;
   PetscCall(CSPathExtension(path, ext, sizeof(ext)));
-  PetscCall(CSPathMakeParents(path));
-  fp = fopen(path, "w");
-  PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "%s: cannot open for writing", path);
+  PetscCall(CSFileOpen(PETSC_COMM_SELF, PETSC_TRUE, "curve file", path, PETSC_FALSE, &f));
+  fp = f.fp;
   if (!strcmp(ext, "obj")) {
     fprintf(fp, "# confsurf curve, %" PetscInt_FMT " vertices, %s\n", m, closed ? "closed" : "open");
     for (PetscInt i = 0; i < m; i++) fprintf(fp, "v %.17g %.17g 0\n", (double)x[2 * i], (double)x[2 * i + 1]);
@@ -112,7 +112,7 @@ PetscErrorCode CSCurveDataWrite(const char path[], PetscInt m, const PetscReal x
       else fprintf(fp, "%.17g %.17g\n", (double)x[2 * k], (double)x[2 * k + 1]);
     }
   }
-  PetscCheck(!fclose(fp), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "%s: write error", path);
+  PetscCall(CSFileClose(PETSC_COMM_SELF, &f));
   PetscFunctionReturn(0);
 }
 

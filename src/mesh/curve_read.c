@@ -186,24 +186,25 @@ PetscErrorCode CSCurveDataRead(const char path[], CSCurveData *cd)
   CurveReader    c;
   char           ext[16];
   PetscBool      obj;
-  PetscErrorCode code;
+  char           name[PETSC_MAX_PATH_LEN];
+  PetscErrorCode code = 0;
   PetscFunctionBeginUser;
   PetscCall(PetscMemzero(cd, sizeof(*cd)));
   PetscCall(PetscMemzero(&c, sizeof(c)));
-  c.r.path = path;
+  PetscCall(CSPathSanitize(path, name, sizeof(name)));
+  c.r.path = name;
   PetscCall(CSPathExtension(path, ext, sizeof(ext)));
   obj = (PetscBool)!strcmp(ext, "obj");
-  PetscCall(CSReaderLoad(&c.r, &code));
-  if (!c.r.msg[0]) PetscCall(obj ? ReadOBJ(&c) : ReadText(&c));
-  else code = code ? code : PETSC_ERR_FILE_READ;
+  PetscCall(CSFileLoad("curve", path, &c.r.buf, &c.r.len));
+  PetscCall(obj ? ReadOBJ(&c) : ReadText(&c));
   if (!c.r.msg[0] && c.zline) CSReaderLineFail(&c.r, c.zline, "z coordinate differs from the first point's (the curve must be planar, z constant)");
-  if (!c.r.msg[0] && !c.nv) CSReaderFail(&c.r, "%s: empty file (no points)", path);
+  if (!c.r.msg[0] && !c.nv) CSReaderFail(&c.r, "%s: empty file (no points)", name);
   if (c.r.msg[0]) {
     PetscCall(ReaderFree(&c));
     SETERRQ(PETSC_COMM_SELF, code ? code : PETSC_ERR_FILE_UNEXPECTED, "%s", c.r.msg);
   }
   PetscCall(Assemble(&c, obj, cd));
   PetscCall(ReaderFree(&c));
-  PetscCall(PetscStrncpy(cd->name, path, sizeof(cd->name)));
+  PetscCall(PetscStrncpy(cd->name, name, sizeof(cd->name)));
   PetscFunctionReturn(0);
 }

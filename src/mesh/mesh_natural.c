@@ -19,23 +19,30 @@ PetscErrorCode CSMeshScatter(CSMeshNatural *field, Vec nat, Vec g)
   PetscFunctionReturn(0);
 }
 
+/* rank 0: the natural-order positions nat with the input's faces into path */
+static PetscErrorCode WriteRoot(CSMesh m, Vec nat, const char path[])
+{
+  CSMeshData         out = m->serial;
+  const PetscScalar *a;
+  PetscErrorCode     ierr;
+  PetscFunctionBeginUser;
+  PetscCall(PetscMalloc1(3 * out.nv, &out.x));
+  PetscCall(VecGetArrayRead(nat, &a));
+  for (PetscInt i = 0; i < 3 * out.nv; i++) out.x[i] = PetscRealPart(a[i]);
+  PetscCall(VecRestoreArrayRead(nat, &a));
+  CSCaptureError(ierr, CSMeshDataWrite(path, &out));
+  PetscCall(PetscFree(out.x));
+  PetscCall(CSSyncError(PETSC_COMM_SELF, ierr));
+  PetscFunctionReturn(0);
+}
+
+/* Collective: a failure on rank 0 reaches every rank */
 PetscErrorCode CSMeshWrite(CSMesh m, Vec x, const char path[])
 {
-  Vec         nat = NULL;
-  PetscMPIInt rank;
+  Vec nat = NULL;
   PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Comm_rank(m->comm, &rank));
   PetscCall(CSMeshGather(&m->natV3, x, &nat));
-  if (!rank) {
-    CSMeshData         out = m->serial;
-    const PetscScalar *a;
-    PetscCall(VecGetArrayRead(nat, &a));
-    PetscCall(PetscMalloc1(3 * out.nv, &out.x));
-    for (PetscInt i = 0; i < 3 * out.nv; i++) out.x[i] = PetscRealPart(a[i]);
-    PetscCall(VecRestoreArrayRead(nat, &a));
-    CSRootCall(PETSC_COMM_SELF, CSMeshDataWrite(path, &out));
-    PetscCall(PetscFree(out.x));
-  }
+  CSRootCall(m->comm, WriteRoot(m, nat, path));
   PetscFunctionReturn(0);
 }
 

@@ -2,16 +2,32 @@
    flat disk. All are outward oriented (normals by the right-hand rule on counter-clockwise corners) and have
    no duplicate vertices. */
 #include "cs_meshdata.h"
+#include "cs_util.h"
 #include <stdio.h>
 
-static PetscErrorCode MeshAlloc(PetscInt nv, PetscInt nf, CSMeshData *md)
+/* The sizes of a generated mesh, computed in 64 bits by the caller (issue 18, item 2: n*m in PetscInt overflowed),
+   checked against PetscInt (3 indices per face) and against the memory a run needs: -task info measured about
+   3.3 KB per vertex (icosphere levels 6 and 7: mesh, adjacency, operators), the flows more. */
+#define CS_BYTES_PER_VERTEX 3300
+static PetscErrorCode CheckSize(const char what[], double nv, double nf)
+{
+  char msg[256];
+  PetscFunctionBeginUser;
+  PetscCheck(3 * nf <= (double)PETSC_MAX_INT, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "%s: %.0f vertices, %.0f faces: the 3 x %.0f face indices exceed the largest PetscInt of this PETSc build (%" PetscInt_FMT ")", what, nv, nf, nf, (PetscInt)PETSC_MAX_INT);
+  PetscCall(PetscSNPrintf(msg, sizeof(msg), "%s: %.0f vertices, %.0f faces, at about %d bytes per vertex for a run", what, nv, nf, CS_BYTES_PER_VERTEX));
+  PetscCall(CSCheckAllocation(msg, (double)nv, CS_BYTES_PER_VERTEX));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode MeshAlloc(const char what[], double nv, double nf, CSMeshData *md)
 {
   PetscFunctionBeginUser;
+  PetscCall(CheckSize(what, nv, nf));
   PetscCall(PetscMemzero(md, sizeof(*md)));
-  md->nv = nv;
-  md->nf = nf;
-  PetscCall(PetscMalloc1(3 * nv, &md->x));
-  PetscCall(PetscMalloc1(3 * nf, &md->f));
+  md->nv = (PetscInt)nv;
+  md->nf = (PetscInt)nf;
+  PetscCall(PetscMalloc1(3 * md->nv, &md->x));
+  PetscCall(PetscMalloc1(3 * md->nf, &md->f));
   PetscFunctionReturn(0);
 }
 
@@ -102,9 +118,11 @@ PetscErrorCode CSMeshDataIcosphere(PetscInt level, PetscReal radius, PetscBool p
   const PetscInt  t[60]  = {0, 11, 5, 0, 5, 1, 0, 1, 7, 0, 7, 10, 0, 10, 11, 1, 5, 9, 5, 11, 4, 11, 10, 2, 10, 7, 6, 7, 1, 8, 3, 9, 4, 3, 4, 2, 3, 2, 6, 3, 6, 8, 3, 8, 9, 4, 9, 5, 2, 4, 11, 6, 2, 10, 8, 6, 7, 9, 8, 1};
 
   PetscFunctionBeginUser;
-  PetscCheck(level >= 0 && level <= 10, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "icosphere level %" PetscInt_FMT " not in [0, 10]", level);
+  /* level 9: 5.2M faces, about 9 GB for -task info; level 10 needs 35 GB */
+  PetscCheck(level >= 0 && level <= 9, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "-gen_level %" PetscInt_FMT ": not in [0, 9] (level L has 20 4^L faces)", level);
   PetscCheck(radius > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "icosphere radius %g must be positive", (double)radius);
-  PetscCall(MeshAlloc(12, 20, md));
+  PetscCall(CheckSize("-gen icosphere", 10 * PetscPowReal(4, level) + 2, 20 * PetscPowReal(4, level)));
+  PetscCall(MeshAlloc("-gen icosphere", 12, 20, md));
   for (PetscInt i = 0; i < 12; i++) {
     PetscCall(PetscArraycpy(md->x + 3 * i, v + 3 * i, 3));
     Project(md->x + 3 * i, radius); /* circumradius = radius, projected or not */
@@ -131,7 +149,7 @@ PetscErrorCode CSMeshDataTorus(PetscReal R, PetscReal r, PetscInt n, PetscInt m,
   PetscFunctionBeginUser;
   PetscCheck(R > r && r > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "torus needs -gen_torus_R > -gen_tube_r > 0, got R = %g, r = %g", (double)R, (double)r);
   PetscCheck(n >= 3 && m >= 3, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "torus needs n, m >= 3, got %" PetscInt_FMT ", %" PetscInt_FMT, n, m);
-  PetscCall(MeshAlloc(n * m, 2 * n * m, md));
+  PetscCall(MeshAlloc("-gen torus", (double)n * m, 2 * (double)n * m, md));
   for (PetscInt i = 0; i < n; i++)
     for (PetscInt j = 0; j < m; j++) {
       PetscReal u = 2 * PETSC_PI * i / n, v = 2 * PETSC_PI * j / m, rho = R + r * PetscCosReal(v);
@@ -164,7 +182,7 @@ PetscErrorCode CSMeshDataFlatTorus(PetscReal tau_re, PetscReal tau_im, PetscInt 
   PetscCheck(tau_re == 0, PETSC_COMM_SELF, PETSC_ERR_SUP, "flat torus with tau = %g + %g i: only rectangular conformal classes (tau_re = 0) have a flat realisation as a product of circles in S^3", (double)tau_re, (double)tau_im);
   PetscCheck(tau_im > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "flat torus needs tau_im > 0, got %g", (double)tau_im);
   PetscCheck(n >= 3 && m >= 3, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "flat torus needs n, m >= 3, got %" PetscInt_FMT ", %" PetscInt_FMT, n, m);
-  PetscCall(MeshAlloc(n * m, 2 * n * m, md));
+  PetscCall(MeshAlloc("-gen flattorus", (double)n * m, 2 * (double)n * m, md));
   for (PetscInt i = 0; i < n; i++)
     for (PetscInt j = 0; j < m; j++) {
       PetscReal a = 2 * PETSC_PI * i / n, b = 2 * PETSC_PI * j / m, s = 1 / (1 - r2 * PetscSinReal(b));
@@ -185,7 +203,7 @@ PetscErrorCode CSMeshDataCylinder(PetscReal radius, PetscReal height, PetscInt n
   PetscFunctionBeginUser;
   PetscCheck(radius > 0 && height > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "cylinder needs radius, height > 0, got %g, %g", (double)radius, (double)height);
   PetscCheck(n >= 3 && m >= 1, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "cylinder needs n >= 3, m >= 1, got %" PetscInt_FMT ", %" PetscInt_FMT, n, m);
-  PetscCall(MeshAlloc(n * (m + 1), 2 * n * m, md));
+  PetscCall(MeshAlloc("-gen cylinder", (double)n * (m + 1), 2 * (double)n * m, md));
   for (PetscInt j = 0; j <= m; j++)
     for (PetscInt i = 0; i < n; i++) {
       PetscReal  u = 2 * PETSC_PI * i / n, *p = md->x + 3 * (j * n + i);
@@ -212,7 +230,7 @@ PetscErrorCode CSMeshDataDisk(PetscReal radius, PetscInt rings, CSMeshData *md)
 
   PetscFunctionBeginUser;
   PetscCheck(radius > 0 && rings >= 1, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "disk needs radius > 0 and rings >= 1, got %g, %" PetscInt_FMT, (double)radius, rings);
-  PetscCall(MeshAlloc(1 + 3 * rings * (rings + 1), 6 * rings * rings, md));
+  PetscCall(MeshAlloc("-gen disk", 1 + 3 * (double)rings * (rings + 1), 6 * (double)rings * rings, md));
   md->x[0] = md->x[1] = md->x[2] = 0;
   for (PetscInt k = 1; k <= rings; k++) {
     PetscInt start = 1 + 3 * k * (k - 1);

@@ -2,60 +2,73 @@
    meshdata_obj.c, meshdata_off.c, meshdata_ply.c), destroy, duplicate. */
 #include "meshdata_reader.h"
 #include "cs_util.h"
-#include <errno.h>
 #include <string.h>
 
+static PetscErrorCode ReadFormat(Reader *r, const char ext[])
+{
+  PetscFunctionBeginUser;
+  if (!strcmp(ext, "obj")) PetscCall(CSMeshDataReadOBJ(r));
+  else if (!strcmp(ext, "off")) PetscCall(CSMeshDataReadOFF(r));
+  else PetscCall(CSMeshDataReadPLY(r));
+  PetscFunctionReturn(0);
+}
+
+/* The file is read whole (CSFileLoad: a folder or FIFO refused, a UTF-8 byte-order mark skipped), then parsed; an
+   error of the parser (out of memory included) names the file. */
 PetscErrorCode CSMeshDataRead(const char path[], CSMeshData *md)
 {
   Reader         r;
-  char           ext[16];
-  PetscErrorCode code;
+  char           ext[16], name[PETSC_MAX_PATH_LEN];
+  PetscErrorCode ierr;
 
   PetscFunctionBeginUser;
   PetscCall(PetscMemzero(md, sizeof(*md)));
   PetscCall(PetscMemzero(&r, sizeof(r)));
-  r.path = path;
+  PetscCall(CSPathSanitize(path, name, sizeof(name)));
+  r.path = name;
   PetscCall(CSPathExtension(path, ext, sizeof(ext)));
-  PetscCheck(!strcmp(ext, "obj") || !strcmp(ext, "off") || !strcmp(ext, "ply"), PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "%s: unknown mesh file extension '.%s' (expected .obj, .off or .ply)", path, ext);
-  PetscCall(CSReaderLoad(&r, &code));
-  if (r.msg[0]) {
-    PetscCall(CSReaderFree(&r));
-    SETERRQ(PETSC_COMM_SELF, code, "%s", r.msg);
+  PetscCheck(!strcmp(ext, "obj") || !strcmp(ext, "off") || !strcmp(ext, "ply"), PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "%s: unknown mesh file extension '.%s' (expected .obj, .off or .ply)", name, ext);
+  PetscCall(CSFileLoad("mesh", path, &r.buf, &r.len));
+  CSCaptureError(ierr, ReadFormat(&r, ext));
+  if (ierr && !r.msg[0]) {
+    const char *text;
+    char       *specific = NULL;
+    PetscCall(PetscErrorMessage(ierr, &text, &specific));
+    CSReaderFail(&r, "%s: %s", name, specific ? specific : text);
   }
-  if (!strcmp(ext, "obj")) PetscCall(CSMeshDataReadOBJ(&r));
-  else if (!strcmp(ext, "off")) PetscCall(CSMeshDataReadOFF(&r));
-  else PetscCall(CSMeshDataReadPLY(&r));
   if (r.msg[0]) {
     PetscCall(CSReaderFree(&r));
-    SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "%s", r.msg);
+    SETERRQ(PETSC_COMM_SELF, ierr ? ierr : PETSC_ERR_FILE_UNEXPECTED, "%s", r.msg);
   }
   PetscCall(PetscFree(r.buf));
   md->nv = r.nv;
   md->nf = r.nf;
   md->x  = r.x;
   md->f  = r.f;
-  PetscCall(PetscStrncpy(md->name, path, sizeof(md->name)));
+  PetscCall(PetscStrncpy(md->name, name, sizeof(md->name))); /* printed and written into headers: sanitised */
   PetscFunctionReturn(0);
 }
 
+/* Not collective (the caller's rank writes); the name goes into the header sanitised, a failed write or close
+   removes the file (CSFile) */
 PetscErrorCode CSMeshDataWrite(const char path[], const CSMeshData *md)
 {
-  char      ext[16];
-  FILE     *fp;
-  PetscBool ok = PETSC_TRUE;
+  char       ext[16];
+  CSFile     f;
+  PetscBool  ok = PETSC_TRUE;
+  CSMeshData w  = *md;
 
   PetscFunctionBeginUser;
   PetscCall(CSPathExtension(path, ext, sizeof(ext)));
   PetscCheck(!strcmp(ext, "obj") || !strcmp(ext, "off") || !strcmp(ext, "ply"), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%s: unknown mesh file extension '.%s' (write .obj, .off or .ply)", path, ext);
-  PetscCall(CSPathMakeParents(path));
-  fp = fopen(path, "wb");
-  PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "%s: cannot open for writing (%s)", path, strerror(errno));
-  if (!strcmp(ext, "obj")) PetscCall(CSMeshDataWriteOBJ(fp, md));
-  else if (!strcmp(ext, "off")) PetscCall(CSMeshDataWriteOFF(fp, md));
-  else PetscCall(CSMeshDataWritePLY(fp, md, &ok));
-  ok = (PetscBool)(ok && !ferror(fp));
-  ok = (PetscBool)(!fclose(fp) && ok);
-  PetscCheck(ok, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "%s: write error (%s)", path, strerror(errno));
+  PetscCall(CSPathSanitize(md->name, w.name, sizeof(w.name))); /* a newline in it would add a line to the file */
+  PetscCall(CSFileOpen(PETSC_COMM_SELF, PETSC_TRUE, "-o", path, PETSC_FALSE, &f));
+  if (!strcmp(ext, "obj")) PetscCall(CSMeshDataWriteOBJ(f.fp, &w));
+  else if (!strcmp(ext, "off")) PetscCall(CSMeshDataWriteOFF(f.fp, &w));
+  else PetscCall(CSMeshDataWritePLY(f.fp, &w, &ok));
+  if (!ok) PetscCall(CSFileDiscard(&f));
+  PetscCheck(ok, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "-o %s: write error", path);
+  PetscCall(CSFileClose(PETSC_COMM_SELF, &f));
   PetscFunctionReturn(0);
 }
 

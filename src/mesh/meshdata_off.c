@@ -54,6 +54,10 @@ PetscErrorCode CSMeshDataReadOFF(Reader *r)
     CSReaderFail(r, "%s:%" PetscInt_FMT ": no faces (the header says 0)", r->path, L.line);
     PetscFunctionReturn(0);
   }
+  if (6.0 * (double)cnt[0] + 8.0 * (double)cnt[1] - 1 > (double)(L.end - L.p)) { /* "x y z\n", "3 a b c\n" at least */
+    CSReaderFail(r, "%s:%" PetscInt_FMT ": truncated: the header claims %lld vertices and %lld faces, the %zu bytes after it cannot hold them", r->path, L.line, cnt[0], cnt[1], (size_t)(L.end - L.p));
+    PetscFunctionReturn(0);
+  }
   r->nv = (PetscInt)cnt[0];
   r->nf = (PetscInt)cnt[1];
   PetscCall(PetscMalloc1(3 * r->nv, &r->x));

@@ -230,6 +230,7 @@ static PetscErrorCode PlyParseHeader(Reader *r, PlyHeader *h, Lines *L, char **d
       }
       cur = &h->elem[h->nelem++];
       snprintf(cur->name, sizeof(cur->name), "%.*s", al, a);
+      (void)CSPathSanitize(cur->name, cur->name, sizeof(cur->name)); /* printed in messages: no escape sequences */
       cur->count  = (PetscInt)n;
       cur->nprops = 0;
     } else if (kl == 8 && !strncmp(kw, "property", 8)) {
@@ -255,6 +256,7 @@ static PetscErrorCode PlyParseHeader(Reader *r, PlyHeader *h, Lines *L, char **d
           PetscFunctionReturn(0);
         }
         snprintf(p->name, sizeof(p->name), "%.*s", dl, d);
+        (void)CSPathSanitize(p->name, p->name, sizeof(p->name));
       } else {
         p->type = PlyTypeFromName(a, al);
         if (p->type == PLY_NONE || !bl) {
@@ -262,6 +264,7 @@ static PetscErrorCode PlyParseHeader(Reader *r, PlyHeader *h, Lines *L, char **d
           PetscFunctionReturn(0);
         }
         snprintf(p->name, sizeof(p->name), "%.*s", bl, b);
+        (void)CSPathSanitize(p->name, p->name, sizeof(p->name));
       }
     } else {
       CSReaderFail(r, "%s unknown PLY header line '%s'", where, CSReaderTokenText(kw, tok));
@@ -271,6 +274,22 @@ static PetscErrorCode PlyParseHeader(Reader *r, PlyHeader *h, Lines *L, char **d
   if (!*data) CSReaderFail(r, "%s:%" PetscInt_FMT ": truncated header (no end_header)", r->path, L->line);
   else if (!h->has_format) CSReaderFail(r, "%s:%" PetscInt_FMT ": no format line in the header", r->path, L->line);
   PetscFunctionReturn(0);
+}
+
+/* The fewest bytes the data of the header's elements can take (binary: the scalars and list counts; ascii: a
+   digit and a separator each), so counts the file cannot hold are refused before anything is allocated */
+static double PlyMinimumBytes(const PlyHeader *h)
+{
+  double total = 0;
+  for (PetscInt e = 0; e < h->nelem; e++) {
+    double per = 0;
+    for (PetscInt q = 0; q < h->elem[e].nprops; q++) {
+      const PlyProp *p = &h->elem[e].props[q];
+      per += h->binary ? PlyTypeSize[p->count_type != PLY_NONE ? p->count_type : p->type] : 2;
+    }
+    total += per * (double)h->elem[e].count;
+  }
+  return h->binary ? total : total - 1; /* the last ascii value may end the file */
 }
 
 /* Marks the properties kept (roles) and checks the header has what a triangle mesh needs. */
@@ -325,6 +344,7 @@ PetscErrorCode CSMeshDataReadPLY(Reader *r)
   PetscCall(PetscCalloc1(1, &h));
   PetscCall(PlyParseHeader(r, h, &L, &data));
   if (!r->msg[0]) PlyAssignRoles(r, h, L.line, &ev, &ef);
+  if (!r->msg[0] && PlyMinimumBytes(h) > (double)(r->buf + r->len - data)) CSReaderFail(r, "%s:%" PetscInt_FMT ": truncated: the header's element counts need at least %.0f bytes of data, the file has %zu after the header", r->path, L.line, PlyMinimumBytes(h), (size_t)(r->buf + r->len - data));
   if (r->msg[0]) {
     PetscCall(PetscFree(h));
     PetscFunctionReturn(0);
@@ -344,7 +364,7 @@ PetscErrorCode CSMeshDataReadPLY(Reader *r)
     PlyElem *el = &h->elem[e];
     src.ename   = el->name;
     src.count   = el->count;
-    for (PetscInt k = 0; k < el->count && !r->msg[0]; k++) {
+    for (PetscInt k = 0; k < el->count && el->nprops && !r->msg[0]; k++) { /* an element without properties has no data */
       src.k = k;
       for (PetscInt q = 0; q < el->nprops && !r->msg[0]; q++) {
         const PlyProp *p = &el->props[q];

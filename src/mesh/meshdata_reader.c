@@ -23,36 +23,6 @@ PetscErrorCode CSReaderFree(Reader *r)
   PetscFunctionReturn(0);
 }
 
-/* Whole file into r->buf; on failure r->msg says why and *code which error class to raise. */
-PetscErrorCode CSReaderLoad(Reader *r, PetscErrorCode *code)
-{
-  FILE *fp;
-  long  size;
-  PetscFunctionBeginUser;
-  *code = 0;
-  fp    = fopen(r->path, "rb");
-  if (!fp) {
-    CSReaderFail(r, "%s: cannot open for reading (%s)", r->path, strerror(errno));
-    *code = PETSC_ERR_FILE_OPEN;
-    PetscFunctionReturn(0);
-  }
-  if (fseek(fp, 0, SEEK_END) || (size = ftell(fp)) < 0 || fseek(fp, 0, SEEK_SET)) {
-    CSReaderFail(r, "%s: cannot determine the file size (%s)", r->path, strerror(errno));
-    *code = PETSC_ERR_FILE_READ;
-    (void)fclose(fp);
-    PetscFunctionReturn(0);
-  }
-  PetscCall(PetscMalloc1((size_t)size + 1, &r->buf));
-  r->len = fread(r->buf, 1, (size_t)size, fp);
-  if (r->len != (size_t)size || ferror(fp)) {
-    CSReaderFail(r, "%s: read error (%s)", r->path, strerror(errno));
-    *code = PETSC_ERR_FILE_READ;
-  }
-  r->buf[r->len] = 0;
-  (void)fclose(fp);
-  PetscFunctionReturn(0);
-}
-
 char *CSReaderNextLine(Lines *L)
 {
   char *s = L->p, *e;

@@ -6,10 +6,11 @@
 #ifndef CS_MESHDATA_READER_H
 #define CS_MESHDATA_READER_H
 #include "cs_meshdata.h"
+#include "cs_util.h"
 #include <ctype.h>
 #include <stdio.h>
 
-#define CS_MSG_LEN 1024
+#define CS_MSG_LEN 2048 /* a long path (shortened to CS_NAME_SHOWN) and the reason */
 
 typedef struct {
   const char *path;
@@ -24,7 +25,6 @@ typedef struct {
 /* Records the first error only: later ones are consequences. */
 PETSC_INTERN void           CSReaderFail(Reader *r, const char fmt[], ...);
 PETSC_INTERN PetscErrorCode CSReaderFree(Reader *r);
-PETSC_INTERN PetscErrorCode CSReaderLoad(Reader *r, PetscErrorCode *code);
 
 /* Line and token helpers (text formats). Lines are cut in place; '\r' counts as blank (CRLF files). */
 typedef struct {

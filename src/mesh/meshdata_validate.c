@@ -52,6 +52,9 @@ static inline PetscInt HePrev(PetscInt h)
 #define FACEFMT "face %" PetscInt_FMT " (vertices %" PetscInt_FMT " %" PetscInt_FMT " %" PetscInt_FMT ")"
 #define FACEARG(md, i) (i), (md)->f[3 * (i)], (md)->f[3 * (i) + 1], (md)->f[3 * (i) + 2]
 
+/* coordinates up to 1e100: squared lengths (1e200) and the products of the operators stay finite */
+#define CS_MAX_COORDINATE 1e100
+
 /* Per-face checks that need no adjacency. */
 static void CheckFaces(const CSMeshData *md, Work *w)
 {
@@ -61,6 +64,9 @@ static void CheckFaces(const CSMeshData *md, Work *w)
     for (int d = 0; d < 3; d++)
       if (PetscIsInfOrNanReal(md->x[3 * v + d])) {
         Fail(w, "%s: vertex %" PetscInt_FMT " has a non-finite coordinate (%s)", md->name, v, PetscIsNanReal(md->x[3 * v + d]) ? "NaN" : "Inf");
+        break;
+      } else if (PetscAbsReal(md->x[3 * v + d]) > CS_MAX_COORDINATE) { /* 1e300 was called a zero-area face */
+        Fail(w, "%s: vertex %" PetscInt_FMT " has the coordinate %g, beyond %g: areas and curvatures would overflow (rescale the mesh)", md->name, v, (double)md->x[3 * v + d], CS_MAX_COORDINATE);
         break;
       }
   for (PetscInt i = 0; i < md->nf && !w->msg[0]; i++) {

@@ -30,6 +30,7 @@ struct _p_CSViewer {
 PetscErrorCode CSViewerCreate(CSMesh mesh, const char dir[], CSViewer *v)
 {
   PetscFunctionBeginUser;
+  CSRootCall(mesh->comm, CSPathMakeDir(dir)); /* before anything is allocated: no leak when it fails */
   PetscCall(PetscNew(v));
   (*v)->mesh = mesh;
   PetscCall(PetscStrncpy((*v)->dir, dir, sizeof((*v)->dir)));
@@ -43,7 +44,6 @@ PetscErrorCode CSViewerCreate(CSMesh mesh, const char dir[], CSViewer *v)
     (*v)->single = (PetscBool)(ip == 1);
   }
   PetscOptionsEnd();
-  CSRootCall(mesh->comm, CSPathMakeDir(dir));
   PetscFunctionReturn(0);
 }
 
@@ -218,6 +218,7 @@ static PetscErrorCode RealValues(const PetscScalar *a, PetscInt n, PetscBool sin
 static PetscErrorCode WritePiece(CSViewer v, Vec x, const char path[])
 {
   CSMesh             m = v->mesh;
+  CSFile             file;
   FILE              *fp;
   Vec                xl;
   const PetscScalar *p, *fa[CS_VIEWER_MAX_FIELDS];
@@ -232,6 +233,8 @@ static PetscErrorCode WritePiece(CSViewer v, Vec x, const char path[])
   size_t             offset = 0;
   const char        *itype = sizeof(PetscInt) == 8 ? "Int64" : "Int32";
   PetscFunctionBeginUser;
+  PetscCall(CSFileOpen(m->comm, PETSC_TRUE, "-viewer_dir", path, PETSC_FALSE, &file)); /* every rank's piece */
+  fp = file.fp;
   /* every array as it is written, straight from the Vecs and the mesh's tables where the types match */
   PetscCall(DMGetLocalVector(m->dmV3, &xl));
   PetscCall(DMGlobalToLocal(m->dmV3, x, INSERT_VALUES, xl));
@@ -261,8 +264,6 @@ static PetscErrorCode WritePiece(CSViewer v, Vec x, const char path[])
   if (v->format != CS_VIEWER_ASCII)
     for (PetscInt k = 0; k < na; k++) PetscCall(EncodeArray(&arr[k], v->format));
 
-  fp = fopen(path, "wb");
-  PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-viewer_dir: cannot write %s", path);
   fprintf(fp, "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\"%s>\n<UnstructuredGrid>\n", v->format == CS_VIEWER_ZLIB ? " compressor=\"vtkZLibDataCompressor\"" : "");
   fprintf(fp, "<Piece NumberOfPoints=\"%d\" NumberOfCells=\"%d\">\n<Points>\n", (int)m->nv, (int)m->nf);
   WriteArrayHeader(fp, &arr[0], v->format, &offset);
@@ -279,7 +280,6 @@ static PetscErrorCode WritePiece(CSViewer v, Vec x, const char path[])
     fprintf(fp, "\n</AppendedData>\n");
   }
   fprintf(fp, "</VTKFile>\n");
-  PetscCheck(!fclose(fp), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "-viewer_dir: error writing %s", path);
   for (PetscInt k = 0; k < na; k++) PetscCall(PetscFree(arr[k].blob));
   PetscCall(PetscFree(copy[0]));
   for (PetscInt k = 4; k < na; k++) PetscCall(PetscFree(copy[k - 3]));
@@ -287,39 +287,44 @@ static PetscErrorCode WritePiece(CSViewer v, Vec x, const char path[])
   PetscCall(VecRestoreArrayRead(xl, &p));
   PetscCall(DMRestoreLocalVector(m->dmV3, &xl));
   PetscCall(PetscFree2(offs, types));
+  PetscCall(CSFileClose(m->comm, &file));
   PetscFunctionReturn(0);
 }
 
 /* The .pvtu joining the pieces and the .pvd index of every step so far (rewritten each step, so a killed run
    leaves a readable series). */
-static PetscErrorCode WriteIndex(CSViewer v, PetscMPIInt size)
+static PetscErrorCode WriteIndex(CSViewer v, PetscMPIInt rank, PetscMPIInt size)
 {
   char        path[PETSC_MAX_PATH_LEN];
+  CSFile      file;
   FILE       *fp;
   const char *ftype = v->single ? "Float32" : "Float64";
+  MPI_Comm    comm  = v->mesh->comm;
   PetscFunctionBeginUser;
   PetscCall(PetscSNPrintf(path, sizeof(path), "%s/surface_%04d.pvtu", v->dir, (int)v->step));
-  fp = fopen(path, "w");
-  PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-viewer_dir: cannot write %s", path);
-  fprintf(fp, "<?xml version=\"1.0\"?>\n<VTKFile type=\"PUnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n<PUnstructuredGrid GhostLevel=\"0\">\n");
-  fprintf(fp, "<PPoints><PDataArray type=\"%s\" Name=\"positions\" NumberOfComponents=\"3\"/></PPoints>\n<PPointData>\n", ftype);
-  for (PetscInt k = 0; k < v->nfields; k++)
-    if (!v->fields[k].face) fprintf(fp, "<PDataArray type=\"%s\" Name=\"%s\" NumberOfComponents=\"%d\"/>\n", ftype, v->fields[k].name, (int)v->fields[k].ncomp);
-  fprintf(fp, "</PPointData>\n<PCellData>\n");
-  for (PetscInt k = 0; k < v->nfields; k++)
-    if (v->fields[k].face) fprintf(fp, "<PDataArray type=\"%s\" Name=\"%s\" NumberOfComponents=\"%d\"/>\n", ftype, v->fields[k].name, (int)v->fields[k].ncomp);
-  fprintf(fp, "</PCellData>\n");
-  for (PetscMPIInt r = 0; r < size; r++) fprintf(fp, "<Piece Source=\"surface_%04d_%d.vtu\"/>\n", (int)v->step, (int)r);
-  fprintf(fp, "</PUnstructuredGrid>\n</VTKFile>\n");
-  PetscCheck(!fclose(fp), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "-viewer_dir: error writing %s", path);
+  PetscCall(CSFileOpen(comm, (PetscBool)!rank, "-viewer_dir", path, PETSC_FALSE, &file));
+  if ((fp = file.fp)) {
+    fprintf(fp, "<?xml version=\"1.0\"?>\n<VTKFile type=\"PUnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n<PUnstructuredGrid GhostLevel=\"0\">\n");
+    fprintf(fp, "<PPoints><PDataArray type=\"%s\" Name=\"positions\" NumberOfComponents=\"3\"/></PPoints>\n<PPointData>\n", ftype);
+    for (PetscInt k = 0; k < v->nfields; k++)
+      if (!v->fields[k].face) fprintf(fp, "<PDataArray type=\"%s\" Name=\"%s\" NumberOfComponents=\"%d\"/>\n", ftype, v->fields[k].name, (int)v->fields[k].ncomp);
+    fprintf(fp, "</PPointData>\n<PCellData>\n");
+    for (PetscInt k = 0; k < v->nfields; k++)
+      if (v->fields[k].face) fprintf(fp, "<PDataArray type=\"%s\" Name=\"%s\" NumberOfComponents=\"%d\"/>\n", ftype, v->fields[k].name, (int)v->fields[k].ncomp);
+    fprintf(fp, "</PCellData>\n");
+    for (PetscMPIInt r = 0; r < size; r++) fprintf(fp, "<Piece Source=\"surface_%04d_%d.vtu\"/>\n", (int)v->step, (int)r);
+    fprintf(fp, "</PUnstructuredGrid>\n</VTKFile>\n");
+  }
+  PetscCall(CSFileClose(comm, &file));
 
-  PetscCall(PetscSNPrintf(path, sizeof(path), "%s/series.pvd", v->dir));
-  fp = fopen(path, "w");
-  PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-viewer_dir: cannot write %s", path);
-  fprintf(fp, "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n");
-  for (PetscInt s = 0; s <= v->step; s++) fprintf(fp, "<DataSet timestep=\"%.17g\" file=\"surface_%04d.pvtu\"/>\n", (double)v->times[s], (int)s);
-  fprintf(fp, "</Collection>\n</VTKFile>\n");
-  PetscCheck(!fclose(fp), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "-viewer_dir: error writing %s", path);
+  PetscCall(PetscSNPrintf(path, sizeof(path), "%s/series.pvd", v->dir)); /* atomic: the last good index stays */
+  PetscCall(CSFileOpen(comm, (PetscBool)!rank, "-viewer_dir", path, PETSC_TRUE, &file));
+  if ((fp = file.fp)) {
+    fprintf(fp, "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n");
+    for (PetscInt s = 0; s <= v->step; s++) fprintf(fp, "<DataSet timestep=\"%.17g\" file=\"surface_%04d.pvtu\"/>\n", (double)v->times[s], (int)s);
+    fprintf(fp, "</Collection>\n</VTKFile>\n");
+  }
+  PetscCall(CSFileClose(comm, &file));
   PetscFunctionReturn(0);
 }
 
@@ -335,7 +340,7 @@ PetscErrorCode CSViewerWriteStep(CSViewer v, Vec x, PetscReal time)
   PetscCall(PetscSNPrintf(path, sizeof(path), "%s/surface_%04d_%d.vtu", v->dir, (int)v->step, (int)rank));
   PetscCall(PetscLogEventBegin(CS_EVENT_ViewerWrite, 0, 0, 0, 0));
   PetscCall(WritePiece(v, x, path));
-  if (!rank) PetscCall(WriteIndex(v, size));
+  PetscCall(WriteIndex(v, rank, size));
   PetscCall(PetscLogEventEnd(CS_EVENT_ViewerWrite, 0, 0, 0, 0));
   for (PetscInt k = 0; k < v->nfields; k++) PetscCall(VecDestroy(&v->fields[k].local));
   v->nfields = 0;

@@ -3,17 +3,16 @@
 #include "cs_geometry.h"
 #include "cs_energy_bs.h"
 
-static PetscErrorCode CheckWritable(const char path[])
+/* fail now rather than after hours of iterations: the checkpoint's folder takes a file, and the target is a
+   regular file or absent (CSFile refuses to replace anything else) */
+static PetscErrorCode CheckWritable(MPI_Comm comm, const char path[])
 {
-  char  tmp[PETSC_MAX_PATH_LEN];
-  FILE *fp;
+  CSFile      f;
+  PetscMPIInt rank;
   PetscFunctionBeginUser;
-  PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", path)); /* the name CSCheckpointWrite writes first */
-  PetscCall(CSPathMakeParents(tmp));
-  fp = fopen(tmp, "w");
-  PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-checkpoint %s: cannot write %s", path, tmp);
-  fclose(fp);
-  remove(tmp);
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCall(CSFileOpen(comm, (PetscBool)!rank, "-checkpoint", path, PETSC_TRUE, &f));
+  PetscCall(CSFileDiscard(&f));
   PetscFunctionReturn(0);
 }
 
@@ -42,8 +41,7 @@ PetscErrorCode CSOutputFromOptionsFormats(MPI_Comm comm, const char *const exts[
   PetscCall(PetscOptionsString("-resume", "Iterative tasks: start from this checkpoint (the mesh still comes from -mesh/-gen, for the connectivity)", NULL, o->resume, o->resume, sizeof(o->resume), &o->has_resume));
   PetscOptionsEnd();
   PetscCheck(o->checkpoint_every >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-checkpoint_every %" PetscInt_FMT ": must be >= 1", o->checkpoint_every);
-  /* fail now rather than after hours of iterations (and on every rank: the checkpoint is written by rank 0) */
-  if (o->has_checkpoint) CSRootCall(comm, CheckWritable(o->checkpoint));
+  if (o->has_checkpoint) PetscCall(CheckWritable(comm, o->checkpoint));
   if (o->has_out) {
     char      ext[16];
     PetscBool ok = PETSC_FALSE;
@@ -262,8 +260,29 @@ PetscErrorCode CSOutputHistoryCreate(CSOutput *o, MPI_Comm comm, const char head
   PetscCheck(ncol <= 64, comm, PETSC_ERR_SUP, "history with %" PetscInt_FMT " columns: at most 64", ncol);
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   if (o->resumed && !rank) PetscCall(ReadHistoryRows(o->history, header, ncol, next, &nrows, &rows));
+  PetscCallMPI(MPI_Bcast(&nrows, 1, MPIU_INT, 0, comm)); /* appending is collective; the rows are read on rank 0 */
   PetscCall(CSHistoryCreate(comm, o->history, header, h));
-  for (PetscInt i = 0; i < nrows; i++) PetscCall(CSHistoryAppend(*h, ncol, rows + i * ncol));
+  for (PetscInt i = 0; i < nrows; i++) PetscCall(CSHistoryAppend(*h, ncol, rows ? rows + i * ncol : NULL));
   PetscCall(PetscFree(rows));
+  PetscFunctionReturn(0);
+}
+
+/* A solver error during a run (issue 18, item 11: a CHOLMOD failure at step 1 left no -o and no -summary): the
+   state of the last accepted iteration it (x: a flow changes its state only when it accepts a step) is written to
+   -o and -summary with stop_reason "error" and the message of ierr, returned in msg for the caller to raise after
+   its clean-up. Collective. */
+PetscErrorCode CSOutputSaveAfterError(CSOutput *o, CSMesh mesh, Vec x, PetscInt it, PetscErrorCode ierr, char msg[], size_t len)
+{
+  const char *text;
+  char       *specific = NULL;
+  PetscFunctionBeginUser;
+  PetscCall(PetscErrorMessage(ierr, &text, &specific));
+  PetscCall(PetscStrncpy(msg, specific ? specific : (text ? text : "unknown error"), len));
+  PetscCall(PetscPrintf(mesh->comm, "flow: failed after iteration %" PetscInt_FMT ": %s\nflow: the last accepted state goes to -o and -summary\n", it, msg));
+  PetscCall(CSJSONAddInt(o->json, "iterations", it));
+  PetscCall(CSJSONAddBool(o->json, "converged", PETSC_FALSE));
+  PetscCall(CSJSONAddString(o->json, "stop_reason", "error"));
+  PetscCall(CSJSONAddString(o->json, "error", msg));
+  PetscCall(CSOutputFinish(o, mesh, x));
   PetscFunctionReturn(0);
 }

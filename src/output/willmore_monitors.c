@@ -103,11 +103,12 @@ PetscErrorCode CSWillmoreFlowMonitorCheckpointSet(CSWillmoreFlow flow, CSOutput 
 
 PetscErrorCode CSWillmoreFlowResume(CSWillmoreFlow flow, CSOutput *out)
 {
-  PetscInt   nreal, it = 0;
-  PetscReal *ck;
-  Vec        x, mu, x0;
-  CSMesh     mesh;
-  PetscBool  resumed;
+  PetscInt       nreal, it = 0;
+  PetscReal     *ck;
+  Vec            x, mu, x0;
+  CSMesh         mesh;
+  PetscBool      resumed;
+  PetscErrorCode ierr;
   PetscFunctionBeginUser;
   PetscCall(CSWillmoreFlowGetMesh(flow, &mesh));
   PetscCall(CSWillmoreFlowGetInitial(flow, &x0));
@@ -119,9 +120,10 @@ PetscErrorCode CSWillmoreFlowResume(CSWillmoreFlow flow, CSOutput *out)
   PetscCall(CSWillmoreFlowGetStateSize(flow, &nreal));
   PetscCall(PetscMalloc1(nreal, &ck));
   PetscCall(CSWillmoreFlowGetState(flow, ck, &x, &mu)); /* x0 (input, conformal target, q_mean) stays the input */
-  PetscCall(CSOutputResume(out, mesh, x0, &it, nreal, ck, x, mu, &resumed));
-  if (resumed) PetscCall(CSWillmoreFlowSetState(flow, it, ck));
-  PetscCall(PetscFree(ck));
+  ierr = CSOutputResume(out, mesh, x0, &it, nreal, ck, x, mu, &resumed);
+  if (!ierr && resumed) ierr = CSWillmoreFlowSetState(flow, it, ck);
+  PetscCall(PetscFree(ck)); /* on the error path too (a damaged checkpoint) */
+  PetscCall(ierr);
   PetscFunctionReturn(0);
 }
 

@@ -84,7 +84,7 @@ PetscErrorCode CSJSONAddString(CSJSON js, const char key[], const char v[])
   buf[k++] = '"';
   for (size_t i = 0; i < n; i++) {
     if (v[i] == '"' || v[i] == '\\') buf[k++] = '\\';
-    buf[k++] = (v[i] == '\n' || v[i] == '\t') ? ' ' : v[i];
+    buf[k++] = ((unsigned char)v[i] < 0x20 || v[i] == 0x7f) ? '?' : v[i]; /* control characters are not valid JSON */
   }
   buf[k++] = '"';
   buf[k]   = 0;
@@ -119,18 +119,16 @@ PetscErrorCode CSJSONAddRealArray(CSJSON js, const char key[], PetscInt n, const
 PetscErrorCode CSJSONWrite(CSJSON js, const char path[])
 {
   PetscMPIInt rank;
-  FILE       *fp;
+  CSFile      f;
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(js->comm, &rank));
-  if (!rank) {
-    PetscCall(CSPathMakeParents(path));
-    fp = fopen(path, "w");
-    PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "-summary: cannot open %s for writing", path);
-    fprintf(fp, "{\n");
-    for (PetscInt i = 0; i < js->n; i++) fprintf(fp, "  \"%s\": %s%s\n", js->e[i].key, js->e[i].val, i + 1 < js->n ? "," : "");
-    fprintf(fp, "}\n");
-    PetscCheck(!fclose(fp), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "-summary: error writing %s", path);
+  PetscCall(CSFileOpen(js->comm, (PetscBool)!rank, "-summary", path, PETSC_FALSE, &f));
+  if (f.fp) {
+    fprintf(f.fp, "{\n");
+    for (PetscInt i = 0; i < js->n; i++) fprintf(f.fp, "  \"%s\": %s%s\n", js->e[i].key, js->e[i].val, i + 1 < js->n ? "," : "");
+    fprintf(f.fp, "}\n");
   }
+  PetscCall(CSFileClose(js->comm, &f));
   PetscFunctionReturn(0);
 }
 

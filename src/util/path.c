@@ -20,14 +20,18 @@ PetscErrorCode CSPathExtension(const char path[], char ext[], size_t len)
    exists as a file is refused here, or by the open that follows. */
 PetscErrorCode CSPathMakeDir(const char dir[])
 {
-  char d[PETSC_MAX_PATH_LEN];
+  char d[PETSC_MAX_PATH_LEN], name[PETSC_MAX_PATH_LEN];
   PetscFunctionBeginUser;
   PetscCall(PetscStrncpy(d, dir, sizeof(d)));
   for (char *s = d + 1;; s++) {
     char c = *s;
     if (c && c != '/') continue;
     *s = 0;
-    PetscCheck(!mkdir(d, 0755) || errno == EEXIST, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "%s: cannot create the folder %s (%s)", dir, d, strerror(errno));
+    if (mkdir(d, 0755) && errno != EEXIST) {
+      int err = errno;
+      PetscCall(CSPathSanitize(d, name, sizeof(name)));
+      SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot create the folder %s (%s)", name, strerror(err));
+    }
     *s = c;
     if (!c) break;
   }
@@ -43,5 +47,27 @@ PetscErrorCode CSPathMakeParents(const char path[])
   if (!slash || slash == path) PetscFunctionReturn(0);
   PetscCall(PetscStrncpy(dir, path, PetscMin(sizeof(dir), (size_t)(slash - path + 1))));
   PetscCall(CSPathMakeDir(dir));
+  PetscFunctionReturn(0);
+}
+
+/* A path or name as it may be written into a file header or printed (issue 18, item 8): control characters
+   (a newline would add a line to an OBJ header, a \r breaks the JSON summary, an escape sequence drives the
+   terminal) become '?', and a very long one keeps its head and tail around "...", so a message naming it still
+   fits and ends with its reason. */
+PetscErrorCode CSPathSanitize(const char in[], char out[], size_t len)
+{
+  size_t n = strlen(in), k = 0, keep = len > 8 ? (len - 4) / 2 : 0, cap = PetscMin(len - 1, (size_t)CS_NAME_SHOWN);
+  PetscFunctionBeginUser;
+  if (n > cap) keep = (cap - 3) / 2;
+  for (size_t i = 0; i < n && k + 1 < len; i++) {
+    unsigned char c = (unsigned char)in[i];
+    if (n > cap && i == keep) {
+      for (int d = 0; d < 3; d++) out[k++] = '.';
+      i = n - keep - 1;
+      continue;
+    }
+    out[k++] = (char)((c < 0x20 || c == 0x7f) ? '?' : c);
+  }
+  out[k] = 0;
   PetscFunctionReturn(0);
 }

@@ -56,7 +56,7 @@ run $OTHER "$CS_BIN" $C -flow_max_it 10 -resume "$TMP/cgd.ck" -o "$TMP/cgd-res.o
 compare cgd
 
 # bad -resume: clear errors on every rank count
-EXPECT="no such checkpoint" expect_fail $MPIEXEC "$CS_BIN" $C -resume "$TMP/missing.ck"
+EXPECT="-resume .*missing.ck: cannot open for reading \(No such file" expect_fail $MPIEXEC "$CS_BIN" $C -resume "$TMP/missing.ck"
 EXPECT="written for 162 vertices" expect_fail $MPIEXEC "$CS_BIN" -task flow -flow_type cgd -gen icosphere -gen_level 3 -resume "$TMP/cgd.ck"
 EXPECT="other input positions" expect_fail $MPIEXEC "$CS_BIN" $C -gen_deform_bump 0.2 -resume "$TMP/cgd.ck"
 

@@ -359,8 +359,8 @@ static PetscErrorCode TestBadFiles(const char data[])
     const char *file, *where, *word;
   } bad[] = {
     {"empty.obj",                    "empty.obj:1:",                     "empty"                       },
-    {"truncated.off",                "truncated.off:5:",                 "truncated"                   },
-    {"truncated_binary.ply",         "truncated_binary.ply: element 1 (face) :", "truncated"            },
+    {"truncated.off",                "truncated.off:2:",                 "truncated"                   },
+    {"truncated_binary.ply",         "truncated_binary.ply:18:", "truncated"            },
     {"garbage.obj",                  "garbage.obj:4:",                   "garbage 'abc'"               },
     {"index_out_of_range.obj",       "index_out_of_range.obj:5:",        "out of range"                },
     {"nan.obj",                      "nan.obj:2:",                       "NaN"                         },

@@ -4,42 +4,29 @@
 #include "cs_methods_spin.h"
 #include "cs_util.h"
 
-/* Rank 0: n*ncomp numbers from a text file (whitespace or comma separated, '#' starts a comment) into a[]. */
+/* Rank 0: n*ncomp numbers from a value file (CSTokens: whitespace or comma separated, '#' comments) into a[]. */
 static PetscErrorCode ReadValuesFile(const char option[], const char path[], PetscInt n, PetscInt ncomp, const char what[], PetscScalar a[])
 {
-  FILE    *fp;
-  char     line[4096];
-  PetscInt count = 0, lineno = 0, want = n * ncomp;
+  CSTokens    t;
+  const char *tok;
+  size_t      len;
+  PetscInt    count = 0, want = n * ncomp, line;
+  int         bad   = 0;
+  double      v     = 0;
   PetscFunctionBeginUser;
-  fp = fopen(path, "r");
-  PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "%s %s: cannot open the file", option, path);
-  while (fgets(line, sizeof(line), fp)) {
-    char *s = line, *hash = strchr(line, '#');
-    lineno++;
-    if (hash) *hash = 0;
-    for (char *c = s; *c; c++)
-      if (*c == ',') *c = ' ';
-    while (1) {
-      char  *end;
-      double v;
-      while (*s == ' ' || *s == '\t' || *s == '\n' || *s == '\r') s++;
-      if (!*s) break;
-      v = strtod(s, &end);
-      if (end == s) {
-        fclose(fp);
-        SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "%s %s: line %" PetscInt_FMT ": not a number: '%.20s'", option, path, lineno, s);
-      }
-      if (PetscIsInfOrNanReal((PetscReal)v)) {
-        fclose(fp);
-        SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "%s %s: line %" PetscInt_FMT ": value %" PetscInt_FMT " is %s", option, path, lineno, count, PetscIsNanReal((PetscReal)v) ? "NaN" : "Inf");
-      }
-      if (count < want) a[count] = v;
-      count++;
-      s = end;
-    }
+  PetscCall(CSTokensLoad(option, path, &t));
+  while (CSTokensNext(&t, &tok, &len, &line) && !(bad = CSTokenReal(tok, len, &v))) {
+    if (count < want) a[count] = v;
+    count++;
   }
-  fclose(fp);
-  PetscCheck(count == want, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "%s %s: %" PetscInt_FMT " values, expected %" PetscInt_FMT " (%s)", option, path, count, want, what);
+  if (bad) {
+    char text[40], msg[PETSC_MAX_PATH_LEN + 128];
+    PetscCall(PetscSNPrintf(msg, sizeof(msg), "%s %s: line %" PetscInt_FMT ": value %" PetscInt_FMT " '%s' is %s", option, t.name, line, count + 1, CSTokenText(tok, len, text), bad == 1 ? "not a number" : "not finite"));
+    PetscCall(CSTokensDestroy(&t));
+    SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "%s", msg);
+  }
+  PetscCall(CSTokensDestroy(&t));
+  PetscCheck(count == want, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "%s %s: %" PetscInt_FMT " values, expected %" PetscInt_FMT " (%s)", option, t.name, count, want, what);
   PetscFunctionReturn(0);
 }
 

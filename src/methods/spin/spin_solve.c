@@ -612,7 +612,11 @@ PetscErrorCode CSSpinSolveEigen(CSSpin s, Vec x, CSRhoLocation loc, Vec rho, Vec
     PetscCall(EPSSetInitialSpace(s->eps, 1, &s->start));
     s->lap_its = 0;
     PetscCall(EPSSolve(s->eps));
-    PetscCall(CheckEPSConverged(s, 1, &nconv));
+    {
+      PetscErrorCode ierr = CheckEPSConverged(s, 1, &nconv);
+      if (ierr) PetscCall(VecDestroy(&xr)); /* no leak when the eigensolver did not converge */
+      PetscCall(ierr);
+    }
     PetscCall(EPSGetEigenpair(s->eps, 0, &kr, &ki, xr, NULL));
     if (PetscAbsScalar(ki) > 1e-8 * PetscAbsReal(kr)) PetscCall(PetscPrintf(s->mesh->comm, "Warning: spin: eigenvalue %g has imaginary part %g; using the real part\n", (double)kr, (double)PetscRealPart(ki)));
     PetscCall(EPSGetST(s->eps, &st));

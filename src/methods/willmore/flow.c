@@ -236,12 +236,11 @@ PetscErrorCode CSWillmoreFlowDestroy(CSWillmoreFlow *flow)
   PetscCall(CSWillmoreFlowMonitorCancel(F));
   if (F->ops.destroy) PetscCall((*F->ops.destroy)(F));
   PetscCall(VecDestroy(&F->xgood));
-  if (F->setupcalled) {
-    PetscCall(CSSaddleDestroy(&F->saddle));
-    PetscCall(CSMetricDestroy(&F->metric));
-    if (F->conformal) PetscCall(CSConformalConstraintDestroy(&F->cc));
-    if (F->normals) PetscCall(CSNormalConstraintDestroy(&F->nc));
-  }
+  /* also after a set-up that failed half-way (the parts are zeroed at creation; their destroys take NULL) */
+  PetscCall(CSSaddleDestroy(&F->saddle));
+  PetscCall(CSMetricDestroy(&F->metric));
+  PetscCall(CSConformalConstraintDestroy(&F->cc));
+  PetscCall(CSNormalConstraintDestroy(&F->nc));
   for (PetscInt j = 0; j < F->ng; j++) PetscCall(CSGlobalConstraintDestroy(&F->gc[j]));
   if (F->k) PetscCall(VecDestroyVecs(F->k, &F->rows));
   PetscCall(PetscFree(F->dnu2));
