@@ -229,13 +229,25 @@ static int HistoryWritable(int argc, char **argv)
   return 1;
 }
 
+/* A missing -options_file made PetscInitialize print its full traceback with the configure line (issue 18, item
+   10): every rank checks the command line's option files here, before MPI starts, with one line. */
+static int OptionsFilesReadable(int argc, char **argv)
+{
+  for (int i = 1; i + 1 < argc; i++) {
+    if (strcmp(argv[i], "-options_file") || !access(argv[i + 1], R_OK)) continue;
+    fprintf(stderr, "confsurf: error: -options_file %s: cannot read it (%s)\n", argv[i + 1], strerror(errno));
+    return 0;
+  }
+  return 1;
+}
+
 int main(int argc, char **argv)
 {
   PetscErrorCode ierr;
   PetscBool      bad = PETSC_FALSE, traceback = PETSC_FALSE, helpmode, task;
 
   helpmode = HelpFromArgs(&argc, argv);
-  if (!HistoryWritable(argc, argv)) return 1;
+  if (!HistoryWritable(argc, argv) || !OptionsFilesReadable(argc, argv)) return 1;
   SingletonDefaults();
   PetscCall(SlepcInitialize(&argc, &argv, NULL, help));
   if (helpmode) {

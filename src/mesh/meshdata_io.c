@@ -27,8 +27,11 @@ PetscErrorCode CSMeshDataRead(const char path[], CSMeshData *md)
   PetscCall(CSPathSanitize(path, name, sizeof(name)));
   r.path = name;
   PetscCall(CSPathExtension(path, ext, sizeof(ext)));
-  PetscCheck(!strcmp(ext, "obj") || !strcmp(ext, "off") || !strcmp(ext, "ply"), PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "%s: unknown mesh file extension '.%s' (expected .obj, .off or .ply)", name, ext);
-  PetscCall(CSFileLoad("mesh", path, &r.buf, &r.len));
+  PetscCall(CSFileLoad("mesh", path, &r.buf, &r.len)); /* first: a folder or FIFO is named as such, whatever its name */
+  if (strcmp(ext, "obj") && strcmp(ext, "off") && strcmp(ext, "ply")) {
+    PetscCall(PetscFree(r.buf));
+    SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "%s: unknown mesh file extension '.%s' (expected .obj, .off or .ply)", name, ext);
+  }
   CSCaptureError(ierr, ReadFormat(&r, ext));
   if (ierr && !r.msg[0]) {
     const char *text;

@@ -82,3 +82,7 @@ EXPECT="not positive definite" expect_fail run -task flow -mesh "$TMP/sliver.obj
 echo "ok  solver failure: -o (162 vertices) and -summary (stop_reason error) written"
 printf 'v 0 0 0\nv 1e300 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 3 1 4\n' > "$TMP/big.obj"
 EXPECT="big.obj: vertex 1 has the coordinate 1e\+300, beyond 1e\+100" expect_fail run -task info -mesh "$TMP/big.obj"
+# item 10: a missing -options_file is one line (before: PETSc's traceback with the configure line); item 11: a folder
+# without an extension is named a folder (before: "unknown mesh file extension")
+EXPECT="^confsurf: error: -options_file $TMP/none.opts: cannot read it" expect_fail run -options_file "$TMP/none.opts"
+EXPECT="mesh $TMP: is a folder" expect_fail run -task info -mesh "$TMP"
