@@ -118,6 +118,7 @@ PETSC_EXTERN PetscErrorCode CSWillmoreFlowSetState(CSWillmoreFlow flow, PetscInt
 /* Flow kinds: a strategy per file in src/methods/willmore/ (cgd.c, pgd.c, gd.c), registered by name. */
 typedef struct _CSWillmoreFlowOps *CSWillmoreFlowOps;
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowRegister(const char name[], PetscErrorCode (*create)(CSWillmoreFlow));
+PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetTypeList(PetscFunctionList *list); /* the registered kinds (not to be freed) */
 /* Energies of the flow (-flow_energy), registered by name: willmore, area, fairing. */
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowEnergyRegister(const char name[], PetscErrorCode (*create)(CSMesh, Vec x0, PetscReal eps, CSEnergy *));
 

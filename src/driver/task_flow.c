@@ -89,14 +89,15 @@ static PetscErrorCode FlowRegisterAll(void)
 {
   PetscFunctionBeginUser;
   if (CSFlowList) PetscFunctionReturn(0);
-  PetscCall(PetscFunctionListAdd(&CSFlowList, "cgd", CSFlowWillmore));
-  PetscCall(PetscFunctionListAdd(&CSFlowList, "pgd", CSFlowWillmore));
-  PetscCall(PetscFunctionListAdd(&CSFlowList, "gd", CSFlowWillmore));
-  PetscCall(PetscFunctionListAdd(&CSFlowList, "newton", CSFlowWillmore));
-  PetscCall(PetscFunctionListAdd(&CSFlowList, "alm", CSFlowWillmore));
-  for (int i = 0; i < 5; i++) { /* the fairing baselines (crane2013 Fig. 17) */
-    const char *baseline[] = {"emcf", "ebilap", "imcf", "ibilap", "cmcf"};
-    PetscCall(PetscFunctionListAdd(&CSFlowList, baseline[i], CSFlowWillmore));
+  { /* every kind of the Willmore flow (cgd, pgd, gd, newton, alm, the fairing baselines) is a flow type */
+    PetscFunctionList kinds;
+    const char      **names;
+    int               n;
+    PetscCall(CSWillmoreFlowGetTypeList(&kinds));
+    PetscCall(PetscFunctionListGet(kinds, &names, &n));
+    for (int i = 0; i < n; i++)
+      if (names[i] && names[i][0]) PetscCall(PetscFunctionListAdd(&CSFlowList, names[i], CSFlowWillmore));
+    PetscCall(PetscFree(names));
   }
   PetscCall(PetscFunctionListAdd(&CSFlowList, "bs", CSFlowBS));
   PetscCall(PetscFunctionListAdd(&CSFlowList, "conformal", CSFlowConformal));

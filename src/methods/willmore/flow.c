@@ -42,6 +42,16 @@ static PetscErrorCode RegisterAll(void)
   PetscFunctionReturn(0);
 }
 
+/* The registered kinds (cgd, pgd, gd, newton, alm, the fairing baselines, and any a user registers): the one list
+   that -flow_type's help and the driver's flow types are read from. */
+PetscErrorCode CSWillmoreFlowGetTypeList(PetscFunctionList *list)
+{
+  PetscFunctionBeginUser;
+  PetscCall(RegisterAll());
+  *list = CSWillmoreFlowList;
+  PetscFunctionReturn(0);
+}
+
 /* Defaults of every option (SetFromOptions may change them). */
 static void SetDefaults(CSWillmoreFlow F)
 {

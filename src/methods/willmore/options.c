@@ -141,12 +141,13 @@ PetscErrorCode CSWillmoreFlowSetFromOptions(CSWillmoreFlow F)
 {
   char              type[16];
   PetscBool         set;
-  PetscFunctionList energies;
+  PetscFunctionList energies, kinds;
   PetscFunctionBeginUser;
   PetscCall(CSWillmoreFlowEnergyList(&energies));
+  PetscCall(CSWillmoreFlowGetTypeList(&kinds));
   PetscCall(PetscStrncpy(type, F->type, sizeof(type)));
   PetscOptionsBegin(F->comm, F->prefix, "Constrained Willmore flow (soliman2021)", NULL);
-  PetscCall(PetscOptionsString("-type", "cgd|pgd|gd|newton|alm; fairing baselines emcf|ebilap|imcf|ibilap|cmcf", NULL, type, type, sizeof(type), &set));
+  PetscCall(PetscOptionsFList("-type", "Flow kind", NULL, kinds, type, type, sizeof(type), &set));
   if (set) PetscCall(CSWillmoreFlowSetType(F, type));
   PetscCall(StepOptions(F, PetscOptionsObject));
   PetscCall(ProblemOptions(F, energies, PetscOptionsObject));
