@@ -152,6 +152,7 @@ PETSC_EXTERN PetscErrorCode CSGeometryMeanCurvature(CSMesh mesh, Vec x, Vec h);
 PETSC_EXTERN PetscErrorCode CSGeometrySignedMeanCurvature(CSMesh mesh, Vec x, Vec H, Vec N, Vec area);
 /* Total area, enclosed volume (soliman2021 App. B.2: 1/6 sum f_i.(f_j x f_k)). */
 PETSC_EXTERN PetscErrorCode CSGeometryAreaVolume(CSMesh mesh, Vec x, PetscReal *area, PetscReal *volume);
+PETSC_EXTERN PetscErrorCode CSGeometryBoundaryLength(CSMesh mesh, Vec x, PetscReal *len); /* sum of the boundary edge lengths */
 /* Quasi-conformal error (crane2011 Sec. 6.1): per face the ratio sigma_max/sigma_min of the affine map from
    the reference triangle to the current one; q_mean is weighted by reference face area. q may be NULL. */
 PETSC_EXTERN PetscErrorCode CSGeometryQuasiConformal(CSMesh mesh, Vec xref, Vec x, Vec q, PetscReal *qmean, PetscReal *qmax);

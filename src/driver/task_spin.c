@@ -191,26 +191,6 @@ static PetscErrorCode SpinLeastSquares(CSSpin spin, CSMesh mesh, CSOutput *out)
   PetscFunctionReturn(0);
 }
 
-/* total length of the boundary edges (each lies in one face, and every face on one rank) */
-static PetscErrorCode BoundaryLength(CSMesh mesh, Vec x, PetscReal *len)
-{
-  Vec              xl;
-  const PetscReal *p;
-  PetscReal        l = 0;
-  PetscFunctionBeginUser;
-  PetscCall(CSMeshGetLocalPositions(mesh, x, &xl, &p));
-  for (CSFaceIter F = CS_FACE_ITER_INIT; CSMeshFaceNext(mesh, p, &F);)
-    for (int k = 0; k < 3; k++)
-      if (mesh->edgeBoundary[F.e[k]]) {
-        PetscReal e[3];
-        CSVecSub(F.c[(k + 1) % 3], F.c[(k + 2) % 3], e);
-        l += CSVecNorm(e);
-      }
-  PetscCall(CSMeshRestoreLocalPositions(mesh, x, &xl, &p));
-  PetscCall(MPIU_Allreduce(&l, len, 1, MPIU_REAL, MPIU_SUM, mesh->comm));
-  PetscFunctionReturn(0);
-}
-
 /* -spin_flow_steps N (crane2011 Sec. 7.3, Fig. 16, 17): the conformal Willmore flow on a disk, rho(t) = -t H,
    taken as N steps of rho = -tau H of the current surface, each a spin transformation with the boundary
    condition of Sec. 5.7 (-spin_boundary, default keep). History per step: area, boundary length, the ratio
@@ -231,7 +211,7 @@ static PetscErrorCode SpinFlow(CSSpin spin, CSMesh mesh, PetscInt N, PetscReal t
   for (PetscInt k = 0; k <= N; k++) {
     PetscReal row[5];
     PetscCall(CSGeometryAreaVolume(mesh, x, &area, &vol));
-    PetscCall(BoundaryLength(mesh, x, &len));
+    PetscCall(CSGeometryBoundaryLength(mesh, x, &len));
     if (k) PetscCall(CSGeometryQuasiConformal(mesh, mesh->x, x, NULL, &qmean, &qmax));
     row[0] = k; row[1] = area; row[2] = len; row[3] = area / (len * len); row[4] = qmean;
     if (hist) PetscCall(CSHistoryAppend(hist, 5, row));
