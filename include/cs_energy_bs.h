@@ -46,12 +46,25 @@ PETSC_EXTERN PetscErrorCode CSEnergyWillmoreBSSetIslands(CSEnergy e, Vec vmask);
    its minimum over the interior vertices and the number below -1e-10 (src/energy/bs_gauss_bound.c). */
 PETSC_EXTERN PetscErrorCode CSEnergyWillmoreBSGaussBound(CSEnergy e, Vec x, Vec wk, PetscReal *wkmin, PetscInt *nneg);
 
-/* Sec. 3.2 "Gradient Singularity": with single, a vertex where exactly one beta of its gradient's support vanishes
-   (|sin beta| < beta_eps) gets the paper's steepest descent direction (the regular negative gradient g split along
-   the circle of the four co-circular points: g_p, plus g_o (1 - R/|g_o|) when the rate R of that beta is below
-   |g_o|) instead of the heuristic's plain omission; vertices with several keep the heuristic. Gradient only (K
-   leaves those diamonds out either way). */
-PETSC_EXTERN PetscErrorCode CSEnergyWillmoreBSSetSingularRule(CSEnergy e, PetscBool single);
+/* Sec. 3.2 "Gradient Singularity", the direction at a vertex where betas of its gradient's support vanish
+   (|sin beta| < beta_eps). HEURISTIC: those diamonds contribute no gradient (the paper's practice). SINGLE: where
+   exactly one vanishes, the paper's steepest descent (the regular negative gradient g split along the circle of
+   the four co-circular points: g_p, plus g_o (1 - R/|g_o|) when the rate R of that beta is below |g_o|); vertices
+   with several keep the heuristic. DELTA: at every vertex with one or more, the minimiser of the paper's delta
+   (CSBSSingularDescent; for one it is SINGLE's closed form). Gradient only (K leaves those diamonds out either way). */
+typedef enum {
+  CS_BS_SINGULAR_HEURISTIC = 0,
+  CS_BS_SINGULAR_SINGLE    = 1,
+  CS_BS_SINGULAR_DELTA     = 2
+} CSBSSingular;
+PETSC_EXTERN const char *const CSBSSingularRules[]; /* "heuristic", "single", "delta", then PetscOptionsEnum's trailer */
+PETSC_EXTERN PetscErrorCode    CSEnergyWillmoreBSSetSingularRule(CSEnergy e, CSBSSingular rule);
+
+/* Sec. 3.2's delta minimisation at one vertex (src/energy/bs_singular_descent.c): g the regular negative gradient,
+   n vanishing betas with unit circle tangents t (3n) and rates R (n, > 0); d the steepest descent direction
+   (|d| = -delta; 0 when delta >= 0), its the block-coordinate sweeps used (may be NULL). n <= CS_BS_SINGULAR_MAX. */
+#define CS_BS_SINGULAR_MAX 24
+PETSC_EXTERN PetscErrorCode CSBSSingularDescent(const PetscReal g[3], PetscInt n, const PetscReal t[], const PetscReal R[], PetscReal d[3], PetscInt *its);
 
 /* The linearised Hessian K (Sec. 4): n x n scalar AIJ on dmV1's layout with grad W = K x per coordinate
    (K collects the Eq. 1 coefficients of every diamond; rows sum to zero). Rows and columns of fixed

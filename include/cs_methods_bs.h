@@ -38,6 +38,12 @@ typedef enum {
   CS_BS_PROBLEM_EULER
 } CSBSProblem;
 PETSC_EXTERN const char *const CSBSProblems[];
+/* -bs_islands_type: what the -bs_islands file lists (Sec. 3.3, "islands of internal vertices (or faces)") */
+typedef enum {
+  CS_BS_ISLANDS_VERTEX,
+  CS_BS_ISLANDS_FACE
+} CSBSIslandsType;
+PETSC_EXTERN const char *const CSBSIslandsTypes[];
 
 /* Why the flow stopped; CSBSConvergedReasons[reason] is the summary's stop_reason. */
 typedef enum {

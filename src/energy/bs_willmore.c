@@ -29,7 +29,8 @@
 #include "cs_mesh_adjacency.h"
 #include "cs_quaternion.h"
 
-const char *const CSBSBoundaries[] = {"fixed", "free", "CSBSBoundary", "CS_BS_BOUNDARY_", NULL};
+const char *const CSBSBoundaries[]    = {"fixed", "free", "CSBSBoundary", "CS_BS_BOUNDARY_", NULL};
+const char *const CSBSSingularRules[] = {"heuristic", "single", "delta", "CSBSSingular", "CS_BS_SINGULAR_", NULL};
 
 typedef struct {
   CSBSBoundary bc;
@@ -44,8 +45,7 @@ typedef struct {
   PetscBool   *fixed;    /* nv */
   PetscInt     nfixed;
   PetscBool   *islands;  /* nv, or NULL: user-fixed vertices (Sec. 3.3 "islands"), fixed with their one-ring */
-  PetscBool    single;   /* Sec. 3.2 rule for a single vanishing beta at a vertex (else the eps heuristic) */
-  DM           dmV5;     /* 5 dofs per vertex: count, circle tangent, rate R of the vanishing betas */
+  CSBSSingular rule;     /* Sec. 3.2: the eps heuristic, the rule for a single vanishing beta, or delta */
   PetscReal   *wEdge;    /* ne: multiplicity of beta(e) in W */
   Vec          Wg;       /* dmV1 work vector: per-vertex W_i when the caller does not want them */
   PetscReal   *gkl;      /* 6*ne scratch: weighted gradient rows of l (side 0) and k (side 1) */
@@ -495,71 +495,106 @@ static void SingularData(const PetscReal *const P[4], int r, PetscReal h, PetscR
   *R = beta / h;
 }
 
-/* Sec. 3.2: where exactly one beta in the support of the gradient at v_i vanishes (|sin beta| < eps), with g the
-   sum of the regular negative gradients and R the rate of that beta for moves orthogonal to its circle C, the
-   steepest descent is g_p if R > |g_o|, else g_p + g_o (1 - R/|g_o|) (g = g_p + g_o, parallel/orthogonal to C).
-   Each vertex of an inactive diamond is counted by one rank (i, j: the edge owner; k, l: the rank of their face);
-   vertices with several vanishing betas keep the eps heuristic (the delta minimisation is not built). */
-static PetscErrorCode BSSingularRule(BSCtx *c, CSMesh m, const PetscReal *p, const PetscScalar *ea, Vec g)
+/* The vanishing betas of the gradient's support per vertex, as lists (Sec. 3.2): each local vertex gets a block
+   [count, (t_n, w R_n) x CS_BS_SINGULAR_MAX] of the diamonds this rank counts (i, j: the edge owner; k, l: the
+   rank of their face), so every (diamond, vertex) pair is in exactly one block. */
+static PetscErrorCode BSSingularLists(BSCtx *c, CSMesh m, const PetscReal *p, const PetscScalar *ea, PetscReal *L)
 {
-  CSLocalSum         s;
-  Vec                S;
-  const PetscScalar *sa;
-  PetscScalar       *ga;
-  PetscInt           k = 0;
+  const PetscInt unit = 1 + 4 * CS_BS_SINGULAR_MAX;
   PetscFunctionBeginUser;
-  if (!c->dmV5) PetscCall(CSMeshCreateFieldDM(m->dm, 0, 5, "bs_singular5", &c->dmV5));
-  PetscCall(CSLocalSumBegin(c->dmV5, &s));
+  PetscCall(PetscArrayzero(L, unit * m->nv));
   for (PetscInt e = 0; e < m->ne; e++) {
     PetscInt         i = m->edgeVert[2 * e], j = m->edgeVert[2 * e + 1], vtx[4];
     PetscBool        mine[4];
     const PetscReal *P[4];
-    PetscReal        h;
+    PetscReal        h, dij[3];
     if (m->edgeBoundary[e] || c->act[e] || c->wEdge[e] == 0) continue;
     P[0] = ea + 6 * e + 3; P[1] = p + 3 * j; P[2] = ea + 6 * e; P[3] = p + 3 * i;
     vtx[0] = c->adj->edgeOpp[2 * e + 1]; vtx[1] = j; vtx[2] = c->adj->edgeOpp[2 * e]; vtx[3] = i;
     mine[0] = (PetscBool)(c->adj->edgeFace[2 * e + 1] >= 0); mine[2] = (PetscBool)(c->adj->edgeFace[2 * e] >= 0);
     mine[1] = mine[3] = m->edgeOwned[e];
-    {
-      PetscReal d[3];
-      CSVecSub(P[1], P[3], d);
-      h = 1e-4 * CSVecNorm(d);
-    }
+    CSVecSub(P[1], P[3], dij);
+    h = 1e-4 * CSVecNorm(dij);
     for (int r = 0; r < 4; r++) {
-      PetscReal t[3], R;
+      PetscReal *b = L + unit * vtx[r], R;
+      PetscInt   n = (PetscInt)b[0];
       if (!mine[r] || c->fixed[vtx[r]]) continue;
-      SingularData(P, r, h, t, &R);
-      s.a[5 * vtx[r]] += 1;
-      for (int d = 0; d < 3; d++) s.a[5 * vtx[r] + 1 + d] += t[d];
-      s.a[5 * vtx[r] + 4] += c->wEdge[e] * R;
+      PetscCheck(n < CS_BS_SINGULAR_MAX, PETSC_COMM_SELF, PETSC_ERR_SUP, "bs -singular: more than %d vanishing betas at one vertex", CS_BS_SINGULAR_MAX);
+      SingularData(P, r, h, b + 1 + 4 * n, &R);
+      b[1 + 4 * n + 3] = c->wEdge[e] * R;
+      b[0] += 1;
     }
   }
-  PetscCall(DMGetGlobalVector(c->dmV5, &S));
-  PetscCall(CSLocalSumEnd(&s, S));
-  PetscCall(VecGetArrayRead(S, &sa));
+  PetscFunctionReturn(0);
+}
+
+/* Sec. 3.2 at one vertex from its n vanishing betas (t, w R in blocks of 4); dn the regular negative gradient,
+   replaced by the direction of the rule (see cs_energy_bs.h). */
+static PetscErrorCode BSSingularVertex(CSBSSingular rule, PetscInt n, const PetscReal *tr, PetscReal dn[3])
+{
+  PetscReal t[3 * CS_BS_SINGULAR_MAX], R[CS_BS_SINGULAR_MAX], d[3];
+  PetscFunctionBeginUser;
+  if (n == 0 || (rule == CS_BS_SINGULAR_SINGLE && n > 1)) PetscFunctionReturn(0); /* the heuristic's direction */
+  for (PetscInt k = 0; k < n; k++) {
+    for (int q = 0; q < 3; q++) t[3 * k + q] = tr[4 * k + q];
+    R[k] = tr[4 * k + 3];
+  }
+  if (rule == CS_BS_SINGULAR_SINGLE) { /* the paper's closed form for one: g_p if R > |g_o|, else g_p + g_o (1 - R/|g_o|) */
+    PetscReal dp = CSVecDot(dn, t), dO[3], no, f;
+    for (int q = 0; q < 3; q++) dO[q] = dn[q] - dp * t[q];
+    no = CSVecNorm(dO);
+    f  = no > R[0] ? 1 - R[0] / no : 0;
+    for (int q = 0; q < 3; q++) d[q] = dp * t[q] + f * dO[q];
+  } else PetscCall(CSBSSingularDescent(dn, n, t, R, d, NULL));
+  for (int q = 0; q < 3; q++) dn[q] = d[q];
+  PetscFunctionReturn(0);
+}
+
+/* Sec. 3.2 "Gradient Singularity" (rules single and delta): the lists of every copy of a vertex are gathered on its
+   owner through the dmV1 section SF (one block per copy), then the vertex's direction replaces its gradient. */
+static PetscErrorCode BSSingularRule(BSCtx *c, CSMesh m, const PetscReal *p, const PetscScalar *ea, Vec g)
+{
+  const PetscInt unit = 1 + 4 * CS_BS_SINGULAR_MAX;
+  PetscSF        sf;
+  MPI_Datatype   blk;
+  const PetscInt *deg;
+  PetscInt       nroots, nmulti = 0, off = 0, k = 0, cnt[3] = {0, 0, 0}; /* vertices with one, several, d = 0 */
+  PetscReal     *L, *G;
+  PetscScalar   *ga;
+  PetscFunctionBeginUser;
+  PetscCall(PetscMalloc1(unit * m->nv, &L));
+  PetscCall(BSSingularLists(c, m, p, ea, L));
+  PetscCall(DMGetSectionSF(m->dmV1, &sf));
+  PetscCall(PetscSFGetGraph(sf, &nroots, NULL, NULL, NULL));
+  PetscCall(PetscSFComputeDegreeBegin(sf, &deg));
+  PetscCall(PetscSFComputeDegreeEnd(sf, &deg));
+  for (PetscInt r = 0; r < nroots; r++) nmulti += deg[r];
+  PetscCall(PetscMalloc1(unit * PetscMax(nmulti, 1), &G));
+  PetscCallMPI(MPI_Type_contiguous((PetscMPIInt)unit, MPIU_REAL, &blk));
+  PetscCallMPI(MPI_Type_commit(&blk));
+  PetscCall(PetscSFGatherBegin(sf, blk, L, G));
+  PetscCall(PetscSFGatherEnd(sf, blk, L, G));
+  PetscCallMPI(MPI_Type_free(&blk));
   PetscCall(VecGetArray(g, &ga));
-  for (PetscInt v = 0; v < m->nv; v++) {
-    PetscReal dn[3], t[3], dp = 0, dO[3], no = 0, f;
-    if (!m->vertOwned[v]) continue;
-    if (PetscRealPart(sa[5 * k]) == 1) {
-      for (int d = 0; d < 3; d++) {
-        dn[d] = -PetscRealPart(ga[3 * k + d]); /* the regular negative gradient */
-        t[d]  = PetscRealPart(sa[5 * k + 1 + d]);
-        dp += dn[d] * t[d];
-      }
-      for (int d = 0; d < 3; d++) {
-        dO[d] = dn[d] - dp * t[d];
-        no += dO[d] * dO[d];
-      }
-      no = PetscSqrtReal(no);
-      f  = no > PetscRealPart(sa[5 * k + 4]) ? 1 - PetscRealPart(sa[5 * k + 4]) / no : 0;
-      for (int d = 0; d < 3; d++) ga[3 * k + d] = -(dp * t[d] + f * dO[d]);
+  for (PetscInt r = 0; r < nroots; r++, k++) {
+    PetscReal tr[4 * CS_BS_SINGULAR_MAX], dn[3];
+    PetscInt  n = 0;
+    for (PetscInt b = 0; b < deg[r]; b++, off++) { /* the copies' lists, one after the other */
+      const PetscReal *B = G + unit * off;
+      PetscCheck(n + (PetscInt)B[0] <= CS_BS_SINGULAR_MAX, PETSC_COMM_SELF, PETSC_ERR_SUP, "bs -singular: more than %d vanishing betas at one vertex", CS_BS_SINGULAR_MAX);
+      PetscCall(PetscArraycpy(tr + 4 * n, B + 1, 4 * (PetscInt)B[0]));
+      n += (PetscInt)B[0];
     }
-    k++;
+    for (int q = 0; q < 3; q++) dn[q] = -PetscRealPart(ga[3 * k + q]); /* the regular negative gradient */
+    PetscCall(BSSingularVertex(c->rule, n, tr, dn));
+    for (int q = 0; q < 3; q++) ga[3 * k + q] = -dn[q];
+    if (n) cnt[n > 1]++;
+    if (n && CSVecNorm(dn) == 0) cnt[2]++;
   }
+  PetscCall(PetscInfo(NULL, "bs -singular %s: owned vertices with one vanishing beta %" PetscInt_FMT ", several %" PetscInt_FMT ", zero direction %" PetscInt_FMT "\n", CSBSSingularRules[c->rule], cnt[0], cnt[1], cnt[2]));
   PetscCall(VecRestoreArray(g, &ga));
-  PetscCall(VecRestoreArrayRead(S, &sa));
-  PetscCall(DMRestoreGlobalVector(c->dmV5, &S));
+  PetscCall(PetscFree(G));
+  PetscCall(PetscFree(L));
   PetscFunctionReturn(0);
 }
 
@@ -615,7 +650,7 @@ static PetscErrorCode BSEvaluate(CSEnergy en, Vec x, PetscReal *Wout, Vec Wv, Ve
     PetscCall(CSLocalSumEnd(&vs, NULL));
   }
   if (g) PetscCall(CSLocalSumEnd(&gs, g));
-  if (g && c->single) PetscCall(BSSingularRule(c, m, p, es.a, g));
+  if (g && c->rule != CS_BS_SINGULAR_HEURISTIC) PetscCall(BSSingularRule(c, m, p, es.a, g));
   PetscCall(CSLocalSumEnd(&es, NULL));
   PetscCall(CSMeshRestoreLocalPositions(m, x, &xl, &p));
   {
@@ -667,7 +702,6 @@ static PetscErrorCode BSDestroy(CSEnergy e)
   PetscCall(DMDestroy(&c->dmE6));
   PetscCall(VecDestroy(&c->Wg));
   PetscCall(DMDestroy(&c->dmV6));
-  PetscCall(DMDestroy(&c->dmV5));
   PetscCall(PetscFree(c->oppFixed));
   PetscCall(PetscFree(c->fixed));
   PetscCall(PetscFree(c->islands));
@@ -728,10 +762,10 @@ PetscErrorCode CSEnergyWillmoreBSSetIslands(CSEnergy e, Vec vmask)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CSEnergyWillmoreBSSetSingularRule(CSEnergy e, PetscBool single)
+PetscErrorCode CSEnergyWillmoreBSSetSingularRule(CSEnergy e, CSBSSingular rule)
 {
   PetscFunctionBeginUser;
-  ((BSCtx *)e->ctx)->single = single;
+  ((BSCtx *)e->ctx)->rule = rule;
   PetscFunctionReturn(0);
 }
 

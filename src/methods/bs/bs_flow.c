@@ -5,6 +5,7 @@
 
 const char *const CSBSSchemes[]  = {"semi", "tao", "CSBSScheme", "CS_BS_SCHEME_", NULL};
 const char *const CSBSProblems[] = {"static", "euler", "CSBSProblem", "CS_BS_PROBLEM_", NULL};
+const char *const CSBSIslandsTypes[] = {"vertex", "face", "CSBSIslandsType", "CS_BS_ISLANDS_", NULL};
 static const char *const ReasonsShifted[] = {"stalled", "diverged", "not_converged", "rejections", "max_it", "iterating", "converged", "energy_target"};
 const char *const       *CSBSConvergedReasons = ReasonsShifted + 5;
 
@@ -93,19 +94,9 @@ PetscErrorCode CSBSFlowSetFromOptions(CSBSFlow F)
   PetscCall(PetscOptionsReal("-dt_min_rel", "semi: stop as stalled when dt falls below this times the initial dt", NULL, F->dt_min_rel, &F->dt_min_rel, NULL));
   PetscCall(PetscOptionsReal("-max_area_ratio", "semi: stop with the last good state when the total area, or max(A/A0)/min(A/A0) of the vertex areas, exceeds this (0: off)", NULL, F->max_area_ratio, &F->max_area_ratio, NULL));
   PetscCall(PetscOptionsReal("-energy_target", "semi: stop when W is at or below this (stop_reason energy_target)", NULL, F->energy_target, &F->energy_target, &F->energy_target_set));
-  {
-    const char *types[] = {"vertex", "face"};
-    PetscInt    it      = F->islands_faces;
-    PetscCall(PetscOptionsString("-islands", "File of 0-based vertex (or face) indices in file order held fixed with their one-ring (Sec. 3.3, islands)", NULL, F->islands, F->islands, sizeof(F->islands), NULL));
-    PetscCall(PetscOptionsEList("-islands_type", "What -islands lists", NULL, types, 2, types[it], &it, NULL));
-    F->islands_faces = (PetscBool)(it == 1);
-  }
-  {
-    const char *rules[] = {"heuristic", "single"};
-    PetscInt    ir      = F->singular_single;
-    PetscCall(PetscOptionsEList("-singular", "Vanishing beta (Sec. 3.2): heuristic (its gradient set to 0) or single (the paper's steepest descent where one beta at a vertex vanishes)", NULL, rules, 2, rules[ir], &ir, NULL));
-    F->singular_single = (PetscBool)(ir == 1);
-  }
+  PetscCall(PetscOptionsString("-islands", "File of 0-based vertex (or face) indices in file order held fixed with their one-ring (Sec. 3.3, islands)", NULL, F->islands, F->islands, sizeof(F->islands), NULL));
+  PetscCall(PetscOptionsEnum("-islands_type", "What -islands lists", "CSBSFlowSetFromOptions", CSBSIslandsTypes, (PetscEnum)F->islands_type, (PetscEnum *)&F->islands_type, NULL));
+  PetscCall(PetscOptionsEnum("-singular", "Vanishing beta (Sec. 3.2): heuristic (its gradient set to 0), single (the paper's steepest descent where one beta at a vertex vanishes) or delta (the paper's delta minimisation, any number)", "CSBSFlowSetFromOptions", CSBSSingularRules, (PetscEnum)F->singular, (PetscEnum *)&F->singular, NULL));
   PetscCall(PetscOptionsBool("-monotone", "semi: reject steps that increase W (false: accept them, as needed when many diamonds start at beta = 0)", NULL, F->monotone, &F->monotone, NULL));
   PetscOptionsEnd();
   PetscCall(CheckOptions(F));
@@ -163,7 +154,7 @@ static PetscErrorCode SetIslands(CSBSFlow F)
   PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%sislands", F->hdr.prefix ? F->hdr.prefix : ""));
   PetscCheck(F->bc == CS_BS_BOUNDARY_FIXED, F->mesh->comm, PETSC_ERR_ARG_INCOMP, "%s needs -%sboundary fixed (islands are G1 data, Sec. 3.3)", opt, F->hdr.prefix ? F->hdr.prefix : "");
   PetscCall(DMCreateGlobalVector(F->mesh->dmV1, &m));
-  PetscCall(CSMeshReadIndexMask(F->mesh, opt, F->islands, F->islands_faces, m));
+  PetscCall(CSMeshReadIndexMask(F->mesh, opt, F->islands, (PetscBool)(F->islands_type == CS_BS_ISLANDS_FACE), m));
   PetscCall(CSEnergyWillmoreBSSetIslands(F->bs, m));
   PetscCall(VecDestroy(&m));
   PetscFunctionReturn(0);
@@ -178,7 +169,7 @@ PetscErrorCode CSBSFlowSetUp(CSBSFlow F)
   PetscCall(CSEnergyCreateWillmoreBS(mesh, F->bc, F->beta_eps, &F->bs));
   if (F->hessian_eps_set) PetscCall(CSEnergyWillmoreBSSetHessianEps(F->bs, F->hessian_eps));
   if (F->islands[0]) PetscCall(SetIslands(F));
-  PetscCall(CSEnergyWillmoreBSSetSingularRule(F->bs, F->singular_single));
+  PetscCall(CSEnergyWillmoreBSSetSingularRule(F->bs, F->singular));
   PetscCall(CSEnergyWillmoreBSGetFixed(F->bs, &F->fixed, &F->nfixed));
   PetscCall(VecDuplicate(mesh->x, &F->x0));
   PetscCall(VecCopy(mesh->x, F->x0));

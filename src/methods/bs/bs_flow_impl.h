@@ -32,8 +32,8 @@ struct _p_CSBSFlow {
   PetscBool    hessian_eps_set, dt_set, monotone;
   PetscInt     max_it, max_rej;
   char         islands[PETSC_MAX_PATH_LEN]; /* -bs_islands FILE (Sec. 3.3), "" for none */
-  PetscBool    islands_faces;               /* -bs_islands_type face: the file lists faces */
-  PetscBool    singular_single;             /* -bs_singular single (Sec. 3.2) */
+  CSBSIslandsType islands_type;             /* -bs_islands_type: the file lists vertices or faces */
+  CSBSSingular    singular;                 /* -bs_singular (Sec. 3.2) */
 
   /* state */
   CSEnergy         bs;
