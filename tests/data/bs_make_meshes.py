@@ -11,10 +11,22 @@ Run from the repository root after building: python3 tests/data/bs_make_meshes.p
                                fill: the "hole" of Fig. 10, filled C0 but not G1.
   tests/data/bs_torus_coarse2.obj  the generator's coarse torus (-gen torus -gen_n 8 -gen_m 4, R 1, r 0.4)
                                subdivided linearly (midpoints, no smoothing) twice: the input of Fig. 8.
+  meshes/bs_fig9_pipe.obj      half of bs_torus_coarse2.obj (y >= 0: two boundary loops in the planes u = 0 and
+                               u = pi), its boundary strip (boundary + one-ring, the G1 data) moved onto the torus
+                               of revolution R 1, r 0.4, so the boundary loops are circles: the pipe of Fig. 9
+                               ("in essence half the torus example with fixed boundaries").
+  meshes/bs_fig10_hexhole.obj  a six-sided hole of the sphere through the cube's vertices (centre (1/2,1/2,1/2),
+                               radius sqrt(3)/2) around the corner (0,0,0): the three faces of the unit cube at that
+                               corner, each an n x n grid of squares split by one diagonal (every diamond inside a
+                               face is co-circular, beta = 0, as the paper's Fig. 10 start "with many edges having
+                               beta = 0"), the boundary strip projected radially onto the sphere (position and
+                               tangency data of a smooth surface). An analogue of Fig. 10 (the paper's mesh, a
+                               Loop-subdivision outline, is not published); the G1 minimiser is the sphere cap, W = 0.
   runs/results/bs_noisy_man.obj, bs_noisy_bunny.obj  man_cgal.obj / bunny_closed_cgal.obj (meshes/, else
                                ../shared/meshes) with normal noise of 0.3 x mean edge length: the scan-like
                                inputs of Fig. 12.
-Deterministic (random.Random with fixed seeds)."""
+Deterministic (random.Random with fixed seeds). With arguments, only the named outputs are made
+(e.g. python3 tests/data/bs_make_meshes.py bs_fig9_pipe bs_fig10_hexhole)."""
 import math
 import os
 import random
@@ -114,7 +126,66 @@ def icosphere(level):
         return read_obj(out)
 
 
+def torus_coarse2():
+    Vt, Ft = generated(["-gen", "torus", "-gen_n", "8", "-gen_m", "4", "-gen_torus_R", "1", "-gen_tube_r", "0.4"])
+    for _ in range(2):
+        Vt, Ft = subdivide(Vt, Ft)
+    return Vt, Ft
+
+
+def fig9_pipe():
+    Vt, Ft = torus_coarse2()
+    Fp = [f for f in Ft if all(Vt[i][1] >= -1e-12 for i in f)]
+    Vp, Fp = compact(Vt, Fp)
+    bd, ring = boundary_and_ring(Vp, Fp)
+    R, r = 1.0, 0.4
+    for i in ring:  # onto the torus of revolution: keep the angles u (around z) and v (around the tube)
+        x, y, z = Vp[i]
+        u, rho = math.atan2(y, x), math.hypot(x, y)
+        v = math.atan2(z, rho - R)
+        Vp[i] = [(R + r * math.cos(v)) * math.cos(u), (R + r * math.cos(v)) * math.sin(u), r * math.sin(v)]
+        if abs(y) < 1e-12:
+            Vp[i][1] = 0.0
+    out = os.path.join(ROOT, "meshes", "bs_fig9_pipe.obj")
+    write_obj(out, Vp, Fp, "half (y >= 0) of bs_torus_coarse2.obj, boundary strip moved onto the torus R 1 r 0.4: circular boundary loops (tests/data/bs_make_meshes.py)")
+    print("bs_fig9_pipe: V=%d F=%d boundary=%d fixed=%d" % (len(Vp), len(Fp), len(bd), len(ring)))
+
+
+def fig10_hexhole(n=10):
+    V, F, key = [], [], {}
+    def vid(p):
+        k = tuple(round(c * n) for c in p)
+        if k not in key:
+            key[k] = len(V)
+            V.append([c / n for c in k])
+        return key[k]
+    # the faces z = 0, y = 0, x = 0 of the unit cube, (a, b) the in-face coordinates; orientation: outward normal
+    # of the cube (-z, -y, -x), so the three faces are consistently oriented as part of its closed surface
+    planes = [lambda a, b: (b, a, 0.0), lambda a, b: (a, 0.0, b), lambda a, b: (0.0, b, a)]
+    for P in planes:
+        for i in range(n):
+            for j in range(n):
+                q = [vid(P((i + di) / n, (j + dj) / n)) for di, dj in ((0, 0), (1, 0), (1, 1), (0, 1))]
+                F += [[q[0], q[1], q[2]], [q[0], q[2], q[3]]]
+    bd, ring = boundary_and_ring(V, F)
+    c, rad = 0.5, math.sqrt(3) / 2
+    for i in ring:
+        d = [x - c for x in V[i]]
+        s = rad / math.sqrt(sum(x * x for x in d))
+        V[i] = [c + s * x for x in d]
+    out = os.path.join(ROOT, "meshes", "bs_fig10_hexhole.obj")
+    write_obj(out, V, F, "six-sided hole of the sphere through the cube's vertices, filled with the cube corner at the origin (%d x %d squares per face, one diagonal each), boundary strip on the sphere (tests/data/bs_make_meshes.py)" % (n, n))
+    print("bs_fig10_hexhole: V=%d F=%d boundary=%d fixed=%d" % (len(V), len(F), len(bd), len(ring)))
+
+
 def main():
+    only = set(sys.argv[1:])
+    if only:
+        for name in sorted(only):
+            {"bs_fig9_pipe": fig9_pipe, "bs_fig10_hexhole": fig10_hexhole}[name]()
+        return
+    fig9_pipe()
+    fig10_hexhole()
     data = os.path.join(ROOT, "tests", "data")
     V, F = icosphere(3)
     # flat-filled cap
@@ -156,9 +227,7 @@ def main():
     write_obj(os.path.join(data, "bs_bunny_hole.obj"), Vp, Fp, "disk cut from bunny_lowres_npm.obj (radius 0.25 bbox diagonal around its highest-x vertex), inside of the boundary strip replaced by the membrane (uniform Laplacian) fill (tests/data/bs_make_meshes.py)")
     print("bs_bunny_hole: V=%d F=%d boundary=%d fixed=%d" % (len(Vp), len(Fp), len(bd), len(ring)))
     # coarse torus subdivided linearly twice (Fig. 8)
-    Vt, Ft = generated(["-gen", "torus", "-gen_n", "8", "-gen_m", "4", "-gen_torus_R", "1", "-gen_tube_r", "0.4"])
-    for _ in range(2):
-        Vt, Ft = subdivide(Vt, Ft)
+    Vt, Ft = torus_coarse2()
     write_obj(os.path.join(data, "bs_torus_coarse2.obj"), Vt, Ft, "coarse torus (confsurf -gen torus -gen_n 8 -gen_m 4 -gen_torus_R 1 -gen_tube_r 0.4) subdivided linearly twice (tests/data/bs_make_meshes.py)")
     # noisy scan-like meshes (Fig. 12): man_cgal.obj (very irregular) and bunny_closed_cgal.obj (regular)
     for name in ("man_cgal", "bunny_closed_cgal"):
