@@ -62,7 +62,8 @@ PETSC_EXTERN PetscErrorCode    CSEnergyWillmoreBSSetSingularRule(CSEnergy e, CSB
 
 /* Sec. 3.2's delta minimisation at one vertex (src/energy/bs_singular_descent.c): g the regular negative gradient,
    n vanishing betas with unit circle tangents t (3n) and rates R (n, > 0); d the steepest descent direction
-   (|d| = -delta; 0 when delta >= 0), its the block-coordinate sweeps used (may be NULL). n <= CS_BS_SINGULAR_MAX. */
+   (|d| = -delta; 0 when delta >= 0, i.e. |d| <= 1e-12 (|g| + sum R)), its the block-coordinate sweeps used (may
+   be NULL). n <= CS_BS_SINGULAR_MAX. */
 #define CS_BS_SINGULAR_MAX 24
 PETSC_EXTERN PetscErrorCode CSBSSingularDescent(const PetscReal g[3], PetscInt n, const PetscReal t[], const PetscReal R[], PetscReal d[3], PetscInt *its);
 

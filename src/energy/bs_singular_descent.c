@@ -60,6 +60,8 @@ PetscErrorCode CSBSSingularDescent(const PetscReal g[3], PetscInt n, const Petsc
     if (change <= 1e-15 * scale) break;
   }
   Residual(n, g, R, s, d);
+  if (CSVecNorm(d) <= 1e-12 * scale) /* 0 in S up to rounding (the sweeps stop at 1e-15 scale): delta >= 0 */
+    for (int c = 0; c < 3; c++) d[c] = 0;
   if (its) *its = it;
   PetscFunctionReturn(0);
 }

@@ -5,7 +5,8 @@
 # subdivided coarse torus (flat subdivided quads: 256 vertices with one vanishing beta, 128 with several) both
 # rules change the flow, delta differently from single (it acts at the 128), and the distributed computation (each
 # vertex of a vanishing diamond counted by one rank, the lists gathered on the owner) gives the same history on 1
-# and 2 ranks.
+# and 2 ranks. On the generator's curvature-line torus (every diagonal co-circular) delta >= 0 at every vertex (the
+# paper's no-descent case): delta stops converged after one step with W unchanged, where the heuristic stalls.
 # nprocs: 1
 source tests/lib.sh
 "$CS_TESTS/test_bs_singular"
@@ -15,6 +16,9 @@ for r in single delta; do
   "$CS_BIN" -task flow -flow_type bs -mesh $M -bs_max_it 3 -bs_singular $r -history_csv "$TMP/${r}1.csv" > /dev/null
   mpirun -n 2 "$CS_BIN" -task flow -flow_type bs -mesh $M -bs_max_it 3 -bs_singular $r -history_csv "$TMP/${r}2.csv" > /dev/null
 done
+T="-task flow -flow_type bs -gen torus -gen_n 32 -gen_m 16 -bs_max_it 5"
+"$CS_BIN" $T -summary "$TMP/th.json" > /dev/null
+"$CS_BIN" $T -bs_singular delta -summary "$TMP/td.json" > /dev/null
 python3 - "$TMP" <<'PY'
 import sys
 d = sys.argv[1]
@@ -31,5 +35,9 @@ for r in ("single", "delta"):
 s, t = W("single1.csv"), W("delta1.csv")
 ok = abs(s[1] - t[1]) > 1e-3 * s[1]
 print(("ok  " if ok else "BAD ") + "delta differs from single after step 1 (several vanishing betas): %.6g vs %.6g" % (t[1], s[1])); bad += not ok
+import json
+th, td = json.load(open(d + "/th.json")), json.load(open(d + "/td.json"))
+ok = th["stop_reason"] == "stalled" and td["stop_reason"] == "converged" and td["iterations"] == 1 and td["willmore_bs"] == th["willmore_bs"]
+print(("ok  " if ok else "BAD ") + "curvature-line torus: heuristic %s, delta %s after %d step(s), W %.10g and %.10g" % (th["stop_reason"], td["stop_reason"], td["iterations"], th["willmore_bs"], td["willmore_bs"])); bad += not ok
 sys.exit(bad)
 PY
