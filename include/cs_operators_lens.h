@@ -67,5 +67,8 @@ PETSC_EXTERN PetscErrorCode CSOperatorLensFaceClosure(CSMesh mesh, DM dmH, Mat *
    translation) for omega = df. The translation puts f's vertex centroid at that of xref (dmV3). KSP prefix
    -trianglefield_poisson_ (default a direct Cholesky). */
 PETSC_EXTERN PetscErrorCode CSTriangleFieldReconstruct(CSMesh mesh, DM dmH1, DM dmH3, Vec omega, Vec xref, Vec x);
+/* The halfedge vectors opposite corner a (0, 1, 2) of every local face: a new vector of 3 entries per face (the
+   viewer's face vector layout), the face's own triangle of the field, not glued to its neighbours. */
+PETSC_EXTERN PetscErrorCode CSTriangleFieldFaceVectors(CSMesh mesh, DM dmH3, Vec omega, PetscInt a, Vec *w);
 
 #endif

@@ -257,8 +257,5 @@ PetscErrorCode CSWillmoreFlowCreate_TriangleField(CSWillmoreFlow F)
   F->ops.operators     = CSTFOperators;
   F->ops.constraints   = CSTFConstraints;
   F->ops.positions     = Positions;
-  /* t <= 1: with Algorithm 1's t_max = 2 the iteration has a slowly growing mode near convergence (el_residual
-     rises ~1 % per step below ~1e-7 on a level-2 sphere; docs/triangle_fields.md), with 1 it keeps falling */
-  F->tmax = 1;
   PetscFunctionReturn(0);
 }
