@@ -43,6 +43,18 @@ static PetscErrorCode CreateEnergy(CSWillmoreFlow F, DM dmH3)
   PetscFunctionReturn(0);
 }
 
+/* The kind's own option (read at SetFromOptions). */
+static PetscErrorCode SetFromOptionsTF(CSWillmoreFlow F)
+{
+  CSTriangleField *d = (CSTriangleField *)F->data;
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(F->comm, F->prefix, "Triangle-field flow (soliman2021 Algorithm 2)", NULL);
+  PetscCall(PetscOptionsReal("-integrability_weight", "Multiplier metric of the integrability rows (d1 omega, face closure, <<Y_i|omega>>) relative to their size; small = stiff", NULL, d->wint, &d->wint, NULL));
+  PetscOptionsEnd();
+  PetscCheck(d->wint > 0 && !PetscIsInfOrNanReal(d->wint), F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sintegrability_weight %g: must be > 0", F->prefix, (double)d->wint);
+  PetscFunctionReturn(0);
+}
+
 /* The options this kind does not take, refused by name. */
 static PetscErrorCode CheckOptions(CSWillmoreFlow F)
 {
@@ -257,5 +269,7 @@ PetscErrorCode CSWillmoreFlowCreate_TriangleField(CSWillmoreFlow F)
   F->ops.operators     = CSTFOperators;
   F->ops.constraints   = CSTFConstraints;
   F->ops.positions     = Positions;
+  F->ops.setup         = SetFromOptionsTF;
+  d->wint              = 1e-4;
   PetscFunctionReturn(0);
 }

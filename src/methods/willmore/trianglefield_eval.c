@@ -110,8 +110,13 @@ static PetscErrorCode Metric(CSWillmoreFlow F)
   PetscFunctionReturn(0);
 }
 
-/* The operators of the step at x: the metric, the multipliers' metric [I_Q on halfedges | 1 on the linear rows]
-   (the linear rows are dimensionless like X^T I_Q^{-1} X), the weights of the <<Y|omega>> rows. */
+/* The operators of the step at x: the metric, the multipliers' metric [I_Q on halfedges | w on the linear rows],
+   and w |row_j|^2 on the <<Y|omega>> rows, w = -flow_integrability_weight (default 1e-4). The rows are
+   dimensionless (entries +-1), so w = 1 would weigh them like X^T I_Q^{-1} X; the small default makes them stiff:
+   CGD's regularised dual block leaves each row at (I_Q / t_mu) dmu, and the integrability rows' residue, seen
+   through the conformal rows, drives the multipliers along the large null space of X^T (dependent rows); with w = 1
+   that loop made el_residual creep up ~1 % per step below ~1e-7 (1e-6 on a 12 x 6 torus), with 1e-4 the runs
+   converge to 1e-9 (docs/triangle_fields.md). */
 PetscErrorCode CSTFOperators(CSWillmoreFlow F)
 {
   CSTriangleField *d = (CSTriangleField *)F->data;
@@ -125,9 +130,10 @@ PetscErrorCode CSTFOperators(CSWillmoreFlow F)
   PetscCall(VecGetArray(F->iq, &a));
   PetscCall(VecGetArrayRead(d->iqH, &b));
   for (PetscInt i = 0; i < d->nH; i++) a[i] = b[i];
-  for (PetscInt i = d->nH; i < d->nH + d->nL; i++) a[i] = 1.0;
+  for (PetscInt i = d->nH; i < d->nH + d->nL; i++) a[i] = d->wint;
   PetscCall(VecRestoreArrayRead(d->iqH, &b));
   PetscCall(VecRestoreArray(F->iq, &a));
   if (F->k) PetscCall(CSWFGlobalWeights(F));
+  for (PetscInt j = 0; j < F->k; j++) F->gw[j] *= d->wint;
   PetscFunctionReturn(0);
 }

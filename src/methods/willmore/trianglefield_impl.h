@@ -19,6 +19,7 @@ typedef struct {
   Vec       xpos0, xpos;   /* positions of the input, and the reconstruction of the current omega (dmV3) */
   PetscReal sc;            /* area / 4 pi of the input (size scaling of the metric and of t_mu) */
   PetscInt  nforms;        /* harmonic forms (2g): 3 nforms rows <<Y_i|omega>> */
+  PetscReal wint;          /* -flow_integrability_weight: multiplier metric of the integrability rows */
 } CSTriangleField;
 
 PETSC_INTERN PetscErrorCode CSTFConstraints(CSWillmoreFlow F, Vec x, Vec c, PetscReal cx[], PetscBool wantJ);
