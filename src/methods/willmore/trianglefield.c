@@ -43,12 +43,56 @@ static PetscErrorCode CreateEnergy(CSWillmoreFlow F, DM dmH3)
   PetscFunctionReturn(0);
 }
 
-/* The kind's own option (read at SetFromOptions). */
+const char *const CSTriangleFieldInits[] = {"df", "random", "CSTriangleFieldInit", "CS_TF_INIT_", NULL};
+
+/* A uniform number in [-1, 1) from (seed, natural edge, side, component): the same field on any number of ranks. */
+static PetscReal HashUniform(PetscInt seed, PetscInt e, PetscInt s, PetscInt c)
+{
+  unsigned long long h = 1469598103934665603ULL;
+  PetscInt           k[4] = {seed, e, s, c};
+  for (int i = 0; i < 4; i++) {
+    h ^= (unsigned long long)k[i] + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
+    h *= 1099511628211ULL;
+  }
+  h ^= h >> 33;
+  h *= 0xff51afd7ed558ccdULL;
+  h ^= h >> 33;
+  return 2.0 * (PetscReal)(h >> 11) / 9007199254740992.0 - 1.0;
+}
+
+/* -flow_init random: omega += a lbar U[-1, 1]^3 on every halfedge (lbar the mean edge length of the input). */
+static PetscErrorCode RandomizeField(CSWillmoreFlow F, CSTriangleField *d)
+{
+  CSMesh       m = F->mesh;
+  Vec          ol;
+  PetscScalar *o;
+  PetscReal    lsum = 0, lbar;
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLocalVector(d->dmH3, &ol));
+  PetscCall(DMGlobalToLocal(d->dmH3, F->x, INSERT_VALUES, ol));
+  PetscCall(VecGetArray(ol, &o));
+  for (PetscInt e = 0; e < m->ne; e++)
+    if (m->edgeOwned[e]) lsum += PetscSqrtReal(PetscSqr(PetscRealPart(o[6 * e])) + PetscSqr(PetscRealPart(o[6 * e + 1])) + PetscSqr(PetscRealPart(o[6 * e + 2])));
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &lsum, 1, MPIU_REAL, MPIU_SUM, F->comm));
+  lbar = lsum / m->Ne;
+  for (PetscInt e = 0; e < m->ne; e++)
+    for (PetscInt s = 0; s < 2; s++)
+      for (PetscInt c = 0; c < 3; c++) o[6 * e + 3 * s + c] += d->amp * lbar * HashUniform(d->seed, m->edgeNatural[e], s, c);
+  PetscCall(VecRestoreArray(ol, &o));
+  PetscCall(DMLocalToGlobal(d->dmH3, ol, INSERT_VALUES, F->x));
+  PetscCall(DMRestoreLocalVector(d->dmH3, &ol));
+  PetscFunctionReturn(0);
+}
+
+/* The kind's own options (read at SetFromOptions). */
 static PetscErrorCode SetFromOptionsTF(CSWillmoreFlow F)
 {
   CSTriangleField *d = (CSTriangleField *)F->data;
   PetscFunctionBeginUser;
   PetscOptionsBegin(F->comm, F->prefix, "Triangle-field flow (soliman2021 Algorithm 2)", NULL);
+  PetscCall(PetscOptionsEnum("-init", "Initial triangle field: df of the input, or df plus a random field", NULL, CSTriangleFieldInits, (PetscEnum)d->init, (PetscEnum *)&d->init, NULL));
+  PetscCall(PetscOptionsInt("-seed", "Seed of -flow_init random", NULL, d->seed, &d->seed, NULL));
+  PetscCall(PetscOptionsReal("-init_amplitude", "-flow_init random: each halfedge vector gets a uniform random vector in [-a, a]^3 times the mean edge length", NULL, d->amp, &d->amp, NULL));
   PetscCall(PetscOptionsReal("-integrability_weight", "Multiplier metric of the integrability rows (d1 omega, face closure, <<Y_i|omega>>) relative to their size; small = stiff", NULL, d->wint, &d->wint, NULL));
   PetscOptionsEnd();
   PetscCheck(d->wint > 0 && !PetscIsInfOrNanReal(d->wint), F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sintegrability_weight %g: must be > 0", F->prefix, (double)d->wint);
@@ -191,7 +235,8 @@ static PetscErrorCode SetUpTriangleField(CSWillmoreFlow F)
   PetscCall(DMCreateGlobalVector(d->dmH3, &F->x));
   PetscCall(CSTriangleFieldFromPositions(m, d->xpos0, d->dmH3, F->x));
   PetscCall(VecDuplicate(F->x, &F->x0));
-  PetscCall(VecCopy(F->x, F->x0));
+  PetscCall(VecCopy(F->x, F->x0)); /* c0 is the input's class: C~ lambda(df) */
+  if (d->init == CS_TF_INIT_RANDOM) PetscCall(RandomizeField(F, d));
   PetscCall(CreateEnergy(F, d->dmH3));
   PetscCall(SetUpOperators(F, d));
   PetscCall(SetUpHarmonicRows(F, d));
@@ -271,5 +316,8 @@ PetscErrorCode CSWillmoreFlowCreate_TriangleField(CSWillmoreFlow F)
   F->ops.positions     = Positions;
   F->ops.setup         = SetFromOptionsTF;
   d->wint              = 1e-4;
+  d->init              = CS_TF_INIT_DF;
+  d->seed              = 1;
+  d->amp               = 0.5;
   PetscFunctionReturn(0);
 }

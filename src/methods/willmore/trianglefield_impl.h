@@ -5,7 +5,13 @@
 #include "cs_operators_lens.h"
 #include "cs_linalg.h"
 
+typedef enum { CS_TF_INIT_DF, CS_TF_INIT_RANDOM } CSTriangleFieldInit;
+PETSC_INTERN const char *const CSTriangleFieldInits[];
+
 typedef struct {
+  CSTriangleFieldInit init; /* -flow_init df | random */
+  PetscInt  seed;          /* -flow_seed */
+  PetscReal amp;           /* -flow_init_amplitude */
   DM        dmH1, dmH3;    /* halfedge scalars, halfedge vectors (the variables omega) */
   Mat       C;             /* C~ (Eq. 14), H x H */
   Mat       D, CD;         /* Dlambda at omega (H x 3H) and X_conf = C~ Dlambda */
