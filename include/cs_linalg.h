@@ -34,4 +34,10 @@ PETSC_EXTERN PetscErrorCode CSMatShiftedShared(Mat A, PetscScalar shift, MatReus
 
 /* norms_i = 2-norm of block i of x (blocks of bs consecutive entries; norms has one entry per local block) */
 PETSC_EXTERN PetscErrorCode CSVecBlockNorms(Vec x, PetscInt bs, Vec norms);
+
+/* X = [B_0; B_1; ...]: per rank its owned rows of B_0, then of B_1, ... (a vector of X's rows is the per-rank
+   concatenation of the blocks' local parts); same column layout for all blocks; MAT_REUSE_MATRIX refills *X. */
+PETSC_EXTERN PetscErrorCode CSMatStackRows(PetscInt n, Mat B[], MatReuse reuse, Mat *X);
+/* B = A (x) I_bs on interlaced vectors, B(bs i + c, bs j + c) = A(i, j), as AIJ; MAT_REUSE_MATRIX refills *B. */
+PETSC_EXTERN PetscErrorCode CSMatKronIdentity(Mat A, PetscInt bs, MatReuse reuse, Mat *B);
 #endif

@@ -21,6 +21,7 @@ typedef const char *CSWillmoreFlowType;
 #define CSWILLMOREFLOWGD  "gd"
 #define CSWILLMOREFLOWNEWTON "newton"
 #define CSWILLMOREFLOWALM "alm"
+#define CSWILLMOREFLOWTRIANGLEFIELD "trianglefield" /* soliman2021 Algorithm 2 over triangle fields (trianglefield.c) */
 
 /* Why Solve stopped; CSWillmoreFlowConvergedReasons[reason] names it, CSWillmoreFlowStopReasons[reason] is the
    summary's stop_reason. */
@@ -68,6 +69,7 @@ typedef struct {
   PetscInt         ksp_its_total, rejections, nguard, pc_setups, linear_solves;
   PetscReal        area_spread, q_max, seconds;
   CSWillmoreFlowDegeneration degeneration; /* set when the resolution guard stopped the flow */
+  PetscReal        integrability_violation; /* trianglefield: max of |d1 omega|, face closure, |<<Y_i|omega>>| (-1: other kinds) */
   PetscInt         k;                   /* global constraint values */
   const PetscReal *constraint_values;
 } CSWillmoreFlowInfo;
@@ -84,8 +86,12 @@ PETSC_EXTERN PetscErrorCode CSWillmoreFlowSetUp(CSWillmoreFlow flow);
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowStep(CSWillmoreFlow flow, CSWillmoreFlowConvergedReason *reason);
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowSolve(CSWillmoreFlow flow);
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetConvergedReason(CSWillmoreFlow flow, CSWillmoreFlowConvergedReason *reason);
+/* The positions of the current / initial state (dmV3, borrowed); for trianglefield the surface reconstructed from
+   the triangle field (CSTriangleFieldReconstruct), whose own vector CSWillmoreFlowGetVariables gives. */
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetSolution(CSWillmoreFlow flow, Vec *x);   /* borrowed */
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetInitial(CSWillmoreFlow flow, Vec *x0);   /* borrowed */
+/* The flow's own variables (positions, or the triangle field omega on halfedges; borrowed). */
+PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetVariables(CSWillmoreFlow flow, Vec *x);
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetMesh(CSWillmoreFlow flow, CSMesh *mesh);
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetInfo(CSWillmoreFlow flow, CSWillmoreFlowInfo *info);
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetEnergyName(CSWillmoreFlow flow, const char **name);

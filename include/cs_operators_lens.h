@@ -60,4 +60,15 @@ PETSC_EXTERN PetscErrorCode CSTriangleFieldLogLengths(CSMesh mesh, DM dmH3, Vec 
    differentiated). */
 PETSC_EXTERN PetscErrorCode CSTriangleFieldWillmore(CSMesh mesh, DM dmH3, Vec omega, PetscReal *W, Vec grad);
 
+/* Face closure (Sec. 5.1): F x H, (S omega)_f = the sum of the face's three halfedges (per component). */
+PETSC_EXTERN PetscErrorCode CSOperatorLensFaceClosure(CSMesh mesh, DM dmH, Mat *S);
+/* Positions from a triangle field by the Poisson problem L f = d*omega (soliman2021 Algorithm 2), i.e.
+   d0^T *1 d0 f = d0^T *1 omega per component with omega's own *1: the *1-least-squares f, exact (up to a
+   translation) for omega = df. The translation puts f's vertex centroid at that of xref (dmV3). KSP prefix
+   -trianglefield_poisson_ (default a direct Cholesky). */
+PETSC_EXTERN PetscErrorCode CSTriangleFieldReconstruct(CSMesh mesh, DM dmH1, DM dmH3, Vec omega, Vec xref, Vec x);
+/* The halfedge vectors opposite corner a (0, 1, 2) of every local face: a new vector of 3 entries per face (the
+   viewer's face vector layout), the face's own triangle of the field, not glued to its neighbours. */
+PETSC_EXTERN PetscErrorCode CSTriangleFieldFaceVectors(CSMesh mesh, DM dmH3, Vec omega, PetscInt a, Vec *w);
+
 #endif

@@ -28,7 +28,7 @@ static const char *const task_help[][2] = {
    as PETSc's `-help all` shows them. */
 static PetscBool HelpKeep = PETSC_FALSE;
 static PetscErrorCode (*HelpSavedVFPrintf)(FILE *, const char[], va_list) = NULL;
-static const char *const HelpSections[] = {"confsurf", "confsurf flow", "confsurf output", "Mesh orientation", "Mesh source", "Test-input deformation", "ParaView output (-viewer_dir)", "Bobenko-Schroeder flow output", "Dirac spectrum (crane2011 Fig. 8)", "Willmore flow output", "Bobenko-Schroeder Willmore flow (bobenko-schroeder2005)", "Constrained Willmore flow (soliman2021)", "Change of mean curvature half-density rho (crane2011 Sec. 4.1)", "Spin boundary tangents (crane2011 Sec. 5.7)", "Spin transformations (crane2011)", "confsurf curve input", "Isometric curve flow (crane2013 Sec. 5)", "Curve flow output"};
+static const char *const HelpSections[] = {"confsurf", "confsurf flow", "confsurf output", "Mesh orientation", "Mesh source", "Test-input deformation", "ParaView output (-viewer_dir)", "Bobenko-Schroeder flow output", "Dirac spectrum (crane2011 Fig. 8)", "Willmore flow output", "Bobenko-Schroeder Willmore flow (bobenko-schroeder2005)", "Constrained Willmore flow (soliman2021)", "Triangle-field flow (soliman2021 Algorithm 2)", "Change of mean curvature half-density rho (crane2011 Sec. 4.1)", "Spin boundary tangents (crane2011 Sec. 5.7)", "Spin transformations (crane2011)", "confsurf curve input", "Isometric curve flow (crane2013 Sec. 5)", "Curve flow output"};
 
 /* Everything the task prints is dropped, except the lines of an enumerated option's help, which PETSc prints
    with PetscFPrintf (PetscFunctionListPrintTypes) instead of PetscHelpPrintf. */

@@ -185,3 +185,20 @@ PetscErrorCode CSOperatorLensLogLengthDerivative(CSMesh m, DM dmH1, DM dmH3, Vec
   PetscCall(MatAssemblyEnd(*D, MAT_FINAL_ASSEMBLY));
   PetscFunctionReturn(0);
 }
+
+/* Face closure (Sec. 5.1: the three halfedge vectors of a triangle sum to zero): F x H, (S omega)_f = sum of the
+   face's three halfedges, scalar (per component of a triangle field). Every local face is owned (overlap 0). */
+PetscErrorCode CSOperatorLensFaceClosure(CSMesh m, DM dmH, Mat *S)
+{
+  PetscFunctionBeginUser;
+  PetscCall(CSOperatorCreatePointMatrix(m->dmF1, dmH, 3, S));
+  for (CSFaceIter F = CS_FACE_ITER_INIT; CSMeshFaceNext(m, NULL, &F);) {
+    PetscInt    h[3];
+    PetscScalar v[3] = {1.0, 1.0, 1.0};
+    for (int a = 0; a < 3; a++) h[a] = 2 * F.e[a] + CSMeshEdgeSide(m, &F, a);
+    PetscCall(MatSetValuesLocal(*S, 1, &F.f, 3, h, v, INSERT_VALUES));
+  }
+  PetscCall(MatAssemblyBegin(*S, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(*S, MAT_FINAL_ASSEMBLY));
+  PetscFunctionReturn(0);
+}

@@ -223,3 +223,27 @@ PetscErrorCode CSTriangleFieldQuadDiffMetric(CSMesh m, DM dmH3, Vec omega, DM dm
   if (nguard) PetscCall(MPIU_Allreduce(&ng, nguard, 1, MPIU_INT, MPI_SUM, m->comm));
   PetscFunctionReturn(0);
 }
+
+/* The halfedge vectors opposite corner a of every face (3 entries per local face, a new vector like the face
+   vector fields of the viewer): the face's own triangle, not glued to its neighbours. */
+PetscErrorCode CSTriangleFieldFaceVectors(CSMesh m, DM dmH3, Vec omega, PetscInt a, Vec *w)
+{
+  Vec                ol;
+  const PetscScalar *o;
+  PetscScalar       *p;
+  PetscFunctionBeginUser;
+  PetscCall(VecCreateMPI(m->comm, 3 * m->nf, PETSC_DETERMINE, w));
+  PetscCall(DMGetLocalVector(dmH3, &ol));
+  PetscCall(DMGlobalToLocal(dmH3, omega, INSERT_VALUES, ol));
+  PetscCall(VecGetArrayRead(ol, &o));
+  PetscCall(VecGetArray(*w, &p));
+  for (CSFaceIter F = CS_FACE_ITER_INIT; CSMeshFaceNext(m, NULL, &F);) {
+    PetscReal v[3][3];
+    FaceVectors(m, &F, o, v);
+    for (int d = 0; d < 3; d++) p[3 * F.f + d] = v[a][d];
+  }
+  PetscCall(VecRestoreArray(*w, &p));
+  PetscCall(VecRestoreArrayRead(ol, &o));
+  PetscCall(DMRestoreLocalVector(dmH3, &ol));
+  PetscFunctionReturn(0);
+}

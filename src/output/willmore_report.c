@@ -33,6 +33,7 @@ static PetscErrorCode SummaryKeys(CSWillmoreFlow flow, CSOutput *out, const CSWi
   PetscCall(CSJSONAddInt(out->json, "linear_solves", i->linear_solves)); /* steps, corrections, projections, bordering */
   PetscCall(CSJSONAddReal(out->json, "t_final", i->t));
   PetscCall(CSJSONAddReal(out->json, "seconds_per_iteration", i->it ? i->seconds / i->it : 0));
+  if (i->integrability_violation >= 0) PetscCall(CSJSONAddReal(out->json, "integrability_violation", i->integrability_violation));
   if (i->k) PetscCall(CSJSONAddRealArray(out->json, "constraint_values", i->k, i->constraint_values));
   PetscFunctionReturn(0);
 }

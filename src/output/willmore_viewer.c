@@ -8,6 +8,7 @@
 #include "cs_output_willmore.h"
 #include "cs_geometry.h"
 #include "cs_linalg.h"
+#include "cs_operators_lens.h"
 
 struct _n_CSWillmoreViewer {
   CSViewer v;
@@ -45,6 +46,27 @@ static PetscErrorCode AddMultiplierFields(CSWillmoreFlow flow, CSMesh mesh, CSVi
   PetscFunctionReturn(0);
 }
 
+/* The triangle field omega of -flow_type trianglefield as three face vector fields omega_0, omega_1, omega_2: in
+   each face the halfedge vectors opposite its corners 0, 1, 2 (the triangle of the face, not glued to its
+   neighbours: omega_a runs from corner a+1 to corner a+2). */
+static PetscErrorCode AddTriangleField(CSWillmoreFlow flow, CSMesh mesh, CSViewer v)
+{
+  Vec omega, w[3];
+  DM  dmH3;
+  PetscFunctionBeginUser;
+  PetscCall(CSWillmoreFlowGetVariables(flow, &omega));
+  PetscCall(CSLensCreateHalfedgeDM(mesh, 3, &dmH3));
+  for (int a = 0; a < 3; a++) {
+    char name[16];
+    PetscCall(PetscSNPrintf(name, sizeof(name), "omega_%d", a));
+    PetscCall(CSTriangleFieldFaceVectors(mesh, dmH3, omega, a, &w[a]));
+    PetscCall(CSViewerAddFaceField(v, name, w[a]));
+    PetscCall(VecDestroy(&w[a]));
+  }
+  PetscCall(DMDestroy(&dmH3));
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode WriteStep(CSWillmoreFlow flow, CSWillmoreViewer V, PetscInt it)
 {
   Vec    x, x0, h, hn, area, farea, q, r;
@@ -67,9 +89,18 @@ static PetscErrorCode WriteStep(CSWillmoreFlow flow, CSWillmoreViewer V, PetscIn
   PetscCall(CSViewerAddVertexField(V->v, "vertex_area", area));
   PetscCall(CSViewerAddFaceField(V->v, "face_area", farea));
   PetscCall(CSViewerAddFaceField(V->v, "Q", q));
-  PetscCall(AddMultiplierFields(flow, mesh, V->v, x));
-  PetscCall(CSWillmoreFlowGetResidual(flow, &r));
-  PetscCall(CSViewerAddVertexField(V->v, "el_residual", r)); /* its norm is the reported EL residual */
+  {
+    CSWillmoreFlowType type;
+    PetscBool          tf;
+    PetscCall(CSWillmoreFlowGetType(flow, &type));
+    PetscCall(PetscStrcmp(type, CSWILLMOREFLOWTRIANGLEFIELD, &tf));
+    if (tf) PetscCall(AddTriangleField(flow, mesh, V->v)); /* its multipliers and residual live on halfedges */
+    else {
+      PetscCall(AddMultiplierFields(flow, mesh, V->v, x));
+      PetscCall(CSWillmoreFlowGetResidual(flow, &r));
+      PetscCall(CSViewerAddVertexField(V->v, "el_residual", r)); /* its norm is the reported EL residual */
+    }
+  }
   PetscCall(CSViewerWriteStep(V->v, x, (PetscReal)it));
   PetscCall(VecDestroy(&h));
   PetscCall(VecDestroy(&hn));

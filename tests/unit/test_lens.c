@@ -411,6 +411,45 @@ static PetscErrorCode CheckWillmoreGradient(CSMesh m, DM dmH3, Vec omega, const 
   PetscFunctionReturn(0);
 }
 
+/* The Poisson reconstruction L f = d*omega of omega = df gives f back (translation fixed by the reference: here x
+   itself), and the face closure S (df) = 0 exactly while a moved halfedge breaks one face. */
+static PetscErrorCode CheckReconstruct(CSMesh m, DM dmH1, DM dmH3, Vec omega, const char name[])
+{
+  Vec       x, w, s;
+  Mat       S;
+  PetscReal d, sc, n0, n1, n2;
+  PetscInt  rs;
+  char      what[160];
+  PetscFunctionBeginUser;
+  PetscCall(VecDuplicate(m->x, &x));
+  PetscCall(CSTriangleFieldReconstruct(m, dmH1, dmH3, omega, m->x, x));
+  PetscCall(VecAXPY(x, -1.0, m->x));
+  PetscCall(VecNorm(x, NORM_INFINITY, &d));
+  PetscCall(VecNorm(m->x, NORM_INFINITY, &sc));
+  PetscCall(PetscSNPrintf(what, sizeof(what), "%s: Poisson reconstruction of df = f (max |f' - f| / max |f|)", name));
+  PetscCall(CSTestCheck(m->comm, (PetscBool)(d <= 1e-12 * sc), what, d / sc, 1e-12));
+  PetscCall(CSOperatorLensFaceClosure(m, dmH1, &S));
+  PetscCall(MatCreateVecs(S, NULL, &s));
+  PetscCall(DMCreateGlobalVector(dmH1, &w));
+  PetscCall(Component(omega, 0, w));
+  PetscCall(MatMult(S, w, s));
+  PetscCall(VecNorm(s, NORM_INFINITY, &n0));
+  PetscCall(VecGetOwnershipRange(w, &rs, NULL));
+  PetscCall(VecNorm(w, NORM_INFINITY, &n2));
+  if (rs == 0) PetscCall(VecSetValue(w, 0, 1.0, ADD_VALUES)); /* one halfedge moved: its face opens */
+  PetscCall(VecAssemblyBegin(w));
+  PetscCall(VecAssemblyEnd(w));
+  PetscCall(MatMult(S, w, s));
+  PetscCall(VecNorm(s, NORM_1, &n1));
+  PetscCall(PetscSNPrintf(what, sizeof(what), "%s: face closure of df vanishes (relative), a moved halfedge opens one face", name));
+  PetscCall(CSTestCheck(m->comm, (PetscBool)(n0 <= 1e-15 * n2 && PetscAbsReal(n1 - 1.0) < 1e-12 + 3 * n0), what, n0 / n2, 1e-15));
+  PetscCall(MatDestroy(&S));
+  PetscCall(VecDestroy(&s));
+  PetscCall(VecDestroy(&w));
+  PetscCall(VecDestroy(&x));
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode CheckTriangleField(CSMesh m, const char name[])
 {
   DM        dmH1, dmH3;
@@ -441,6 +480,7 @@ static PetscErrorCode CheckTriangleField(CSMesh m, const char name[])
   PetscCall(CheckQuadDiff(m, dmH1, dmH3, omega, name));
   PetscCall(CheckWillmoreGradient(m, dmH3, omega, name));
   if (m->topo.genus > 0) PetscCall(CheckHarmonicDual(m, dmH1, omega, name));
+  PetscCall(CheckReconstruct(m, dmH1, dmH3, omega, name));
   PetscCall(CSEnergyDestroy(&e));
   PetscCall(VecDestroy(&omega));
   PetscCall(DMDestroy(&dmH1));

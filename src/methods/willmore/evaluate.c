@@ -64,6 +64,10 @@ PetscErrorCode CSWFEvalConstraints(CSWillmoreFlow F, Vec x, Vec c, PetscReal cx[
 {
   PetscInt off = 0;
   PetscFunctionBeginUser;
+  if (F->ops.constraints) {
+    PetscCall((*F->ops.constraints)(F, x, c, cx, wantJ));
+    PetscFunctionReturn(0);
+  }
   if (F->conformal && !F->normals) {
     PetscCall(CSConformalConstraintEvaluate(&F->cc, x, c, wantJ));
     F->Xc = F->cc.X;

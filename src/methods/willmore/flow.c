@@ -33,6 +33,7 @@ static PetscErrorCode RegisterAll(void)
   PetscCall(CSWillmoreFlowRegister(CSWILLMOREFLOWGD, CSWillmoreFlowCreate_GD));
   PetscCall(CSWillmoreFlowRegister(CSWILLMOREFLOWNEWTON, CSWillmoreFlowCreate_Newton));
   PetscCall(CSWillmoreFlowRegister(CSWILLMOREFLOWALM, CSWillmoreFlowCreate_ALM));
+  PetscCall(CSWillmoreFlowRegister(CSWILLMOREFLOWTRIANGLEFIELD, CSWillmoreFlowCreate_TriangleField));
   /* baselines of the fairing comparison (crane2013 Fig. 17; fairing_baselines.c) */
   for (int k = 0; k < 5; k++) {
     const char *baseline[] = {"emcf", "ebilap", "imcf", "ibilap", "cmcf"};
@@ -84,6 +85,7 @@ static void SetDefaults(CSWillmoreFlow F)
   F->metric_type     = CS_FLOW_METRIC_H2;
   F->boundary        = CS_FLOW_BOUNDARY_DIRICHLET;
   F->saddle_mat      = CS_SADDLE_MAT_NEST;
+  F->integ           = -1;
 }
 
 PetscErrorCode CSWillmoreFlowCreate(CSMesh mesh, CSWillmoreFlow *flow)
@@ -170,6 +172,15 @@ PetscErrorCode CSWillmoreFlowGetSolution(CSWillmoreFlow F, Vec *x)
 {
   PetscFunctionBeginUser;
   PetscCheck(F->setupcalled, F->comm, PETSC_ERR_ORDER, "CSWillmoreFlowGetSolution before CSWillmoreFlowSetUp");
+  if (F->ops.positions) PetscCall((*F->ops.positions)(F, PETSC_FALSE, x));
+  else *x = F->x;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSWillmoreFlowGetVariables(CSWillmoreFlow F, Vec *x)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(F->setupcalled, F->comm, PETSC_ERR_ORDER, "CSWillmoreFlowGetVariables before CSWillmoreFlowSetUp");
   *x = F->x;
   PetscFunctionReturn(0);
 }
@@ -178,7 +189,8 @@ PetscErrorCode CSWillmoreFlowGetInitial(CSWillmoreFlow F, Vec *x0)
 {
   PetscFunctionBeginUser;
   PetscCheck(F->setupcalled, F->comm, PETSC_ERR_ORDER, "CSWillmoreFlowGetInitial before CSWillmoreFlowSetUp");
-  *x0 = F->x0;
+  if (F->ops.positions) PetscCall((*F->ops.positions)(F, PETSC_TRUE, x0));
+  else *x0 = F->x0;
   PetscFunctionReturn(0);
 }
 
@@ -233,6 +245,7 @@ PetscErrorCode CSWillmoreFlowGetInfo(CSWillmoreFlow F, CSWillmoreFlowInfo *info)
   info->q_max                = F->qmax;
   info->degeneration         = F->degeneration;
   info->seconds              = now - F->t0;
+  info->integrability_violation = F->integ;
   info->k                    = F->k;
   info->constraint_values    = F->cx;
   PetscFunctionReturn(0);

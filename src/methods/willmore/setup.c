@@ -155,6 +155,11 @@ PetscErrorCode CSWillmoreFlowSetUp(CSWillmoreFlow F)
   PetscFunctionBeginUser;
   if (F->setupcalled) PetscFunctionReturn(0);
   PetscCall(PetscTime(&F->t0));
+  if (F->ops.setup_problem) { /* a kind with its own variables (trianglefield) */
+    PetscCall((*F->ops.setup_problem)(F));
+    F->setupcalled = PETSC_TRUE;
+    PetscFunctionReturn(0);
+  }
   PetscCall(SetUpPositions(F));
   PetscCall(CSWFSetUpBoundary(F));
   PetscCall(CSWFCreateEnergy(F));

@@ -5,6 +5,10 @@
 static PetscErrorCode Evaluate(CSWillmoreFlow F)
 {
   PetscFunctionBeginUser;
+  if (F->ops.evaluate) {
+    PetscCall((*F->ops.evaluate)(F));
+    PetscFunctionReturn(0);
+  }
   PetscCall(CSEnergyGradient(F->energy, F->x, &F->E, F->g));
   PetscCall(CSWFZeroFixed(F, F->g));
   PetscCall(CSWFEvalConstraints(F, F->x, F->c, F->cx, PETSC_TRUE));
@@ -20,6 +24,10 @@ static PetscErrorCode Evaluate(CSWillmoreFlow F)
 static PetscErrorCode Operators(CSWillmoreFlow F)
 {
   PetscFunctionBeginUser;
+  if (F->ops.operators) {
+    PetscCall((*F->ops.operators)(F));
+    PetscFunctionReturn(0);
+  }
   if (!F->ops.own_metric) PetscCall(CSMetricUpdate(&F->metric, F->x));
   if (F->conformal && !F->ops.penalty) { /* ALM penalises |c|^2 unweighted (alm.c) */
     PetscInt ng;

@@ -19,6 +19,7 @@ PetscErrorCode CSWillmoreFlowGetState(CSWillmoreFlow F, PetscReal ck[], Vec *x, 
   PetscLogDouble now;
   PetscFunctionBeginUser;
   PetscCheck(F->setupcalled, F->comm, PETSC_ERR_ORDER, "CSWillmoreFlowGetState before CSWillmoreFlowSetUp");
+  PetscCheck(!F->ops.setup_problem, F->comm, PETSC_ERR_SUP, "-checkpoint/-resume with -%stype %s: checkpoints store positions, not triangle fields", F->prefix, F->type);
   PetscCheck(!F->normals, F->comm, PETSC_ERR_SUP, "-checkpoint/-resume with -%sboundary normals: the multipliers of the normal constraint are not stored in checkpoints", F->prefix);
   PetscCheck(!F->ops.penalty, F->comm, PETSC_ERR_SUP, "-checkpoint/-resume with -%stype alm: the penalty schedule is not stored in checkpoints", F->prefix);
   PetscCall(PetscTime(&now));

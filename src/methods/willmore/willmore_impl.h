@@ -73,6 +73,15 @@ struct _CSWillmoreFlowOps {
   PetscReal max_step;       /* default of -flow_max_step (0: off) */
   PetscBool fold_guard;     /* default of -flow_fold_guard */
   PetscBool own_metric;     /* the kind updates the metric itself, when it needs it (newton) */
+  /* A kind with its own variables (trianglefield: x is a triangle field, not positions) replaces the positions'
+     pipeline: its set-up (variables, energy, constraints, vectors, saddle), the evaluation at x (E, g, c, X, r,
+     violations), the step's operators (metric, I_Q, weights), the constraints (for the filter and the
+     corrections) and the surface of a state (positions for the output). NULL: the positions' own. */
+  PetscErrorCode (*setup_problem)(CSWillmoreFlow);
+  PetscErrorCode (*evaluate)(CSWillmoreFlow);
+  PetscErrorCode (*operators)(CSWillmoreFlow);
+  PetscErrorCode (*constraints)(CSWillmoreFlow, Vec x, Vec c, PetscReal cx[], PetscBool wantJ);
+  PetscErrorCode (*positions)(CSWillmoreFlow, PetscBool initial, Vec *x);
 };
 
 typedef struct {
@@ -158,6 +167,7 @@ struct _p_CSWillmoreFlow {
   PetscBool             resumed, started;
   PetscLogDouble        t0;
   PetscReal             E, el, conf, glob, A, V, area_ratio, spread, qmax; /* at x, from the last evaluation */
+  PetscReal             integ; /* integrability violation of a triangle field (-1: not a triangle-field kind) */
 };
 
 /* evaluate.c */
@@ -200,6 +210,7 @@ PETSC_INTERN PetscErrorCode CSWillmoreFlowCreate_GD(CSWillmoreFlow);
 PETSC_INTERN PetscErrorCode CSWillmoreFlowCreate_Newton(CSWillmoreFlow);
 PETSC_INTERN PetscErrorCode CSWillmoreFlowCreate_ALM(CSWillmoreFlow);
 PETSC_INTERN PetscErrorCode CSWillmoreFlowCreate_Fairing(CSWillmoreFlow); /* the kind named by F->type */
+PETSC_INTERN PetscErrorCode CSWillmoreFlowCreate_TriangleField(CSWillmoreFlow);
 PETSC_INTERN PetscErrorCode CSWFMultiplierEstimate(CSWillmoreFlow F, Vec c, const PetscReal cx[]);
 PETSC_INTERN PetscErrorCode CSWFAcceptCGD(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFGrowCGD(CSWillmoreFlow F);

@@ -1,0 +1,323 @@
+/* -flow_type trianglefield: soliman2021 Algorithm 2, constrained Willmore flow over triangle fields omega (three
+   halfedge vectors per face, stored on the edges, include/cs_operators_lens.h) with the CGD step of Algorithm 1:
+   the same saddle solver, step control (filter, second-order corrections, t / t_mu schedule) and stopping rule
+   (el_residual < rtol, every row below ctol). Its own variables, energy W~ (App. D.1), constraint rows
+     [C~ lambda(omega) - c0; d1 omega; S omega]   (Eq. 14 / 30, Eq. 31, face closure; sparse, multiplier block)
+     <<Y_i|omega>> = 0, i < 2g                     (Eq. 13; dense, bordered like the global constraints)
+   and metric I_H1 (Eq. 32). Integrability (d1, closure, Y rows) is enforced at every step (docs/triangle_fields.md).
+   The surface of a state is the solution of the Poisson problem L f = d*omega (CSTriangleFieldReconstruct). */
+#include "trianglefield_impl.h"
+
+static PetscErrorCode EnergyValue(CSEnergy e, Vec x, PetscReal *E)
+{
+  PetscFunctionBeginUser;
+  PetscCall(CSTriangleFieldWillmore(e->mesh, (DM)e->ctx, x, E, NULL));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode EnergyGradient(CSEnergy e, Vec x, PetscReal *E, Vec g)
+{
+  PetscFunctionBeginUser;
+  PetscCall(CSTriangleFieldWillmore(e->mesh, (DM)e->ctx, x, E, g));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode EnergyDestroy(CSEnergy e)
+{
+  DM dm = (DM)e->ctx;
+  PetscFunctionBeginUser;
+  PetscCall(DMDestroy(&dm));
+  PetscFunctionReturn(0);
+}
+
+/* W~(omega) = 1/4 <d*omega, d*omega> (App. D.1) as a CSEnergy on dmH3 vectors. */
+static PetscErrorCode CreateEnergy(CSWillmoreFlow F, DM dmH3)
+{
+  PetscFunctionBeginUser;
+  PetscCall(CSEnergyCreateShell(F->mesh, "willmore_trianglefield", &F->energy));
+  PetscCall(PetscObjectReference((PetscObject)dmH3));
+  F->energy->ctx      = dmH3;
+  F->energy->value    = EnergyValue;
+  F->energy->gradient = EnergyGradient;
+  F->energy->destroy  = EnergyDestroy;
+  PetscFunctionReturn(0);
+}
+
+const char *const CSTriangleFieldInits[] = {"df", "random", "CSTriangleFieldInit", "CS_TF_INIT_", NULL};
+
+/* A uniform number in [-1, 1) from (seed, natural edge, side, component): the same field on any number of ranks. */
+static PetscReal HashUniform(PetscInt seed, PetscInt e, PetscInt s, PetscInt c)
+{
+  unsigned long long h = 1469598103934665603ULL;
+  PetscInt           k[4] = {seed, e, s, c};
+  for (int i = 0; i < 4; i++) {
+    h ^= (unsigned long long)k[i] + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
+    h *= 1099511628211ULL;
+  }
+  h ^= h >> 33;
+  h *= 0xff51afd7ed558ccdULL;
+  h ^= h >> 33;
+  return 2.0 * (PetscReal)(h >> 11) / 9007199254740992.0 - 1.0;
+}
+
+/* -flow_init random: omega += a lbar U[-1, 1]^3 on every halfedge (lbar the mean edge length of the input). */
+static PetscErrorCode RandomizeField(CSWillmoreFlow F, CSTriangleField *d)
+{
+  CSMesh       m = F->mesh;
+  Vec          ol;
+  PetscScalar *o;
+  PetscReal    lsum = 0, lbar;
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLocalVector(d->dmH3, &ol));
+  PetscCall(DMGlobalToLocal(d->dmH3, F->x, INSERT_VALUES, ol));
+  PetscCall(VecGetArray(ol, &o));
+  for (PetscInt e = 0; e < m->ne; e++)
+    if (m->edgeOwned[e]) lsum += PetscSqrtReal(PetscSqr(PetscRealPart(o[6 * e])) + PetscSqr(PetscRealPart(o[6 * e + 1])) + PetscSqr(PetscRealPart(o[6 * e + 2])));
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &lsum, 1, MPIU_REAL, MPIU_SUM, F->comm));
+  lbar = lsum / m->Ne;
+  for (PetscInt e = 0; e < m->ne; e++)
+    for (PetscInt s = 0; s < 2; s++)
+      for (PetscInt c = 0; c < 3; c++) o[6 * e + 3 * s + c] += d->amp * lbar * HashUniform(d->seed, m->edgeNatural[e], s, c);
+  PetscCall(VecRestoreArray(ol, &o));
+  PetscCall(DMLocalToGlobal(d->dmH3, ol, INSERT_VALUES, F->x));
+  PetscCall(DMRestoreLocalVector(d->dmH3, &ol));
+  PetscFunctionReturn(0);
+}
+
+/* The kind's own options (read at SetFromOptions). */
+static PetscErrorCode SetFromOptionsTF(CSWillmoreFlow F)
+{
+  CSTriangleField *d = (CSTriangleField *)F->data;
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(F->comm, F->prefix, "Triangle-field flow (soliman2021 Algorithm 2)", NULL);
+  PetscCall(PetscOptionsEnum("-init", "Initial triangle field: df of the input, or df plus a random field", NULL, CSTriangleFieldInits, (PetscEnum)d->init, (PetscEnum *)&d->init, NULL));
+  PetscCall(PetscOptionsInt("-seed", "Seed of -flow_init random", NULL, d->seed, &d->seed, NULL));
+  PetscCall(PetscOptionsReal("-init_amplitude", "-flow_init random: each halfedge vector gets a uniform random vector in [-a, a]^3 times the mean edge length", NULL, d->amp, &d->amp, NULL));
+  PetscCall(PetscOptionsReal("-integrability_weight", "Multiplier metric of the integrability rows (d1 omega, face closure, <<Y_i|omega>>) relative to their size; small = stiff", NULL, d->wint, &d->wint, NULL));
+  PetscOptionsEnd();
+  PetscCheck(d->wint > 0 && !PetscIsInfOrNanReal(d->wint), F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sintegrability_weight %g: must be > 0", F->prefix, (double)d->wint);
+  PetscFunctionReturn(0);
+}
+
+/* The options this kind does not take, refused by name. */
+static PetscErrorCode CheckOptions(CSWillmoreFlow F)
+{
+  const char *p = F->prefix;
+  PetscBool   willmore;
+  PetscFunctionBeginUser;
+  PetscCall(PetscStrcmp(F->energy_name, "willmore", &willmore));
+  PetscCheck(willmore, F->comm, PETSC_ERR_SUP, "-%senergy %s: -%stype trianglefield minimises the Willmore energy W~ of App. D.1 only", p, F->energy_name, p);
+  PetscCheck(F->conformal, F->comm, PETSC_ERR_SUP, "-%sconformal false: -%stype trianglefield always has the conformal rows (Algorithm 2)", p, p);
+  PetscCheck(!F->area_set && !F->vol_set && !F->points[0] && !F->mobius && !F->rotation && !F->target[0], F->comm, PETSC_ERR_SUP, "-%stype trianglefield: the area, volume, point, Moebius and rotation constraints and -%starget_mesh are not built for triangle fields (App. B is not built)", p, p);
+  PetscCheck(F->metric_type == CS_FLOW_METRIC_H2, F->comm, PETSC_ERR_SUP, "-%smetric l2: -%stype trianglefield uses the I_H1 metric (Eq. 32) only", p, p);
+  PetscFunctionReturn(0);
+}
+
+/* The constant operators: C~, Klin = [d1; S] (x) I_3, and the first D, X_conf, X (patterns fixed for the run). */
+static PetscErrorCode SetUpOperators(CSWillmoreFlow F, CSTriangleField *d)
+{
+  Mat d1, S, B[2], lin;
+  PetscFunctionBeginUser;
+  PetscCall(CSOperatorLensCrossRatio(F->mesh, d->dmH1, &d->C));
+  PetscCall(CSOperatorLensD1(F->mesh, d->dmH1, &d1));
+  PetscCall(CSOperatorLensFaceClosure(F->mesh, d->dmH1, &S));
+  B[0] = d1;
+  B[1] = S;
+  PetscCall(CSMatStackRows(2, B, MAT_INITIAL_MATRIX, &lin));
+  PetscCall(CSMatKronIdentity(lin, 3, MAT_INITIAL_MATRIX, &d->Klin));
+  PetscCall(MatDestroy(&d1));
+  PetscCall(MatDestroy(&S));
+  PetscCall(MatDestroy(&lin));
+  PetscCall(CSOperatorLensLogLengthDerivative(F->mesh, d->dmH1, d->dmH3, F->x0, MAT_INITIAL_MATRIX, &d->D));
+  PetscCall(MatMatMult(d->C, d->D, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &d->CD));
+  B[0] = d->CD;
+  B[1] = d->Klin;
+  PetscCall(CSMatStackRows(2, B, MAT_INITIAL_MATRIX, &d->X));
+  PetscCall(MatGetLocalSize(d->CD, &d->nH, NULL));
+  PetscCall(MatGetLocalSize(d->Klin, &d->nL, NULL));
+  PetscFunctionReturn(0);
+}
+
+/* The rows <<Y_i|omega>> per component (Eq. 13): y_i = CSLensHarmonicDual of the harmonic basis at the input's
+   positions, co-closed, so <<Y_i|df>> = 0 for every f and the rows only remove omega's periods. */
+static PetscErrorCode SetUpHarmonicRows(CSWillmoreFlow F, CSTriangleField *d)
+{
+  CSHarmonicBasis hb;
+  Vec             y;
+  PetscInt        n;
+  PetscFunctionBeginUser;
+  if (F->mesh->topo.genus == 0) PetscFunctionReturn(0);
+  PetscCall(CSHarmonicBasisCreate(F->mesh, d->xpos0, &hb));
+  PetscCall(CSHarmonicBasisSetFromOptions(hb));
+  PetscCall(CSHarmonicBasisGetSize(hb, &d->nforms));
+  F->k = 3 * d->nforms;
+  PetscCall(VecDuplicateVecs(F->x, F->k, &F->rows));
+  PetscCall(DMCreateGlobalVector(d->dmH1, &y));
+  PetscCall(VecGetLocalSize(y, &n));
+  for (PetscInt i = 0; i < d->nforms; i++) {
+    Vec                eta;
+    const PetscScalar *a;
+    PetscCall(CSHarmonicBasisGetForm(hb, i, &eta));
+    PetscCall(CSLensHarmonicDual(F->mesh, d->xpos0, eta, d->dmH1, y));
+    PetscCall(VecGetArrayRead(y, &a));
+    for (PetscInt c = 0; c < 3; c++) {
+      PetscScalar *r;
+      PetscCall(VecGetArray(F->rows[3 * i + c], &r));
+      for (PetscInt h = 0; h < 3 * n; h++) r[h] = 0;
+      for (PetscInt h = 0; h < n; h++) r[3 * h + c] = a[h];
+      PetscCall(VecRestoreArray(F->rows[3 * i + c], &r));
+    }
+    PetscCall(VecRestoreArrayRead(y, &a));
+  }
+  PetscCall(VecDestroy(&y));
+  PetscCall(CSHarmonicBasisDestroy(&hb));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode SetUpVectors(CSWillmoreFlow F, CSTriangleField *d)
+{
+  PetscFunctionBeginUser;
+  PetscCall(VecDuplicate(F->x, &F->g));
+  PetscCall(VecDuplicate(F->x, &F->r));
+  PetscCall(VecDuplicate(F->x, &F->df));
+  PetscCall(VecDuplicate(F->x, &F->xt));
+  PetscCall(VecDuplicate(F->x, &F->tmp));
+  PetscCall(VecCreateMPI(F->comm, d->nH + d->nL, PETSC_DETERMINE, &F->c));
+  PetscCall(VecDuplicate(F->c, &F->mu));
+  PetscCall(VecDuplicate(F->c, &F->dmu));
+  PetscCall(VecDuplicate(F->c, &F->iq));
+  PetscCall(VecDuplicate(F->c, &F->ct));
+  PetscCall(VecDuplicate(F->c, &F->mun));
+  PetscCall(VecSet(F->mu, 0));
+  PetscCall(PetscCalloc6(F->k + 1, &F->cx, F->k + 1, &F->cxt, F->k + 1, &F->nu, F->k + 1, &F->dnu, F->k + 1, &F->gw, F->k + 1, &F->nun));
+  PetscCall(PetscCalloc1(F->k + 1, &F->dnu2));
+  PetscCall(DMCreateGlobalVector(d->dmH1, &d->lambda));
+  PetscCall(VecDuplicate(d->lambda, &d->c0));
+  PetscCall(VecDuplicate(d->lambda, &d->star1));
+  PetscCall(VecDuplicate(d->lambda, &d->iqH));
+  PetscCall(DMCreateGlobalVector(F->mesh->dmV1, &d->star0));
+  PetscCall(MatCreateVecs(d->Klin, NULL, &d->clin));
+  PetscFunctionReturn(0);
+}
+
+/* Size independence as in Algorithm 1 (CSWFSetUpScaling): s^2 = area / 4 pi of the input. */
+static PetscErrorCode SetUpScaling(CSWillmoreFlow F, CSTriangleField *d)
+{
+  PetscReal A, V, E0;
+  PetscFunctionBeginUser;
+  PetscCall(CSGeometryAreaVolume(F->mesh, d->xpos0, &A, &V));
+  d->sc = A / (4 * PETSC_PI);
+  if (F->tmu_max <= 0) F->tmu_max = F->tmu_grow > 0 ? 1e3 * F->tmax : PETSC_MAX_REAL;
+  F->tmu /= d->sc;
+  if (F->tmu_max < PETSC_MAX_REAL) F->tmu_max /= d->sc;
+  F->tmu_ratio_max = 1e3 * F->tmu / F->t;
+  PetscCall(CSEnergyValue(F->energy, F->x0, &E0));
+  F->rho *= PetscMax(PetscAbsReal(E0), PETSC_SMALL);
+  PetscFunctionReturn(0);
+}
+
+/* The variables omega_0 = df of the mesh's positions, the energy, the rows and their target c0 = C~ lambda(omega_0),
+   the vectors, the scaling and the saddle solver (multiplier block: the sparse rows; bordering: the Y rows). */
+static PetscErrorCode SetUpTriangleField(CSWillmoreFlow F)
+{
+  CSTriangleField *d = (CSTriangleField *)F->data;
+  CSMesh           m = F->mesh;
+  char             prefix[80];
+  PetscFunctionBeginUser;
+  PetscCheck(m->topo.boundary_loops == 0, F->comm, PETSC_ERR_SUP, "-%stype trianglefield: the mesh %s has %" PetscInt_FMT " boundary loop(s); triangle-field flows are built for closed surfaces", F->prefix, m->name, m->topo.boundary_loops);
+  PetscCall(CheckOptions(F));
+  F->max_area_ratio = 0; /* the vertex-area guard measures positions */
+  PetscCall(CSLensCreateHalfedgeDM(m, 1, &d->dmH1));
+  PetscCall(CSLensCreateHalfedgeDM(m, 3, &d->dmH3));
+  PetscCall(VecDuplicate(m->x, &d->xpos0));
+  PetscCall(VecCopy(m->x, d->xpos0));
+  PetscCall(VecDuplicate(m->x, &d->xpos));
+  PetscCall(DMCreateGlobalVector(d->dmH3, &F->x));
+  PetscCall(CSTriangleFieldFromPositions(m, d->xpos0, d->dmH3, F->x));
+  PetscCall(VecDuplicate(F->x, &F->x0));
+  PetscCall(VecCopy(F->x, F->x0)); /* c0 is the input's class: C~ lambda(df) */
+  if (d->init == CS_TF_INIT_RANDOM) PetscCall(RandomizeField(F, d));
+  PetscCall(CreateEnergy(F, d->dmH3));
+  PetscCall(SetUpOperators(F, d));
+  PetscCall(SetUpHarmonicRows(F, d));
+  PetscCall(SetUpVectors(F, d));
+  PetscCall(CSTriangleFieldLogLengths(m, d->dmH3, F->x0, d->dmH1, d->lambda));
+  PetscCall(MatMult(d->C, d->lambda, d->c0));
+  PetscCall(SetUpScaling(F, d));
+  PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "%ssaddle_", F->prefix));
+  PetscCall(CSSaddleCreate(m, prefix, PETSC_TRUE, PETSC_TRUE, (PetscBool)(F->saddle_mat == CS_SADDLE_MAT_AIJ), F->reuse_its, F->k, &F->saddle));
+  PetscFunctionReturn(0);
+}
+
+/* x = xt done: the multipliers mu += dmu, nu += dnu (no restoration by projection: CSWFProject works on positions). */
+static PetscErrorCode Accept(CSWillmoreFlow F)
+{
+  PetscFunctionBeginUser;
+  PetscCall(VecAXPY(F->mu, 1.0, F->dmu));
+  for (PetscInt j = 0; j < F->k; j++) F->nu[j] += F->dnu[j];
+  PetscFunctionReturn(0);
+}
+
+/* The surface: the input's positions, or the Poisson reconstruction of the current omega. */
+static PetscErrorCode Positions(CSWillmoreFlow F, PetscBool initial, Vec *x)
+{
+  CSTriangleField *d = (CSTriangleField *)F->data;
+  PetscFunctionBeginUser;
+  if (initial) *x = d->xpos0;
+  else {
+    PetscCall(CSTriangleFieldReconstruct(F->mesh, d->dmH1, d->dmH3, F->x, d->xpos0, d->xpos));
+    *x = d->xpos;
+  }
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode Destroy(CSWillmoreFlow F)
+{
+  CSTriangleField *d = (CSTriangleField *)F->data;
+  PetscFunctionBeginUser;
+  if (!d) PetscFunctionReturn(0);
+  PetscCall(DMDestroy(&d->dmH1));
+  PetscCall(DMDestroy(&d->dmH3));
+  PetscCall(MatDestroy(&d->C));
+  PetscCall(MatDestroy(&d->D));
+  PetscCall(MatDestroy(&d->CD));
+  PetscCall(MatDestroy(&d->Klin));
+  PetscCall(MatDestroy(&d->X));
+  PetscCall(VecDestroy(&d->lambda));
+  PetscCall(VecDestroy(&d->c0));
+  PetscCall(VecDestroy(&d->star1));
+  PetscCall(VecDestroy(&d->star0));
+  PetscCall(VecDestroy(&d->iqH));
+  PetscCall(VecDestroy(&d->clin));
+  PetscCall(VecDestroy(&d->xpos0));
+  PetscCall(VecDestroy(&d->xpos));
+  PetscCall(PetscFree(F->data));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSWillmoreFlowCreate_TriangleField(CSWillmoreFlow F)
+{
+  CSTriangleField *d;
+  PetscFunctionBeginUser;
+  PetscCall(PetscNew(&d));
+  F->data              = d;
+  F->ops.id            = 6;
+  F->ops.conformal     = PETSC_TRUE;
+  F->ops.trial         = CSWFTrialCGD;
+  F->ops.filter        = CSWFFilterLagrangian;
+  F->ops.accept        = Accept;
+  F->ops.grow          = CSWFGrowCGD;
+  F->ops.shrink        = CSWFShrinkCGD;
+  F->ops.destroy       = Destroy;
+  F->ops.setup_problem = SetUpTriangleField;
+  F->ops.evaluate      = CSTFEvaluate;
+  F->ops.operators     = CSTFOperators;
+  F->ops.constraints   = CSTFConstraints;
+  F->ops.positions     = Positions;
+  F->ops.setup         = SetFromOptionsTF;
+  d->wint              = 1e-4;
+  d->init              = CS_TF_INIT_DF;
+  d->seed              = 1;
+  d->amp               = 0.5;
+  PetscFunctionReturn(0);
+}

@@ -1,0 +1,34 @@
+/* Private to trianglefield*.c: the data of the triangle-field kind (soliman2021 Algorithm 2). */
+#ifndef CS_TRIANGLEFIELD_IMPL_H
+#define CS_TRIANGLEFIELD_IMPL_H
+#include "willmore_impl.h"
+#include "cs_operators_lens.h"
+#include "cs_linalg.h"
+
+typedef enum { CS_TF_INIT_DF, CS_TF_INIT_RANDOM } CSTriangleFieldInit;
+PETSC_INTERN const char *const CSTriangleFieldInits[];
+
+typedef struct {
+  CSTriangleFieldInit init; /* -flow_init df | random */
+  PetscInt  seed;          /* -flow_seed */
+  PetscReal amp;           /* -flow_init_amplitude */
+  DM        dmH1, dmH3;    /* halfedge scalars, halfedge vectors (the variables omega) */
+  Mat       C;             /* C~ (Eq. 14), H x H */
+  Mat       D, CD;         /* Dlambda at omega (H x 3H) and X_conf = C~ Dlambda */
+  Mat       Klin;          /* [d1; S] (x) I_3: lens integrability (Eq. 31) and face closure, constant */
+  Mat       X;             /* [X_conf; Klin] stacked per rank: the Jacobian of the constraint rows */
+  Vec       lambda, c0;    /* log halfedge lengths, the target C~ lambda(omega_0) (dmH1) */
+  Vec       star1, star0;  /* the triangle field's *1 (dmH1) and *0 (dmV1) at x */
+  Vec       iqH;           /* I_Q on halfedges (dmH1) */
+  Vec       clin;          /* Klin omega */
+  PetscInt  nH, nL;        /* local rows: conformal (owned halfedges), linear (3 (owned edges + faces)) */
+  Vec       xpos0, xpos;   /* positions of the input, and the reconstruction of the current omega (dmV3) */
+  PetscReal sc;            /* area / 4 pi of the input (size scaling of the metric and of t_mu) */
+  PetscInt  nforms;        /* harmonic forms (2g): 3 nforms rows <<Y_i|omega>> */
+  PetscReal wint;          /* -flow_integrability_weight: multiplier metric of the integrability rows */
+} CSTriangleField;
+
+PETSC_INTERN PetscErrorCode CSTFConstraints(CSWillmoreFlow F, Vec x, Vec c, PetscReal cx[], PetscBool wantJ);
+PETSC_INTERN PetscErrorCode CSTFEvaluate(CSWillmoreFlow F);
+PETSC_INTERN PetscErrorCode CSTFOperators(CSWillmoreFlow F);
+#endif
