@@ -229,7 +229,9 @@ PetscErrorCode CSConformalFlowEvaluate(CSConformalFlow F)
 {
   PetscFunctionBeginUser;
   PetscCall(CSGeometrySignedMeanCurvature(F->mesh, F->x, F->H, F->N, F->area)); /* I */
+  PetscCall(CSConformalFlowBoundaryCurvature(F)); /* Sec. 6.3: H on boundary vertices from the interior */
   PetscCall(Measures(F));
+  PetscCall(CSConformalFlowBoundaryMeasures(F));
   PetscCall(VecAXPBY(F->v, -F->hfactor, 0, F->H)); /* II: rho' = -2 H (see above; -flow_curvature_factor) */
   if (F->sigma > 0) PetscCall(CSConformalFlowApplyFilter(F, F->v)); /* Sec. 4 */
   PetscCall(ConstraintBasis(F)); /* III */
