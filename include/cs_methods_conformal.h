@@ -44,6 +44,13 @@ typedef enum {
 } CSConformalEigensolver;
 PETSC_EXTERN const char *const CSConformalEigensolvers[];
 
+/* Table 1 step I: the discrete pointwise mean curvature */
+typedef enum {
+  CS_CONFORMAL_CURVATURE_BARYCENTRIC, /* (L f) . N / (2 A): barycentric area, area-weighted normal */
+  CS_CONFORMAL_CURVATURE_VORONOI      /* (L f) . n / (2 A_mixed), n the 1-ring sphere fit: exact on inscribed meshes */
+} CSConformalCurvature;
+PETSC_EXTERN const char *const CSConformalCurvatures[];
+
 /* Boundary conditions (crane2013 Sec. 6.3, conformal_boundary.c) */
 typedef enum {
   CS_CONFORMAL_BOUNDARY_NONE,   /* closed meshes only */

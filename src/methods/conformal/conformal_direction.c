@@ -228,7 +228,8 @@ static PetscErrorCode Measures(CSConformalFlow F)
 PetscErrorCode CSConformalFlowEvaluate(CSConformalFlow F)
 {
   PetscFunctionBeginUser;
-  PetscCall(CSGeometrySignedMeanCurvature(F->mesh, F->x, F->H, F->N, F->area)); /* I */
+  if (F->curvature == CS_CONFORMAL_CURVATURE_VORONOI) PetscCall(CSGeometryVoronoiMeanCurvature(F->mesh, F->x, F->H, F->N, F->area)); /* I */
+  else PetscCall(CSGeometrySignedMeanCurvature(F->mesh, F->x, F->H, F->N, F->area));
   PetscCall(CSConformalFlowBoundaryCurvature(F)); /* Sec. 6.3: H on boundary vertices from the interior */
   PetscCall(Measures(F));
   PetscCall(CSConformalFlowBoundaryMeasures(F));

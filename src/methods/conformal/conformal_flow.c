@@ -7,6 +7,7 @@
 
 static const char *const ReasonsShifted[]              = {"energy_growth", "max_it", "iterating", "converged_atol", "converged_rtol"};
 const char *const       *CSConformalFlowConvergedReasons = ReasonsShifted + 2;
+const char *const        CSConformalCurvatures[]       = {"barycentric", "voronoi", "CSConformalCurvature", "CS_CONFORMAL_CURVATURE_", NULL};
 const char *const        CSConformalEigensolvers[]      = {"inverse", "eps", "CSConformalEigensolver", "CS_CONFORMAL_EIGEN_", NULL};
 
 PetscErrorCode CSConformalFlowCreate(CSMesh mesh, CSConformalFlow *flow)
@@ -29,6 +30,7 @@ PetscErrorCode CSConformalFlowCreate(CSMesh mesh, CSConformalFlow *flow)
   F->hfactor       = 2; /* rho' = -2 H: conformal_direction.c */
   F->keep_area     = PETSC_TRUE;
   F->eigensolver   = CS_CONFORMAL_EIGEN_INVERSE;
+  F->curvature     = CS_CONFORMAL_CURVATURE_VORONOI; /* exact on inscribed spheres: the round sphere is a fixed point */
   F->bmode         = CS_CONFORMAL_BOUNDARY_NONE;
   F->frame[2]      = 1; /* V = B: Sec. 6.3.1's choice for CMC surfaces */
   *flow            = F;
@@ -117,6 +119,7 @@ PetscErrorCode CSConformalFlowSetFromOptions(CSConformalFlow F)
     PetscCall(PetscOptionsRealArray("-boundary_frame", "-boundary vector: V = cN N + cT T + cB B (cN,cT,cB; not +-N)", NULL, F->frame, &nf, NULL));
     PetscCall(PetscOptionsString("-target_mesh", "-boundary vector|fixed: the targets (V~ of this mesh, or its boundary positions; same connectivity)", NULL, F->target, F->target, sizeof(F->target), NULL));
   }
+  PetscCall(PetscOptionsEnum("-curvature", "Table 1 I: H = (L f).N/(2A) with the barycentric area and area-weighted normal, or with the mixed Voronoi area and the 1-ring sphere-fit normal (exactly constant on inscribed spheres)", NULL, CSConformalCurvatures, (PetscEnum)F->curvature, (PetscEnum *)&F->curvature, NULL));
   PetscCall(PetscOptionsReal("-max_seconds", "Stop (as at max_it) once this many seconds have passed since the set-up (0: no limit); rank 0's clock decides", NULL, F->max_seconds, &F->max_seconds, NULL));
   PetscCall(PetscOptionsEnum("-eigensolver", "Eq. 5: one inverse-iteration step on a factorisation of the current X (Sec. 6.4.2), or SLEPc to convergence (options -spin_eps_*, -spin_st_*)", NULL, CSConformalEigensolvers, (PetscEnum)F->eigensolver, (PetscEnum *)&F->eigensolver, NULL));
   PetscOptionsEnd();
