@@ -51,6 +51,13 @@ typedef enum {
 } CSConformalCurvature;
 PETSC_EXTERN const char *const CSConformalCurvatures[];
 
+/* App. E.1's balancing step: the paper's unit direction, or the least-squares (Gauss-Newton) step */
+typedef enum {
+  CS_CONFORMAL_MOBIUS_NEWTON,
+  CS_CONFORMAL_MOBIUS_PAPER
+} CSConformalMobiusStep;
+PETSC_EXTERN const char *const CSConformalMobiusSteps[];
+
 /* Boundary conditions (crane2013 Sec. 6.3, conformal_boundary.c) */
 typedef enum {
   CS_CONFORMAL_BOUNDARY_NONE,   /* closed meshes only */

@@ -8,6 +8,7 @@
 static const char *const ReasonsShifted[]              = {"energy_growth", "max_it", "iterating", "converged_atol", "converged_rtol"};
 const char *const       *CSConformalFlowConvergedReasons = ReasonsShifted + 2;
 const char *const        CSConformalCurvatures[]       = {"barycentric", "voronoi", "CSConformalCurvature", "CS_CONFORMAL_CURVATURE_", NULL};
+const char *const        CSConformalMobiusSteps[]      = {"newton", "paper", "CSConformalMobiusStep", "CS_CONFORMAL_MOBIUS_", NULL};
 const char *const        CSConformalEigensolvers[]      = {"inverse", "eps", "CSConformalEigensolver", "CS_CONFORMAL_EIGEN_", NULL};
 
 PetscErrorCode CSConformalFlowCreate(CSMesh mesh, CSConformalFlow *flow)
@@ -110,6 +111,7 @@ PetscErrorCode CSConformalFlowSetFromOptions(CSConformalFlow F)
   PetscCall(PetscOptionsBool("-exactness", "Genus >= 1: constrain <<v, Z_i^x,y,z>> = 0 with D Z_i = v_i for the harmonic vector fields v_i (App. C, C.1)", NULL, F->exactness, &F->exactness, NULL));
   PetscCall(PetscOptionsBool("-exactness_paper", "Exactness functions as App. C.1 writes them (Im Z_i, D Z_i = v_i) instead of the discrete linearisation of the closing condition", NULL, F->exactness_paper, &F->exactness_paper, NULL));
   PetscCall(PetscOptionsBool("-mobius", "Moebius balancing v += w <a, N> toward the input's area distribution (App. E, E.1)", NULL, F->mobius, &F->mobius, NULL));
+  PetscCall(PetscOptionsEnum("-mobius_step", "Moebius balancing step: newton (the least-squares inversion that removes the balanceable part of the area distortion in one step) or paper (App. E.1's unit direction)", NULL, CSConformalMobiusSteps, (PetscEnum)F->mobius_step, (PetscEnum *)&F->mobius_step, NULL));
   PetscCall(PetscOptionsReal("-mobius_weight", "Moebius balancing: the weight w of the unit-norm direction", NULL, F->mobius_weight, &F->mobius_weight, NULL));
   PetscCall(PetscOptionsReal("-curvature_factor", "c in rho' = -c H: 2 is the gradient of |mu|^2 (Eq. 1, stable for tau < 1); 1 is the paper's (D + tau H) lambda = gamma lambda", NULL, F->hfactor, &F->hfactor, NULL));
   PetscCall(PetscOptionsBool("-keep_area", "Scale every new surface to the input's area", NULL, F->keep_area, &F->keep_area, NULL));

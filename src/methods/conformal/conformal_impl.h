@@ -17,6 +17,7 @@ struct _p_CSConformalFlow {
   PetscBool              inversion, mobius, keep_area, exactness, exactness_paper;
   CSConformalEigensolver eigensolver;
   CSConformalCurvature   curvature;   /* Table 1 I */
+  CSConformalMobiusStep  mobius_step; /* App. E.1 */
   CSConformalBoundary    bmode;       /* Sec. 6.3 (conformal_boundary.c) */
   PetscReal              frame[3];    /* V = frame[0] N + frame[1] T + frame[2] B */
   char                   target[PETSC_MAX_PATH_LEN];
