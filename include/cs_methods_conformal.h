@@ -6,7 +6,9 @@
      CSConformalFlowGetConvergedReason; CSConformalFlowGetSolution; CSConformalFlowDestroy.
    The flow works on its own copy of mesh->x; the mesh is not changed. One step is Table 1, right column
    (docs/conformal_flow.md):
-     I    H_i = (L f)_i . N_i / (2 A_i), the signed pointwise mean curvature (cotan Laplacian, vertex normals);
+     I    H_i = (L f)_i . n_i / (2 A_i), the signed pointwise mean curvature (cotan Laplacian; -flow_curvature
+          voronoi: mixed area and 1-ring sphere-fit normal, exact on inscribed spheres; barycentric: barycentric
+          area and area-weighted normal);
      II   v = -2 H, the L2 gradient of E_W(mu) = |mu|^2 in curvature space (Eq. 1; the factor: see
           conformal_direction.c); (Sec. 4) optionally the spectral filter v <- v - (id + sigma A^k)^{-1} v;
      III  Gram-Schmidt of {1, N^x, N^y, N^z} in <<a, b>> = sum_i A_i a_i b_i (Sec. 6.2; App. B, D);

@@ -1,5 +1,8 @@
 /* A state of the conformal flow and its direction (crane2013 Table 1 right column, steps I-IV; Sec. 4, 6.1, 6.2):
-     I    H_i = (L f)_i . N_i / (2 A_i) (CSGeometrySignedMeanCurvature).
+     I    H_i = (L f)_i . n_i / (2 A_i): CSGeometryVoronoiMeanCurvature (default; exactly 1/R on a mesh inscribed
+          in a sphere with non-obtuse triangles, so the round sphere is a fixed point) or
+          CSGeometrySignedMeanCurvature (-flow_curvature barycentric). On boundary vertices (Sec. 6.3) the mean
+          over the interior neighbours (conformal_boundary.c).
      II   v = -2 H. The factor, derived: E_W(mu) = |mu|^2 with mu = H |df| (Sec. 6.1), so the L2 gradient flow is
           mu' = -2 mu (Eq. 1); a spin transformation with potential rho changes mu to mu + rho |df| (Sec. 6, with
           gamma the eigenvalue), so rho' = -2 H and the forward Euler step (Eq. 2) is rho = -2 tau H (rho^m = 0):
