@@ -150,6 +150,10 @@ PETSC_EXTERN PetscErrorCode CSGeometryMeanCurvature(CSMesh mesh, Vec x, Vec h);
 /* Signed pointwise mean curvature H_i = (L f)_i . N_i / (2 A_i) (dmV1; positive on a sphere with outward normals);
    N (dmV3, the area-weighted vertex normals) and area (dmV1, *0) are returned when not NULL. */
 PETSC_EXTERN PetscErrorCode CSGeometrySignedMeanCurvature(CSMesh mesh, Vec x, Vec H, Vec N, Vec area);
+/* H_i = (L f)_i . n_i / (2 A_i) with the mixed Voronoi area (Meyer et al. 2003) and n_i the normal of the sphere
+   fitted through vertex i and its neighbours: exactly 1/R on a mesh inscribed in a sphere with non-obtuse triangles
+   (src/geometry/mean_curvature_voronoi.c). N gets n_i; area the barycentric vertex areas (as above). */
+PETSC_EXTERN PetscErrorCode CSGeometryVoronoiMeanCurvature(CSMesh mesh, Vec x, Vec H, Vec N, Vec area);
 /* Total area, enclosed volume (soliman2021 App. B.2: 1/6 sum f_i.(f_j x f_k)). */
 PETSC_EXTERN PetscErrorCode CSGeometryAreaVolume(CSMesh mesh, Vec x, PetscReal *area, PetscReal *volume);
 PETSC_EXTERN PetscErrorCode CSGeometryBoundaryLength(CSMesh mesh, Vec x, PetscReal *len); /* sum of the boundary edge lengths */

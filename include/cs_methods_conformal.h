@@ -6,7 +6,9 @@
      CSConformalFlowGetConvergedReason; CSConformalFlowGetSolution; CSConformalFlowDestroy.
    The flow works on its own copy of mesh->x; the mesh is not changed. One step is Table 1, right column
    (docs/conformal_flow.md):
-     I    H_i = (L f)_i . N_i / (2 A_i), the signed pointwise mean curvature (cotan Laplacian, vertex normals);
+     I    H_i = (L f)_i . n_i / (2 A_i), the signed pointwise mean curvature (cotan Laplacian; -flow_curvature
+          voronoi: mixed area and 1-ring sphere-fit normal, exact on inscribed spheres; barycentric: barycentric
+          area and area-weighted normal);
      II   v = -2 H, the L2 gradient of E_W(mu) = |mu|^2 in curvature space (Eq. 1; the factor: see
           conformal_direction.c); (Sec. 4) optionally the spectral filter v <- v - (id + sigma A^k)^{-1} v;
      III  Gram-Schmidt of {1, N^x, N^y, N^z} in <<a, b>> = sum_i A_i a_i b_i (Sec. 6.2; App. B, D);
@@ -18,7 +20,7 @@
           spin_inverse_), or the full SLEPc eigensolve (-flow_eigensolver eps, prefix spin_);
      VII  the Poisson problem L f~ = div(conj(lambda) e lambda) (Eq. 6; prefix spin_poisson_), translated to the
           old vertex mean and scaled to the input's area (W and Q are scale-invariant).
-   Closed meshes only (boundary conditions of Sec. 6.3 are not implemented: refused with a message). On genus
+   Meshes with boundary need a boundary condition of Sec. 6.3 (-flow_boundary vector|fixed). On genus
    >= 1 the exactness constraint (App. C, C.1: conformal_exactness.c with the CSHarmonicBasis of
    cs_operators_dec.h) is on by default (-flow_exactness). */
 #ifndef CS_METHODS_CONFORMAL_H
@@ -44,6 +46,28 @@ typedef enum {
 } CSConformalEigensolver;
 PETSC_EXTERN const char *const CSConformalEigensolvers[];
 
+/* Table 1 step I: the discrete pointwise mean curvature */
+typedef enum {
+  CS_CONFORMAL_CURVATURE_BARYCENTRIC, /* (L f) . N / (2 A): barycentric area, area-weighted normal */
+  CS_CONFORMAL_CURVATURE_VORONOI      /* (L f) . n / (2 A_mixed), n the 1-ring sphere fit: exact on inscribed meshes */
+} CSConformalCurvature;
+PETSC_EXTERN const char *const CSConformalCurvatures[];
+
+/* App. E.1's balancing step: the paper's unit direction, or the least-squares (Gauss-Newton) step */
+typedef enum {
+  CS_CONFORMAL_MOBIUS_NEWTON,
+  CS_CONFORMAL_MOBIUS_PAPER
+} CSConformalMobiusStep;
+PETSC_EXTERN const char *const CSConformalMobiusSteps[];
+
+/* Boundary conditions (crane2013 Sec. 6.3, conformal_boundary.c) */
+typedef enum {
+  CS_CONFORMAL_BOUNDARY_NONE,   /* closed meshes only */
+  CS_CONFORMAL_BOUNDARY_VECTOR, /* 6.3.1: prescribed directions V~ for V = cN N + cT T + cB B */
+  CS_CONFORMAL_BOUNDARY_FIXED   /* 6.3.2: prescribed boundary positions */
+} CSConformalBoundary;
+PETSC_EXTERN const char *const CSConformalBoundaries[];
+
 typedef enum {
   CS_CONFORMAL_MONITOR_START,
   CS_CONFORMAL_MONITOR_STEP,
@@ -55,12 +79,14 @@ typedef enum {
    input (crane2011 Sec. 6.1); area; res_total, res_inversion, res_exact = the largest |<<v, c>>| / (|v| |c|) of
    the projected direction against 1, N^x,y,z and the Z_i^x,y,z (App. B, D, C); closing = the last step's closing
    error |harmonic part of conj(lambda) df lambda| / |conj(lambda) df lambda| (genus >= 1, App. C);
-   log_area_spread = the area-weighted standard deviation of log(A_i / A_i of the input) (App. E); vnorm = |v| (the step's direction before tau); tau; seconds of
+   log_area_spread = the area-weighted standard deviation of log(A_i / A_i of the input) (App. E); H_spread = the
+   area-weighted std(H) / |mean H| over interior vertices; boundary_error = max |f - f~| / sqrt(area) over the boundary
+   vertices (fixed boundary, else 0); vnorm = |v| (the step's direction before tau); tau; seconds of
    the last step and since the start. */
 typedef struct {
   CSConformalMonitorEvent event;
   PetscInt                it;
-  PetscReal               W, EH, gamma, q_mean, q_max, area, res_total, res_inversion, res_exact, closing, log_area_spread, vnorm, tau;
+  PetscReal               W, EH, gamma, q_mean, q_max, area, res_total, res_inversion, res_exact, closing, log_area_spread, H_spread, boundary_error, vnorm, tau;
   PetscReal               step_seconds, seconds;
 } CSConformalMonitorInfo;
 typedef PetscErrorCode (*CSConformalFlowMonitorFn)(CSConformalFlow, const CSConformalMonitorInfo *, void *);

@@ -67,6 +67,7 @@ struct _p_CSSpin {
   Vec       v4;      /* dm: V = M_V^{-1/2} rescaled to mean 1 (Sec. 5.5), 4 entries per vertex */
   PetscReal vmean;   /* the mean of M_V^{-1/2} divided out */
   Vec       Ttarget; /* dmV3: target unit tangents on boundary vertices (Sec. 5.7), or NULL */
+  Vec       Vcur;    /* dmV3: the directions V the boundary lambda maps to Ttarget (crane2013 Sec. 6.3.1), NULL: the tangents */
   Mat       P;       /* V U (dm x dmr) for Sec. 5.7, or NULL */
   Mat       X, K, Y; /* X = A^H M_F A; K = the operator of the standard problem; Y = B^H M_F A (Eq. 6) */
   EPS       eps;
@@ -102,6 +103,11 @@ PETSC_EXTERN PetscErrorCode CSSpinCreate(CSMesh mesh, CSSpin *spin);
 PETSC_EXTERN PetscErrorCode CSSpinSetFromOptions(CSSpin spin);
 /* Boundary tangents (Sec. 5.7): Ttarget is a dmV3 global vector (read on boundary vertices), NULL for "keep". */
 PETSC_EXTERN PetscErrorCode CSSpinSetBoundaryTangents(CSSpin spin, Vec x, Vec Ttarget);
+/* crane2013 Sec. 6.3.1: boundary lambda = (cos th/2 - w sin th/2)(a - b V~) maps the unit direction V (dmV3, on
+   boundary vertices) to V~ (Vt; NULL: V~ = V) instead of the tangent T to T~; V = NULL returns to the tangents. */
+PETSC_EXTERN PetscErrorCode CSSpinSetBoundaryDirections(CSSpin spin, Vec V, Vec Vt);
+/* The right-hand side b = -sum_j w_ij e~_ij of the Poisson problem L f~ = b (Sec. 5.6, Eq. 8), dmV3 */
+PETSC_EXTERN PetscErrorCode CSSpinPoissonRHS(CSSpin spin, Vec x, Vec lambda, Vec b);
 /* Smallest eigenpair for the surface x and rho; lambda is a global vector of spin->dm. */
 PETSC_EXTERN PetscErrorCode CSSpinSolveEigen(CSSpin spin, Vec x, CSRhoLocation loc, Vec rho, Vec lambda);
 /* The next CSSpinSolveEigen starts from lambda = 1 (the identity) instead of the last eigenvector (a flow on a

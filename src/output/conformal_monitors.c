@@ -22,7 +22,7 @@ static PetscErrorCode MonitorHistory(CSConformalFlow flow, const CSConformalMoni
 {
   HistoryCtx *H = (HistoryCtx *)ctx;
   Vec         x;
-  PetscReal   Wbs, row[17];
+  PetscReal   Wbs, row[19];
   PetscFunctionBeginUser;
   if (s->event == CS_CONFORMAL_MONITOR_END) PetscFunctionReturn(0);
   PetscCall(CSConformalFlowGetSolution(flow, &x));
@@ -44,7 +44,9 @@ static PetscErrorCode MonitorHistory(CSConformalFlow flow, const CSConformalMoni
   row[14] = s->tau;
   row[15] = s->event == CS_CONFORMAL_MONITOR_STEP ? s->step_seconds : 0;
   row[16] = s->seconds;
-  PetscCall(CSHistoryAppend(H->hist, 17, row));
+  row[17] = s->H_spread;
+  row[18] = s->boundary_error;
+  PetscCall(CSHistoryAppend(H->hist, 19, row));
   PetscFunctionReturn(0);
 }
 
@@ -66,7 +68,7 @@ PetscErrorCode CSConformalFlowMonitorSetHistory(CSConformalFlow flow, CSOutput *
   if (!out->has_history) PetscFunctionReturn(0);
   PetscCall(CSConformalFlowGetMesh(flow, &mesh));
   PetscCall(PetscNew(&H));
-  PetscCall(CSOutputHistoryCreate(out, mesh->comm, "it,willmore,willmore_bs,E_H,gamma,q_mean,q_max,area,res_total,res_inversion,res_exact,closing_error,log_area_spread,vnorm,tau,step_seconds,seconds", 0, &H->hist));
+  PetscCall(CSOutputHistoryCreate(out, mesh->comm, "it,willmore,willmore_bs,E_H,gamma,q_mean,q_max,area,res_total,res_inversion,res_exact,closing_error,log_area_spread,vnorm,tau,step_seconds,seconds,H_spread,boundary_error", 0, &H->hist));
   PetscCall(CSEnergyCreateWillmoreBS(mesh, CS_BS_BOUNDARY_FIXED, 1e-6, &H->bs));
   PetscCall(CSConformalFlowMonitorSet(flow, MonitorHistory, H, HistoryDestroy));
   PetscFunctionReturn(0);
@@ -155,6 +157,8 @@ PetscErrorCode CSConformalFlowReport(CSConformalFlow flow, CSOutput *out)
   PetscCall(CSJSONAddBool(out->json, "exactness", i.exactness));
   PetscCall(CSJSONAddReal(out->json, "log_area_spread", i.state.log_area_spread));
   PetscCall(CSJSONAddReal(out->json, "closing_error_max", i.closing_max));
+  PetscCall(CSJSONAddReal(out->json, "H_spread", i.state.H_spread));
+  PetscCall(CSJSONAddReal(out->json, "boundary_error", i.state.boundary_error));
   PetscCall(CSJSONAddReal(out->json, "tau", i.tau));
   PetscCall(CSJSONAddReal(out->json, "filter_sigma", i.filter_sigma));
   PetscCall(CSJSONAddInt(out->json, "filter_k", i.filter_k));

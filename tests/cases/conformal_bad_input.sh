@@ -1,4 +1,5 @@
-# Bad input to the conformal flow: a mesh with boundary (Sec. 6.3 not implemented), tau <= 0, a bad filter order,
+# Bad input to the conformal flow: a mesh with boundary without a boundary mode (Sec. 6.3), V = +-N, a boundary mode
+# on a closed mesh, a target of other connectivity, tau <= 0, a bad filter order,
 # an unknown eigensolver: one clear line naming the mesh or the option, non-zero exit. Under 2 ranks only the first
 # two (every rank exits non-zero, no hang; a process start costs ~2 s there).
 # nprocs: 1 2
@@ -11,4 +12,7 @@ EXPECT="-flow_tau -1: must be > 0" expect_fail run -gen icosphere -gen_level 1 -
 EXPECT="-flow_filter_k 7: must lie in 0..4" expect_fail run -gen icosphere -gen_level 1 -flow_filter_k 7
 EXPECT="-flow_filter_sigma -1" expect_fail run -gen icosphere -gen_level 1 -flow_filter_sigma -1
 EXPECT="eigensolver" expect_fail run -gen icosphere -gen_level 1 -flow_eigensolver lanczos
+EXPECT="-flow_boundary_frame 1.*V = .-N is not allowed" expect_fail run -gen disk -gen_rings 4 -flow_boundary vector -flow_boundary_frame 1,0,0
+EXPECT="-flow_boundary fixed: mesh .* has no boundary" expect_fail run -gen icosphere -gen_level 1 -flow_boundary fixed
+EXPECT="-flow_target_mesh" expect_fail run -gen disk -gen_rings 4 -flow_boundary fixed -flow_target_mesh meshes/bunny_lowres_npm.obj
 EXPECT="checkpoint" expect_fail run -gen icosphere -gen_level 1 -checkpoint "$TMP/c.bin"

@@ -1,5 +1,8 @@
 /* A state of the conformal flow and its direction (crane2013 Table 1 right column, steps I-IV; Sec. 4, 6.1, 6.2):
-     I    H_i = (L f)_i . N_i / (2 A_i) (CSGeometrySignedMeanCurvature).
+     I    H_i = (L f)_i . n_i / (2 A_i): CSGeometryVoronoiMeanCurvature (default; exactly 1/R on a mesh inscribed
+          in a sphere with non-obtuse triangles, so the round sphere is a fixed point) or
+          CSGeometrySignedMeanCurvature (-flow_curvature barycentric). On boundary vertices (Sec. 6.3) the mean
+          over the interior neighbours (conformal_boundary.c).
      II   v = -2 H. The factor, derived: E_W(mu) = |mu|^2 with mu = H |df| (Sec. 6.1), so the L2 gradient flow is
           mu' = -2 mu (Eq. 1); a spin transformation with potential rho changes mu to mu + rho |df| (Sec. 6, with
           gamma the eigenvalue), so rho' = -2 H and the forward Euler step (Eq. 2) is rho = -2 tau H (rho^m = 0):
@@ -69,16 +72,31 @@ static PetscErrorCode Project(CSConformalFlow F, PetscInt i0, PetscInt n)
   PetscFunctionReturn(0);
 }
 
-/* App. E.1: u = 1/2 log(A_i / A*_i) (A* the input's vertex areas), u0 = u minus its area mean, b = sum A_i f_i u0_i,
-   B = 4 sum A_i N_i N_i^T, a = B^-1 b normalised to <B a, a> = 1. The inversion with centre velocity a changes the
-   scale factors by u' = -2 <a, f> (App. E), which for this a decreases the spread of u fastest, and has the
-   curvature change rho' = -2 <a, N> (App. D) of unit L2 norm. (E's text adds "<a, N>" to rho'; App. D's factor
-   -2 is the one that belongs to the inversion moving toward the balanced areas.) Adds w rho' to v. */
+/* x = S^-1 b for the symmetric 3x3 S given by its upper triangle xx xy xz yy yz zz; returns the determinant */
+static PetscReal Solve3(const PetscReal u[6], const PetscReal b[3], PetscReal x[3])
+{
+  const PetscReal S[9] = {u[0], u[1], u[2], u[1], u[3], u[4], u[2], u[4], u[5]};
+  PetscReal       det  = S[0] * (S[4] * S[8] - S[5] * S[7]) - S[1] * (S[3] * S[8] - S[5] * S[6]) + S[2] * (S[3] * S[7] - S[4] * S[6]);
+  if (det <= 0) return det;
+  x[0] = (b[0] * (S[4] * S[8] - S[5] * S[7]) - S[1] * (b[1] * S[8] - S[5] * b[2]) + S[2] * (b[1] * S[7] - S[4] * b[2])) / det;
+  x[1] = (S[0] * (b[1] * S[8] - S[5] * b[2]) - b[0] * (S[3] * S[8] - S[5] * S[6]) + S[2] * (S[3] * b[2] - b[1] * S[6])) / det;
+  x[2] = (S[0] * (S[4] * b[2] - b[1] * S[7]) - S[1] * (S[3] * b[2] - b[1] * S[6]) + b[0] * (S[3] * S[7] - S[4] * S[6])) / det;
+  return det;
+}
+
+/* App. E.1: u = 1/2 log(A_i / A*_i) against the input's vertex areas, u0 = u minus its area mean, b = sum A_i f_i u0_i.
+   The inversion with centre velocity a changes the scale factors by u' = -2 <a, f> (App. E) and the curvature by
+   rho' = -2 <a, N> (App. D). -flow_mobius_step paper: a = B^-1 b with B = 4 sum A_i N_i N_i^T, normalised to
+   <B a, a> = 1 (E.1 steps IV-V; E's text adds "<a, N>", App. D's factor -2 belongs to the inversion that moves
+   toward balance): a unit step whatever the imbalance, so with a fixed tau it overshoots and oscillates once the
+   areas are nearly balanced (docs/conformal_flow.md). newton (default): the a whose u' removes the part of u0
+   spanned by <a, f> in one step, the least-squares a = 1/2 C^-1 b with C = sum A_i (f_i - c)(f_i - c)^T (c the area
+   centroid), applied over the step as rho = -2 <a, N> (v += rho / tau). Either way v += w rho. */
 static PetscErrorCode MobiusBalance(CSConformalFlow F)
 {
   const PetscScalar *A, *A0, *f, *N;
   PetscScalar       *v;
-  PetscReal          loc[14] = {0}, g[14], b[3], Bm[9], a[3], det, nB;
+  PetscReal          loc[20] = {0}, g[20], b[3], C[6], a[3], nB = 0, scale;
   PetscInt           n;
   PetscFunctionBeginUser;
   PetscCall(VecGetLocalSize(F->area, &n));
@@ -86,7 +104,7 @@ static PetscErrorCode MobiusBalance(CSConformalFlow F)
   PetscCall(VecGetArrayRead(F->area0, &A0));
   PetscCall(VecGetArrayRead(F->x, &f));
   PetscCall(VecGetArrayRead(F->N, &N));
-  for (PetscInt i = 0; i < n; i++) { /* sums of A, A u, A f, A f u and A N N^T */
+  for (PetscInt i = 0; i < n; i++) { /* sums of A, A u, A f, A f u, 4 A N N^T and A f f^T */
     PetscReal Ai = PetscRealPart(A[i]), u = 0.5 * PetscLogReal(Ai / PetscRealPart(A0[i]));
     loc[0] += Ai;
     loc[1] += Ai * u;
@@ -94,31 +112,33 @@ static PetscErrorCode MobiusBalance(CSConformalFlow F)
       loc[2 + d] += Ai * PetscRealPart(f[3 * i + d]);
       loc[5 + d] += Ai * PetscRealPart(f[3 * i + d]) * u;
     }
-    for (int d = 0; d < 3; d++)
-      for (int e = d; e < 3; e++) loc[8 + (d == 0 ? e : d + e + 1)] += 4 * Ai * PetscRealPart(N[3 * i + d] * N[3 * i + e]);
+    for (int d = 0, k = 0; d < 3; d++)
+      for (int e = d; e < 3; e++, k++) {
+        loc[8 + k] += 4 * Ai * PetscRealPart(N[3 * i + d] * N[3 * i + e]);
+        loc[14 + k] += Ai * PetscRealPart(f[3 * i + d] * f[3 * i + e]);
+      }
   }
   PetscCall(VecRestoreArrayRead(F->N, &N));
   PetscCall(VecRestoreArrayRead(F->x, &f));
   PetscCall(VecRestoreArrayRead(F->area0, &A0));
   PetscCall(VecRestoreArrayRead(F->area, &A));
-  PetscCall(MPIU_Allreduce(loc, g, 14, MPIU_REAL, MPIU_SUM, F->hdr.comm));
+  PetscCall(MPIU_Allreduce(loc, g, 20, MPIU_REAL, MPIU_SUM, F->hdr.comm));
   for (int d = 0; d < 3; d++) b[d] = g[5 + d] - g[1] / g[0] * g[2 + d]; /* sum A f (u - mean u) */
-  /* symmetric B from its upper triangle xx xy xz yy yz zz */
-  Bm[0] = g[8]; Bm[1] = g[9]; Bm[2] = g[10]; Bm[4] = g[11]; Bm[5] = g[12]; Bm[8] = g[13];
-  Bm[3] = Bm[1]; Bm[6] = Bm[2]; Bm[7] = Bm[5];
-  det = Bm[0] * (Bm[4] * Bm[8] - Bm[5] * Bm[7]) - Bm[1] * (Bm[3] * Bm[8] - Bm[5] * Bm[6]) + Bm[2] * (Bm[3] * Bm[7] - Bm[4] * Bm[6]);
-  PetscCheck(det > 0, F->hdr.comm, PETSC_ERR_PLIB, "conformal flow: Moebius balancing: B = 4 sum A N N^T is singular (a flat surface?)");
-  a[0] = (b[0] * (Bm[4] * Bm[8] - Bm[5] * Bm[7]) - Bm[1] * (b[1] * Bm[8] - Bm[5] * b[2]) + Bm[2] * (b[1] * Bm[7] - Bm[4] * b[2])) / det;
-  a[1] = (Bm[0] * (b[1] * Bm[8] - Bm[5] * b[2]) - b[0] * (Bm[3] * Bm[8] - Bm[5] * Bm[6]) + Bm[2] * (Bm[3] * b[2] - b[1] * Bm[6])) / det;
-  a[2] = (Bm[0] * (Bm[4] * b[2] - b[1] * Bm[7]) - Bm[1] * (Bm[3] * b[2] - b[1] * Bm[6]) + b[0] * (Bm[3] * Bm[7] - Bm[4] * Bm[6])) / det;
-  nB = 0;
-  for (int d = 0; d < 3; d++)
-    for (int e = 0; e < 3; e++) nB += a[d] * Bm[3 * d + e] * a[e];
-  if (nB <= 0) PetscFunctionReturn(0); /* balanced already */
-  for (int d = 0; d < 3; d++) a[d] /= PetscSqrtReal(nB);
+  if (F->mobius_step == CS_CONFORMAL_MOBIUS_PAPER) {
+    PetscCheck(Solve3(g + 8, b, a) > 0, F->hdr.comm, PETSC_ERR_PLIB, "conformal flow: Moebius balancing: B = 4 sum A N N^T is singular (a flat surface?)");
+    for (int d = 0, k = 0; d < 3; d++)
+      for (int e = d; e < 3; e++, k++) nB += (d == e ? 1 : 2) * a[d] * g[8 + k] * a[e];
+    if (nB <= 0) PetscFunctionReturn(0); /* balanced already */
+    scale = 1 / PetscSqrtReal(nB);
+  } else {
+    for (int d = 0, k = 0; d < 3; d++)
+      for (int e = d; e < 3; e++, k++) C[k] = g[14 + k] - g[2 + d] * g[2 + e] / g[0];
+    PetscCheck(Solve3(C, b, a) > 0, F->hdr.comm, PETSC_ERR_PLIB, "conformal flow: Moebius balancing: the second moment of the surface is singular (a flat surface?)");
+    scale = 0.5 / F->tau;
+  }
   PetscCall(VecGetArrayRead(F->N, &N));
   PetscCall(VecGetArray(F->v, &v));
-  for (PetscInt i = 0; i < n; i++) v[i] += -2 * F->mobius_weight * (a[0] * N[3 * i] + a[1] * N[3 * i + 1] + a[2] * N[3 * i + 2]);
+  for (PetscInt i = 0; i < n; i++) v[i] += -2 * F->mobius_weight * scale * (a[0] * N[3 * i] + a[1] * N[3 * i + 1] + a[2] * N[3 * i + 2]);
   PetscCall(VecRestoreArray(F->v, &v));
   PetscCall(VecRestoreArrayRead(F->N, &N));
   PetscFunctionReturn(0);
@@ -228,8 +248,11 @@ static PetscErrorCode Measures(CSConformalFlow F)
 PetscErrorCode CSConformalFlowEvaluate(CSConformalFlow F)
 {
   PetscFunctionBeginUser;
-  PetscCall(CSGeometrySignedMeanCurvature(F->mesh, F->x, F->H, F->N, F->area)); /* I */
+  if (F->curvature == CS_CONFORMAL_CURVATURE_VORONOI) PetscCall(CSGeometryVoronoiMeanCurvature(F->mesh, F->x, F->H, F->N, F->area)); /* I */
+  else PetscCall(CSGeometrySignedMeanCurvature(F->mesh, F->x, F->H, F->N, F->area));
+  PetscCall(CSConformalFlowBoundaryCurvature(F)); /* Sec. 6.3: H on boundary vertices from the interior */
   PetscCall(Measures(F));
+  PetscCall(CSConformalFlowBoundaryMeasures(F));
   PetscCall(VecAXPBY(F->v, -F->hfactor, 0, F->H)); /* II: rho' = -2 H (see above; -flow_curvature_factor) */
   if (F->sigma > 0) PetscCall(CSConformalFlowApplyFilter(F, F->v)); /* Sec. 4 */
   PetscCall(ConstraintBasis(F)); /* III */

@@ -7,6 +7,8 @@
 
 static const char *const ReasonsShifted[]              = {"energy_growth", "max_it", "iterating", "converged_atol", "converged_rtol"};
 const char *const       *CSConformalFlowConvergedReasons = ReasonsShifted + 2;
+const char *const        CSConformalCurvatures[]       = {"barycentric", "voronoi", "CSConformalCurvature", "CS_CONFORMAL_CURVATURE_", NULL};
+const char *const        CSConformalMobiusSteps[]      = {"newton", "paper", "CSConformalMobiusStep", "CS_CONFORMAL_MOBIUS_", NULL};
 const char *const        CSConformalEigensolvers[]      = {"inverse", "eps", "CSConformalEigensolver", "CS_CONFORMAL_EIGEN_", NULL};
 
 PetscErrorCode CSConformalFlowCreate(CSMesh mesh, CSConformalFlow *flow)
@@ -29,6 +31,9 @@ PetscErrorCode CSConformalFlowCreate(CSMesh mesh, CSConformalFlow *flow)
   F->hfactor       = 2; /* rho' = -2 H: conformal_direction.c */
   F->keep_area     = PETSC_TRUE;
   F->eigensolver   = CS_CONFORMAL_EIGEN_INVERSE;
+  F->curvature     = CS_CONFORMAL_CURVATURE_VORONOI; /* exact on inscribed spheres: the round sphere is a fixed point */
+  F->bmode         = CS_CONFORMAL_BOUNDARY_NONE;
+  F->frame[2]      = 1; /* V = B: Sec. 6.3.1's choice for CMC surfaces */
   *flow            = F;
   PetscFunctionReturn(0);
 }
@@ -84,6 +89,7 @@ static PetscErrorCode CheckOptions(CSConformalFlow F)
     {"filter_k", (PetscReal)F->fk, F->fk >= 0 && F->fk <= 4, "must lie in 0..4"},
     {"curvature_factor", F->hfactor, F->hfactor > 0, "must be > 0"},
     {"mobius_weight", F->mobius_weight, F->mobius_weight >= 0, "must be >= 0"},
+    {"max_seconds", F->max_seconds, F->max_seconds >= 0, "use 0 (no limit) or a positive number of seconds"},
   };
   PetscFunctionBeginUser;
   PetscCall(CSCheckOptionValues(F->hdr.comm, F->hdr.prefix, sizeof(checks) / sizeof(checks[0]), checks));
@@ -105,9 +111,18 @@ PetscErrorCode CSConformalFlowSetFromOptions(CSConformalFlow F)
   PetscCall(PetscOptionsBool("-exactness", "Genus >= 1: constrain <<v, Z_i^x,y,z>> = 0 with D Z_i = v_i for the harmonic vector fields v_i (App. C, C.1)", NULL, F->exactness, &F->exactness, NULL));
   PetscCall(PetscOptionsBool("-exactness_paper", "Exactness functions as App. C.1 writes them (Im Z_i, D Z_i = v_i) instead of the discrete linearisation of the closing condition", NULL, F->exactness_paper, &F->exactness_paper, NULL));
   PetscCall(PetscOptionsBool("-mobius", "Moebius balancing v += w <a, N> toward the input's area distribution (App. E, E.1)", NULL, F->mobius, &F->mobius, NULL));
+  PetscCall(PetscOptionsEnum("-mobius_step", "Moebius balancing step: newton (the least-squares inversion that removes the balanceable part of the area distortion in one step) or paper (App. E.1's unit direction)", NULL, CSConformalMobiusSteps, (PetscEnum)F->mobius_step, (PetscEnum *)&F->mobius_step, NULL));
   PetscCall(PetscOptionsReal("-mobius_weight", "Moebius balancing: the weight w of the unit-norm direction", NULL, F->mobius_weight, &F->mobius_weight, NULL));
   PetscCall(PetscOptionsReal("-curvature_factor", "c in rho' = -c H: 2 is the gradient of |mu|^2 (Eq. 1, stable for tau < 1); 1 is the paper's (D + tau H) lambda = gamma lambda", NULL, F->hfactor, &F->hfactor, NULL));
   PetscCall(PetscOptionsBool("-keep_area", "Scale every new surface to the input's area", NULL, F->keep_area, &F->keep_area, NULL));
+  {
+    PetscInt nf = 3;
+    PetscCall(PetscOptionsEnum("-boundary", "Boundary condition (Sec. 6.3): none (closed meshes), vector (6.3.1: prescribed directions V~ for V in span{N, T, B}), fixed (6.3.2: prescribed positions)", NULL, CSConformalBoundaries, (PetscEnum)F->bmode, (PetscEnum *)&F->bmode, NULL));
+    PetscCall(PetscOptionsRealArray("-boundary_frame", "-boundary vector: V = cN N + cT T + cB B (cN,cT,cB; not +-N)", NULL, F->frame, &nf, NULL));
+    PetscCall(PetscOptionsString("-target_mesh", "-boundary vector|fixed: the targets (V~ of this mesh, or its boundary positions; same connectivity)", NULL, F->target, F->target, sizeof(F->target), NULL));
+  }
+  PetscCall(PetscOptionsEnum("-curvature", "Table 1 I: H = (L f).N/(2A) with the barycentric area and area-weighted normal, or with the mixed Voronoi area and the 1-ring sphere-fit normal (exactly constant on inscribed spheres)", NULL, CSConformalCurvatures, (PetscEnum)F->curvature, (PetscEnum *)&F->curvature, NULL));
+  PetscCall(PetscOptionsReal("-max_seconds", "Stop (as at max_it) once this many seconds have passed since the set-up (0: no limit); rank 0's clock decides", NULL, F->max_seconds, &F->max_seconds, NULL));
   PetscCall(PetscOptionsEnum("-eigensolver", "Eq. 5: one inverse-iteration step on a factorisation of the current X (Sec. 6.4.2), or SLEPc to convergence (options -spin_eps_*, -spin_st_*)", NULL, CSConformalEigensolvers, (PetscEnum)F->eigensolver, (PetscEnum *)&F->eigensolver, NULL));
   PetscOptionsEnd();
   PetscCall(CheckOptions(F));
@@ -118,7 +133,6 @@ static PetscErrorCode CheckMesh(CSConformalFlow F)
 {
   CSMesh m = F->mesh;
   PetscFunctionBeginUser;
-  PetscCheck(m->topo.boundary_loops == 0, m->comm, PETSC_ERR_SUP, "-flow_type conformal: mesh %s has %" PetscInt_FMT " boundary loop(s); the boundary conditions of crane2013 Sec. 6.3 are not implemented (closed meshes only)", m->name, m->topo.boundary_loops);
   PetscCheck(m->topo.components == 1, m->comm, PETSC_ERR_SUP, "-flow_type conformal: mesh %s has %" PetscInt_FMT " components; the constraints are per surface (one component only)", m->name, m->topo.components);
   if (m->topo.genus > 0 && !F->exactness) PetscCall(PetscPrintf(m->comm, "Warning: conformal flow: mesh %s has genus %" PetscInt_FMT " and -%sexactness false: the surface may fail to close (closing_error in the history)\n", m->name, m->topo.genus, F->hdr.prefix));
   PetscFunctionReturn(0);
@@ -162,6 +176,7 @@ PetscErrorCode CSConformalFlowSetUp(CSConformalFlow F)
   PetscCall(CSGeometryAreaVolume(m, F->x0, &F->area_initial, &vol));
   PetscCall(CSEnergyCreateWillmore(m, &F->will));
   PetscCall(SetUpSpin(F));
+  PetscCall(CSConformalFlowBoundarySetUp(F)); /* Sec. 6.3 */
   PetscCall(CSConformalFlowExactnessSetUp(F));
   F->ncmax = 4 + (F->exactness ? 3 * F->ng : 0);
   PetscCall(VecDuplicateVecs(F->area, F->ncmax, &F->c));
@@ -190,6 +205,20 @@ static void Judge(CSConformalFlow F)
   else if (F->atol > 0 && s->W <= F->atol) F->reason = CS_CONFORMAL_CONVERGED_ATOL;
   else if (s->it > 0 && PetscAbsReal(s->W - F->Wprev) <= F->rtol * F->Wprev) F->reason = CS_CONFORMAL_CONVERGED_RTOL;
   else if (s->it >= F->max_it) F->reason = CS_CONFORMAL_DIVERGED_MAX_IT;
+}
+
+/* a wall-time budget: rank 0's clock decides for all ranks (no rank stops alone) */
+static PetscErrorCode JudgeTime(CSConformalFlow F)
+{
+  PetscLogDouble now;
+  PetscMPIInt    over;
+  PetscFunctionBeginUser;
+  if (F->reason != CS_CONFORMAL_ITERATING || F->max_seconds <= 0) PetscFunctionReturn(0);
+  PetscCall(PetscTime(&now));
+  over = (PetscMPIInt)(now - F->t0 >= F->max_seconds);
+  PetscCallMPI(MPI_Bcast(&over, 1, MPI_INT, 0, F->hdr.comm));
+  if (over) F->reason = CS_CONFORMAL_DIVERGED_MAX_IT;
+  PetscFunctionReturn(0);
 }
 
 static PetscErrorCode Start(CSConformalFlow F)
@@ -222,6 +251,7 @@ PetscErrorCode CSConformalFlowStep(CSConformalFlow F)
   F->s.step_seconds = (PetscReal)(t1 - t0);
   F->t_steps += t1 - t0;
   Judge(F);
+  PetscCall(JudgeTime(F));
   PetscCall(Monitor(F, CS_CONFORMAL_MONITOR_STEP));
   PetscFunctionReturn(0);
 }
@@ -254,6 +284,7 @@ PetscErrorCode CSConformalFlowDestroy(CSConformalFlow *flow)
   }
   if (F->c) PetscCall(VecDestroyVecs(F->ncmax, &F->c));
   PetscCall(CSConformalFlowExactnessDestroy(F));
+  PetscCall(CSConformalFlowBoundaryDestroy(F));
   PetscCall(CSSpinDestroy(&F->spin));
   PetscCall(CSEnergyDestroy(&F->will));
   PetscCall(MatDestroy(&F->L));

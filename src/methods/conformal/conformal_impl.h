@@ -16,6 +16,12 @@ struct _p_CSConformalFlow {
   PetscInt               max_it, fk;
   PetscBool              inversion, mobius, keep_area, exactness, exactness_paper;
   CSConformalEigensolver eigensolver;
+  CSConformalCurvature   curvature;   /* Table 1 I */
+  CSConformalMobiusStep  mobius_step; /* App. E.1 */
+  CSConformalBoundary    bmode;       /* Sec. 6.3 (conformal_boundary.c) */
+  PetscReal              frame[3];    /* V = frame[0] N + frame[1] T + frame[2] B */
+  char                   target[PETSC_MAX_PATH_LEN];
+  PetscReal              max_seconds;
   /* state: positions (current, input, next), per-vertex areas of the input, the step's fields */
   Vec       x, x0, xnew, area0;
   Vec       area, N, H, v, rho, work, lambda;
@@ -28,6 +34,9 @@ struct _p_CSConformalFlow {
   Vec            *Z, zr, zt, zb, M4, MF;
   Mat             X0, Xs, Dface;
   KSP             kz;
+  Vec       xt, bflag;     /* boundary: target positions (or NULL), 1 on boundary vertices */
+  Mat       Ld;            /* fixed boundary: the Dirichlet Laplacian */
+  KSP       kd;
   CSSpin    spin;          /* Eq. 5 and 6: the Dirac eigenproblem and the Poisson problem */
   CSEnergy  will;          /* W of soliman2021 Eq. 28 */
   Mat       L, B;          /* the filter: L on the current surface, B = M + s L (M^-1 L)^(k-1) */
@@ -49,6 +58,13 @@ PETSC_INTERN PetscErrorCode CSConformalFlowExactnessSetUp(CSConformalFlow F);
 PETSC_INTERN PetscErrorCode CSConformalFlowExactnessFunctions(CSConformalFlow F, PetscInt *n);
 PETSC_INTERN PetscErrorCode CSConformalFlowClosingError(CSConformalFlow F, PetscReal *err);
 PETSC_INTERN PetscErrorCode CSConformalFlowExactnessDestroy(CSConformalFlow F);
+/* conformal_boundary.c: Sec. 6.3 */
+PETSC_INTERN PetscErrorCode CSConformalFlowBoundarySetUp(CSConformalFlow F);
+PETSC_INTERN PetscErrorCode CSConformalFlowBoundaryPrepare(CSConformalFlow F);
+PETSC_INTERN PetscErrorCode CSConformalFlowBoundaryCurvature(CSConformalFlow F);
+PETSC_INTERN PetscErrorCode CSConformalFlowReconstructFixed(CSConformalFlow F);
+PETSC_INTERN PetscErrorCode CSConformalFlowBoundaryMeasures(CSConformalFlow F);
+PETSC_INTERN PetscErrorCode CSConformalFlowBoundaryDestroy(CSConformalFlow F);
 /* conformal_integrate.c: rho = tau v, the eigenproblem, the Poisson problem, x <- the new positions */
 PETSC_INTERN PetscErrorCode CSConformalFlowIntegrate(CSConformalFlow F);
 

@@ -11,14 +11,17 @@ PetscErrorCode CSConformalFlowIntegrate(CSConformalFlow F)
 {
   PetscFunctionBeginUser;
   PetscCall(VecAXPBY(F->rho, F->tau, 0, F->v)); /* V */
+  PetscCall(CSConformalFlowBoundaryPrepare(F)); /* Sec. 6.3: V -> V~ on the boundary */
   PetscCall(CSSpinResetStart(F->spin));         /* lambda = 1 on the current surface */
   PetscCall(CSSpinSolveEigen(F->spin, F->x, CS_RHO_VERTEX, F->rho, F->lambda)); /* VI */
   F->s.gamma = F->spin->gamma;
-  PetscCall(CSSpinNormalize(F->spin, F->lambda, NULL, PETSC_TRUE));
+  /* with a boundary condition only a positive scale: a rotation would turn the prescribed directions */
+  PetscCall(CSSpinNormalize(F->spin, F->lambda, NULL, (PetscBool)(F->bmode == CS_CONFORMAL_BOUNDARY_NONE)));
   PetscCall(CSConformalFlowClosingError(F, &F->s.closing)); /* genus >= 1: the harmonic part of conj(lambda) df lambda */
   F->closing_max = PetscMax(F->closing_max, F->s.closing);
-  PetscCall(CSSpinReconstruct(F->spin, F->x, F->lambda, F->x, F->xnew)); /* VII */
-  if (F->keep_area) {
+  if (F->bmode == CS_CONFORMAL_BOUNDARY_FIXED) PetscCall(CSConformalFlowReconstructFixed(F)); /* VII, Sec. 6.3.2 */
+  else PetscCall(CSSpinReconstruct(F->spin, F->x, F->lambda, F->x, F->xnew));           /* VII */
+  if (F->keep_area && F->bmode != CS_CONFORMAL_BOUNDARY_FIXED) { /* (the fixed boundary sets the scale) */
     PetscReal A, vol;
     PetscCall(CSGeometryAreaVolume(F->mesh, F->xnew, &A, &vol));
     PetscCheck(A > 0 && A == A, F->hdr.comm, PETSC_ERR_NOT_CONVERGED, "conformal flow: step %" PetscInt_FMT " produced a surface of area %g", F->s.it + 1, (double)A);

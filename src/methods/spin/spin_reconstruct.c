@@ -7,7 +7,7 @@
 /* b = -sum_j w_ij e~_ij: the gradient of sum_edges w_ij |f_j - f_i - e~_ij|^2 is 2 (L f + sum_j w_ij e~_ij), with
    (L f)_i = sum_j w_ij (f_i - f_j) the positive cotan Laplacian (cs_operators.h). For e~_ij = f_j - f_i this is
    b = L f, so lambda = 1 reproduces the input exactly. */
-static PetscErrorCode PoissonRHS(CSSpin s, Vec x, Vec lambda, Vec b)
+PetscErrorCode CSSpinPoissonRHS(CSSpin s, Vec x, Vec lambda, Vec b)
 {
   CSMesh             mesh = s->mesh;
   Vec                xl, ll;
@@ -62,7 +62,7 @@ PetscErrorCode CSSpinReconstruct(CSSpin s, Vec x, Vec lambda, Vec xcenter, Vec x
   c0 = CSSpinCPUTime();
   PetscCallMPI(MPI_Comm_rank(mesh->comm, &rank));
   PetscCall(DMCreateGlobalVector(mesh->dmV3, &b));
-  PetscCall(PoissonRHS(s, x, lambda, b));
+  PetscCall(CSSpinPoissonRHS(s, x, lambda, b));
   /* L has the constants in its kernel and b _|_ 1 (every edge adds +-w e~): the system is consistent. Solve it
      with the first global vertex pinned at 0 (row and column 0 replaced by the identity), which keeps every
      other equation and makes the matrix SPD for any solver (CG + AMG, or a Cholesky factorisation), then place

@@ -138,7 +138,8 @@ static PetscErrorCode BuildBoundaryMap(CSSpin s, Vec x)
   PetscCall(DMRestoreGlobalVector(s->dmr, &g));
   PetscCall(MatCreateAIJ(mesh->comm, nrow, ncol, PETSC_DETERMINE, PETSC_DETERMINE, 4, NULL, 0, NULL, &s->P));
   PetscCall(DMCreateGlobalVector(mesh->dmV3, &T));
-  PetscCall(CSGeometryBoundaryTangents(mesh, x, T));
+  if (s->Vcur) PetscCall(VecCopy(s->Vcur, T)); /* crane2013 Sec. 6.3.1: any direction V, not only T */
+  else PetscCall(CSGeometryBoundaryTangents(mesh, x, T));
   PetscCall(DMGetLocalVector(mesh->dmV3, &Tl));
   PetscCall(DMGetLocalVector(mesh->dmV3, &Ttl));
   PetscCall(DMGlobalToLocal(mesh->dmV3, T, INSERT_VALUES, Tl));
@@ -219,6 +220,18 @@ static PetscErrorCode BuildBoundaryMap(CSSpin s, Vec x)
   PetscCall(VecDestroy(&T));
   PetscCall(MatAssemblyBegin(s->P, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(s->P, MAT_FINAL_ASSEMBLY));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSSpinSetBoundaryDirections(CSSpin s, Vec V, Vec Vt)
+{
+  PetscFunctionBeginUser;
+  PetscCall(VecDestroy(&s->Vcur));
+  if (V) {
+    PetscCall(VecDuplicate(V, &s->Vcur));
+    PetscCall(VecCopy(V, s->Vcur));
+  }
+  PetscCall(CSSpinSetBoundaryTangents(s, NULL, Vt ? Vt : V));
   PetscFunctionReturn(0);
 }
 
@@ -471,6 +484,11 @@ static PetscErrorCode DefaultStart(CSSpin s, Vec start)
   PetscCall(VecGetArray(one, &a));
   for (PetscInt i = 0; i < n; i++) a[i] = (i % 4 == 0) ? 1 : 0;
   PetscCall(VecRestoreArray(one, &a));
+  /* the reduced coordinates of lambda = 1: P's columns are V_i times orthonormal ones, so u = P^T (1 / V^2) */
+  if (s->P && !s->generalized) {
+    PetscCall(VecPointwiseDivide(one, one, s->v4));
+    PetscCall(VecPointwiseDivide(one, one, s->v4));
+  }
   if (s->P) PetscCall(MatMultTranspose(s->P, one, start));
   else if (!s->generalized) PetscCall(VecPointwiseDivide(start, one, s->v4));
   else PetscCall(VecCopy(one, start));
@@ -747,6 +765,7 @@ PetscErrorCode CSSpinDestroy(CSSpin *spin)
   PetscCall(VecDestroy(&s->mass));
   PetscCall(VecDestroy(&s->v4));
   PetscCall(VecDestroy(&s->Ttarget));
+  PetscCall(VecDestroy(&s->Vcur));
   PetscCall(VecDestroy(&s->start));
   PetscCall(DMDestroy(&s->dm));
   PetscCall(DMDestroy(&s->dmr));
