@@ -120,7 +120,7 @@ PetscErrorCode CSWFCheckFolds(CSWillmoreFlow F, PetscBool *folded)
   if (F->good_set) PetscCall(CSGeometryFoldedFaces(F->mesh, F->xgood, F->x, &nfold));
   PetscCall(CSGeometryCreasedEdges(F->mesh, F->x0, F->x, CS_WF_FOLD_CREASE, &ncrease));
   *folded = (PetscBool)(nfold > 0 || ncrease > 0 || (F->mesh->topo.boundary_loops == 0 && !(F->V * F->V0 > 0)));
-  if (*folded) PetscCall(PetscPrintf(F->comm, "flow: the surface folds at iteration %" PetscInt_FMT ": enclosed volume %g (input %g), %" PetscInt_FMT " faces turned over since the last accepted state, %" PetscInt_FMT " new creases of more than %g degrees between neighbouring faces (-%sfold_guard). Stopping with the last good state\n", F->it, (double)F->V, (double)F->V0, nfold, ncrease, (double)CS_WF_FOLD_CREASE, F->prefix));
+  if (*folded) PetscCall(PetscPrintf(F->comm, "flow: the surface folds at iteration %" PetscInt_FMT ": enclosed volume %g (input %g), %" PetscInt_FMT " faces turned over since the last accepted state, %" PetscInt_FMT " new creases of more than %.0f degrees between neighbouring faces (-%sfold_guard). Stopping with the last good state\n", F->it, (double)F->V, (double)F->V0, nfold, ncrease, (double)CS_WF_FOLD_CREASE, F->prefix));
   else {
     PetscCall(VecCopy(F->x, F->xgood));
     F->good_set = PETSC_TRUE;
