@@ -67,6 +67,10 @@ for m, bound, label in (('eight', 2 * math.pi ** 2, '2 pi^2'), ('bunny', 4 * mat
   h = [float(r['energy']) for r in csv.DictReader(open(d + '/%s.gd.csv' % m))]
   good = min(h) < bound and h[-1] < bound
   print(("ok  " if good else "BAD ") + "(c/f) %s: unconstrained descent of Eq. 28 goes below %s = %.4f" % (m, label, bound) + ": " + repr((h[0], h[-1]))); bad += not good
+# the fold guard (on) does not take the flattening of the bunny's ears for a fold (issue #19)
+g = json.load(open(d + '/bunny.gd.json'))
+good = g['stop_reason'] != 'folded'
+print(("ok  " if good else "BAD ") + "(f) bunny: the fold guard lets the ears flatten: " + repr((g['stop_reason'], g['iterations']))); bad += not good
 if bad: sys.exit(bad)
 PY
 python3 - "$TMP" <<'PY'
