@@ -12,7 +12,8 @@
    (truncated CG, Steihaug) and is taken if it is not zero, otherwise (and whenever the direction is not a descent
    direction) the H^2 metric step phi = -P^{-1} N^T g, i.e. one Sobolev gradient step in normal
    coordinates. After an accepted step the vertices relax within their tangent planes toward the graph-harmonic
-   distribution (Relax, -flow_newton_relax). Step length: t = 1 first, halved on rejection (energy increase, -flow_max_step, a face turned
+   distribution (Relax, -flow_newton_relax), or with -flow_newton_relax_scaled toward spacing in proportion to the
+   local edge length (the smallest angle: docs/bench_evolver.md). Step length: t = 1 first, halved on rejection (energy increase, -flow_max_step, a face turned
    over), doubled after an accepted step up to -flow_t_max (default 1 here). Stopping: the normal residual
    ||N^T g||_2 < -flow_rtol (or -flow_energy_target). Constraints: none (no conformal, area, volume or point
    constraint; closed surfaces only): refused with a message. */
