@@ -168,5 +168,8 @@ PETSC_EXTERN PetscErrorCode CSGeometryEdgeSumAtVertices(CSMesh mesh, Vec q, Vec 
 
 /* Number of faces (over all ranks) whose area vector in x does not point the way it does in xref. */
 PETSC_EXTERN PetscErrorCode CSGeometryFoldedFaces(CSMesh mesh, Vec xref, Vec x, PetscInt *nfolded);
+/* Number of interior edges (over all ranks) whose two faces' normals make an angle above `angle` degrees in x but
+   not in xref: creases where the surface folds back on itself (src/geometry/creased_edges.c). */
+PETSC_EXTERN PetscErrorCode CSGeometryCreasedEdges(CSMesh mesh, Vec xref, Vec x, PetscReal angle, PetscInt *ncreased);
 
 #endif

@@ -21,6 +21,8 @@ PETSC_EXTERN PetscErrorCode CSOperatorLaplacian3(CSMesh mesh, Vec x, MatReuse re
 /* Vertex mass *0 = diag(barycentric dual areas) as a dmV1 vector (create with DMCreateGlobalVector). */
 /* The graph (umbrella) Laplacian, weight 1 per interior edge, on each of 3 coordinates (dmV3). */
 PETSC_EXTERN PetscErrorCode CSOperatorGraphLaplacian3(CSMesh mesh, Vec x, MatReuse reuse, Mat *A3);
+/* The same with the weight 1/sqrt(face area) per face side (src/operators/laplacian.c). */
+PETSC_EXTERN PetscErrorCode CSOperatorScaledGraphLaplacian3(CSMesh mesh, Vec x, MatReuse reuse, Mat *A3);
 PETSC_EXTERN PetscErrorCode CSOperatorMass(CSMesh mesh, Vec x, Vec mass);
 
 /* The spectral filter matrix of crane2013 Sec. 4 (src/operators/spectral_filter.c): B = M + s L (M^-1 L)^(k-1)

@@ -7,7 +7,8 @@
 #   Evolver: the datafile is written from the OBJ by runs/evolver_tools.py (faces with tension 0, the energy
 #            star_perp_sq_mean_curvature), then `hessian_seek; u` (Newton step with hessian_normal, the default,
 #            then equiangulation) until total_energy is at or below the target (at most 30 steps).
-#   confsurf: -flow_type newton and -flow_type gd with -flow_energy_target.
+#   confsurf: -flow_type newton (as it is, and with the scaled tangential relaxation: $QUALITY) and -flow_type gd,
+#             with -flow_energy_target.
 # Per run: wall seconds, CPU seconds (user + system, /usr/bin/time), final W, steps, q_mean/q_max against the input (input faces, crane2011 Sec. 6.1) and the
 # smallest angle of the result's own faces (Evolver flips edges; its vertices keep their ids). Evolver is skipped
 # with a message when it is not installed (apt-get install -y evolver-nox). Writes runs/results/bench_evolver.md.
@@ -43,9 +44,11 @@ CMD
   local w=$(sed -n 's/^final W \([^ ]*\) steps \([0-9]*\)/\1 \2/p' "$tmp/$1.evolver.$3.log" | tail -1)
   echo "$(python3 -c "print($t1 - $t0)") $w $("$PY" runs/evolver_tools.py stats "$tmp/$1.obj" "$tmp/$1.evolver.$3.obj")" > "$tmp/$1.evolver.$3.res"
 }
-run_confsurf() { # name target run kind
-  local t0=$(now)
-  /usr/bin/time -f "%U %S" -o "$tmp/$1.$4.$3.cpu" bin/confsurf -task flow -flow_type $4 -mesh "$tmp/$1.obj" -flow_max_it 200 -flow_energy_target "$2" -o "$tmp/$1.$4.$3.obj" -summary "$tmp/$1.$4.$3.json" > "$tmp/$1.$4.$3.log" 2>&1 || { echo "run failed: $1 $4"; tail -3 "$tmp/$1.$4.$3.log"; }
+QUALITY="-flow_newton_relax_scaled -flow_newton_relax 1 -flow_newton_relax_sweeps 3"
+run_confsurf() { # name target run variant (newton, newtonq: newton with the scaled relaxation, gd)
+  local t0=$(now) kind=$4 extra=""
+  [ "$4" = newtonq ] && { kind=newton; extra=$QUALITY; }
+  /usr/bin/time -f "%U %S" -o "$tmp/$1.$4.$3.cpu" bin/confsurf -task flow -flow_type $kind $extra -mesh "$tmp/$1.obj" -flow_max_it 200 -flow_energy_target "$2" -o "$tmp/$1.$4.$3.obj" -summary "$tmp/$1.$4.$3.json" > "$tmp/$1.$4.$3.log" 2>&1 || { echo "run failed: $1 $4"; tail -3 "$tmp/$1.$4.$3.log"; }
   local t1=$(now)
   echo "$(python3 -c "print($t1 - $t0)") $(python3 -c "import json,sys; s=json.load(open(sys.argv[1])); print(repr(s['willmore']), s['iterations'])" "$tmp/$1.$4.$3.json") $("$PY" runs/evolver_tools.py stats "$tmp/$1.obj" "$tmp/$1.$4.$3.obj")" > "$tmp/$1.$4.$3.res"
 }
@@ -54,6 +57,7 @@ for r in $(seq "$REPEAT"); do
     set -- $case
     [ $HAVE_EVOLVER = 1 ] && run_evolver $1 $2 $r
     run_confsurf $1 $2 $r newton
+    run_confsurf $1 $2 $r newtonq
     run_confsurf $1 $2 $r gd
   done
 done
@@ -66,7 +70,7 @@ print(f"Unconstrained Willmore minimisation to 1 % of the minimum: Surface Evolv
 print("| input | program | wall s (median) | min-max | CPU s (median) | steps | final W | W / target minimum | q_mean | q_max | min angle (deg) |")
 print("|---|---|---|---|---|---|---|---|---|---|---|")
 for name, label, Wmin in (("torus", "torus R=3 r=1, 96x32 (to 1 % of 2 pi^2)", 2 * math.pi ** 2), ("bumpy", "bumpy icosphere level 4 (to 1 % of 4 pi)", 4 * math.pi)):
-  for prog, plabel in (("evolver", "Evolver hessian_seek + u"), ("newton", "confsurf -flow_type newton"), ("gd", "confsurf -flow_type gd")):
+  for prog, plabel in (("evolver", "Evolver hessian_seek + u"), ("newton", "confsurf -flow_type newton"), ("newtonq", "confsurf -flow_type newton, scaled relaxation (*)"), ("gd", "confsurf -flow_type gd")):
     rows, cpu = [], []
     for r in range(1, rep + 1):
       try:
@@ -81,5 +85,6 @@ for name, label, Wmin in (("torus", "torus R=3 r=1, 96x32 (to 1 % of 2 pi^2)", 2
     ts = [r[0] for r in rows]
     W, steps, s = rows[-1][1], rows[-1][2], rows[-1][3]
     print(f"| {label} | {plabel} | {st.median(ts):.2f} | {min(ts):.2f}-{max(ts):.2f} | {st.median(cpu) if cpu else float('nan'):.2f} | {steps} | {W:.5f} | {W / Wmin:.4f} | {s['q_mean']:.3f} | {s['q_max']:.2f} | {s['min_angle']:.1f} |")
+print("\n(*) -flow_newton_relax_scaled -flow_newton_relax 1 -flow_newton_relax_sweeps 3")
 PY
 cat "$out"; rm -rf "$tmp"

@@ -1,8 +1,14 @@
 /* Cotan Laplacian assembled face by face: each face adds the 3x3 block of its half-cotan edge weights. */
 #include "cs_operators.h"
 
+typedef enum {
+  WEIGHT_COTAN,   /* half-cotan weights */
+  WEIGHT_UNIFORM, /* 1 per face side */
+  WEIGHT_SCALED   /* 1/sqrt(face area) per face side */
+} Weight;
+
 /* Adds the face blocks to A (dof block size bs: the same weight on each of the bs components). */
-static PetscErrorCode AssembleCotanLaplacian(CSMesh m, Vec x, DM dmX, PetscInt bs, MatReuse reuse, Mat *A, PetscBool uniform)
+static PetscErrorCode AssembleCotanLaplacian(CSMesh m, Vec x, DM dmX, PetscInt bs, MatReuse reuse, Mat *A, Weight weight)
 {
   Vec              xl;
   const PetscReal *p;
@@ -17,8 +23,13 @@ static PetscErrorCode AssembleCotanLaplacian(CSMesh m, Vec x, DM dmX, PetscInt b
     const PetscInt *v = F.v;
     PetscReal       cot[3];
     PetscScalar     K[9] = {0};
-    if (uniform) cot[0] = cot[1] = cot[2] = 1; /* each interior edge in two faces: weight 1 */
-    else CSTriangleCotans(F.c, cot);
+    if (weight == WEIGHT_UNIFORM) cot[0] = cot[1] = cot[2] = 1; /* each interior edge in two faces: weight 1 */
+    else if (weight == WEIGHT_SCALED) {
+      PetscReal an[3], A;
+      CSTriangleAreaVector(F.c, an);
+      A      = CSVecNorm(an);
+      cot[0] = cot[1] = cot[2] = A > 0 ? 1 / PetscSqrtReal(A) : 0;
+    } else CSTriangleCotans(F.c, cot);
     for (int k = 0; k < 3; k++) {
       int       i = (k + 1) % 3, j = (k + 2) % 3;
       PetscReal w = 0.5 * cot[k];
@@ -42,14 +53,14 @@ static PetscErrorCode AssembleCotanLaplacian(CSMesh m, Vec x, DM dmX, PetscInt b
 PetscErrorCode CSOperatorLaplacian(CSMesh m, Vec x, MatReuse reuse, Mat *L)
 {
   PetscFunctionBeginUser;
-  PetscCall(AssembleCotanLaplacian(m, x, m->dmV1, 1, reuse, L, PETSC_FALSE));
+  PetscCall(AssembleCotanLaplacian(m, x, m->dmV1, 1, reuse, L, WEIGHT_COTAN));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode CSOperatorLaplacian3(CSMesh m, Vec x, MatReuse reuse, Mat *L3)
 {
   PetscFunctionBeginUser;
-  PetscCall(AssembleCotanLaplacian(m, x, m->dmV3, 3, reuse, L3, PETSC_FALSE));
+  PetscCall(AssembleCotanLaplacian(m, x, m->dmV3, 3, reuse, L3, WEIGHT_COTAN));
   PetscFunctionReturn(0);
 }
 
@@ -57,7 +68,18 @@ PetscErrorCode CSOperatorLaplacian3(CSMesh m, Vec x, MatReuse reuse, Mat *L3)
 PetscErrorCode CSOperatorGraphLaplacian3(CSMesh m, Vec x, MatReuse reuse, Mat *A3)
 {
   PetscFunctionBeginUser;
-  PetscCall(AssembleCotanLaplacian(m, x, m->dmV3, 3, reuse, A3, PETSC_TRUE));
+  PetscCall(AssembleCotanLaplacian(m, x, m->dmV3, 3, reuse, A3, WEIGHT_UNIFORM));
+  PetscFunctionReturn(0);
+}
+
+/* The graph Laplacian with the weight 1/sqrt(A_f) per face side (face area A_f of x): the minimiser of
+   sum_f A_f^-1/2 sum_{edges of f} |x_i - x_j|^2 over tangential moves, with the areas frozen and updated between
+   solves, spaces the vertices in proportion to the local edge length across the mesh (on a torus of revolution:
+   poloidal spacing ~ the distance to the axis, every grid cell the same shape; docs/bench_evolver.md). */
+PetscErrorCode CSOperatorScaledGraphLaplacian3(CSMesh m, Vec x, MatReuse reuse, Mat *A3)
+{
+  PetscFunctionBeginUser;
+  PetscCall(AssembleCotanLaplacian(m, x, m->dmV3, 3, reuse, A3, WEIGHT_SCALED));
   PetscFunctionReturn(0);
 }
 

@@ -3,6 +3,7 @@ static const char help[] = "Checks of the foundation layer: energy gradients aga
                            "check; the exit status is the number of failed checks.\n";
 
 #include "cs_energy.h"
+#include "cs_geometry.h"
 #include "cs_util.h"
 #include "cs_test.h"
 #include <petscksp.h>
@@ -157,6 +158,49 @@ static PetscErrorCode CheckSequence(MPI_Comm comm, Gen g, const char label[], Pe
   PetscFunctionReturn(0);
 }
 
+/* Folds against smooth rotations (the fold guard of issue #19): mirroring the upper half of a torus (z -> -z for
+   z > 0) folds it back onto the lower half, a crease of ~180 degrees along both equators (two rings of n edges at
+   least); a rigid rotation by 170 degrees turns every face against its input direction but makes no crease; the
+   mirrored state against itself has no new crease. */
+static PetscErrorCode CheckCreases(MPI_Comm comm, CSMesh mesh, const char label[])
+{
+  Vec          y, z;
+  PetscScalar *a;
+  PetscInt     n, nmir, nrot, nself, nflip;
+  char         what[160];
+  PetscFunctionBeginUser;
+  PetscCall(VecDuplicate(mesh->x, &y));
+  PetscCall(VecDuplicate(mesh->x, &z));
+  PetscCall(VecCopy(mesh->x, y));
+  PetscCall(VecCopy(mesh->x, z));
+  PetscCall(VecGetLocalSize(y, &n));
+  PetscCall(VecGetArray(y, &a));
+  for (PetscInt i = 0; i < n / 3; i++)
+    if (PetscRealPart(a[3 * i + 2]) > 0) a[3 * i + 2] = -a[3 * i + 2];
+  PetscCall(VecRestoreArray(y, &a));
+  PetscCall(VecGetArray(z, &a));
+  for (PetscInt i = 0; i < n / 3; i++) { /* about the x axis by 170 degrees */
+    const PetscReal c = PetscCosReal(170 * PETSC_PI / 180), s = PetscSinReal(170 * PETSC_PI / 180);
+    PetscReal       q1 = PetscRealPart(a[3 * i + 1]), q2 = PetscRealPart(a[3 * i + 2]);
+    a[3 * i + 1] = c * q1 - s * q2;
+    a[3 * i + 2] = s * q1 + c * q2;
+  }
+  PetscCall(VecRestoreArray(z, &a));
+  PetscCall(CSGeometryCreasedEdges(mesh, mesh->x, y, 150, &nmir));
+  PetscCall(CSGeometryCreasedEdges(mesh, mesh->x, z, 150, &nrot));
+  PetscCall(CSGeometryCreasedEdges(mesh, y, y, 150, &nself));
+  PetscCall(CSGeometryFoldedFaces(mesh, mesh->x, z, &nflip));
+  PetscCall(PetscSNPrintf(what, sizeof(what), "%s mirrored onto its lower half: creases > 150 deg (at least 2 x 16)", label));
+  PetscCall(CSTestCheck(comm, (PetscBool)(nmir >= 32), what, (PetscReal)nmir, 32));
+  PetscCall(PetscSNPrintf(what, sizeof(what), "%s rotated by 170 deg: no crease, while %" PetscInt_FMT " faces (over half) point against the input", label, nflip));
+  PetscCall(CSTestCheck(comm, (PetscBool)(nrot == 0 && 2 * nflip > mesh->Nf), what, (PetscReal)nrot, 0));
+  PetscCall(PetscSNPrintf(what, sizeof(what), "%s mirrored, against itself: no new crease", label));
+  PetscCall(CSTestCheck(comm, (PetscBool)(nself == 0), what, (PetscReal)nself, 0));
+  PetscCall(VecDestroy(&y));
+  PetscCall(VecDestroy(&z));
+  PetscFunctionReturn(0);
+}
+
 /* The checks that run on one mesh, in order, each on its own copy of the mesh (MakeMesh is deterministic). */
 typedef struct {
   PetscErrorCode (*check)(MPI_Comm, CSMesh, const char[]);
@@ -173,6 +217,7 @@ static const MeshCheck mesh_checks[] = {
   {CheckGradients,  GEN_CYLINDER,  16, 6, 0,   0,   0.03, "perturbed open cylinder (boundary)"},
   {CheckLaplacian,  GEN_ICOSPHERE, 3,  0, 0,   0,   0,    "icosphere"                         },
   {CheckLaplacian,  GEN_DISK,      6,  0, 0,   0,   0,    "disk (boundary)"                   },
+  {CheckCreases,    GEN_TORUS,     16, 8, 2.0, 0.7, 0,    "torus 16 x 8"                      },
 };
 
 int main(int argc, char **argv)

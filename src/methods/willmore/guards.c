@@ -98,18 +98,32 @@ PetscErrorCode CSWFCheckStepGeometry(CSWillmoreFlow F, PetscBool *accept)
   PetscFunctionReturn(0);
 }
 
-/* The fold guard (-flow_fold_guard; on for gd and newton): *folded when the enclosed volume of a closed surface
-   has changed sign against the input, or a face points against its input orientation (the surface has passed
-   through itself, or turned inside out). Otherwise x is recorded as the last good state. */
+/* The fold guard (-flow_fold_guard; on for gd and newton): *folded when
+   - the enclosed volume of a closed surface has changed sign against the input (turned inside out), or
+   - a face points against its orientation in the last accepted state (it turned over within one iteration: the
+     trial steps are checked the same way by CSWFCheckStepGeometry, but a kind's accept hook, e.g. newton's
+     tangential relaxation, moves the vertices after that check), or
+   - an interior edge has become a crease of more than CS_WF_FOLD_CREASE degrees between its two faces' normals
+     (the surface folds back on itself across it; creases already in the input do not count).
+   A face that rotates smoothly with its neighbours is not a fold, however far it turns against the input: the
+   low-res bunny's ears flatten and their faces point against their input directions after 16 uncapped gd
+   iterations with every neighbour within 26 degrees (issue #19); the first uncapped, unguarded gd step on the
+   R = 3 torus makes 384 edges with normals 180 degrees apart. Otherwise x is recorded as the last good state. */
+#define CS_WF_FOLD_CREASE 150.0
 PetscErrorCode CSWFCheckFolds(CSWillmoreFlow F, PetscBool *folded)
 {
-  PetscInt nfold;
+  PetscInt nfold, ncrease;
   PetscFunctionBeginUser;
   *folded = PETSC_FALSE;
   if (!F->fold_guard) PetscFunctionReturn(0);
-  PetscCall(CSGeometryFoldedFaces(F->mesh, F->x0, F->x, &nfold));
-  *folded = (PetscBool)(nfold > 0 || (F->mesh->topo.boundary_loops == 0 && !(F->V * F->V0 > 0)));
-  if (*folded) PetscCall(PetscPrintf(F->comm, "flow: the surface folds at iteration %" PetscInt_FMT ": enclosed volume %g (input %g), %" PetscInt_FMT " faces turned over against the input (-%sfold_guard). Stopping with the last good state\n", F->it, (double)F->V, (double)F->V0, nfold, F->prefix));
-  else PetscCall(VecCopy(F->x, F->xgood));
+  nfold = 0; /* the first state checked (the input, or a checkpoint's) has no accepted state before it */
+  if (F->good_set) PetscCall(CSGeometryFoldedFaces(F->mesh, F->xgood, F->x, &nfold));
+  PetscCall(CSGeometryCreasedEdges(F->mesh, F->x0, F->x, CS_WF_FOLD_CREASE, &ncrease));
+  *folded = (PetscBool)(nfold > 0 || ncrease > 0 || (F->mesh->topo.boundary_loops == 0 && !(F->V * F->V0 > 0)));
+  if (*folded) PetscCall(PetscPrintf(F->comm, "flow: the surface folds at iteration %" PetscInt_FMT ": enclosed volume %g (input %g), %" PetscInt_FMT " faces turned over since the last accepted state, %" PetscInt_FMT " new creases of more than %.0f degrees between neighbouring faces (-%sfold_guard). Stopping with the last good state\n", F->it, (double)F->V, (double)F->V0, nfold, ncrease, (double)CS_WF_FOLD_CREASE, F->prefix));
+  else {
+    PetscCall(VecCopy(F->x, F->xgood));
+    F->good_set = PETSC_TRUE;
+  }
   PetscFunctionReturn(0);
 }

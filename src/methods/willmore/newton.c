@@ -12,7 +12,8 @@
    (truncated CG, Steihaug) and is taken if it is not zero, otherwise (and whenever the direction is not a descent
    direction) the H^2 metric step phi = -P^{-1} N^T g, i.e. one Sobolev gradient step in normal
    coordinates. After an accepted step the vertices relax within their tangent planes toward the graph-harmonic
-   distribution (Relax, -flow_newton_relax). Step length: t = 1 first, halved on rejection (energy increase, -flow_max_step, a face turned
+   distribution (Relax, -flow_newton_relax), or with -flow_newton_relax_scaled toward spacing in proportion to the
+   local edge length (the smallest angle: docs/bench_evolver.md). Step length: t = 1 first, halved on rejection (energy increase, -flow_max_step, a face turned
    over), doubled after an accepted step up to -flow_t_max (default 1 here). Stopping: the normal residual
    ||N^T g||_2 < -flow_rtol (or -flow_energy_target). Constraints: none (no conformal, area, volume or point
    constraint; closed surfaces only): refused with a message. */
@@ -33,6 +34,8 @@ typedef struct {
   Vec       m1, w1;                      /* vertex areas M, work (dmV1) */
   KSP       inner;                       /* factorisation of L_n + s M (prefix <flow prefix>newton_inner_) */
   PetscReal relax;                       /* tangential relaxation after an accepted step (Relax), 0: off */
+  PetscInt  relax_sweeps;                /* solves of the relaxation per accepted step */
+  PetscBool relax_scaled;                /* weights 1/sqrt(face area) (CSOperatorScaledGraphLaplacian3), else 1 */
   Mat       G, PGP;                      /* graph Laplacian (dmV3) and its tangential part (shell) */
   KSP       kspT;
   Vec       at, bt;
@@ -104,6 +107,7 @@ static PetscErrorCode GetData(CSWillmoreFlow F, Newton **d)
     PetscCall(PetscNew(d));
     (*d)->factored  = PETSC_TRUE;
     (*d)->relax     = 0.3; /* bumpy level-4 sphere: smallest angle 22 -> 49 degrees, q_max 2.8 -> 1.6; torus unchanged */
+    (*d)->relax_sweeps = 1;
     (*d)->reuse_its = 0; /* refactor every iteration: kept factors change the inexact steps, and the final mesh quality moved both ways (docs/willmore_flow.md) */
     F->data         = *d;
   }
@@ -280,18 +284,40 @@ static PetscErrorCode TrialNewton(CSWillmoreFlow F, PetscBool *accept)
 }
 
 /* Tangential relaxation (-flow_newton_relax lambda): the vertices move within their tangent planes toward the
-   minimiser of the graph Dirichlet energy sum_edges |x_i - x_j|^2 (CG on P G P a = -P G x), by lambda of the way,
-   the largest move capped at -flow_max_step / 2 mean edge lengths. */
+   minimiser of the graph Dirichlet energy sum_edges w_ij |x_i - x_j|^2 (CG on P G P a = -P G x), by lambda of the way,
+   the largest move capped at -flow_max_step / 2 mean edge lengths; -flow_newton_relax_sweeps such solves, the
+   weights recomputed before each. Weights 1 (the graph-harmonic distribution: about equal edge lengths) or, with
+   -flow_newton_relax_scaled, 1/sqrt(area) of each face (CSOperatorScaledGraphLaplacian3: spacing in proportion to
+   the local edge length across the mesh, which raises the smallest angle where a region has shrunk in one
+   direction only, as the inner side of a torus does on its way to the Clifford torus; docs/bench_evolver.md). */
+static PetscErrorCode RelaxSweep(CSWillmoreFlow F, Newton *d)
+{
+  PetscReal amax, h;
+  PetscFunctionBeginUser;
+  if (d->relax_scaled) PetscCall(CSOperatorScaledGraphLaplacian3(F->mesh, F->x, MAT_REUSE_MATRIX, &d->G));
+  else PetscCall(CSOperatorGraphLaplacian3(F->mesh, F->x, MAT_REUSE_MATRIX, &d->G));
+  PetscCall(CSGeometryVertexNormals(F->mesh, F->x, d->nrm));
+  PetscCall(KSPSetOperators(d->kspT, d->PGP, d->PGP));
+  PetscCall(MatMult(d->G, F->x, d->u));
+  PetscCall(ProjectTangent(d, d->u));
+  PetscCall(VecScale(d->u, -1.0));
+  PetscCall(KSPSolve(d->kspT, d->u, d->at));
+  PetscCall(ProjectTangent(d, d->at));
+  PetscCall(VecNorm(d->at, NORM_INFINITY, &amax));
+  PetscCall(CSGeometryMeanEdgeLength(F->mesh, F->x, &h));
+  PetscCall(VecAXPY(F->x, PetscMin(d->relax, 0.5 * F->max_step * h / PetscMax(amax, 1e-300)), d->at));
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode Relax(CSWillmoreFlow F, Newton *d)
 {
-  PetscInt  n, N;
-  PetscReal amax, h;
-  PC        pc;
-  char      prefix[96];
+  PetscInt n, N;
+  PC       pc;
+  char     prefix[96];
   PetscFunctionBeginUser;
   if (!(d->relax > 0)) PetscFunctionReturn(0);
-  PetscCall(CSOperatorGraphLaplacian3(F->mesh, F->x, d->G ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX, &d->G));
   if (!d->PGP) {
+    PetscCall(CSOperatorGraphLaplacian3(F->mesh, F->x, MAT_INITIAL_MATRIX, &d->G));
     PetscCall(VecGetLocalSize(F->x, &n));
     PetscCall(VecGetSize(F->x, &N));
     PetscCall(MatCreateShell(F->comm, n, n, N, N, d, &d->PGP));
@@ -307,16 +333,7 @@ static PetscErrorCode Relax(CSWillmoreFlow F, Newton *d)
     PetscCall(KSPSetOptionsPrefix(d->kspT, prefix));
     PetscCall(KSPSetFromOptions(d->kspT));
   }
-  PetscCall(CSGeometryVertexNormals(F->mesh, F->x, d->nrm));
-  PetscCall(KSPSetOperators(d->kspT, d->PGP, d->PGP));
-  PetscCall(MatMult(d->G, F->x, d->u));
-  PetscCall(ProjectTangent(d, d->u));
-  PetscCall(VecScale(d->u, -1.0));
-  PetscCall(KSPSolve(d->kspT, d->u, d->at));
-  PetscCall(ProjectTangent(d, d->at));
-  PetscCall(VecNorm(d->at, NORM_INFINITY, &amax));
-  PetscCall(CSGeometryMeanEdgeLength(F->mesh, F->x, &h));
-  PetscCall(VecAXPY(F->x, PetscMin(d->relax, 0.5 * F->max_step * h / PetscMax(amax, 1e-300)), d->at));
+  for (PetscInt k = 0; k < d->relax_sweeps; k++) PetscCall(RelaxSweep(F, d));
   PetscFunctionReturn(0);
 }
 
@@ -336,9 +353,12 @@ static PetscErrorCode SetUpNewton(CSWillmoreFlow F)
   PetscOptionsBegin(F->comm, F->prefix, "Newton flow (-flow_type newton)", NULL);
   PetscCall(PetscOptionsBool("-newton_factored_pc", "Precondition CG with (s M + L_n) M^-1 (s M + L_n) (two 1-ring solves) instead of a factorisation of N^T I_H2 N", NULL, d->factored, &d->factored, NULL));
   PetscCall(PetscOptionsReal("-newton_relax", "Tangential relaxation toward the graph-harmonic vertex distribution after each accepted step: fraction of the way (0: off)", NULL, d->relax, &d->relax, NULL));
+  PetscCall(PetscOptionsInt("-newton_relax_sweeps", "Solves of the tangential relaxation per accepted step (weights recomputed before each)", NULL, d->relax_sweeps, &d->relax_sweeps, NULL));
+  PetscCall(PetscOptionsBool("-newton_relax_scaled", "Weight the relaxation's edges by 1/sqrt(face area) (spacing in proportion to the local edge length: raises the smallest angle) instead of 1", NULL, d->relax_scaled, &d->relax_scaled, NULL));
   PetscCall(PetscOptionsInt("-newton_reuse_its", "Keep the factored metric preconditioner of an earlier iteration while CG needed at most this many iterations (0: refactor every iteration)", NULL, d->reuse_its, &d->reuse_its, NULL));
   PetscOptionsEnd();
   PetscCheck(d->relax >= 0 && d->relax <= 1, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%snewton_relax %g: must lie in [0, 1]", p, (double)d->relax);
+  PetscCheck(d->relax_sweeps >= 1, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%snewton_relax_sweeps %" PetscInt_FMT ": must be >= 1", p, d->relax_sweeps);
   PetscCheck(d->reuse_its >= 0, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%snewton_reuse_its %" PetscInt_FMT ": must be >= 0", p, d->reuse_its);
   PetscCheck(!F->conformal, F->comm, PETSC_ERR_ARG_INCOMP, "-%stype newton is unconstrained: -%sconformal true is not supported (use cgd or pgd)", p, p);
   PetscCheck(!F->area_set && !F->vol_set && !F->points[0] && !F->mobius && !F->target[0], F->comm, PETSC_ERR_ARG_INCOMP, "-%stype newton supports no constraints (area, volume, points, Moebius, target mesh): use gd or cgd", p);

@@ -101,8 +101,10 @@ static PetscErrorCode StopIfFolded(CSWillmoreFlow F)
   PetscFunctionBeginUser;
   PetscCall(CSWFCheckFolds(F, &folded));
   if (!folded) PetscFunctionReturn(0);
-  PetscCall(VecCopy(F->xgood, F->x));
-  PetscCall(Evaluate(F));
+  if (F->good_set) { /* else the first state is folded already: it is all there is */
+    PetscCall(VecCopy(F->xgood, F->x));
+    PetscCall(Evaluate(F));
+  }
   F->reason = CS_WILLMORE_FLOW_DIVERGED_FOLDED;
   PetscFunctionReturn(0);
 }

@@ -159,6 +159,7 @@ struct _p_CSWillmoreFlow {
   PetscReal             energy_target; /* stop when E <= this */
   PetscBool             energy_target_set;
   Vec                   xgood;         /* the last state that passed the fold guard */
+  PetscBool             good_set;      /* xgood holds a state (else the guard compares against the input) */
   PetscReal             V0;            /* enclosed volume of the input */
   void                 *data;          /* the kind's own data */
 
