@@ -81,6 +81,7 @@ static void SetDefaults(CSWillmoreFlow F)
   F->alm_rho_max     = 1e8;
   F->alm_inner_it    = 10;
   F->alm_update      = -1;
+  F->alm_metric      = CS_ALM_METRIC_GAUSS_NEWTON; /* converges for moderate rho; plain (the paper's explicit baseline) does not (docs/alm.md) */
   F->metric_type     = CS_FLOW_METRIC_H2;
   F->boundary        = CS_FLOW_BOUNDARY_DIRICHLET;
   F->saddle_mat      = CS_SADDLE_MAT_NEST;
