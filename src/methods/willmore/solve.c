@@ -39,7 +39,8 @@ static PetscErrorCode StepWithRejections(CSWillmoreFlow F, PetscBool *accepted)
   for (PetscInt rej = 0;; rej++) {
     PetscBool accept;
     if (F->t < F->t_min) {
-      PetscCall(PetscPrintf(F->comm, "flow: the step size t = %g fell below -%st_min (%g) at iteration %" PetscInt_FMT ": stalled, stopping with the last accepted state (not converged: el_residual %.3e)\n", (double)F->t, F->prefix, (double)F->t_min, F->it, (double)F->el));
+      PetscBool atceil = (PetscBool)(F->step_control && PetscMax(F->conf, F->glob) >= 0.5 * F->vmax);
+      PetscCall(PetscPrintf(F->comm, "flow: the step size t = %g fell below -%st_min (%g) at iteration %" PetscInt_FMT ": stalled, stopping with the last accepted state (not converged: el_residual %.3e, conformal violation %.3e, constraint violation %.3e%s%s%s)\n", (double)F->t, F->prefix, (double)F->t_min, F->it, (double)F->el, (double)F->conf, (double)F->glob, atceil ? "; the violation is near the ceiling -" : "", atceil ? F->prefix : "", atceil ? "vmax, above which a trial step is rejected" : ""));
       *accepted = PETSC_FALSE;
       F->reason = CS_WILLMORE_FLOW_STALLED;
       PetscFunctionReturn(0);
