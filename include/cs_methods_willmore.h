@@ -67,6 +67,7 @@ typedef struct {
   PetscInt         ksp_its;             /* Krylov iterations of the last step */
   PetscInt         ksp_its_total, rejections, nguard, pc_setups, linear_solves;
   PetscReal        area_spread, q_max, seconds;
+  PetscReal        violation_max;       /* the largest constraint violation (conformal or global) of any iterate */
   CSWillmoreFlowDegeneration degeneration; /* set when the resolution guard stopped the flow */
   PetscInt         k;                   /* global constraint values */
   const PetscReal *constraint_values;

@@ -231,6 +231,7 @@ PetscErrorCode CSWillmoreFlowGetInfo(CSWillmoreFlow F, CSWillmoreFlowInfo *info)
   info->pc_setups            = F->saddle.setups;
   info->linear_solves        = F->saddle.solves;
   info->area_spread          = F->spread;
+  info->violation_max        = F->viol_max;
   info->q_max                = F->qmax;
   info->degeneration         = F->degeneration;
   info->seconds              = now - F->t0;

@@ -11,6 +11,7 @@ static PetscErrorCode Evaluate(CSWillmoreFlow F)
   if (F->ops.residual) PetscCall((*F->ops.residual)(F, &F->el));
   else PetscCall(CSWFResidual(F, &F->el));
   PetscCall(CSWFViolation(F, F->c, F->cx, &F->conf, &F->glob));
+  F->viol_max = PetscMax(F->viol_max, PetscMax(F->conf, F->glob));
   PetscCall(CSGeometryAreaVolume(F->mesh, F->x, &F->A, &F->V));
   PetscCall(CSWFMeasureQuality(F));
   PetscFunctionReturn(0);

@@ -158,6 +158,7 @@ struct _p_CSWillmoreFlow {
   PetscBool             resumed, started;
   PetscLogDouble        t0;
   PetscReal             E, el, conf, glob, A, V, area_ratio, spread, qmax; /* at x, from the last evaluation */
+  PetscReal             viol_max; /* the largest max(conf, glob) of any evaluated state (before a projection at the stop) */
 };
 
 /* evaluate.c */
