@@ -38,8 +38,14 @@ PETSC_EXTERN PetscErrorCode CSMeshDataFlatTorus(PetscReal tau_re, PetscReal tau_
 PETSC_EXTERN PetscErrorCode CSMeshDataCylinder(PetscReal radius, PetscReal height, PetscInt n, PetscInt m, CSMeshData *md);
 PETSC_EXTERN PetscErrorCode CSMeshDataDisk(PetscReal radius, PetscInt rings, CSMeshData *md);
 
+/* levels regular 1-to-4 splits in place (loop: Loop subdivision, boundary vertices kept; else midpoints);
+   md->name gets the suffix "(loop refined 2x)". Serial (rank 0 data). */
+PETSC_EXTERN PetscErrorCode CSMeshDataRefine(CSMeshData *md, PetscInt levels, PetscBool loop);
+
 /* Builds md from the options database: -mesh FILE, or -gen icosphere|torus|flattorus|cylinder|disk with
    -gen_level, -gen_radius, -gen_torus_R, -gen_tube_r (PETSc option names ignore case), -gen_n, -gen_m, -gen_tau_re, -gen_tau_im, -gen_height, -gen_rings,
+   -mesh_refine n and -mesh_refine_type loop|midpoint (after validation),
+   -mesh_refine n and -mesh_refine_type loop|midpoint (after validation),
    then validates it (topo filled on rank 0). Collective on comm: options are read on every rank, the data is
    loaded on rank 0 only (other ranks get an empty md); an error on rank 0 is raised on every rank (no hang). */
 PETSC_EXTERN PetscErrorCode CSMeshDataFromOptions(MPI_Comm comm, const char prefix[], CSMeshData *md, CSTopology *topo);

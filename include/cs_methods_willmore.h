@@ -68,6 +68,7 @@ typedef struct {
   PetscInt         ksp_its;             /* Krylov iterations of the last step */
   PetscInt         ksp_its_total, rejections, nguard, pc_setups, linear_solves;
   PetscReal        area_spread, q_max, seconds;
+  PetscReal        violation_max;       /* the largest constraint violation (conformal or global) of any iterate */
   CSWillmoreFlowDegeneration degeneration; /* set when the resolution guard stopped the flow */
   PetscReal        integrability_violation; /* trianglefield: max of |d1 omega|, face closure, |<<Y_i|omega>>| (-1: other kinds) */
   PetscInt         k;                   /* global constraint values */

@@ -16,9 +16,9 @@ run() { # name options...
   echo "$n: $(grep -E 'converged' "$out/$n.log" | tail -1 | cut -c1-120)"
 }
 run cgd
-for r in 0.1 10 1000; do run gn_rho_$r -flow_type alm -flow_alm_metric gauss_newton -flow_alm_rho $r; done
-run plain_rho_10 -flow_type alm -flow_alm_rho 10
-run plain_rho_0.01_fixed -flow_type alm -flow_alm_rho 0.01 -flow_alm_rho_grow 1
+for r in 0.1 10 1000; do run gn_rho_$r -flow_type alm -flow_alm_rho $r; done
+run plain_rho_10 -flow_type alm -flow_alm_metric plain -flow_alm_rho 10
+run plain_rho_0.01_fixed -flow_type alm -flow_alm_metric plain -flow_alm_rho 0.01 -flow_alm_rho_grow 1
 runs=(); curves=()
 for n in cgd gn_rho_0.1 gn_rho_10 gn_rho_1000 plain_rho_10 plain_rho_0.01_fixed; do runs+=("$n=$out/$n.json"); curves+=("$n=$out/$n.csv"); done
 {

@@ -26,7 +26,7 @@ declare -A SHAPE=(
 METHODS="cgd pgd alm gd"; METRICS="h2 l2"
 opts() { # method metric
   case $1 in
-    alm) echo "-flow_type alm -flow_alm_rho $ALM_RHO -flow_alm_rho_grow 1" ;;
+    alm) echo "-flow_type alm -flow_alm_metric plain -flow_alm_rho $ALM_RHO -flow_alm_rho_grow 1" ;;
     gd) echo "-flow_type gd" ;;
     *) echo "-flow_type $1" ;;
   esac

@@ -19,7 +19,10 @@ typedef struct {
   PetscInt  level, n, m, rings;
   PetscReal radius, R, r, tau_re, tau_im, height;
   PetscBool project;
+  PetscInt  refine;      /* -mesh_refine: 1-to-4 splits after validation (meshdata_refine.c) */
+  PetscBool refine_loop; /* -mesh_refine_type loop (default) or midpoint */
 } MeshSource;
+static const char *const RefineNames[] = {"midpoint", "loop"};
 
 /* Rank 0, under PetscReturnErrorHandler: on failure nothing stays allocated in md. */
 static PetscErrorCode MeshSourceLoad(const MeshSource *src, CSMeshData *md, CSTopology *topo)
@@ -38,6 +41,10 @@ static PetscErrorCode MeshSourceLoad(const MeshSource *src, CSMeshData *md, CSTo
     }
   }
   ierr = CSMeshDataValidate(md, topo);
+  if (!ierr && src->refine) {
+    ierr = CSMeshDataRefine(md, src->refine, src->refine_loop);
+    if (!ierr) ierr = CSMeshDataValidate(md, topo);
+  }
   if (ierr) { /* keep the validation message (CSSyncError reads it) and free the data */
     PetscCall(CSMeshDataDestroy(md));
     return ierr;
@@ -49,7 +56,7 @@ PetscErrorCode CSMeshDataFromOptions(MPI_Comm comm, const char prefix[], CSMeshD
 {
   MeshSource  src;
   PetscBool   genset = PETSC_FALSE;
-  PetscInt    gen    = GEN_ICOSPHERE;
+  PetscInt    gen    = GEN_ICOSPHERE, rtype = 1;
   const char *pre    = prefix ? prefix : "";
 
   PetscFunctionBeginUser;
@@ -81,7 +88,11 @@ PetscErrorCode CSMeshDataFromOptions(MPI_Comm comm, const char prefix[], CSMeshD
   PetscCall(PetscOptionsReal("-gen_tau_im", "Flat torus: imaginary part of tau", "CSMeshDataFlatTorus", src.tau_im, &src.tau_im, NULL));
   PetscCall(PetscOptionsReal("-gen_height", "Cylinder: height", "CSMeshDataCylinder", src.height, &src.height, NULL));
   PetscCall(PetscOptionsInt("-gen_rings", "Disk: number of rings", "CSMeshDataDisk", src.rings, &src.rings, NULL));
+  PetscCall(PetscOptionsInt("-mesh_refine", "Regular 1-to-4 refinements of the input (file or generator); the refined mesh's conformal class is a flow's constraint", "CSMeshDataRefine", src.refine, &src.refine, NULL));
+  PetscCall(PetscOptionsEList("-mesh_refine_type", "Positions of the refined vertices: midpoint (shape kept) or loop (Loop subdivision)", "CSMeshDataRefine", RefineNames, 2, RefineNames[rtype], &rtype, NULL));
   PetscOptionsEnd();
+  PetscCheck(src.refine >= 0 && src.refine <= 6, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%smesh_refine %" PetscInt_FMT ": not in [0, 6] (each level multiplies the faces by 4)", pre, src.refine);
+  src.refine_loop = rtype == 1 ? PETSC_TRUE : PETSC_FALSE;
   PetscCheck(src.file != genset, comm, PETSC_ERR_ARG_WRONG, "give exactly one of -%smesh FILE and -%sgen icosphere|torus|flattorus|cylinder|disk (%s)", pre, pre, src.file ? "both were given" : "neither was given");
   src.gen = (GenType)gen;
   CSRootCall(comm, MeshSourceLoad(&src, md, topo));

@@ -24,6 +24,7 @@ static PetscErrorCode SummaryKeys(CSWillmoreFlow flow, CSOutput *out, const CSWi
   PetscCall(CSJSONAddReal(out->json, "energy_initial", E0)); /* of the input (after any -gen_deform_*) */
   PetscCall(CSJSONAddReal(out->json, "energy", i->energy));
   PetscCall(CSJSONAddReal(out->json, "area_spread", i->area_spread));
+  PetscCall(CSJSONAddReal(out->json, "violation_max", i->violation_max)); /* a violation that grew and was projected away at the stop stays visible */
   PetscCall(CSJSONAddReal(out->json, "conformal_violation", i->conformal_violation));
   PetscCall(CSJSONAddReal(out->json, "constraint_violation", i->constraint_violation));
   PetscCall(CSJSONAddReal(out->json, "el_residual", i->el_residual));
@@ -53,7 +54,7 @@ PetscErrorCode CSWillmoreFlowReport(CSWillmoreFlow flow, CSOutput *out)
   PetscCall(CSWillmoreFlowGetMesh(flow, &mesh));
   PetscCall(CSWillmoreFlowGetSolution(flow, &x));
   PetscCall(CSWillmoreFlowGetInitial(flow, &x0));
-  PetscCall(PetscPrintf(mesh->comm, "flow %s: %s after %" PetscInt_FMT " iterations (%s; %" PetscInt_FMT " rejected steps, %" PetscInt_FMT " KSP iterations, %" PetscInt_FMT " edges with guarded I_Q weight), %.3f s\n", type, CSWillmoreFlowReasonConverged(reason) ? "converged" : "NOT converged", i.it, CSWillmoreFlowStopReasons[reason], i.rejections, i.ksp_its_total, i.nguard, i.seconds));
+  PetscCall(PetscPrintf(mesh->comm, "flow %s: %s after %" PetscInt_FMT " iterations (%s; %" PetscInt_FMT " rejected steps, %" PetscInt_FMT " KSP iterations, %" PetscInt_FMT " edges with guarded I_Q weight), %.3f s; conformal violation %.2e, constraint violation %.2e (largest of the run %.2e), EL residual %.2e\n", type, CSWillmoreFlowReasonConverged(reason) ? "converged" : "NOT converged", i.it, CSWillmoreFlowStopReasons[reason], i.rejections, i.ksp_its_total, i.nguard, i.seconds, (double)i.conformal_violation, (double)i.constraint_violation, (double)i.violation_max, (double)i.el_residual));
   PetscCall(SummaryKeys(flow, out, &i));
   PetscCall(CSOutputAddMeshFacts(out, mesh, x, x0));
   PetscCall(CSOutputFinish(out, mesh, x));

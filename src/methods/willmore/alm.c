@@ -9,9 +9,9 @@
        mu <- mu + rho c,   nu_j <- nu_j + rho xi_j / g_j,
    and rho grows by -flow_alm_rho_grow (up to -flow_alm_rho_max) when the violation did not fall below a quarter
    of its value at the previous update (Nocedal & Wright Algorithm 17.4). rho is given relative to |E(input)|.
-   -flow_alm_metric plain (default) is the paper's baseline: the metric H alone, whose steps the penalty's
-   curvature rho X^T X limits to t ~ 1/rho; gauss_newton adds that curvature to the metric (below), so the inner
-   loop takes full steps for any rho (docs/alm.md).
+   -flow_alm_metric plain is the paper's baseline: the metric H alone, whose steps the penalty's curvature
+   rho X^T X limits to t ~ 1/rho; gauss_newton (the default) adds that curvature to the metric (below), so the
+   inner loop takes full steps for any rho (docs/alm.md says why it is the default).
    The reported Euler-Lagrange residual is |g + X^T mu~ + sum nu~_j row_j| with the first-order estimates
    mu~ = mu + rho c, nu~_j = nu_j + rho xi_j / g_j, i.e. |grad L_A|: it is the residual of soliman2021 Eq. 7 with
    the multiplier the method would take next. The saddle solver is used without the edge block (a metric solve). */

@@ -82,6 +82,7 @@ static void SetDefaults(CSWillmoreFlow F)
   F->alm_rho_max     = 1e8;
   F->alm_inner_it    = 10;
   F->alm_update      = -1;
+  F->alm_metric      = CS_ALM_METRIC_GAUSS_NEWTON; /* converges for moderate rho; plain (the paper's explicit baseline) does not (docs/alm.md) */
   F->metric_type     = CS_FLOW_METRIC_H2;
   F->boundary        = CS_FLOW_BOUNDARY_DIRICHLET;
   F->saddle_mat      = CS_SADDLE_MAT_NEST;
@@ -242,6 +243,7 @@ PetscErrorCode CSWillmoreFlowGetInfo(CSWillmoreFlow F, CSWillmoreFlowInfo *info)
   info->pc_setups            = F->saddle.setups;
   info->linear_solves        = F->saddle.solves;
   info->area_spread          = F->spread;
+  info->violation_max        = F->viol_max;
   info->q_max                = F->qmax;
   info->degeneration         = F->degeneration;
   info->seconds              = now - F->t0;

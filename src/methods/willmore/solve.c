@@ -5,18 +5,18 @@
 static PetscErrorCode Evaluate(CSWillmoreFlow F)
 {
   PetscFunctionBeginUser;
-  if (F->ops.evaluate) {
-    PetscCall((*F->ops.evaluate)(F));
-    PetscFunctionReturn(0);
+  if (F->ops.evaluate) PetscCall((*F->ops.evaluate)(F)); /* a kind with its own variables (trianglefield) */
+  else {
+    PetscCall(CSEnergyGradient(F->energy, F->x, &F->E, F->g));
+    PetscCall(CSWFZeroFixed(F, F->g));
+    PetscCall(CSWFEvalConstraints(F, F->x, F->c, F->cx, PETSC_TRUE));
+    if (F->ops.residual) PetscCall((*F->ops.residual)(F, &F->el));
+    else PetscCall(CSWFResidual(F, &F->el));
+    PetscCall(CSWFViolation(F, F->c, F->cx, &F->conf, &F->glob));
+    PetscCall(CSGeometryAreaVolume(F->mesh, F->x, &F->A, &F->V));
+    PetscCall(CSWFMeasureQuality(F));
   }
-  PetscCall(CSEnergyGradient(F->energy, F->x, &F->E, F->g));
-  PetscCall(CSWFZeroFixed(F, F->g));
-  PetscCall(CSWFEvalConstraints(F, F->x, F->c, F->cx, PETSC_TRUE));
-  if (F->ops.residual) PetscCall((*F->ops.residual)(F, &F->el));
-  else PetscCall(CSWFResidual(F, &F->el));
-  PetscCall(CSWFViolation(F, F->c, F->cx, &F->conf, &F->glob));
-  PetscCall(CSGeometryAreaVolume(F->mesh, F->x, &F->A, &F->V));
-  PetscCall(CSWFMeasureQuality(F));
+  F->viol_max = PetscMax(F->viol_max, PetscMax(F->conf, F->glob)); /* every kind: reported as violation_max */
   PetscFunctionReturn(0);
 }
 
@@ -47,7 +47,8 @@ static PetscErrorCode StepWithRejections(CSWillmoreFlow F, PetscBool *accepted)
   for (PetscInt rej = 0;; rej++) {
     PetscBool accept;
     if (F->t < F->t_min) {
-      PetscCall(PetscPrintf(F->comm, "flow: the step size t = %g fell below -%st_min (%g) at iteration %" PetscInt_FMT ": stalled, stopping with the last accepted state (not converged: el_residual %.3e)\n", (double)F->t, F->prefix, (double)F->t_min, F->it, (double)F->el));
+      PetscBool atceil = (PetscBool)(F->step_control && PetscMax(F->conf, F->glob) >= 0.5 * F->vmax);
+      PetscCall(PetscPrintf(F->comm, "flow: the step size t = %g fell below -%st_min (%g) at iteration %" PetscInt_FMT ": stalled, stopping with the last accepted state (not converged: el_residual %.3e, conformal violation %.3e, constraint violation %.3e%s%s%s)\n", (double)F->t, F->prefix, (double)F->t_min, F->it, (double)F->el, (double)F->conf, (double)F->glob, atceil ? "; the violation is near the ceiling -" : "", atceil ? F->prefix : "", atceil ? "vmax, above which a trial step is rejected" : ""));
       *accepted = PETSC_FALSE;
       F->reason = CS_WILLMORE_FLOW_STALLED;
       PetscFunctionReturn(0);
