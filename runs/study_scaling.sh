@@ -8,6 +8,9 @@
 #   The extreme singular values of the preconditioned Schur operator come from -ksp_view_singularvalues of the
 #   Schur KSP (the last solve of the run). The multiplier path nests an H solve in every S_mu application and
 #   runs only up to level MULT_MAX (default 5).
+# Part 0 (serial, PART=first): the first Schur solve of the first step only (t = 1 and t_mu = c exactly: later
+#   solves of a step see rejected steps' smaller t and the restoration's t_mu = -flow_pgd_t_mu), primal path: CG
+#   iterations and the extreme singular values of the preconditioned Schur operator, levels FLEVELS, c in FCS.
 # Part 2 (ranks, oversubscribed): the default on NPS ranks at level RLEVEL, and the primal path with one hypre
 #   V-cycle inside csh2 (-flow_saddle_fieldsplit_1_h2_pc_type hypre): outer and Schur iterations, memory per rank
 #   (-memory_view: maximum process memory, max over ranks), MPI message volume (-log_view), interface size of
@@ -22,7 +25,8 @@ export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OPENBLAS_NUM_TH
 LEVELS=${LEVELS:-"4 5 6 7"}; CS=${CS:-"1 100 1000 4000"}; NITER=${NITER:-2}; MULT_MAX=${MULT_MAX:-5}
 CFIX=${CFIX:-1000}; PATHS=${PATHS:-"direct direct+reuse primal multiplier"}
 MULT_CMAX=${MULT_CMAX:-100}; NPS=${NPS:-"1 2 4 8"}; RLEVEL=${RLEVEL:-5}
-PART=${PART:-all} # serial | ranks | all | report (the tables and figures from the csv files already there)
+FLEVELS=${FLEVELS:-"3 4 5 6"}; FCS=${FCS:-"1 10 100 1000 4000"}; fcsv=runs/study_scaling_first.csv
+PART=${PART:-all} # first | serial | ranks | all | report (the tables and figures from the csv files already there)
 out=runs/study_scaling.md; csv=runs/study_scaling.csv; rcsv=runs/study_scaling_ranks.csv
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 GEN() { echo "-gen icosphere -gen_level $1 -gen_deform_bump 0.2 -gen_deform_stretch 1.5,1,0.8"; }
@@ -53,6 +57,16 @@ run1() { # level c path -> csv row
   echo "$p,$L,$faces,1,$c,${schur:-$outer},$spi,$outer,${inner:-},${sv% *},${sv#* },$(( $(cat "$tmp/mem") / 1024 ))" >> "$csv"
   echo "level $L c $c $p: schur its ${schur:--} outer $outer inner ${inner:--} s/step $spi sv ${sv} MB $(( $(cat "$tmp/mem") / 1024 ))"
 }
+if [ "$PART" = first ] || [ "$PART" = all ]; then
+  echo "series,level,faces,ranks,c,its,seconds,sv_max,sv_min" > "$fcsv"
+  for L in $FLEVELS; do for c in $FCS; do
+    bin/confsurf -task flow $(GEN "$L") -flow_t 1 -flow_t_max 1 -flow_t_mu "$c" -flow_max_it 1 -flow_rtol 0 $(path_args primal) > "$tmp/log" 2>&1 || { echo "FAILED: first solve level $L c $c"; continue; }
+    its=$(awk '/flow_saddle_fieldsplit_1_ solve converged/ { print $NF; exit }' "$tmp/log")
+    read -r mx mn < <(awk '/Iteratively computed extreme singular values/ { print $7, $9; exit }' "$tmp/log")
+    echo "primal first solve,$L,$((20 * 4 ** L)),1,$c,$its,,$mx,$mn" >> "$fcsv"
+    echo "first solve level $L c $c: CG its $its sv max $mx min $mn"
+  done; done
+fi
 if [ "$PART" = serial ] || [ "$PART" = all ]; then
   echo "series,level,faces,ranks,c,its,seconds,outer_its,inner_its,sv_max,sv_min,peak_MB" > "$csv"
   for L in $LEVELS; do for p in $PATHS; do run1 "$L" "$CFIX" "$p"; done; done
@@ -82,7 +96,7 @@ if [ "$PART" = ranks ] || [ "$PART" = all ]; then
   done
 fi
 
-[ "$PART" = serial ] || [ "$PART" = ranks ] && exit 0 # PART=report afterwards
+[ "$PART" = first ] || [ "$PART" = serial ] || [ "$PART" = ranks ] && exit 0 # PART=report afterwards
 # tables and figures
 python3 - "$csv" "$rcsv" "$CFIX" "$NITER" > "$out" <<'EOF'
 import csv, sys, os
@@ -97,6 +111,13 @@ print("| path | level | faces | c = t t_mu | its | outer | inner | s/step | sv m
 print("|---|---|---|---|---|---|---|---|---|---|---|")
 for r in sorted(rows, key=lambda r: (float(r["c"]) != float(sys.argv[3]), float(r["c"]), int(r["level"]), r["series"])):
     print("| %s | %s | %s | %s | %.1f | %.2f | %s | %.3g | %s | %s | %s |" % (r["series"], r["level"], r["faces"], r["c"], float(r["its"]), float(r["outer_its"]), r["inner_its"] or "-", float(r["seconds"]), r["sv_max"], r["sv_min"], r["peak_MB"]))
+first = sys.argv[2].replace("_ranks.csv", "_first.csv")
+if os.path.exists(first):
+    print("\n## The first Schur solve of the first step (t = 1, t_mu = c exactly), primal path\n")
+    print("| level | faces | c | CG its | sv max | sv min | sv max / c |")
+    print("|---|---|---|---|---|---|---|")
+    for r in sorted(csv.DictReader(open(first)), key=lambda r: (float(r["c"]), int(r["level"]))):
+        print("| %s | %s | %s | %s | %s | %s | %.3g |" % (r["level"], r["faces"], r["c"], r["its"], r["sv_max"], r["sv_min"], float(r["sv_max"]) / float(r["c"])))
 if os.path.exists(sys.argv[2]):
     print("\n## Ranks (oversubscribed beyond 2; time meaningful on 1-2 ranks only)\n")
     print("| path | faces | ranks | Schur its | outer | s/step | max MB per rank | MPI message bytes (total) | cssubchol interface dofs |")
@@ -109,5 +130,6 @@ awk -F, -v c="$CFIX" 'NR == 1 || $5 == c' "$csv" > "$tmp/size.csv"
 awk -F, 'BEGIN { OFS = "," } NR == 1 { print; next } $2 <= 5 { $1 = $1 " level " $2; print }' "$csv" > "$tmp/c.csv"
 /usr/bin/python3 scripts/plots.py scaling runs/study_scaling_size.png --x faces --title "Schur solves against mesh size (c = t t_mu = $CFIX)" "$tmp/size.csv"
 /usr/bin/python3 scripts/plots.py scaling runs/study_scaling_c.png --x c --title "Schur solves against c = t t_mu" "$tmp/c.csv"
+[ -s "$fcsv" ] && /usr/bin/python3 scripts/plots.py scaling runs/study_scaling_first.png --x faces --title "first Schur solve (primal): CG iterations against size, one line per c" <(awk -F, 'BEGIN { OFS = "," } NR == 1 { print; next } { $1 = "c = " $5; print }' "$fcsv")
 [ -s "$rcsv" ] && /usr/bin/python3 scripts/plots.py scaling runs/study_scaling_ranks.png --x ranks --title "level $RLEVEL on several ranks" "$rcsv"
 echo "wrote $out"
