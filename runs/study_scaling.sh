@@ -102,11 +102,12 @@ python3 - "$csv" "$rcsv" "$CFIX" "$NITER" > "$out" <<'EOF'
 import csv, sys, os
 rows = list(csv.DictReader(open(sys.argv[1])))
 print("# Study of issue #16: iterative Schur solves against the direct factorisation (runs/study_scaling.sh)\n")
-print("Machine loaded by other jobs (load 10-20 on 2 cores): seconds are upper bounds, iteration counts reliable.")
+print("Machine loaded by other jobs (load 15-33 on 2 cores when this was written): seconds are upper bounds, iteration counts reliable.")
 print("Bumpy icosphere, cgd, t = 1 fixed, t_mu = c, %s steps per run, a fresh preconditioner every step except"
       " direct+reuse. its = Krylov iterations per Schur solve (1 for direct); outer = FGMRES iterations per saddle"
       " solve; inner = CG iterations per H solve inside S_mu (multiplier); sv = extreme singular values of the"
-      " preconditioned Schur operator (last solve).\n" % sys.argv[4])
+      " preconditioned Schur operator (last solve). Means over all solves of the run: rejected steps (at small c)"
+      " halve t, the restoration solves with t_mu = 1e6; the first-solve table below has c exact.\n" % sys.argv[4])
 print("| path | level | faces | c = t t_mu | its | outer | inner | s/step | sv max | sv min | peak MB |")
 print("|---|---|---|---|---|---|---|---|---|---|---|")
 for r in sorted(rows, key=lambda r: (float(r["c"]) != float(sys.argv[3]), float(r["c"]), int(r["level"]), r["series"])):
