@@ -32,6 +32,24 @@ PETSC_EXTERN PetscErrorCode CSMatAddMapDestroy(CSMatAddMap *map);
    added to each diagonal entry is exactly MatShift's. */
 PETSC_EXTERN PetscErrorCode CSMatShiftedShared(Mat A, PetscScalar shift, MatReuse reuse, Mat *S);
 
+/* Iterative solvers of the Schur complement of the two-field saddle system [[-D/t_mu, X], [X^T, H/t]] on a
+   PCFIELDSPLIT (src/linalg/schur_iterative.c, docs/scaling.md): "direct" = the caller's factorisation of the
+   assembled S (nothing here), "primal" = CG + csh2 on S = H/t + t_mu X^T D^-1 X applied matrix-free,
+   "multiplier" = GMRES + Jacobi(D/t_mu) on S_mu = D/t_mu + t X H^-1 X^T with an inner CG + csh2 solve of H/t.
+   SetDefaults (before the PC's SetFromOptions): fieldsplit Schur, full factorisation, Schur preconditioner a11.
+   SetSplits: the splits in the type's order (isE the multiplier/edge rows, isV the positions). SetSubSolvers (after
+   the PC's first KSPSetUp): the split solvers' defaults, then their SetFromOptions; schur_rtol is the Schur
+   solve's relative tolerance. */
+typedef enum {
+  CS_SCHUR_DIRECT,
+  CS_SCHUR_PRIMAL,
+  CS_SCHUR_MULTIPLIER
+} CSSchurSolveType;
+PETSC_EXTERN const char *const CSSchurSolveTypes[];
+PETSC_EXTERN PetscErrorCode    CSSchurIterativeSetDefaults(PC pc);
+PETSC_EXTERN PetscErrorCode    CSSchurIterativeSetSplits(PC pc, CSSchurSolveType type, IS isE, IS isV);
+PETSC_EXTERN PetscErrorCode    CSSchurIterativeSetSubSolvers(PC pc, CSSchurSolveType type, PetscReal schur_rtol);
+
 /* norms_i = 2-norm of block i of x (blocks of bs consecutive entries; norms has one entry per local block) */
 PETSC_EXTERN PetscErrorCode CSVecBlockNorms(Vec x, PetscInt bs, Vec norms);
 

@@ -11,8 +11,11 @@
       a markdown table of summary keys (COLUMNS comma separated; a missing key prints as -), and derived columns:
       min_angle (degrees, from the .obj beside the summary), s_per_step (seconds per iteration), step_cost_rel
       (s_per_step relative to the run --ref)
+  /usr/bin/python3 scripts/plots.py scaling OUT.png --x COLUMN [--title T] RESULTS.csv
+      two panels (iterations, seconds against the column --x, log-log), one line per value of the csv's `series`
+      column (runs/study_scaling.sh; columns series, faces, ranks, c, its, seconds)
 
-The studies call these three; a new study reuses them."""
+The studies call these; a new study reuses them."""
 import argparse
 import csv
 import json
@@ -147,6 +150,25 @@ def table(out, columns, runs, ref=None):
             f.write(text)
 
 
+def scaling(out, x, path, title):
+    rows = list(csv.DictReader(open(path)))
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.2))
+    for ax, col, lab in zip(axes, ("its", "seconds"), ("Krylov iterations per solve", "seconds per step (under load)")):
+        for name in sorted({r["series"] for r in rows}):
+            pts = sorted((float(r[x]), float(r[col])) for r in rows if r["series"] == name and r[col] not in ("", "nan"))
+            if pts:
+                ax.plot([p[0] for p in pts], [p[1] for p in pts], "o-", label=name)
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_xlabel(x)
+        ax.set_ylabel(lab)
+        ax.grid(True, which="both", alpha=0.3)
+    axes[0].legend(fontsize=7)
+    fig.suptitle(title)
+    fig.tight_layout()
+    fig.savefig(out, dpi=110)
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     sub = ap.add_subparsers(dest="cmd", required=True)
@@ -166,12 +188,19 @@ def main(argv=None):
     t.add_argument("columns")
     t.add_argument("--ref", help="label of the run whose s_per_step is 1 in the column step_cost_rel")
     t.add_argument("runs", nargs="+")
+    g = sub.add_parser("scaling")
+    g.add_argument("out")
+    g.add_argument("--x", default="faces")
+    g.add_argument("--title", default="")
+    g.add_argument("csv")
     a = ap.parse_args(argv)
     if a.cmd == "curves":
         curves(a.out, a.x, pairs(a.runs), a.title)
     elif a.cmd == "panel":
         meshes = ([("input", read_obj(a.input))] if a.input else []) + [(lb, read_obj(pth)) for lb, pth in pairs(a.runs)]
         panel(a.out, meshes, tuple(float(v) for v in a.view.split(",")), a.title)
+    elif a.cmd == "scaling":
+        scaling(a.out, a.x, a.csv, a.title)
     else:
         table(a.out, a.columns, pairs(a.runs), a.ref)
 

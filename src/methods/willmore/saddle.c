@@ -21,10 +21,13 @@ static PetscErrorCode SetDefaultSolver(CSSaddle *s)
     PetscCall(KSPSetType(s->ksp, KSPFGMRES));
     /* relative to |b| = |(-g - X^T mu, -c)|, which falls with the run (docs/willmore_flow.md) */
     PetscCall(KSPSetTolerances(s->ksp, 1e-6, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
-    PetscCall(PCSetType(pc, PCFIELDSPLIT));
-    PetscCall(PCFieldSplitSetType(pc, PC_COMPOSITE_SCHUR));
-    PetscCall(PCFieldSplitSetSchurFactType(pc, PC_FIELDSPLIT_SCHUR_FACT_FULL));
-    PetscCall(PCFieldSplitSetSchurPre(pc, PC_FIELDSPLIT_SCHUR_PRE_USER, NULL));
+    if (s->schur != CS_SCHUR_DIRECT) PetscCall(CSSchurIterativeSetDefaults(pc));
+    else {
+      PetscCall(PCSetType(pc, PCFIELDSPLIT));
+      PetscCall(PCFieldSplitSetType(pc, PC_COMPOSITE_SCHUR));
+      PetscCall(PCFieldSplitSetSchurFactType(pc, PC_FIELDSPLIT_SCHUR_FACT_FULL));
+      PetscCall(PCFieldSplitSetSchurPre(pc, PC_FIELDSPLIT_SCHUR_PRE_USER, NULL));
+    }
   } else {
     PetscCall(KSPSetType(s->ksp, KSPCG));
     PetscCall(KSPSetTolerances(s->ksp, 1e-9, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
@@ -80,6 +83,8 @@ PetscErrorCode CSSaddleCreate(CSMesh mesh, const char prefix[], PetscBool edges,
   s->h2         = h2;
   s->monolithic = monolithic;
   s->k          = k;
+  s->schur      = CS_SCHUR_DIRECT; /* the measured fastest on this machine (docs/scaling.md) */
+  s->schur_rtol = 1e-4;
   /* the csh2 metric PC is cheap to rebuild, and a kept one costs 3x the CG its */
   s->reuse_its  = reuse_its >= 0 ? reuse_its : (edges ? 10 : 0);
   PetscCall(PetscStrncpy(s->prefix, prefix, sizeof(s->prefix)));
@@ -192,8 +197,11 @@ static PetscErrorCode ConfigureFieldSplit(CSSaddle *s, PC pc, PetscBool chosen, 
   PCCompositeType          type;
   Mat                      pmat;
   PetscFunctionBeginUser;
-  PetscCall(PCFieldSplitSetIS(pc, "0", s->is[0])); /* multipliers (edges) first */
-  PetscCall(PCFieldSplitSetIS(pc, "1", s->is[1])); /* positions */
+  if (!chosen && s->schur != CS_SCHUR_DIRECT) PetscCall(CSSchurIterativeSetSplits(pc, s->schur, s->is[0], s->is[1]));
+  else {
+    PetscCall(PCFieldSplitSetIS(pc, "0", s->is[0])); /* multipliers (edges) first */
+    PetscCall(PCFieldSplitSetIS(pc, "1", s->is[1])); /* positions */
+  }
   PetscCall(PCFieldSplitGetType(pc, &type));
   PetscCall(PCFieldSplitGetSchurPre(pc, &pre, &pmat)); /* (the matrix argument may not be NULL in 3.18) */
   if (type == PC_COMPOSITE_SCHUR && pre == PC_FIELDSPLIT_SCHUR_PRE_USER) {
@@ -202,8 +210,22 @@ static PetscErrorCode ConfigureFieldSplit(CSSaddle *s, PC pc, PetscBool chosen, 
   }
   if (!chosen && type == PC_COMPOSITE_SCHUR) {
     PetscCall(KSPSetUp(s->ksp)); /* creates the fieldsplit's solvers */
-    PetscCall(SetDefaultSubSolvers(s, pc));
+    if (s->schur != CS_SCHUR_DIRECT) PetscCall(CSSchurIterativeSetSubSolvers(pc, s->schur, s->schur_rtol));
+    else PetscCall(SetDefaultSubSolvers(s, pc));
   }
+  PetscFunctionReturn(0);
+}
+
+/* -<prefix>schur_solver and -<prefix>schur_rtol (only with the edge block and without -<prefix>pc_type) */
+static PetscErrorCode ReadSchurOptions(CSSaddle *s)
+{
+  PetscFunctionBeginUser;
+  if (!s->edges || s->monolithic) PetscFunctionReturn(0);
+  PetscOptionsBegin(s->mesh->comm, s->prefix, "Saddle solve of the CGD/PGD step", NULL);
+  PetscCall(PetscOptionsEnum("-schur_solver", "Solver of the Schur complement: direct factorisation, or iterative in the primal or the multiplier space (docs/scaling.md)", NULL, CSSchurSolveTypes, (PetscEnum)s->schur, (PetscEnum *)&s->schur, NULL));
+  PetscCall(PetscOptionsReal("-schur_rtol", "Relative tolerance of the iterative Schur solve", NULL, s->schur_rtol, &s->schur_rtol, NULL));
+  PetscOptionsEnd();
+  PetscCheck(s->schur_rtol > 0 && s->schur_rtol < 1, s->mesh->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sschur_rtol %g: must be in (0, 1)", s->prefix, (double)s->schur_rtol);
   PetscFunctionReturn(0);
 }
 
@@ -214,6 +236,7 @@ static PetscErrorCode ConfigureKSP(CSSaddle *s, Vec iq, PetscReal tmu, Mat X)
   PetscBool chosen, fs = PETSC_FALSE, preonly;
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsHasName(NULL, s->prefix, "-pc_type", &chosen)); /* the user chose the whole solver */
+  PetscCall(ReadSchurOptions(s));
   if (!chosen) PetscCall(SetDefaultSolver(s));
   PetscCall(KSPSetFromOptions(s->ksp));
   PetscCall(KSPGetPC(s->ksp, &pc));

@@ -43,6 +43,8 @@ typedef struct {
   PetscReal   tmu;
   Mat         X;
   PetscBool   have_pc;
+  CSSchurSolveType schur; /* -<prefix>schur_solver: direct (default) or an iterative Schur solve (docs/scaling.md) */
+  PetscReal   schur_rtol; /* -<prefix>schur_rtol of the iterative Schur solve */
 } CSSaddle;
 
 /* prefix: of the KSP; reuse_its < 0: the default (10 with the edge block, else 0) */

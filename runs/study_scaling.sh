@@ -1,0 +1,136 @@
+#!/usr/bin/env bash
+# Study of issue #16 (solvers that scale; not a test): the CGD saddle solve's Schur complement by the direct
+# factorisation (the default; CHOLMOD serially, cssubchol in parallel) against the iterative paths of
+# src/linalg/schur_iterative.c (-flow_saddle_schur_solver primal | multiplier), docs/scaling.md.
+# Part 1 (serial): Krylov iterations per Schur solve and seconds per step against mesh size (bumpy icosphere levels
+#   LEVELS) and against c = t t_mu (t = 1 fixed, t_mu = c, CS), NITER steps each, every step a fresh preconditioner
+#   (-flow_factor_reuse_its 0), plus the kept-factorisation baseline (d) ("direct+reuse", the default reuse).
+#   The extreme singular values of the preconditioned Schur operator come from -ksp_view_singularvalues of the
+#   Schur KSP (the last solve of the run). The multiplier path nests an H solve in every S_mu application and
+#   runs only up to level MULT_MAX (default 5).
+# Part 0 (serial, PART=first): the first Schur solve of the first step only (t = 1 and t_mu = c exactly: later
+#   solves of a step see rejected steps' smaller t and the restoration's t_mu = -flow_pgd_t_mu), primal path: CG
+#   iterations and the extreme singular values of the preconditioned Schur operator, levels FLEVELS, c in FCS.
+# Part 2 (ranks, oversubscribed): the default on NPS ranks at level RLEVEL, and the primal path with one hypre
+#   V-cycle inside csh2 (-flow_saddle_fieldsplit_1_h2_pc_type hypre): outer and Schur iterations, memory per rank
+#   (-memory_view: maximum process memory, max over ranks), MPI message volume (-log_view), interface size of
+#   cssubchol (-ksp_view). Time on 1-2 ranks only means anything.
+# The machine is shared (2 cores, load 10-20 while this was written): seconds are upper bounds, iteration counts
+# are reliable. Writes runs/study_scaling.md, runs/study_scaling*.csv and runs/study_scaling_{size,c,ranks}.png.
+#   bash runs/study_scaling.sh
+#   LEVELS="4 5" CS="1 1000" NPS="1 2" bash runs/study_scaling.sh      # quick
+set -u
+cd "$(dirname "$0")/.."
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1
+LEVELS=${LEVELS:-"4 5 6 7"}; CS=${CS:-"1 100 1000 4000"}; NITER=${NITER:-2}; MULT_MAX=${MULT_MAX:-5}
+CFIX=${CFIX:-1000}; PATHS=${PATHS:-"direct direct+reuse primal multiplier"}
+MULT_CMAX=${MULT_CMAX:-100}; NPS=${NPS:-"1 2 4 8"}; RLEVEL=${RLEVEL:-5}
+FLEVELS=${FLEVELS:-"3 4 5 6"}; FCS=${FCS:-"1 10 100 1000 4000"}; fcsv=runs/study_scaling_first.csv
+PART=${PART:-all} # first | serial | ranks | all | report (the tables and figures from the csv files already there)
+out=runs/study_scaling.md; csv=runs/study_scaling.csv; rcsv=runs/study_scaling_ranks.csv
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+GEN() { echo "-gen icosphere -gen_level $1 -gen_deform_bump 0.2 -gen_deform_stretch 1.5,1,0.8"; }
+mean_its() { # log split -> mean iterations of that split's solves (empty if none)
+  awk -v s="flow_saddle_fieldsplit_$2_ solve" 'index($0, s) { n++; t += $NF } END { if (n) printf "%.1f", t / n }' "$1"
+}
+last_sv() { # log -> "max min" of the last singular value estimate
+  awk '/Iteratively computed extreme singular values/ { mx = $7; mn = $9 } END { if (mx != "") printf "%s %s", mx, mn; else printf "- -" }' "$1"
+}
+path_args() { # path -> options
+  case $1 in
+    direct) echo "-flow_factor_reuse_its 0" ;;
+    direct+reuse) echo "" ;;
+    primal|multiplier) echo "-flow_factor_reuse_its 0 -flow_saddle_schur_solver $1 -flow_saddle_fieldsplit_1_ksp_converged_reason -flow_saddle_fieldsplit_0_ksp_converged_reason -flow_saddle_fieldsplit_1_ksp_view_singularvalues" ;;
+  esac
+}
+run1() { # level c path -> csv row
+  local L=$1 c=$2 p=$3 faces=$((20 * 4 ** $1))
+  [ "$p" = multiplier ] && { [ "$L" -gt "$MULT_MAX" ] || [ "$c" -gt "$MULT_CMAX" ]; } && return
+  if ! /usr/bin/time -f "%M" -o "$tmp/mem" bin/confsurf -task flow $(GEN "$L") -flow_t 1 -flow_t_max 1 -flow_t_mu "$c" -flow_max_it "$NITER" -flow_rtol 0 $(path_args "$p") -summary "$tmp/s.json" > "$tmp/log" 2>&1; then
+    echo "FAILED: level $L c $c $p"; tail -3 "$tmp/log"; return
+  fi
+  read -r spi outer < <(python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); print(d["seconds_per_iteration"], d["ksp_iterations"] / max(d["linear_solves"], 1))' "$tmp/s.json")
+  local schur inner sv
+  schur=$(mean_its "$tmp/log" 1); inner=""; [ "$p" = multiplier ] && inner=$(mean_its "$tmp/log" 0)
+  sv=$(last_sv "$tmp/log")
+  # its: the Schur solve's iterations (1 = a direct solve), else the outer FGMRES iterations
+  echo "$p,$L,$faces,1,$c,${schur:-$outer},$spi,$outer,${inner:-},${sv% *},${sv#* },$(( $(cat "$tmp/mem") / 1024 ))" >> "$csv"
+  echo "level $L c $c $p: schur its ${schur:--} outer $outer inner ${inner:--} s/step $spi sv ${sv} MB $(( $(cat "$tmp/mem") / 1024 ))"
+}
+if [ "$PART" = first ] || [ "$PART" = all ]; then
+  echo "series,level,faces,ranks,c,its,seconds,sv_max,sv_min" > "$fcsv"
+  for L in $FLEVELS; do for c in $FCS; do
+    bin/confsurf -task flow $(GEN "$L") -flow_t 1 -flow_t_max 1 -flow_t_mu "$c" -flow_max_it 1 -flow_rtol 0 $(path_args primal) > "$tmp/log" 2>&1 || { echo "FAILED: first solve level $L c $c"; continue; }
+    its=$(awk '/flow_saddle_fieldsplit_1_ solve converged/ { print $NF; exit }' "$tmp/log")
+    read -r mx mn < <(awk '/Iteratively computed extreme singular values/ { print $7, $9; exit }' "$tmp/log")
+    echo "primal first solve,$L,$((20 * 4 ** L)),1,$c,$its,,$mx,$mn" >> "$fcsv"
+    echo "first solve level $L c $c: CG its $its sv max $mx min $mn"
+  done; done
+fi
+if [ "$PART" = serial ] || [ "$PART" = all ]; then
+  echo "series,level,faces,ranks,c,its,seconds,outer_its,inner_its,sv_max,sv_min,peak_MB" > "$csv"
+  for L in $LEVELS; do for p in $PATHS; do run1 "$L" "$CFIX" "$p"; done; done
+  for c in $CS; do [ "$c" = "$CFIX" ] && continue; for L in 4 5; do for p in $PATHS; do run1 "$L" "$c" "$p"; done; done; done
+fi
+
+# Part 2: ranks
+rank_run() { # np label args...
+  local np=$1 label=$2; shift 2
+  if ! mpirun --oversubscribe -n "$np" bin/confsurf -task flow $(GEN "$RLEVEL") -flow_max_it "$NITER" -flow_rtol 0 -flow_factor_reuse_its 0 "$@" -memory_view -log_view ":$tmp/lv" -summary "$tmp/s.json" > "$tmp/log" 2>&1; then
+    echo "FAILED: $np ranks $label"; tail -3 "$tmp/log"; return
+  fi
+  local spi outer schur mem msg G
+  read -r spi outer < <(python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); print(d["seconds_per_iteration"], d["ksp_iterations"] / max(d["linear_solves"], 1))' "$tmp/s.json")
+  schur=$(mean_its "$tmp/log" 1)
+  mem=$(awk '/process memory/ { for (i = 1; i <= NF; i++) if ($i == "max") { printf "%.0f", $(i + 1) / 1048576; exit } }' "$tmp/log")
+  msg=$(awk '/^MPI Msg Len \(bytes\):/ { printf "%.3g", $NF }' "$tmp/lv")
+  G=$(grep -m1 -o 'interface [0-9]* dofs' "$tmp/log" | awk '{print $2}')
+  echo "$label,$RLEVEL,$((20 * 4 ** RLEVEL)),$np,,${schur:-$outer},$spi,$outer,,${mem:-},${msg:-},${G:-}" >> "$rcsv"
+  echo "$np ranks $label: its ${schur:-$outer} outer $outer s/step $spi max MB/rank $mem msg bytes $msg interface ${G:--}"
+}
+if [ "$PART" = ranks ] || [ "$PART" = all ]; then
+  echo "series,level,faces,ranks,c,its,seconds,outer_its,inner_its,max_MB_per_rank,msg_bytes,interface" > "$rcsv"
+  for np in $NPS; do
+    rank_run "$np" "default (direct)" -flow_saddle_fieldsplit_1_ksp_view
+    rank_run "$np" "primal (csh2 inner hypre)" -flow_saddle_schur_solver primal -flow_saddle_fieldsplit_1_h2_pc_type hypre -flow_saddle_fieldsplit_1_ksp_converged_reason
+  done
+fi
+
+[ "$PART" = first ] || [ "$PART" = serial ] || [ "$PART" = ranks ] && exit 0 # PART=report afterwards
+# tables and figures
+python3 - "$csv" "$rcsv" "$CFIX" "$NITER" > "$out" <<'EOF'
+import csv, sys, os
+rows = list(csv.DictReader(open(sys.argv[1])))
+print("# Study of issue #16: iterative Schur solves against the direct factorisation (runs/study_scaling.sh)\n")
+print("Machine loaded by other jobs (load 15-33 on 2 cores when this was written): seconds are upper bounds, iteration counts reliable.")
+print("Bumpy icosphere, cgd, t = 1 fixed, t_mu = c, %s steps per run, a fresh preconditioner every step except"
+      " direct+reuse. its = Krylov iterations per Schur solve (1 for direct); outer = FGMRES iterations per saddle"
+      " solve; inner = CG iterations per H solve inside S_mu (multiplier); sv = extreme singular values of the"
+      " preconditioned Schur operator (last solve). Means over all solves of the run: rejected steps (at small c)"
+      " halve t, the restoration solves with t_mu = 1e6; the first-solve table below has c exact.\n" % sys.argv[4])
+print("| path | level | faces | c = t t_mu | its | outer | inner | s/step | sv max | sv min | peak MB |")
+print("|---|---|---|---|---|---|---|---|---|---|---|")
+for r in sorted(rows, key=lambda r: (float(r["c"]) != float(sys.argv[3]), float(r["c"]), int(r["level"]), r["series"])):
+    print("| %s | %s | %s | %s | %.1f | %.2f | %s | %.3g | %s | %s | %s |" % (r["series"], r["level"], r["faces"], r["c"], float(r["its"]), float(r["outer_its"]), r["inner_its"] or "-", float(r["seconds"]), r["sv_max"], r["sv_min"], r["peak_MB"]))
+first = sys.argv[2].replace("_ranks.csv", "_first.csv")
+if os.path.exists(first):
+    print("\n## The first Schur solve of the first step (t = 1, t_mu = c exactly), primal path\n")
+    print("| level | faces | c | CG its | sv max | sv min | sv max / c |")
+    print("|---|---|---|---|---|---|---|")
+    for r in sorted(csv.DictReader(open(first)), key=lambda r: (float(r["c"]), int(r["level"]))):
+        print("| %s | %s | %s | %s | %s | %s | %.3g |" % (r["level"], r["faces"], r["c"], r["its"], r["sv_max"], r["sv_min"], float(r["sv_max"]) / float(r["c"])))
+if os.path.exists(sys.argv[2]):
+    print("\n## Ranks (oversubscribed beyond 2; time meaningful on 1-2 ranks only)\n")
+    print("| path | faces | ranks | Schur its | outer | s/step | max MB per rank | MPI message bytes (total) | cssubchol interface dofs |")
+    print("|---|---|---|---|---|---|---|---|---|")
+    for r in csv.DictReader(open(sys.argv[2])):
+        print("| %s | %s | %s | %.1f | %.2f | %.3g | %s | %s | %s |" % (r["series"], r["faces"], r["ranks"], float(r["its"]), float(r["outer_its"]), float(r["seconds"]), r["max_MB_per_rank"], r["msg_bytes"], r["interface"] or "-"))
+EOF
+# one csv per figure: series by path at c = CFIX (size), by path and level (c), by path (ranks)
+awk -F, -v c="$CFIX" 'NR == 1 || $5 == c' "$csv" > "$tmp/size.csv"
+awk -F, 'BEGIN { OFS = "," } NR == 1 { print; next } $2 <= 5 { $1 = $1 " level " $2; print }' "$csv" > "$tmp/c.csv"
+/usr/bin/python3 scripts/plots.py scaling runs/study_scaling_size.png --x faces --title "Schur solves against mesh size (c = t t_mu = $CFIX)" "$tmp/size.csv"
+/usr/bin/python3 scripts/plots.py scaling runs/study_scaling_c.png --x c --title "Schur solves against c = t t_mu" "$tmp/c.csv"
+[ -s "$fcsv" ] && /usr/bin/python3 scripts/plots.py scaling runs/study_scaling_first.png --x faces --title "first Schur solve (primal): CG iterations against size, one line per c" <(awk -F, 'BEGIN { OFS = "," } NR == 1 { print; next } { $1 = "c = " $5; print }' "$fcsv")
+[ -s "$rcsv" ] && /usr/bin/python3 scripts/plots.py scaling runs/study_scaling_ranks.png --x ranks --title "level $RLEVEL on several ranks" "$rcsv"
+echo "wrote $out"
