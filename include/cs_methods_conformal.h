@@ -81,12 +81,15 @@ typedef enum {
    error |harmonic part of conj(lambda) df lambda| / |conj(lambda) df lambda| (genus >= 1, App. C);
    log_area_spread = the area-weighted standard deviation of log(A_i / A_i of the input) (App. E); H_spread = the
    area-weighted std(H) / |mean H| over interior vertices; boundary_error = max |f - f~| / sqrt(area) over the boundary
-   vertices (fixed boundary, else 0); vnorm = |v| (the step's direction before tau); tau; seconds of
-   the last step and since the start. */
+   vertices (fixed boundary, else 0); vnorm = |v| (the step's direction before tau); tau (the one the last step
+   used: smaller than the option after -flow_max_nonexact halvings); nonexact = |df~ - beta|_*1 / |beta|_*1, the part
+   of the last step's transformed edges beta the Poisson step could not integrate (its least-squares residual);
+   halvings = how often the last step was retried with tau / 2; seconds of the last step and since the start. */
 typedef struct {
   CSConformalMonitorEvent event;
   PetscInt                it;
-  PetscReal               W, EH, gamma, q_mean, q_max, area, res_total, res_inversion, res_exact, closing, log_area_spread, H_spread, boundary_error, vnorm, tau;
+  PetscReal               W, EH, gamma, q_mean, q_max, area, res_total, res_inversion, res_exact, closing, log_area_spread, H_spread, boundary_error, vnorm, tau, nonexact;
+  PetscInt                halvings;
   PetscReal               step_seconds, seconds;
 } CSConformalMonitorInfo;
 typedef PetscErrorCode (*CSConformalFlowMonitorFn)(CSConformalFlow, const CSConformalMonitorInfo *, void *);

@@ -4,8 +4,8 @@
    D^* = the real transpose of the 4x4-block form, crane2011 Sec. 5.4), and rho' must be orthogonal to the three
    imaginary components Z_i^x,y,z (App. C: <<rho', <Z_i, a>>> = 0 for all a in R^3).
    X is singular (the constants, 4-fold); the right-hand side is orthogonal to them (D 1 = 0), so we factor the
-   definite X + s M (s = 1e-2 4 pi / area, M the vertex areas per quaternion component) once per step and refine:
-   Z <- Z + (X + s M)^{-1} (b - X Z), each pass reducing the error by s / (s + gamma_1) ~ 1e-2 (3 passes).
+   definite X + s M (s and M the shift of the spin's inverse iteration) once per step: one solve (the linearisation
+   of the single inverse-iteration step) or refined to X^+ (SolveZ).
    The closing error: the harmonic part of beta = conj(lambda) df lambda (App. C), per edge the transformed edge
    vector of crane2011 Eq. 8, measured as |P_H beta|_*1 / |beta|_*1 over the three coordinates. */
 #include "conformal_impl.h"
@@ -42,10 +42,13 @@ PetscErrorCode CSConformalFlowExactnessSetUp(CSConformalFlow F)
   PetscFunctionReturn(0);
 }
 
-/* X0 = D^* M_F D, Xs = X0 + s M (same pattern), the face operator D and the face areas M_F on the current surface */
+/* X0 = D^* M_F D, Xs = X0 + s M (same pattern), the face operator D and the face areas M_F on the current surface.
+   s and M are exactly the shift of CSSpin's inverse iteration (s = target 4 pi / area, M the barycentric vertex
+   areas: (K - sigma) with K = V X V, sigma = -target 4 pi / area / vmean^2, V^-2 = vmean^2 M), so that one solve
+   with Xs is the linearisation of the step the flow takes (SolveZ). */
 static PetscErrorCode Operators(CSConformalFlow F)
 {
-  PetscReal          A, vol, s;
+  PetscReal          A, s;
   const PetscScalar *a;
   PetscScalar       *m4;
   PetscInt           n;
@@ -54,14 +57,15 @@ static PetscErrorCode Operators(CSConformalFlow F)
   PetscCall(MatDestroy(&F->Dface));
   PetscCall(VecDestroy(&F->MF));
   PetscCall(CSDiracCreateFaceOperators(F->mesh, F->spin->dm, F->x, CS_RHO_NONE, NULL, &F->Dface, NULL, NULL, &F->MF));
-  PetscCall(CSGeometryAreaVolume(F->mesh, F->x, &A, &vol));
-  s = 1e-2 * 4 * PETSC_PI / A;
-  PetscCall(VecGetLocalSize(F->area, &n));
-  PetscCall(VecGetArrayRead(F->area, &a));
+  PetscCall(CSGeometryVertexAreas(F->mesh, F->x, F->work)); /* the spin's mass (F->area may be the mixed area) */
+  PetscCall(VecSum(F->work, &A));
+  s   = F->spin->target * 4 * PETSC_PI / A;
+  PetscCall(VecGetLocalSize(F->work, &n));
+  PetscCall(VecGetArrayRead(F->work, &a));
   PetscCall(VecGetArray(F->M4, &m4));
   for (PetscInt i = 0; i < 4 * n; i++) m4[i] = s * a[i / 4];
   PetscCall(VecRestoreArray(F->M4, &m4));
-  PetscCall(VecRestoreArrayRead(F->area, &a));
+  PetscCall(VecRestoreArrayRead(F->work, &a));
   if (!F->Xs) PetscCall(MatDuplicate(F->X0, MAT_COPY_VALUES, &F->Xs));
   else PetscCall(MatCopy(F->X0, F->Xs, SAME_NONZERO_PATTERN));
   PetscCall(MatDiagonalSet(F->Xs, F->M4, ADD_VALUES));
@@ -95,19 +99,30 @@ static PetscErrorCode RightHandSide(CSConformalFlow F, Vec vf, Vec b)
   PetscFunctionReturn(0);
 }
 
+/* Z = X^+ b for the eigenproblem's linearisation (App. G; -flow_eigensolver eps): refined Z <- Z + Xs^{-1} (b - X0 Z)
+   until |b - X0 Z| <= 1e-10 |b| (each pass gains s / (s + gamma_1): ~1e-2 on a round torus, only ~0.4 on the thin
+   tube of knot1_cgal, where X0's smallest nonzero eigenvalue gamma_1 is ~1.5 s). With the default single
+   inverse-iteration step (Sec. 6.4.2) the step taken is lambda = (X + s M)^{-1} M 1, whose first-order response to
+   rho is (X0 + s M)^{-1} D^T M_F B rho' (not X0^+ ...): then Z = Xs^{-1} b, one solve, is the exact linearisation
+   (docs/conformal_flow.md "knot1": with X0^+ the closing error stays first order in tau on knot1). */
 static PetscErrorCode SolveZ(CSConformalFlow F, Vec b, Vec Z)
 {
   KSPConvergedReason r;
+  PetscBool          shifted = (PetscBool)(F->spin->inverse && F->spin->inverse_its == 1 && !F->exactness_paper);
+  PetscReal          nb, nr;
   PetscFunctionBeginUser;
   PetscCall(VecSet(Z, 0));
   PetscCall(VecCopy(b, F->zr));
-  for (int pass = 0; pass < 4; pass++) { /* Z <- Z + Xs^{-1} (b - X0 Z) */
+  PetscCall(VecNorm(b, NORM_2, &nb));
+  for (int pass = 0; pass < (shifted ? 1 : 200); pass++) { /* Z <- Z + Xs^{-1} (b - X0 Z) */
     PetscCall(KSPSolve(F->kz, F->zr, F->zt));
     PetscCall(KSPGetConvergedReason(F->kz, &r));
     PetscCheck(r >= 0, F->hdr.comm, PETSC_ERR_NOT_CONVERGED, "conformal flow: the exactness solve X Z = D^* v (-%sexactness_ksp_*) failed: %s", F->hdr.prefix, KSPConvergedReasons[r]);
     PetscCall(VecAXPY(Z, 1, F->zt));
     PetscCall(MatMult(F->X0, Z, F->zr));
     PetscCall(VecAYPX(F->zr, -1, b));
+    PetscCall(VecNorm(F->zr, NORM_2, &nr));
+    if (nr <= 1e-10 * nb) break;
   }
   PetscFunctionReturn(0);
 }

@@ -33,6 +33,7 @@ PetscErrorCode CSConformalFlowCreate(CSMesh mesh, CSConformalFlow *flow)
   F->eigensolver   = CS_CONFORMAL_EIGEN_INVERSE;
   F->curvature     = CS_CONFORMAL_CURVATURE_VORONOI; /* exact on inscribed spheres: the round sphere is a fixed point */
   F->bmode         = CS_CONFORMAL_BOUNDARY_NONE;
+  F->max_halvings  = 6;
   F->frame[2]      = 1; /* V = B: Sec. 6.3.1's choice for CMC surfaces */
   *flow            = F;
   PetscFunctionReturn(0);
@@ -89,6 +90,8 @@ static PetscErrorCode CheckOptions(CSConformalFlow F)
     {"filter_k", (PetscReal)F->fk, F->fk >= 0 && F->fk <= 4, "must lie in 0..4"},
     {"curvature_factor", F->hfactor, F->hfactor > 0, "must be > 0"},
     {"mobius_weight", F->mobius_weight, F->mobius_weight >= 0, "must be >= 0"},
+    {"max_nonexact", F->max_nonexact, F->max_nonexact >= 0, "must be >= 0 (0: off)"},
+    {"max_halvings", (PetscReal)F->max_halvings, F->max_halvings >= 0, "must be >= 0"},
     {"max_seconds", F->max_seconds, F->max_seconds >= 0, "use 0 (no limit) or a positive number of seconds"},
   };
   PetscFunctionBeginUser;
@@ -123,6 +126,8 @@ PetscErrorCode CSConformalFlowSetFromOptions(CSConformalFlow F)
   }
   PetscCall(PetscOptionsEnum("-curvature", "Table 1 I: H = (L f).N/(2A) with the barycentric area and area-weighted normal, or with the mixed Voronoi area and the 1-ring sphere-fit normal (exactly constant on inscribed spheres)", NULL, CSConformalCurvatures, (PetscEnum)F->curvature, (PetscEnum *)&F->curvature, NULL));
   PetscCall(PetscOptionsReal("-max_seconds", "Stop (as at max_it) once this many seconds have passed since the set-up (0: no limit); rank 0's clock decides", NULL, F->max_seconds, &F->max_seconds, NULL));
+  PetscCall(PetscOptionsReal("-max_nonexact", "Safeguard (not the paper's): retry a step with tau / 2 while the Poisson step's relative least-squares residual |df~ - conj(lambda) df lambda| / |conj(lambda) df lambda| exceeds this (0: off)", NULL, F->max_nonexact, &F->max_nonexact, NULL));
+  PetscCall(PetscOptionsInt("-max_halvings", "-max_nonexact: at most this many halvings of tau per step", NULL, F->max_halvings, &F->max_halvings, NULL));
   PetscCall(PetscOptionsEnum("-eigensolver", "Eq. 5: one inverse-iteration step on a factorisation of the current X (Sec. 6.4.2), or SLEPc to convergence (options -spin_eps_*, -spin_st_*)", NULL, CSConformalEigensolvers, (PetscEnum)F->eigensolver, (PetscEnum *)&F->eigensolver, NULL));
   PetscOptionsEnd();
   PetscCall(CheckOptions(F));

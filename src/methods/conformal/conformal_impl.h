@@ -22,6 +22,8 @@ struct _p_CSConformalFlow {
   PetscReal              frame[3];    /* V = frame[0] N + frame[1] T + frame[2] B */
   char                   target[PETSC_MAX_PATH_LEN];
   PetscReal              max_seconds;
+  PetscReal              max_nonexact; /* > 0: retry a step with tau / 2 while its non-exact residual exceeds this */
+  PetscInt               max_halvings;
   /* state: positions (current, input, next), per-vertex areas of the input, the step's fields */
   Vec       x, x0, xnew, area0;
   Vec       area, N, H, v, rho, work, lambda;
@@ -65,6 +67,8 @@ PETSC_INTERN PetscErrorCode CSConformalFlowBoundaryCurvature(CSConformalFlow F);
 PETSC_INTERN PetscErrorCode CSConformalFlowReconstructFixed(CSConformalFlow F);
 PETSC_INTERN PetscErrorCode CSConformalFlowBoundaryMeasures(CSConformalFlow F);
 PETSC_INTERN PetscErrorCode CSConformalFlowBoundaryDestroy(CSConformalFlow F);
+/* conformal_nonexact.c: the Poisson step's relative least-squares residual |df~ - beta|_*1 / |beta|_*1 */
+PETSC_INTERN PetscErrorCode CSConformalFlowNonExactResidual(CSConformalFlow F, Vec xnew, PetscReal *eta);
 /* conformal_integrate.c: rho = tau v, the eigenproblem, the Poisson problem, x <- the new positions */
 PETSC_INTERN PetscErrorCode CSConformalFlowIntegrate(CSConformalFlow F);
 
