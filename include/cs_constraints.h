@@ -19,6 +19,8 @@ typedef struct {
 
 /* Target = the log cross ratios of positions xt (the initial mesh or a -target_mesh). */
 PETSC_EXTERN PetscErrorCode CSConformalConstraintCreate(CSMesh mesh, Vec xt, PetscBool interior_only, const PetscBool fixed[], CSConformalConstraint *cc);
+/* c0 = C log(l) for intrinsic edge lengths l (dmE1), e.g. mesh->lt of -gen lattice, instead of the positions' */
+PETSC_EXTERN PetscErrorCode CSConformalConstraintSetTargetLengths(CSConformalConstraint *cc, Vec l);
 /* c = C lambda(x) - c0 (dmE1 vector; zero on boundary edges with interior_only); if wantX, X at x. */
 PETSC_EXTERN PetscErrorCode CSConformalConstraintEvaluate(CSConformalConstraint *cc, Vec x, Vec c, PetscBool wantX);
 PETSC_EXTERN PetscErrorCode CSConformalConstraintDestroy(CSConformalConstraint *cc);

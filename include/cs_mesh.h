@@ -43,7 +43,8 @@ struct _p_CSMesh {
   CSTopology topo; /* from validation; identical on every rank */
   char       name[PETSC_MAX_PATH_LEN];
 
-  Vec x; /* positions, global vector of dmV3 */
+  Vec x;  /* positions, global vector of dmV3 */
+  Vec lt; /* NULL, or the input's intrinsic edge lengths (CSMeshData len, dmE1): the target class of the flows */
 
   /* Natural-order fields (rank 0 holds the whole field in file order) for I/O of vertex/face/edge fields. */
   CSMeshNatural natV3, natV1, natF1, natE1;

@@ -9,6 +9,8 @@ typedef struct {
   PetscReal *x;                       /* 3*nv coordinates */
   PetscInt  *f;                       /* 3*nf vertex indices, 0-based, counter-clockwise = outward */
   char       name[PETSC_MAX_PATH_LEN]; /* file name or generator description, used in messages */
+  PetscReal *len;                     /* NULL, or 3*nf: an intrinsic metric, len[3f+a] = length of the edge opposite
+                                         corner a of face f (-gen lattice: the flat lattice; the flows' target class) */
 } CSMeshData;
 
 /* Facts found by validation (Euler characteristic chi = V - E + F = 2*components - 2*genus - boundary_loops). */
@@ -34,6 +36,7 @@ PETSC_EXTERN PetscErrorCode CSMeshDataValidate(CSMeshData *md, CSTopology *topo)
 /* Generators (all outward-oriented). */
 PETSC_EXTERN PetscErrorCode CSMeshDataIcosphere(PetscInt level, PetscReal radius, PetscBool project, CSMeshData *md);
 PETSC_EXTERN PetscErrorCode CSMeshDataTorus(PetscReal R, PetscReal r, PetscInt n, PetscInt m, CSMeshData *md);
+PETSC_EXTERN PetscErrorCode CSMeshDataLattice(PetscReal tau_re, PetscReal tau_im, PetscInt n, PetscInt m, CSMeshData *md);
 PETSC_EXTERN PetscErrorCode CSMeshDataFlatTorus(PetscReal tau_re, PetscReal tau_im, PetscInt n, PetscInt m, CSMeshData *md);
 PETSC_EXTERN PetscErrorCode CSMeshDataCylinder(PetscReal radius, PetscReal height, PetscInt n, PetscInt m, CSMeshData *md);
 PETSC_EXTERN PetscErrorCode CSMeshDataDisk(PetscReal radius, PetscInt rings, CSMeshData *md);
@@ -42,9 +45,8 @@ PETSC_EXTERN PetscErrorCode CSMeshDataDisk(PetscReal radius, PetscInt rings, CSM
    md->name gets the suffix "(loop refined 2x)". Serial (rank 0 data). */
 PETSC_EXTERN PetscErrorCode CSMeshDataRefine(CSMeshData *md, PetscInt levels, PetscBool loop);
 
-/* Builds md from the options database: -mesh FILE, or -gen icosphere|torus|flattorus|cylinder|disk with
-   -gen_level, -gen_radius, -gen_torus_R, -gen_tube_r (PETSc option names ignore case), -gen_n, -gen_m, -gen_tau_re, -gen_tau_im, -gen_height, -gen_rings,
-   -mesh_refine n and -mesh_refine_type loop|midpoint (after validation),
+/* Builds md from the options database: -mesh FILE, or -gen icosphere|torus|flattorus|lattice|cylinder|disk with
+   -gen_tau RE,IM (lattice), -gen_level, -gen_radius, -gen_torus_R, -gen_tube_r (PETSc option names ignore case), -gen_n, -gen_m, -gen_tau_re, -gen_tau_im, -gen_height, -gen_rings,
    -mesh_refine n and -mesh_refine_type loop|midpoint (after validation),
    then validates it (topo filled on rank 0). Collective on comm: options are read on every rank, the data is
    loaded on rank 0 only (other ranks get an empty md); an error on rank 0 is raised on every rank (no hang). */

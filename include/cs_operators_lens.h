@@ -52,6 +52,8 @@ PETSC_EXTERN PetscErrorCode CSTriangleFieldQuadDiffMetric(CSMesh mesh, DM dmH3, 
 PETSC_EXTERN PetscErrorCode CSTriangleFieldFromPositions(CSMesh mesh, Vec x, DM dmH3, Vec omega);
 /* Log halfedge lengths lambda_h = log |omega_h| (dmH3 -> dmH1 global vectors). */
 PETSC_EXTERN PetscErrorCode CSTriangleFieldLogLengths(CSMesh mesh, DM dmH3, Vec omega, DM dmH1, Vec lambda);
+/* lambda (dmH1) = log l_e on both halfedges of every edge, for intrinsic edge lengths l (dmE1, e.g. mesh->lt) */
+PETSC_EXTERN PetscErrorCode CSTriangleFieldLogLengthsFromEdges(CSMesh mesh, Vec l, DM dmH1, Vec lambda);
 /* The triangle-field Willmore energy (soliman2021 App. D.1) W~(omega) = 1/4 <d*omega, d*omega>
    = 1/4 sum_i |sum_ij w_ij omega_ij|^2 / A_i with the cotans and areas of the triangle field's own triangles;
    W~(df) = W(f). grad (may be NULL; W may be NULL): the partial derivatives with respect to the stored halfedge

@@ -1,6 +1,6 @@
 static const char help[] = "confsurf: conformal geometry processing of triangle meshes on PETSc/SLEPc.\n"
                            "  -task info|flow|spin|spectrum|curveflow   what to do (default info)\n"
-                           "  -mesh FILE (.obj .off .ply) or -gen icosphere|torus|flattorus|cylinder|disk\n"
+                           "  -mesh FILE (.obj .off .ply) or -gen icosphere|torus|flattorus|lattice|cylinder|disk\n"
                            "  curveflow: -curve FILE (.obj or text x y) or -gen_curve circle|ellipse|star|noisy|limacon\n"
                            "  -o FILE -viewer_dir DIR -summary FILE.json -history_csv FILE.csv -reference FILE\n"
                            "Unknown options are an error (they are listed at the end of the run).\n";

@@ -16,6 +16,16 @@ PetscErrorCode CSConformalConstraintCreate(CSMesh mesh, Vec xt, PetscBool interi
   PetscFunctionReturn(0);
 }
 
+/* The class of an intrinsic metric: c0 = C lambda, lambda = log l (soliman2021 Eq. 3 on the given lengths). */
+PetscErrorCode CSConformalConstraintSetTargetLengths(CSConformalConstraint *cc, Vec l)
+{
+  PetscFunctionBeginUser;
+  PetscCall(VecCopy(l, cc->lambda));
+  PetscCall(VecLog(cc->lambda));
+  PetscCall(MatMult(cc->C, cc->lambda, cc->c0));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode CSConformalConstraintEvaluate(CSConformalConstraint *cc, Vec x, Vec c, PetscBool wantX)
 {
   PetscFunctionBeginUser;

@@ -216,6 +216,45 @@ static PetscErrorCode PositionsFromCoordinates(CSMesh m)
   PetscFunctionReturn(0);
 }
 
+/* m->lt from rank 0's md->len (3 per face, opposite each corner): each component as a natural face field, then
+   every local face writes its three edges (both faces of an edge carry the same length). */
+static PetscErrorCode TargetLengthsFromData(CSMesh m, const CSMeshData *md)
+{
+  PetscMPIInt rank;
+  PetscInt    has;
+  Vec         gF, lF, lE;
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(m->comm, &rank));
+  has = (!rank && md->len) ? 1 : 0;
+  PetscCallMPI(MPI_Bcast(&has, 1, MPIU_INT, 0, m->comm));
+  if (!has) PetscFunctionReturn(0);
+  PetscCall(DMCreateGlobalVector(m->dmE1, &m->lt));
+  PetscCall(DMGetGlobalVector(m->dmF1, &gF));
+  PetscCall(DMGetLocalVector(m->dmF1, &lF));
+  PetscCall(DMGetLocalVector(m->dmE1, &lE));
+  for (int a = 0; a < 3; a++) {
+    PetscScalar       *n, *e;
+    const PetscScalar *f;
+    PetscCall(VecGetArray(m->natF1.vec, &n));
+    if (!rank)
+      for (PetscInt i = 0; i < md->nf; i++) n[i] = md->len[3 * i + a];
+    PetscCall(VecRestoreArray(m->natF1.vec, &n));
+    PetscCall(CSMeshScatter(&m->natF1, m->natF1.vec, gF));
+    PetscCall(DMGlobalToLocal(m->dmF1, gF, INSERT_VALUES, lF));
+    PetscCall(VecGetArrayRead(lF, &f));
+    PetscCall(VecGetArray(lE, &e));
+    for (PetscInt i = 0; i < m->nf; i++) e[m->faceEdge[3 * i + a]] = f[i];
+    PetscCall(VecRestoreArray(lE, &e));
+    PetscCall(VecRestoreArrayRead(lF, &f));
+  }
+  PetscCall(DMLocalToGlobal(m->dmE1, lE, INSERT_VALUES, m->lt));
+  PetscCall(DMRestoreLocalVector(m->dmE1, &lE));
+  PetscCall(DMRestoreLocalVector(m->dmF1, &lF));
+  PetscCall(DMRestoreGlobalVector(m->dmF1, &gF));
+  PetscCall(PetscObjectSetName((PetscObject)m->lt, "target_lengths"));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode CSMeshCreateFromData(MPI_Comm comm, CSMeshData *md, const CSTopology *topo, CSMesh *mesh)
 {
   CSMesh           m;
@@ -279,10 +318,12 @@ PetscErrorCode CSMeshCreateFromData(MPI_Comm comm, CSMeshData *md, const CSTopol
   PetscCall(CreateNatural(m, m->dmV1, 0, 1, m->vertNatural, m->Nv, &m->natV1));
   PetscCall(CreateNatural(m, m->dmF1, 2, 1, m->faceNatural, m->Nf, &m->natF1));
   PetscCall(CreateNatural(m, m->dmE1, 1, 1, m->edgeNatural, m->Ne, &m->natE1));
+  PetscCall(TargetLengthsFromData(m, md));
 
   /* rank 0 keeps the connectivity for output; the coordinates now live in the distributed vector */
   m->serial = *md;
   PetscCall(PetscFree(m->serial.x));
+  PetscCall(PetscFree(m->serial.len));
   PetscCall(PetscMemzero(md, sizeof(*md)));
   *mesh = m;
   PetscFunctionReturn(0);
@@ -311,6 +352,11 @@ static PetscErrorCode OrientOutward(CSMeshData *md, const CSTopology *topo, Pets
     PetscInt t       = md->f[3 * f + 1];
     md->f[3 * f + 1] = md->f[3 * f + 2];
     md->f[3 * f + 2] = t;
+    if (md->len) { /* corners 1 and 2 swapped: so are the edges opposite them */
+      PetscReal l        = md->len[3 * f + 1];
+      md->len[3 * f + 1] = md->len[3 * f + 2];
+      md->len[3 * f + 2] = l;
+    }
   }
   PetscFunctionReturn(0);
 }
@@ -352,6 +398,7 @@ PetscErrorCode CSMeshDestroy(CSMesh *mesh)
   if (!m) PetscFunctionReturn(0);
   PetscCall(CSMeshAdjacencyDestroy(&m->adj));
   PetscCall(VecDestroy(&m->x));
+  PetscCall(VecDestroy(&m->lt));
   PetscCall(NaturalDestroy(&m->natV3));
   PetscCall(NaturalDestroy(&m->natV1));
   PetscCall(NaturalDestroy(&m->natF1));

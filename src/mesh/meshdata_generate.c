@@ -1,4 +1,5 @@
-/* Generated test surfaces: icosphere, torus of revolution, flat (rectangular-class) torus, open cylinder,
+/* Generated test surfaces: icosphere, torus of revolution, flat (rectangular-class) torus, lattice torus (any class),
+   open cylinder,
    flat disk. All are outward oriented (normals by the right-hand rule on counter-clockwise corners) and have
    no duplicate vertices. */
 #include "cs_meshdata.h"
@@ -54,7 +55,11 @@ static void OrientOutward(CSMeshData *md)
   for (PetscInt i = 0; i < md->nf; i++) {
     PetscInt t       = md->f[3 * i + 1];
     md->f[3 * i + 1] = md->f[3 * i + 2];
-    md->f[3 * i + 2] = t;
+    md->f[3 * i + 2] = t;    if (md->len) { /* corners 1 and 2 swapped: so are the edges opposite them */
+      PetscReal l        = md->len[3 * i + 1];
+      md->len[3 * i + 1] = md->len[3 * i + 2];
+      md->len[3 * i + 2] = l;
+    }
   }
 }
 
@@ -171,29 +176,82 @@ PetscErrorCode CSMeshDataTorus(PetscReal R, PetscReal r, PetscInt n, PetscInt m,
    from N = (0,0,0,1), X -> (X1, X2, X3)/(1 - X4), is conformal and N is not on T (|X3 + i X4| = r2 < 1), so the
    image is a bounded torus of revolution about the x3 axis with the same conformal class (for tau_im = 1 it is
    the torus of revolution with R/r = sqrt 2). The n x m grid is uniform in (a, b): with m/n = tau_im the cells
-   are squares of the flat metric, i.e. the mesh is a discretisation of exactly this conformal class.
+   are squares of the flat metric, i.e. the mesh discretises this conformal class (its discrete class, the cross
+   ratios, is that of the flat lattice i tau_im exactly only for n = m: see CSMeshDataLattice).
    A class with Re tau != 0 is a sheared lattice; its flat torus is not a product of two circles in S^3, so it
-   has no realisation of this kind and is refused. */
-PetscErrorCode CSMeshDataFlatTorus(PetscReal tau_re, PetscReal tau_im, PetscInt n, PetscInt m, CSMeshData *md)
+   has no realisation of this kind and is refused (-gen lattice gives its class as lengths). */
+/* The stereographic image of {(r1 e^{ia}, r2 e^{ib})} c S^3 (r2/r1 = tau_im) on the n x m grid uniform in (a, b). */
+static void FlatTorusPositions(PetscReal tau_im, PetscInt n, PetscInt m, PetscReal *x)
 {
   PetscReal r1 = 1 / PetscSqrtReal(1 + tau_im * tau_im), r2 = tau_im * r1;
-
-  PetscFunctionBeginUser;
-  PetscCheck(tau_re == 0, PETSC_COMM_SELF, PETSC_ERR_SUP, "flat torus with tau = %g + %g i: only rectangular conformal classes (tau_re = 0) have a flat realisation as a product of circles in S^3", (double)tau_re, (double)tau_im);
-  PetscCheck(tau_im > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "flat torus needs tau_im > 0, got %g", (double)tau_im);
-  PetscCheck(n >= 3 && m >= 3, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "flat torus needs n, m >= 3, got %" PetscInt_FMT ", %" PetscInt_FMT, n, m);
-  PetscCall(MeshAlloc("-gen flattorus", (double)n * m, 2 * (double)n * m, md));
   for (PetscInt i = 0; i < n; i++)
     for (PetscInt j = 0; j < m; j++) {
       PetscReal a = 2 * PETSC_PI * i / n, b = 2 * PETSC_PI * j / m, s = 1 / (1 - r2 * PetscSinReal(b));
-      PetscReal *p = md->x + 3 * (i * m + j);
+      PetscReal *p = x + 3 * (i * m + j);
       p[0]         = s * r1 * PetscCosReal(a);
       p[1]         = s * r1 * PetscSinReal(a);
       p[2]         = s * r2 * PetscCosReal(b);
     }
+}
+
+PetscErrorCode CSMeshDataFlatTorus(PetscReal tau_re, PetscReal tau_im, PetscInt n, PetscInt m, CSMeshData *md)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(tau_re == 0, PETSC_COMM_SELF, PETSC_ERR_SUP, "flat torus with tau = %g + %g i: only rectangular conformal classes (tau_re = 0) have a flat realisation as a product of circles in S^3 (use -gen lattice -gen_tau RE,IM)", (double)tau_re, (double)tau_im);
+  PetscCheck(tau_im > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "flat torus needs tau_im > 0, got %g", (double)tau_im);
+  PetscCheck(n >= 3 && m >= 3, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "flat torus needs n, m >= 3, got %" PetscInt_FMT ", %" PetscInt_FMT, n, m);
+  PetscCall(MeshAlloc("-gen flattorus", (double)n * m, 2 * (double)n * m, md));
+  FlatTorusPositions(tau_im, n, m, md->x);
   TorusGrid(n, m, md->f);
   OrientOutward(md);
   snprintf(md->name, sizeof(md->name), "flattorus(tau=%g+%gi,n=%" PetscInt_FMT ",m=%" PetscInt_FMT ")", (double)tau_re, (double)tau_im, n, m);
+  PetscFunctionReturn(0);
+}
+
+/* Grid offset of vertex b from vertex a along one periodic direction of k >= 3 segments: -1, 0 or 1. */
+static inline PetscInt GridStep(PetscInt a, PetscInt b, PetscInt k)
+{
+  return (b - a + k + 1) % k - 1;
+}
+
+/* The flat torus C/(Z + tau Z) on the n x m grid of its fundamental domain: vertex (i, j) = i/n + j tau/m
+   (soliman2021 Sec. 6.1.1: a lattice in the plane, triangulated; its discrete conformal class, the log length
+   cross ratios of the flat triangles, is the target c0). Each grid cell is cut along its shorter diagonal
+   (1/n + tau/m for Re tau <= 0, as -gen flattorus; tau/m - 1/n for Re tau > 0, so that no angle exceeds the
+   cell's), and md->len holds the flat lengths |z_b - z_a| of every face's edges. The positions are only the
+   start of a flow: the stereographic torus of the rectangular class i Im tau (-gen flattorus), same grid.
+   For Re tau = 0 and n = m the positions already realise c0 exactly: cross ratios are Moebius invariant and
+   the chordal lengths of the product of circles in R^4 are 2 r1 sin(pi/n), 2 r2 sin(pi/m) and the root of their
+   squares' sum, a flat rectangular lattice of class i tau_im sinc(pi/m)/sinc(pi/n) (= i tau_im iff n = m). */
+PetscErrorCode CSMeshDataLattice(PetscReal tau_re, PetscReal tau_im, PetscInt n, PetscInt m, CSMeshData *md)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(tau_im > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "-gen_tau %g,%g: the lattice tau must lie in the upper half-plane (Im tau > 0)", (double)tau_re, (double)tau_im);
+  PetscCheck(n >= 3 && m >= 3, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "-gen lattice needs -gen_n, -gen_m >= 3, got %" PetscInt_FMT ", %" PetscInt_FMT, n, m);
+  PetscCall(MeshAlloc("-gen lattice", (double)n * m, 2 * (double)n * m, md));
+  FlatTorusPositions(tau_im, n, m, md->x);
+  TorusGrid(n, m, md->f);
+  if (tau_re > 0) /* quad a b c d = (i,j) (i+1,j) (i+1,j+1) (i,j+1): cut along b d instead of a c */
+    for (PetscInt q = 0; q < n * m; q++) {
+      PetscInt *t = md->f + 6 * q, b = t[1], c = t[2], d = t[5];
+      t[2] = d;
+      t[3] = b;
+      t[4] = c;
+      t[5] = d;
+    }
+  OrientOutward(md);
+  PetscCall(PetscMalloc1(3 * md->nf, &md->len));
+  for (PetscInt f = 0; f < md->nf; f++) {
+    const PetscInt *t = md->f + 3 * f;
+    PetscReal       zr[3], zi[3];
+    for (int k = 0; k < 3; k++) { /* unwrapped flat position of corner k, relative to corner 0 */
+      PetscInt di = GridStep(t[0] / m, t[k] / m, n), dj = GridStep(t[0] % m, t[k] % m, m);
+      zr[k] = (PetscReal)di / n + dj * tau_re / m;
+      zi[k] = dj * tau_im / m;
+    }
+    for (int k = 0; k < 3; k++) md->len[3 * f + k] = PetscSqrtReal(PetscSqr(zr[(k + 2) % 3] - zr[(k + 1) % 3]) + PetscSqr(zi[(k + 2) % 3] - zi[(k + 1) % 3]));
+  }
+  snprintf(md->name, sizeof(md->name), "lattice(tau=%g%+gi,n=%" PetscInt_FMT ",m=%" PetscInt_FMT ")", (double)tau_re, (double)tau_im, n, m);
   PetscFunctionReturn(0);
 }
 

@@ -80,6 +80,7 @@ PetscErrorCode CSMeshDataDestroy(CSMeshData *md)
   PetscFunctionBeginUser;
   PetscCall(PetscFree(md->x));
   PetscCall(PetscFree(md->f));
+  PetscCall(PetscFree(md->len));
   md->nv      = 0;
   md->nf      = 0;
   md->name[0] = 0;
@@ -97,5 +98,9 @@ PetscErrorCode CSMeshDataDuplicate(const CSMeshData *in, CSMeshData *out)
   PetscCall(PetscArraycpy(out->x, in->x, 3 * in->nv));
   PetscCall(PetscArraycpy(out->f, in->f, 3 * in->nf));
   PetscCall(PetscStrncpy(out->name, in->name, sizeof(out->name)));
+  if (in->len) {
+    PetscCall(PetscMalloc1(3 * in->nf, &out->len));
+    PetscCall(PetscArraycpy(out->len, in->len, 3 * in->nf));
+  }
   PetscFunctionReturn(0);
 }

@@ -8,16 +8,17 @@ typedef enum {
   GEN_TORUS,
   GEN_FLATTORUS,
   GEN_CYLINDER,
-  GEN_DISK
+  GEN_DISK,
+  GEN_LATTICE
 } GenType;
-static const char *const GenNames[] = {"icosphere", "torus", "flattorus", "cylinder", "disk"};
+static const char *const GenNames[] = {"icosphere", "torus", "flattorus", "cylinder", "disk", "lattice"};
 
 typedef struct {
   char      path[PETSC_MAX_PATH_LEN];
   PetscBool file;
   GenType   gen;
   PetscInt  level, n, m, rings;
-  PetscReal radius, R, r, tau_re, tau_im, height;
+  PetscReal radius, R, r, tau_re, tau_im, height, tau[2]; /* tau: -gen lattice */
   PetscBool project;
   PetscInt  refine;      /* -mesh_refine: 1-to-4 splits after validation (meshdata_refine.c) */
   PetscBool refine_loop; /* -mesh_refine_type loop (default) or midpoint */
@@ -38,6 +39,7 @@ static PetscErrorCode MeshSourceLoad(const MeshSource *src, CSMeshData *md, CSTo
     case GEN_FLATTORUS: PetscCall(CSMeshDataFlatTorus(src->tau_re, src->tau_im, src->n, src->m, md)); break;
     case GEN_CYLINDER: PetscCall(CSMeshDataCylinder(src->radius, src->height, src->n, src->m, md)); break;
     case GEN_DISK: PetscCall(CSMeshDataDisk(src->radius, src->rings, md)); break;
+    case GEN_LATTICE: PetscCall(CSMeshDataLattice(src->tau[0], src->tau[1], src->n, src->m, md)); break;
     }
   }
   ierr = CSMeshDataValidate(md, topo);
@@ -55,7 +57,8 @@ static PetscErrorCode MeshSourceLoad(const MeshSource *src, CSMeshData *md, CSTo
 PetscErrorCode CSMeshDataFromOptions(MPI_Comm comm, const char prefix[], CSMeshData *md, CSTopology *topo)
 {
   MeshSource  src;
-  PetscBool   genset = PETSC_FALSE;
+  PetscBool   genset = PETSC_FALSE, tauset = PETSC_FALSE;
+  PetscInt    ntau   = 2;
   PetscInt    gen    = GEN_ICOSPHERE, rtype = 1;
   const char *pre    = prefix ? prefix : "";
 
@@ -72,11 +75,13 @@ PetscErrorCode CSMeshDataFromOptions(MPI_Comm comm, const char prefix[], CSMeshD
   src.m       = 16;
   src.tau_re  = 0;
   src.tau_im  = 1;
+  src.tau[0]  = 0;
+  src.tau[1]  = 1;
   src.height  = 2;
   src.rings   = 8;
   PetscOptionsBegin(comm, prefix, "Mesh source", NULL);
   PetscCall(PetscOptionsString("-mesh", "Mesh file (.obj, .off, .ply)", "CSMeshDataFromOptions", src.path, src.path, sizeof(src.path), &src.file));
-  PetscCall(PetscOptionsEList("-gen", "Generated mesh", "CSMeshDataFromOptions", GenNames, 5, GenNames[gen], &gen, &genset));
+  PetscCall(PetscOptionsEList("-gen", "Generated mesh", "CSMeshDataFromOptions", GenNames, 6, GenNames[gen], &gen, &genset));
   PetscCall(PetscOptionsInt("-gen_level", "Icosphere: subdivision level", "CSMeshDataIcosphere", src.level, &src.level, NULL));
   PetscCall(PetscOptionsReal("-gen_radius", "Icosphere, cylinder, disk: radius", "CSMeshDataIcosphere", src.radius, &src.radius, NULL));
   PetscCall(PetscOptionsBool("-gen_project", "Icosphere: project the new vertices to the sphere", "CSMeshDataIcosphere", src.project, &src.project, NULL));
@@ -86,14 +91,17 @@ PetscErrorCode CSMeshDataFromOptions(MPI_Comm comm, const char prefix[], CSMeshD
   PetscCall(PetscOptionsInt("-gen_m", "Torus, flat torus: segments around the tube; cylinder: rows", "CSMeshDataTorus", src.m, &src.m, NULL));
   PetscCall(PetscOptionsReal("-gen_tau_re", "Flat torus: real part of the conformal class tau (must be 0)", "CSMeshDataFlatTorus", src.tau_re, &src.tau_re, NULL));
   PetscCall(PetscOptionsReal("-gen_tau_im", "Flat torus: imaginary part of tau", "CSMeshDataFlatTorus", src.tau_im, &src.tau_im, NULL));
+  PetscCall(PetscOptionsRealArray("-gen_tau", "Lattice: the conformal class tau = RE,IM (Im tau > 0) of C/(Z + tau Z)", "CSMeshDataLattice", src.tau, &ntau, &tauset));
   PetscCall(PetscOptionsReal("-gen_height", "Cylinder: height", "CSMeshDataCylinder", src.height, &src.height, NULL));
   PetscCall(PetscOptionsInt("-gen_rings", "Disk: number of rings", "CSMeshDataDisk", src.rings, &src.rings, NULL));
   PetscCall(PetscOptionsInt("-mesh_refine", "Regular 1-to-4 refinements of the input (file or generator); the refined mesh's conformal class is a flow's constraint", "CSMeshDataRefine", src.refine, &src.refine, NULL));
   PetscCall(PetscOptionsEList("-mesh_refine_type", "Positions of the refined vertices: midpoint (shape kept) or loop (Loop subdivision)", "CSMeshDataRefine", RefineNames, 2, RefineNames[rtype], &rtype, NULL));
   PetscOptionsEnd();
   PetscCheck(src.refine >= 0 && src.refine <= 6, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%smesh_refine %" PetscInt_FMT ": not in [0, 6] (each level multiplies the faces by 4)", pre, src.refine);
+  PetscCheck(!tauset || ntau == 2, comm, PETSC_ERR_ARG_WRONG, "-%sgen_tau: give two numbers RE,IM (got %" PetscInt_FMT ")", pre, ntau);
+  PetscCheck(!src.refine || gen != GEN_LATTICE, comm, PETSC_ERR_ARG_INCOMP, "-%smesh_refine with -%sgen lattice: refine with -%sgen_n, -%sgen_m instead (the lattice's lengths are not refined)", pre, pre, pre, pre);
   src.refine_loop = rtype == 1 ? PETSC_TRUE : PETSC_FALSE;
-  PetscCheck(src.file != genset, comm, PETSC_ERR_ARG_WRONG, "give exactly one of -%smesh FILE and -%sgen icosphere|torus|flattorus|cylinder|disk (%s)", pre, pre, src.file ? "both were given" : "neither was given");
+  PetscCheck(src.file != genset, comm, PETSC_ERR_ARG_WRONG, "give exactly one of -%smesh FILE and -%sgen icosphere|torus|flattorus|cylinder|disk|lattice (%s)", pre, pre, src.file ? "both were given" : "neither was given");
   src.gen = (GenType)gen;
   CSRootCall(comm, MeshSourceLoad(&src, md, topo));
   PetscFunctionReturn(0);

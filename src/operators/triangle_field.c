@@ -45,6 +45,26 @@ PetscErrorCode CSTriangleFieldLogLengths(CSMesh m, DM dmH3, Vec omega, DM dmH1, 
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode CSTriangleFieldLogLengthsFromEdges(CSMesh m, Vec l, DM dmH1, Vec lambda)
+{
+  Vec                lE, lH;
+  const PetscScalar *e;
+  PetscScalar       *h;
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLocalVector(m->dmE1, &lE));
+  PetscCall(DMGetLocalVector(dmH1, &lH));
+  PetscCall(DMGlobalToLocal(m->dmE1, l, INSERT_VALUES, lE));
+  PetscCall(VecGetArrayRead(lE, &e));
+  PetscCall(VecGetArray(lH, &h));
+  for (PetscInt i = 0; i < m->ne; i++) h[2 * i] = h[2 * i + 1] = PetscLogReal(PetscRealPart(e[i]));
+  PetscCall(VecRestoreArray(lH, &h));
+  PetscCall(VecRestoreArrayRead(lE, &e));
+  PetscCall(DMLocalToGlobal(dmH1, lH, INSERT_VALUES, lambda));
+  PetscCall(DMRestoreLocalVector(dmH1, &lH));
+  PetscCall(DMRestoreLocalVector(m->dmE1, &lE));
+  PetscFunctionReturn(0);
+}
+
 /* Per face the halfedge vectors w[a] (opposite corner a, running v[a+1] -> v[a+2]): the edges leaving corner a
    are w[a+2] and -w[a+1], so cot(theta_a) = <w[a+2], -w[a+1]> / |w[a+2] x w[a+1]| and the area is
    |w[a+2] x w[a+1]|/2. Halfedge a adds 1/2 cot(theta_a) w[a] to Y at its tail v[a+1] and subtracts it at its head

@@ -26,7 +26,8 @@ PetscErrorCode CSWFSetUpBoundary(CSWillmoreFlow F)
   PetscFunctionReturn(0);
 }
 
-/* The conformal constraint (target: the input's class or that of -flow_target_mesh) and the global ones. */
+/* The conformal constraint (target: the input's class, that of -flow_target_mesh, or the input's intrinsic
+   lengths when it has them: -gen lattice) and the global ones. */
 PetscErrorCode CSWFSetUpConstraints(CSWillmoreFlow F)
 {
   CSMesh    m = F->mesh;
@@ -38,6 +39,7 @@ PetscErrorCode CSWFSetUpConstraints(CSWillmoreFlow F)
     PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%starget_mesh", F->prefix));
     if (F->target[0]) PetscCall(CSMeshLoadCompatiblePositions(m, opt, F->target, &xt));
     PetscCall(CSConformalConstraintCreate(m, xt, (PetscBool)(m->topo.boundary_loops > 0), F->fixed, &F->cc));
+    if (!F->target[0] && m->lt) PetscCall(CSConformalConstraintSetTargetLengths(&F->cc, m->lt));
     if (F->target[0]) PetscCall(VecDestroy(&xt));
   }
   PetscCall(CSGeometryAreaVolume(m, F->x0, &A, &V));

@@ -216,7 +216,8 @@ static PetscErrorCode SetUpScaling(CSWillmoreFlow F, CSTriangleField *d)
   PetscFunctionReturn(0);
 }
 
-/* The variables omega_0 = df of the mesh's positions, the energy, the rows and their target c0 = C~ lambda(omega_0),
+/* The variables omega_0 = df of the mesh's positions, the energy, the rows and their target c0 = C~ lambda(omega_0)
+   (or C~ log l of the input's intrinsic lengths l = mesh->lt when it has them: -gen lattice),
    the vectors, the scaling and the saddle solver (multiplier block: the sparse rows; bordering: the Y rows). */
 static PetscErrorCode SetUpTriangleField(CSWillmoreFlow F)
 {
@@ -241,7 +242,8 @@ static PetscErrorCode SetUpTriangleField(CSWillmoreFlow F)
   PetscCall(SetUpOperators(F, d));
   PetscCall(SetUpHarmonicRows(F, d));
   PetscCall(SetUpVectors(F, d));
-  PetscCall(CSTriangleFieldLogLengths(m, d->dmH3, F->x0, d->dmH1, d->lambda));
+  if (m->lt) PetscCall(CSTriangleFieldLogLengthsFromEdges(m, m->lt, d->dmH1, d->lambda)); /* -gen lattice: the lattice's class */
+  else PetscCall(CSTriangleFieldLogLengths(m, d->dmH3, F->x0, d->dmH1, d->lambda));
   PetscCall(MatMult(d->C, d->lambda, d->c0));
   PetscCall(SetUpScaling(F, d));
   PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "%ssaddle_", F->prefix));
