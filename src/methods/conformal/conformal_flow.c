@@ -5,7 +5,7 @@
 #include "cs_package.h"
 #include "cs_util.h"
 
-static const CSFlowLoopOps LoopOps;
+static const CSFlowLoopOps LoopOps; /* the flow's parts for the iteration driver (defined below) */
 static const char *const ReasonsShifted[]              = {"energy_growth", "max_it", "iterating", "converged_atol", "converged_rtol"};
 const char *const       *CSConformalFlowConvergedReasons = ReasonsShifted + 2;
 const char *const        CSConformalCurvatures[]       = {"barycentric", "voronoi", "CSConformalCurvature", "CS_CONFORMAL_CURVATURE_", NULL};
@@ -64,8 +64,8 @@ PetscErrorCode CSConformalFlowSetTimeStep(CSConformalFlow F, PetscReal tau)
 PetscErrorCode CSConformalFlowSetTolerances(CSConformalFlow F, PetscReal atol, PetscReal rtol, PetscInt max_it)
 {
   PetscFunctionBeginUser;
-  F->atol   = atol;
-  F->rtol   = rtol;
+  F->atol        = atol;
+  F->rtol        = rtol;
   F->loop.max_it = max_it;
   PetscFunctionReturn(0);
 }

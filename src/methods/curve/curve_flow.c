@@ -5,7 +5,7 @@
 #include "cs_package.h"
 #include "cs_util.h"
 
-static const CSFlowLoopOps LoopOps;
+static const CSFlowLoopOps LoopOps; /* the flow's parts for the iteration driver (defined below) */
 static const char *const ReasonsShifted[]         = {"turning_changed", "energy_growth", "max_it", "iterating", "converged"};
 const char *const       *CSCurveFlowConvergedReasons = ReasonsShifted + 3;
 

@@ -60,7 +60,7 @@ PetscErrorCode CSCurveFlowSetTolerances(CSCurveFlow F, PetscReal rtol, PetscInt 
 {
   PetscFunctionBeginUser;
   PetscCheck(rtol >= 0 && max_it >= 0, F->hdr.comm, PETSC_ERR_ARG_OUTOFRANGE, "CSCurveFlowSetTolerances: rtol %g and max_it %" PetscInt_FMT " must be >= 0", (double)rtol, max_it);
-  F->rtol   = rtol;
+  F->rtol        = rtol;
   F->loop.max_it = max_it;
   PetscFunctionReturn(0);
 }
