@@ -14,7 +14,8 @@
      rotation of the step removed.
    Options (prefix curve_): -tau (0.95; the flow is stable for tau < 1), -max_it (100), -rtol (1e-9: stop when
    the stationarity |v|_d sqrt(length) / 2pi and the change of the last step both fall below it), -filter (false), -filter_sigma (1, in units of
-   (length/2pi)^(2k)), -filter_k (2), -max_energy_growth (1e6: E above this times the initial E diverges).
+   (length/2pi)^(2k)), -filter_k (2), -max_energy_growth (1e6: E above this times the initial E diverges),
+   -max_seconds (0: no limit; stop as at max_it once this many seconds have passed since the set-up began).
    Open curves (CSCurve with closed = false, -curve_open) flow without the closure constraints. */
 #ifndef CS_METHODS_CURVE_H
 #define CS_METHODS_CURVE_H

@@ -48,12 +48,18 @@ check "cannot open"               "$D/does_not_exist.txt"
 run -curve "$D/open_line.obj" -curve_close -curve_max_it 2 > "$TMP/out" 2>&1 || { cat "$TMP/out"; echo "BAD: -curve_close refused"; exit 1; }
 run -curve "$D/open_line.txt" -curve_open -curve_max_it 2 > "$TMP/out" 2>&1 || { cat "$TMP/out"; echo "BAD: -curve_open refused"; exit 1; }
 echo "ok  -curve_close / -curve_open accept an open line"
+# the wall-time budget (src/methods/flow_loop.c, shared with -flow_max_seconds): a noisy curve that needs ~240
+# steps stops as at max_it after its first step when the budget is already spent (rank 0's clock, on all ranks)
+run -gen_curve noisy -curve_max_it 1000 -curve_max_seconds 1e-9 -summary "$TMP/budget.json" > "$TMP/out" 2>&1 || { cat "$TMP/out"; echo "BAD: -curve_max_seconds run failed"; exit 1; }
+grep -q '"stop_reason": "max_it"' "$TMP/budget.json" && grep -q '"iterations": 1,' "$TMP/budget.json" || { cat "$TMP/budget.json"; echo "BAD: -curve_max_seconds 1e-9 did not stop after one step with max_it"; exit 1; }
+echo "ok  -curve_max_seconds 1e-9 stops after one step (max_it)"
 # options
 G="-gen_curve circle"
 EXPECT="-curve_tau 0\.?: must be > 0"      expect_fail run $G -curve_tau 0
 EXPECT="-curve_tau -1\.?: must be > 0"      expect_fail run $G -curve_tau -1
 [ "$NP" != 1 ] && exit 0  # the rest are option checks on rank 0's values, the same on any number of ranks
 EXPECT="-curve_max_it -3"                 expect_fail run $G -curve_max_it -3
+EXPECT="-curve_max_seconds -1\.?: use 0"   expect_fail run $G -curve_max_seconds -1
 EXPECT="-curve_filter_sigma"              expect_fail run $G -curve_filter -curve_filter_sigma 0
 EXPECT="-gen_curve blob: unknown"         expect_fail run -gen_curve blob
 EXPECT="-gen_curve_n 2"                   expect_fail run $G -gen_curve_n 2

@@ -178,7 +178,7 @@ PetscErrorCode CSConformalFlowApplyFilter(CSConformalFlow F, Vec v)
   KSPConvergedReason kr;
   PetscReal          A, vol, s;
   PetscFunctionBeginUser;
-  PetscCheck(F->setupcalled && F->sigma > 0, F->hdr.comm, PETSC_ERR_ORDER, "CSConformalFlowApplyFilter: needs SetUp and -%sfilter_sigma > 0", F->hdr.prefix);
+  PetscCheck(F->loop.setupcalled && F->sigma > 0, F->hdr.comm, PETSC_ERR_ORDER, "CSConformalFlowApplyFilter: needs SetUp and -%sfilter_sigma > 0", F->hdr.prefix);
   PetscCall(CSGeometryAreaVolume(F->mesh, F->x, &A, &vol));
   s = F->sigma * PetscPowReal(A / (4 * PETSC_PI), (PetscReal)F->fk); /* sigma is dimensionless: the unit sphere's */
   PetscCall(CSGeometryVertexAreas(F->mesh, F->x, F->area));

@@ -5,6 +5,7 @@
 #include "cs_package.h"
 #include "cs_util.h"
 
+static const CSFlowLoopOps LoopOps; /* the flow's parts for the iteration driver (defined below) */
 static const char *const ReasonsShifted[]              = {"energy_growth", "max_it", "iterating", "converged_atol", "converged_rtol"};
 const char *const       *CSConformalFlowConvergedReasons = ReasonsShifted + 2;
 const char *const        CSConformalCurvatures[]       = {"barycentric", "voronoi", "CSConformalCurvature", "CS_CONFORMAL_CURVATURE_", NULL};
@@ -17,9 +18,10 @@ PetscErrorCode CSConformalFlowCreate(CSMesh mesh, CSConformalFlow *flow)
   PetscFunctionBeginUser;
   PetscCall(CSInitializePackage());
   PetscCall(CSObjectCreate(sizeof(*F), mesh->comm, "flow_", &F));
+  PetscCall(CSFlowLoopInit(&F->loop, mesh->comm, &LoopOps, CS_CONFORMAL_DIVERGED_MAX_IT));
   F->mesh          = mesh;
   F->tau           = 0.95; /* stable for tau < 1 (Sec. 4: |1 - 2 tau| < 1) */
-  F->max_it        = 100;
+  F->loop.max_it   = 100;
   F->atol          = 0;
   F->rtol          = 1e-6;
   F->egrow         = 1e3;
@@ -63,9 +65,9 @@ PetscErrorCode CSConformalFlowSetTimeStep(CSConformalFlow F, PetscReal tau)
 PetscErrorCode CSConformalFlowSetTolerances(CSConformalFlow F, PetscReal atol, PetscReal rtol, PetscInt max_it)
 {
   PetscFunctionBeginUser;
-  F->atol   = atol;
-  F->rtol   = rtol;
-  F->max_it = max_it;
+  F->atol        = atol;
+  F->rtol        = rtol;
+  F->loop.max_it = max_it;
   PetscFunctionReturn(0);
 }
 
@@ -82,7 +84,7 @@ static PetscErrorCode CheckOptions(CSConformalFlow F)
 {
   const CSOptionCheck checks[] = {
     {"tau", F->tau, F->tau > 0, "must be > 0 (the flow is stable for 0 < tau < 1)"},
-    {"max_it", (PetscReal)F->max_it, F->max_it >= 0, "must be >= 0"},
+    {"max_it", (PetscReal)F->loop.max_it, F->loop.max_it >= 0, "must be >= 0"},
     {"atol", F->atol, F->atol >= 0, "must be >= 0"},
     {"rtol", F->rtol, F->rtol >= 0, "must be >= 0"},
     {"max_energy_growth", F->egrow, F->egrow > 1, "must be > 1"},
@@ -90,9 +92,9 @@ static PetscErrorCode CheckOptions(CSConformalFlow F)
     {"filter_k", (PetscReal)F->fk, F->fk >= 0 && F->fk <= 4, "must lie in 0..4"},
     {"curvature_factor", F->hfactor, F->hfactor > 0, "must be > 0"},
     {"mobius_weight", F->mobius_weight, F->mobius_weight >= 0, "must be >= 0"},
+    {"max_seconds", F->loop.max_seconds, F->loop.max_seconds >= 0, "use 0 (no limit) or a positive number of seconds"},
     {"max_nonexact", F->max_nonexact, F->max_nonexact >= 0, "must be >= 0 (0: off)"},
     {"max_halvings", (PetscReal)F->max_halvings, F->max_halvings >= 0, "must be >= 0"},
-    {"max_seconds", F->max_seconds, F->max_seconds >= 0, "use 0 (no limit) or a positive number of seconds"},
   };
   PetscFunctionBeginUser;
   PetscCall(CSCheckOptionValues(F->hdr.comm, F->hdr.prefix, sizeof(checks) / sizeof(checks[0]), checks));
@@ -104,7 +106,7 @@ PetscErrorCode CSConformalFlowSetFromOptions(CSConformalFlow F)
   PetscFunctionBeginUser;
   PetscOptionsBegin(F->hdr.comm, F->hdr.prefix, "Conformal curvature flow (crane2013 Sec. 6)", NULL);
   PetscCall(PetscOptionsReal("-tau", "Time step of rho = tau v, v = -2 H projected (Table 1 V); stable for tau < 1", NULL, F->tau, &F->tau, NULL));
-  PetscCall(PetscOptionsInt("-max_it", "Maximum number of steps", NULL, F->max_it, &F->max_it, NULL));
+  PetscCall(PetscOptionsInt("-max_it", "Maximum number of steps", NULL, F->loop.max_it, &F->loop.max_it, NULL));
   PetscCall(PetscOptionsReal("-atol", "Stop when W is at most this (0: off)", NULL, F->atol, &F->atol, NULL));
   PetscCall(PetscOptionsReal("-rtol", "Stop when a step changes W by at most this fraction", NULL, F->rtol, &F->rtol, NULL));
   PetscCall(PetscOptionsReal("-max_energy_growth", "Stop (diverged) when W exceeds this times the initial W", NULL, F->egrow, &F->egrow, NULL));
@@ -125,7 +127,7 @@ PetscErrorCode CSConformalFlowSetFromOptions(CSConformalFlow F)
     PetscCall(PetscOptionsString("-target_mesh", "-boundary vector|fixed: the targets (V~ of this mesh, or its boundary positions; same connectivity)", NULL, F->target, F->target, sizeof(F->target), NULL));
   }
   PetscCall(PetscOptionsEnum("-curvature", "Table 1 I: H = (L f).N/(2A) with the barycentric area and area-weighted normal, or with the mixed Voronoi area and the 1-ring sphere-fit normal (exactly constant on inscribed spheres)", NULL, CSConformalCurvatures, (PetscEnum)F->curvature, (PetscEnum *)&F->curvature, NULL));
-  PetscCall(PetscOptionsReal("-max_seconds", "Stop (as at max_it) once this many seconds have passed since the set-up (0: no limit); rank 0's clock decides", NULL, F->max_seconds, &F->max_seconds, NULL));
+  PetscCall(PetscOptionsReal("-max_seconds", "Stop (as at max_it) once this many seconds have passed since the set-up (0: no limit); rank 0's clock decides", NULL, F->loop.max_seconds, &F->loop.max_seconds, NULL));
   PetscCall(PetscOptionsReal("-max_nonexact", "Safeguard (not the paper's): retry a step with tau / 2 while the Poisson step's relative least-squares residual |df~ - conj(lambda) df lambda| / |conj(lambda) df lambda| exceeds this (0: off)", NULL, F->max_nonexact, &F->max_nonexact, NULL));
   PetscCall(PetscOptionsInt("-max_halvings", "-max_nonexact: at most this many halvings of tau per step", NULL, F->max_halvings, &F->max_halvings, NULL));
   PetscCall(PetscOptionsEnum("-eigensolver", "Eq. 5: one inverse-iteration step on a factorisation of the current X (Sec. 6.4.2), or SLEPc to convergence (options -spin_eps_*, -spin_st_*)", NULL, CSConformalEigensolvers, (PetscEnum)F->eigensolver, (PetscEnum *)&F->eigensolver, NULL));
@@ -157,14 +159,13 @@ static PetscErrorCode SetUpSpin(CSConformalFlow F)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CSConformalFlowSetUp(CSConformalFlow F)
+/* the loop's set-up (CSFlowLoopSetUp times it) */
+static PetscErrorCode SetUpFlow(void *ctx)
 {
-  CSMesh         m = F->mesh;
-  PetscReal      vol;
-  PetscLogDouble t1;
+  CSConformalFlow F = (CSConformalFlow)ctx;
+  CSMesh          m = F->mesh;
+  PetscReal       vol;
   PetscFunctionBeginUser;
-  if (F->setupcalled) PetscFunctionReturn(0);
-  PetscCall(PetscTime(&F->t0));
   PetscCall(CheckMesh(F));
   PetscCall(VecDuplicate(m->x, &F->x));
   PetscCall(VecCopy(m->x, F->x));
@@ -185,88 +186,84 @@ PetscErrorCode CSConformalFlowSetUp(CSConformalFlow F)
   PetscCall(CSConformalFlowExactnessSetUp(F));
   F->ncmax = 4 + (F->exactness ? 3 * F->ng : 0);
   PetscCall(VecDuplicateVecs(F->area, F->ncmax, &F->c));
-  PetscCall(PetscTime(&t1));
-  F->t_setup     = t1 - F->t0;
-  F->setupcalled = PETSC_TRUE;
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode Monitor(CSConformalFlow F, CSConformalMonitorEvent ev)
+PetscErrorCode CSConformalFlowSetUp(CSConformalFlow F)
 {
-  PetscLogDouble now;
   PetscFunctionBeginUser;
-  PetscCall(PetscTime(&now));
-  F->s.event   = ev;
-  F->s.seconds = (PetscReal)(now - F->t0);
+  PetscCall(CSFlowLoopSetUp(&F->loop, F));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode Monitor(void *ctx, CSFlowEvent ev)
+{
+  CSConformalFlow F = (CSConformalFlow)ctx;
+  PetscFunctionBeginUser;
+  F->s.event        = (CSConformalMonitorEvent)ev;
+  F->s.it           = F->loop.it;
+  F->s.seconds      = F->loop.seconds;
+  F->s.step_seconds = F->loop.step_seconds;
   for (PetscInt i = 0; i < F->hdr.monitors.n; i++) PetscCall(((CSConformalFlowMonitorFn)F->hdr.monitors.fn[i])(F, &F->s, F->hdr.monitors.ctx[i]));
   PetscFunctionReturn(0);
 }
 
-/* the convergence tests of a new state */
-static void Judge(CSConformalFlow F)
+/* the flow's convergence tests of a new state (then the loop's -max_it and -max_seconds) */
+static PetscErrorCode Judge(void *ctx, PetscInt *reason)
 {
+  CSConformalFlow         F = (CSConformalFlow)ctx;
   CSConformalMonitorInfo *s = &F->s;
-  if (!(s->W == s->W) || s->W > F->egrow * F->W0) F->reason = CS_CONFORMAL_DIVERGED_ENERGY;
-  else if (F->atol > 0 && s->W <= F->atol) F->reason = CS_CONFORMAL_CONVERGED_ATOL;
-  else if (s->it > 0 && PetscAbsReal(s->W - F->Wprev) <= F->rtol * F->Wprev) F->reason = CS_CONFORMAL_CONVERGED_RTOL;
-  else if (s->it >= F->max_it) F->reason = CS_CONFORMAL_DIVERGED_MAX_IT;
-}
-
-/* a wall-time budget: rank 0's clock decides for all ranks (no rank stops alone) */
-static PetscErrorCode JudgeTime(CSConformalFlow F)
-{
-  PetscLogDouble now;
-  PetscMPIInt    over;
   PetscFunctionBeginUser;
-  if (F->reason != CS_CONFORMAL_ITERATING || F->max_seconds <= 0) PetscFunctionReturn(0);
-  PetscCall(PetscTime(&now));
-  over = (PetscMPIInt)(now - F->t0 >= F->max_seconds);
-  PetscCallMPI(MPI_Bcast(&over, 1, MPI_INT, 0, F->hdr.comm));
-  if (over) F->reason = CS_CONFORMAL_DIVERGED_MAX_IT;
+  *reason = CS_CONFORMAL_ITERATING;
+  if (!(s->W == s->W) || s->W > F->egrow * F->W0) *reason = CS_CONFORMAL_DIVERGED_ENERGY;
+  else if (F->atol > 0 && s->W <= F->atol) *reason = CS_CONFORMAL_CONVERGED_ATOL;
+  else if (F->loop.it > 0 && PetscAbsReal(s->W - F->Wprev) <= F->rtol * F->Wprev) *reason = CS_CONFORMAL_CONVERGED_RTOL;
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode Start(CSConformalFlow F)
+/* the input's state (Table 1 I-IV) */
+static PetscErrorCode Start(void *ctx)
 {
+  CSConformalFlow F = (CSConformalFlow)ctx;
   PetscFunctionBeginUser;
-  PetscCall(CSConformalFlowSetUp(F));
-  if (F->started) PetscFunctionReturn(0);
-  F->started = PETSC_TRUE;
-  F->s.tau   = F->tau;
+  F->s.tau = F->tau;
   PetscCall(CSConformalFlowEvaluate(F));
   F->W0    = F->s.W;
   F->Wprev = F->s.W;
-  Judge(F);
-  PetscCall(Monitor(F, CS_CONFORMAL_MONITOR_START));
   PetscFunctionReturn(0);
 }
 
+/* Table 1 V-VII */
+static PetscErrorCode Advance(void *ctx)
+{
+  CSConformalFlow F = (CSConformalFlow)ctx;
+  PetscFunctionBeginUser;
+  F->Wprev = F->s.W;
+  PetscCall(CSConformalFlowIntegrate(F));
+  PetscFunctionReturn(0);
+}
+
+/* the new state and the next direction (I-IV) */
+static PetscErrorCode Evaluate(void *ctx)
+{
+  PetscFunctionBeginUser;
+  PetscCall(CSConformalFlowEvaluate((CSConformalFlow)ctx));
+  PetscFunctionReturn(0);
+}
+
+static const CSFlowLoopOps LoopOps = {SetUpFlow, Start, Advance, Evaluate, Judge, Monitor};
+
 PetscErrorCode CSConformalFlowStep(CSConformalFlow F)
 {
-  PetscLogDouble t0, t1;
   PetscFunctionBeginUser;
-  PetscCall(Start(F));
-  if (F->reason != CS_CONFORMAL_ITERATING) PetscFunctionReturn(0);
-  PetscCall(PetscTime(&t0));
-  F->Wprev = F->s.W;
-  PetscCall(CSConformalFlowIntegrate(F)); /* Table 1 V-VII */
-  F->s.it++;
-  PetscCall(CSConformalFlowEvaluate(F)); /* the new state and the next direction (I-IV) */
-  PetscCall(PetscTime(&t1));
-  F->s.step_seconds = (PetscReal)(t1 - t0);
-  F->t_steps += t1 - t0;
-  Judge(F);
-  PetscCall(JudgeTime(F));
-  PetscCall(Monitor(F, CS_CONFORMAL_MONITOR_STEP));
+  PetscCall(CSFlowLoopStep(&F->loop, F));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode CSConformalFlowSolve(CSConformalFlow F)
 {
   PetscFunctionBeginUser;
-  PetscCall(Start(F));
-  while (F->reason == CS_CONFORMAL_ITERATING) PetscCall(CSConformalFlowStep(F));
-  PetscCall(Monitor(F, CS_CONFORMAL_MONITOR_END));
+  PetscCall(CSFlowLoopSolve(&F->loop, F));
   PetscFunctionReturn(0);
 }
 

@@ -4,7 +4,7 @@
 PetscErrorCode CSConformalFlowGetConvergedReason(CSConformalFlow F, CSConformalFlowConvergedReason *reason)
 {
   PetscFunctionBeginUser;
-  *reason = F->reason;
+  *reason = (CSConformalFlowConvergedReason)F->loop.reason;
   PetscFunctionReturn(0);
 }
 
@@ -57,7 +57,7 @@ PetscErrorCode CSConformalFlowGetInfo(CSConformalFlow F, CSConformalFlowInfo *in
   info->exactness     = (PetscBool)(F->exactness && F->ng > 0);
   info->genus         = F->mesh->topo.genus;
   info->closing_max   = F->closing_max;
-  info->setup_seconds = F->t_setup;
-  info->step_seconds  = F->t_steps;
+  info->setup_seconds = F->loop.t_setup;
+  info->step_seconds  = F->loop.t_steps;
   PetscFunctionReturn(0);
 }

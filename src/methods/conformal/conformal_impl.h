@@ -5,6 +5,7 @@
 #include "cs_methods_spin.h"
 #include "cs_energy.h"
 #include "cs_object.h"
+#include "cs_flow_loop.h"
 #include "cs_operators_dec.h"
 
 
@@ -13,7 +14,7 @@ struct _p_CSConformalFlow {
   CSMesh         mesh;
   /* options */
   PetscReal              tau, atol, rtol, egrow, sigma, mobius_weight, hfactor;
-  PetscInt               max_it, fk;
+  PetscInt               fk;
   PetscBool              inversion, mobius, keep_area, exactness, exactness_paper;
   CSConformalEigensolver eigensolver;
   CSConformalCurvature   curvature;   /* Table 1 I */
@@ -21,7 +22,6 @@ struct _p_CSConformalFlow {
   CSConformalBoundary    bmode;       /* Sec. 6.3 (conformal_boundary.c) */
   PetscReal              frame[3];    /* V = frame[0] N + frame[1] T + frame[2] B */
   char                   target[PETSC_MAX_PATH_LEN];
-  PetscReal              max_seconds;
   PetscReal              max_nonexact; /* > 0: retry a step with tau / 2 while its non-exact residual exceeds this */
   PetscInt               max_halvings;
   /* state: positions (current, input, next), per-vertex areas of the input, the step's fields */
@@ -45,11 +45,9 @@ struct _p_CSConformalFlow {
   KSP       kspf;
   PetscReal area_initial;
   /* progress */
-  CSConformalMonitorInfo         s;
-  CSConformalFlowConvergedReason reason;
-  PetscReal                      W0, Wprev, closing_max;
-  PetscLogDouble                 t0, t_setup, t_steps;
-  PetscBool                      setupcalled, started;
+  CSFlowLoop             loop; /* it, reason, -max_it, -max_seconds, the times (src/methods/flow_loop.c) */
+  CSConformalMonitorInfo s;
+  PetscReal              W0, Wprev, closing_max;
 };
 
 /* conformal_direction.c: H, W, the filtered and projected direction v and the measures of the state */

@@ -44,7 +44,7 @@ PetscErrorCode CSConformalFlowIntegrate(CSConformalFlow F)
   if (F->keep_area && F->bmode != CS_CONFORMAL_BOUNDARY_FIXED) { /* (the fixed boundary sets the scale) */
     PetscReal A, vol;
     PetscCall(CSGeometryAreaVolume(F->mesh, F->xnew, &A, &vol));
-    PetscCheck(A > 0 && A == A, F->hdr.comm, PETSC_ERR_NOT_CONVERGED, "conformal flow: step %" PetscInt_FMT " produced a surface of area %g", F->s.it + 1, (double)A);
+    PetscCheck(A > 0 && A == A, F->hdr.comm, PETSC_ERR_NOT_CONVERGED, "conformal flow: step %" PetscInt_FMT " produced a surface of area %g", F->loop.it + 1, (double)A);
     PetscCall(CSSpinRestoreArea(F->spin, F->x0, F->xnew));
   }
   PetscCall(VecCopy(F->xnew, F->x));

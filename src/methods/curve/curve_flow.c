@@ -5,6 +5,7 @@
 #include "cs_package.h"
 #include "cs_util.h"
 
+static const CSFlowLoopOps LoopOps; /* the flow's parts for the iteration driver (defined below) */
 static const char *const ReasonsShifted[]         = {"turning_changed", "energy_growth", "max_it", "iterating", "converged"};
 const char *const       *CSCurveFlowConvergedReasons = ReasonsShifted + 3;
 
@@ -14,9 +15,10 @@ PetscErrorCode CSCurveFlowCreate(CSCurve curve, CSCurveFlow *flow)
   PetscFunctionBeginUser;
   PetscCall(CSInitializePackage());
   PetscCall(CSObjectCreate(sizeof(*F), curve->comm, "curve_", &F));
-  F->curve  = curve;
-  F->tau    = 0.95; /* the default; stable for tau < 1 (Sec. 5: |1 - 2 tau| < 1) */
-  F->max_it = 100;
+  PetscCall(CSFlowLoopInit(&F->loop, curve->comm, &LoopOps, CS_CURVE_DIVERGED_MAX_IT));
+  F->curve       = curve;
+  F->tau         = 0.95; /* the default; stable for tau < 1 (Sec. 5: |1 - 2 tau| < 1) */
+  F->loop.max_it = 100;
   F->rtol   = 1e-9;
   F->sigma  = 1;
   F->fk     = 2;
@@ -44,11 +46,12 @@ static PetscErrorCode CheckOptions(CSCurveFlow F)
 {
   const CSOptionCheck checks[] = {
     {"tau", F->tau, F->tau > 0, "must be > 0"},
-    {"max_it", (PetscReal)F->max_it, F->max_it >= 0, "must be >= 0"},
+    {"max_it", (PetscReal)F->loop.max_it, F->loop.max_it >= 0, "must be >= 0"},
     {"rtol", F->rtol, F->rtol >= 0, "must be >= 0"},
     {"filter_sigma", F->sigma, F->sigma > 0, "must be > 0"},
     {"filter_k", (PetscReal)F->fk, F->fk >= 0 && F->fk <= 4, "must lie in 0..4"},
     {"max_energy_growth", F->egrow, F->egrow > 1, "must be > 1"},
+    {"max_seconds", F->loop.max_seconds, F->loop.max_seconds >= 0, "use 0 (no limit) or a positive number of seconds"},
   };
   PetscFunctionBeginUser;
   PetscCall(CSCheckOptionValues(F->hdr.comm, F->hdr.prefix, sizeof(checks) / sizeof(checks[0]), checks));
@@ -60,12 +63,13 @@ PetscErrorCode CSCurveFlowSetFromOptions(CSCurveFlow F)
   PetscFunctionBeginUser;
   PetscOptionsBegin(F->hdr.comm, F->hdr.prefix, "Isometric curve flow (crane2013 Sec. 5)", NULL);
   PetscCall(PetscOptionsReal("-tau", "Time step of the forward Euler step kappa <- kappa - 2 tau kappa (Eq. 2); stable for tau < 1", NULL, F->tau, &F->tau, NULL));
-  PetscCall(PetscOptionsInt("-max_it", "Maximum number of steps", NULL, F->max_it, &F->max_it, NULL));
+  PetscCall(PetscOptionsInt("-max_it", "Maximum number of steps", NULL, F->loop.max_it, &F->loop.max_it, NULL));
   PetscCall(PetscOptionsReal("-rtol", "Stop when |v|_d sqrt(length)/2pi (v: the constrained direction) and the last step's max |f - f_old| / (length/2pi) are below this", NULL, F->rtol, &F->rtol, NULL));
   PetscCall(PetscOptionsBool("-filter", "Spectral filter v <- v - (id + sigma A^k)^{-1} v of the direction (Sec. 4)", NULL, F->filter, &F->filter, NULL));
   PetscCall(PetscOptionsReal("-filter_sigma", "Filter sigma in units of (length/2pi)^(2k)", NULL, F->sigma, &F->sigma, NULL));
   PetscCall(PetscOptionsInt("-filter_k", "Filter order k (0..4)", NULL, F->fk, &F->fk, NULL));
   PetscCall(PetscOptionsReal("-max_energy_growth", "Stop (diverged) when E exceeds this times the initial E", NULL, F->egrow, &F->egrow, NULL));
+  PetscCall(PetscOptionsReal("-max_seconds", "Stop (as at max_it) once this many seconds have passed since the set-up (0: no limit); rank 0's clock decides", NULL, F->loop.max_seconds, &F->loop.max_seconds, NULL));
   PetscOptionsEnd();
   PetscCall(CheckOptions(F));
   PetscFunctionReturn(0);
@@ -90,13 +94,12 @@ static PetscErrorCode CreateVecs(CSCurveFlow F)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CSCurveFlowSetUp(CSCurveFlow F)
+/* the loop's set-up (CSFlowLoopSetUp times it) */
+static PetscErrorCode SetUpFlow(void *ctx)
 {
-  PetscLogDouble t1;
-  PetscScalar    L;
+  CSCurveFlow F = (CSCurveFlow)ctx;
+  PetscScalar L;
   PetscFunctionBeginUser;
-  if (F->setupcalled) PetscFunctionReturn(0);
-  PetscCall(PetscTime(&F->t0));
   PetscCall(CreateVecs(F));
   PetscCall(CSCurveEdgeLengths(F->curve, F->x, F->len));
   PetscCall(CSCurveDualLengths(F->curve, F->len, F->d));
@@ -104,74 +107,85 @@ PetscErrorCode CSCurveFlowSetUp(CSCurveFlow F)
   F->length = PetscRealPart(L);
   PetscCall(CSCurveFlowSetUpPoisson(F));
   if (F->filter) PetscCall(CSCurveFlowSetUpFilter(F));
-  PetscCall(PetscTime(&t1));
-  F->t_setup     = t1 - F->t0;
-  F->setupcalled = PETSC_TRUE;
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode Monitor(CSCurveFlow F, CSCurveMonitorEvent ev)
+PetscErrorCode CSCurveFlowSetUp(CSCurveFlow F)
 {
-  PetscLogDouble now;
   PetscFunctionBeginUser;
-  PetscCall(PetscTime(&now));
-  F->s.event   = ev;
-  F->s.seconds = (PetscReal)(now - F->t0);
+  PetscCall(CSFlowLoopSetUp(&F->loop, F));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode Monitor(void *ctx, CSFlowEvent ev)
+{
+  CSCurveFlow F = (CSCurveFlow)ctx;
+  PetscFunctionBeginUser;
+  F->s.event        = (CSCurveMonitorEvent)ev;
+  F->s.it           = F->loop.it;
+  F->s.seconds      = F->loop.seconds;
+  F->s.step_seconds = F->loop.step_seconds;
   for (PetscInt i = 0; i < F->hdr.monitors.n; i++) PetscCall(((CSCurveFlowMonitorFn)F->hdr.monitors.fn[i])(F, &F->s, F->hdr.monitors.ctx[i]));
   PetscFunctionReturn(0);
 }
 
-/* the convergence tests of a new state */
-static void Judge(CSCurveFlow F)
+/* the flow's convergence tests of a new state (then the loop's -max_it and -max_seconds) */
+static PetscErrorCode Judge(void *ctx, PetscInt *reason)
 {
+  CSCurveFlow         F = (CSCurveFlow)ctx;
   CSCurveMonitorInfo *s = &F->s;
-  if (!(s->energy == s->energy) || s->energy > F->egrow * F->E0) F->reason = CS_CURVE_DIVERGED_ENERGY;
-  else if (F->curve->closed && PetscAbsReal(s->turning - (PetscReal)F->turning0) > 0.5) F->reason = CS_CURVE_DIVERGED_TURNING; /* open: total curvature is free */
-  else if (s->stationarity < F->rtol && (s->it == 0 || s->change < F->rtol)) F->reason = CS_CURVE_CONVERGED_RTOL;
-  else if (s->it >= F->max_it) F->reason = CS_CURVE_DIVERGED_MAX_IT;
-}
-
-static PetscErrorCode Start(CSCurveFlow F)
-{
   PetscFunctionBeginUser;
-  PetscCall(CSCurveFlowSetUp(F));
-  if (F->started) PetscFunctionReturn(0);
-  F->started = PETSC_TRUE;
-  PetscCall(CSCurveFlowEvaluate(F));
-  F->E0       = F->s.energy;
-  F->turning0 = (PetscInt)PetscFloorReal(F->s.turning + 0.5);
-  Judge(F);
-  PetscCall(Monitor(F, CS_CURVE_MONITOR_START));
+  *reason = CS_CURVE_ITERATING;
+  if (!(s->energy == s->energy) || s->energy > F->egrow * F->E0) *reason = CS_CURVE_DIVERGED_ENERGY;
+  else if (F->curve->closed && PetscAbsReal(s->turning - (PetscReal)F->turning0) > 0.5) *reason = CS_CURVE_DIVERGED_TURNING; /* open: total curvature is free */
+  else if (s->stationarity < F->rtol && (F->loop.it == 0 || s->change < F->rtol)) *reason = CS_CURVE_CONVERGED_RTOL;
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CSCurveFlowStep(CSCurveFlow F)
+/* the input's state */
+static PetscErrorCode Start(void *ctx)
 {
-  PetscLogDouble t0, t1;
+  CSCurveFlow F = (CSCurveFlow)ctx;
   PetscFunctionBeginUser;
-  PetscCall(Start(F));
-  if (F->reason != CS_CURVE_ITERATING) PetscFunctionReturn(0);
-  PetscCall(PetscTime(&t0));
+  PetscCall(CSCurveFlowEvaluate(F));
+  F->E0       = F->s.energy;
+  F->turning0 = (PetscInt)PetscFloorReal(F->s.turning + 0.5);
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode Advance(void *ctx)
+{
+  CSCurveFlow F = (CSCurveFlow)ctx;
+  PetscFunctionBeginUser;
   PetscCall(CSCurveFlowIntegrate(F));   /* Eq. 2 and Sec. 5.2: theta, tangents, right-hand side, gap */
   PetscCall(CSCurveFlowReconstruct(F)); /* Sec. 5.2: L f = b, minus the mean motion */
-  F->s.it++;
-  PetscCall(CSCurveFlowEvaluate(F)); /* the new state and the next direction (Eq. 1, Sec. 4, Sec. 5) */
-  PetscCall(PetscTime(&t1));
-  F->s.step_seconds = (PetscReal)(t1 - t0);
-  F->t_steps += t1 - t0;
+  PetscFunctionReturn(0);
+}
+
+/* the new state and the next direction (Eq. 1, Sec. 4, Sec. 5); the largest gap and distortion so far */
+static PetscErrorCode Evaluate(void *ctx)
+{
+  CSCurveFlow F = (CSCurveFlow)ctx;
+  PetscFunctionBeginUser;
+  PetscCall(CSCurveFlowEvaluate(F));
   F->gap_max  = PetscMax(F->gap_max, F->s.gap);
   F->dist_max = PetscMax(F->dist_max, F->s.distortion);
-  Judge(F);
-  PetscCall(Monitor(F, CS_CURVE_MONITOR_STEP));
+  PetscFunctionReturn(0);
+}
+
+static const CSFlowLoopOps LoopOps = {SetUpFlow, Start, Advance, Evaluate, Judge, Monitor};
+
+PetscErrorCode CSCurveFlowStep(CSCurveFlow F)
+{
+  PetscFunctionBeginUser;
+  PetscCall(CSFlowLoopStep(&F->loop, F));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode CSCurveFlowSolve(CSCurveFlow F)
 {
   PetscFunctionBeginUser;
-  PetscCall(Start(F));
-  while (F->reason == CS_CURVE_ITERATING) PetscCall(CSCurveFlowStep(F));
-  PetscCall(Monitor(F, CS_CURVE_MONITOR_END));
+  PetscCall(CSFlowLoopSolve(&F->loop, F));
   PetscFunctionReturn(0);
 }
 

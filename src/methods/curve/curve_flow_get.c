@@ -4,14 +4,14 @@
 PetscErrorCode CSCurveFlowGetConvergedReason(CSCurveFlow F, CSCurveFlowConvergedReason *reason)
 {
   PetscFunctionBeginUser;
-  *reason = F->reason;
+  *reason = (CSCurveFlowConvergedReason)F->loop.reason;
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode CSCurveFlowGetSolution(CSCurveFlow F, Vec *x)
 {
   PetscFunctionBeginUser;
-  PetscCheck(F->setupcalled, F->hdr.comm, PETSC_ERR_ORDER, "CSCurveFlowGetSolution: call CSCurveFlowSetUp first");
+  PetscCheck(F->loop.setupcalled, F->hdr.comm, PETSC_ERR_ORDER, "CSCurveFlowGetSolution: call CSCurveFlowSetUp first");
   *x = F->x;
   PetscFunctionReturn(0);
 }
@@ -19,7 +19,7 @@ PetscErrorCode CSCurveFlowGetSolution(CSCurveFlow F, Vec *x)
 PetscErrorCode CSCurveFlowGetCurvature(CSCurveFlow F, Vec *kappa)
 {
   PetscFunctionBeginUser;
-  PetscCheck(F->started, F->hdr.comm, PETSC_ERR_ORDER, "CSCurveFlowGetCurvature: no state evaluated yet (call CSCurveFlowStep or Solve)");
+  PetscCheck(F->loop.started, F->hdr.comm, PETSC_ERR_ORDER, "CSCurveFlowGetCurvature: no state evaluated yet (call CSCurveFlowStep or Solve)");
   *kappa = F->kappa;
   PetscFunctionReturn(0);
 }
@@ -43,8 +43,8 @@ PetscErrorCode CSCurveFlowGetInfo(CSCurveFlow F, CSCurveFlowInfo *info)
   info->length          = F->length;
   info->tau             = F->tau;
   info->turning_initial = F->turning0;
-  info->setup_seconds   = F->t_setup;
-  info->step_seconds    = F->t_steps;
+  info->setup_seconds   = F->loop.t_setup;
+  info->step_seconds    = F->loop.t_steps;
   PetscFunctionReturn(0);
 }
 
@@ -60,7 +60,7 @@ PetscErrorCode CSCurveFlowSetTolerances(CSCurveFlow F, PetscReal rtol, PetscInt 
 {
   PetscFunctionBeginUser;
   PetscCheck(rtol >= 0 && max_it >= 0, F->hdr.comm, PETSC_ERR_ARG_OUTOFRANGE, "CSCurveFlowSetTolerances: rtol %g and max_it %" PetscInt_FMT " must be >= 0", (double)rtol, max_it);
-  F->rtol   = rtol;
-  F->max_it = max_it;
+  F->rtol        = rtol;
+  F->loop.max_it = max_it;
   PetscFunctionReturn(0);
 }

@@ -4,13 +4,14 @@
 #include "cs_methods_curve.h"
 #include "cs_curve_geometry.h"
 #include "cs_object.h"
+#include "cs_flow_loop.h"
 
 struct _p_CSCurveFlow {
   CSObjectHeader hdr; /* comm (the curve's), prefix, monitors (CSCurveFlowMonitorFn) */
   CSCurve        curve;
   /* options */
   PetscReal tau, rtol, sigma, egrow;
-  PetscInt  max_it, fk;
+  PetscInt  fk;
   PetscBool filter;
   /* geometry of the input: edge lengths l (kept: the flow is isometric), dual lengths d, total length */
   Vec       x, xold, len, d, lwork;
@@ -20,12 +21,10 @@ struct _p_CSCurveFlow {
   Mat L, Lf; /* L with vertex 0 grounded (Sec. 5.2; see poisson.c); the filter matrix */
   KSP ksp, kspf;
   /* state */
-  CSCurveMonitorInfo         s;
-  CSCurveFlowConvergedReason reason;
-  PetscReal                  gap_max, dist_max, E0;
-  PetscInt                   turning0;
-  PetscLogDouble             t0, t_setup, t_steps;
-  PetscBool                  setupcalled, started;
+  CSFlowLoop         loop; /* it, reason, -max_it, -max_seconds, the times (src/methods/flow_loop.c) */
+  CSCurveMonitorInfo s;
+  PetscReal          gap_max, dist_max, E0;
+  PetscInt           turning0;
 };
 
 /* curve_direction.c: kappa, E, the filtered and projected direction v and the measures of the state */

@@ -1,0 +1,50 @@
+/* The iteration driver the stepping flows share (src/methods/flow_loop.c): set-up timing, the first evaluation,
+   the step loop, the stopping tests common to all flows (-max_it, -max_seconds), the monitor events and the
+   stepping time. A flow embeds a CSFlowLoop (member `loop`), fills its ops with its own parts and keeps only
+   those: its evaluation, its step proper, its own stopping tests and the calls of its typed monitors. Used by
+   the conformal flow (src/methods/conformal/) and the curve flow (src/methods/curve/). */
+#ifndef CS_FLOW_LOOP_H
+#define CS_FLOW_LOOP_H
+#include <petscsys.h>
+
+/* the same values as each flow's START/STEP/END monitor event */
+typedef enum {
+  CS_FLOW_EVENT_START,
+  CS_FLOW_EVENT_STEP,
+  CS_FLOW_EVENT_END
+} CSFlowEvent;
+
+/* Each op takes the flow object. reason values: 0 iterating (every flow's ITERATING is 0), < 0 diverged,
+   > 0 converged. */
+typedef struct {
+  PetscErrorCode (*setup)(void *);                /* allocations and solvers (once) */
+  PetscErrorCode (*start)(void *);                /* the input's state: evaluate it and record the initial measures */
+  PetscErrorCode (*advance)(void *);              /* one step: the current positions <- the next */
+  PetscErrorCode (*evaluate)(void *);             /* the new state's measures and the next direction */
+  PetscErrorCode (*judge)(void *, PetscInt *);    /* the flow's own tests of the state (0: none met) */
+  PetscErrorCode (*monitor)(void *, CSFlowEvent); /* call the flow's monitors (loop.it and the times are set) */
+} CSFlowLoopOps;
+
+typedef struct {
+  CSFlowLoopOps  ops;
+  MPI_Comm       comm;          /* the flow's: -max_seconds is decided on rank 0 */
+  PetscInt       max_it;        /* -max_it: after this many steps stop with max_it_reason */
+  PetscReal      max_seconds;   /* -max_seconds (0: no limit): stop with max_it_reason once this many seconds
+                                   have passed since the set-up began */
+  PetscInt       max_it_reason; /* the flow's DIVERGED_MAX_IT */
+  PetscInt       it, reason;    /* steps taken; why the loop stopped (0 while iterating) */
+  PetscReal      seconds, step_seconds; /* since the set-up began, at the last monitor call; of the last step */
+  PetscLogDouble t0, t_setup, t_steps;  /* set-up start; set-up time; the steps' total time */
+  PetscBool      setupcalled, started;
+} CSFlowLoop;
+
+/* ops, the communicator and the reason for -max_it/-max_seconds; everything else zero */
+PETSC_EXTERN PetscErrorCode CSFlowLoopInit(CSFlowLoop *, MPI_Comm, const CSFlowLoopOps *, PetscInt max_it_reason);
+/* ops.setup once, timed (t0, t_setup) */
+PETSC_EXTERN PetscErrorCode CSFlowLoopSetUp(CSFlowLoop *, void *flow);
+/* one step (after the set-up and the input's evaluation, when not yet done); nothing once stopped */
+PETSC_EXTERN PetscErrorCode CSFlowLoopStep(CSFlowLoop *, void *flow);
+/* steps until a stopping test is met, then the END event */
+PETSC_EXTERN PetscErrorCode CSFlowLoopSolve(CSFlowLoop *, void *flow);
+
+#endif
