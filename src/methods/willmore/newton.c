@@ -179,7 +179,7 @@ static PetscErrorCode CreateData(CSWillmoreFlow F)
   } else PetscCall(KSPGetPC(d->ksp, &pc));
   if (size > 1) PetscCall(PCSetType(pc, "cssubchol")); /* as the saddle solver's Schur complement (docs/solvers.md) */
   else if (d->factored) { /* the 1-ring s M + L_n: PETSc's own Cholesky with nested dissection factors it 3-4x faster than
-                             CHOLMOD (96 x 32 torus: 5 ms against 20 ms per factorisation; docs/bench_evolver.md) */
+                             CHOLMOD (96 x 32 torus, under load: 5 ms against 20 ms per factorisation; docs/bench_evolver.md) */
     PetscCall(PCSetType(pc, PCCHOLESKY));
     PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERPETSC));
     PetscCall(PCFactorSetMatOrderingType(pc, MATORDERINGND));
