@@ -23,6 +23,11 @@ PETSC_EXTERN PetscErrorCode CSOperatorLaplacian3(CSMesh mesh, Vec x, MatReuse re
 PETSC_EXTERN PetscErrorCode CSOperatorGraphLaplacian3(CSMesh mesh, Vec x, MatReuse reuse, Mat *A3);
 /* The same with the weight 1/sqrt(face area) per face side (src/operators/laplacian.c). */
 PETSC_EXTERN PetscErrorCode CSOperatorScaledGraphLaplacian3(CSMesh mesh, Vec x, MatReuse reuse, Mat *A3);
+/* The scalar (dmV1) versions of the two graph Laplacians (apply to dmV3 vectors with MatCreateMAIJ(A, 3, ...)). */
+PETSC_EXTERN PetscErrorCode CSOperatorGraphLaplacian(CSMesh mesh, Vec x, MatReuse reuse, Mat *A);
+PETSC_EXTERN PetscErrorCode CSOperatorScaledGraphLaplacian(CSMesh mesh, Vec x, MatReuse reuse, Mat *A);
+/* L_n = N^T L3 N (N: column i = the unit normal n_i of nrm, a dmV3 vector): (L_n)_ij = L_ij n_i . n_j, V x V on dmV1. */
+PETSC_EXTERN PetscErrorCode CSOperatorNormalLaplacian(CSMesh mesh, Vec x, Vec nrm, MatReuse reuse, Mat *Ln);
 PETSC_EXTERN PetscErrorCode CSOperatorMass(CSMesh mesh, Vec x, Vec mass);
 
 /* The spectral filter matrix of crane2013 Sec. 4 (src/operators/spectral_filter.c): B = M + s L (M^-1 L)^(k-1)

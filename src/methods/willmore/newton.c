@@ -30,32 +30,50 @@ typedef struct {
   PetscInt  cg_its, fallbacks, truncated;
   PetscInt  reuse_its, last_its, setups; /* keep the factored metric while CG needs at most reuse_its */
   PetscBool factored;                    /* PC: (s M + L_n) M^-1 (s M + L_n) (default), else N^T I_H2 N itself */
-  Mat       L3, Ln;                      /* cotan Laplacian (dmV3) and L_n = N^T L3 N + s M (V x V, 1-ring) */
+  Mat       Ln;                          /* L_n = N^T L3 N + s M (V x V, 1-ring; L3: cotan Laplacian on dmV3) */
   Vec       m1, w1;                      /* vertex areas M, work (dmV1) */
   KSP       inner;                       /* factorisation of L_n + s M (prefix <flow prefix>newton_inner_) */
   PetscReal relax;                       /* tangential relaxation after an accepted step (Relax), 0: off */
   PetscInt  relax_sweeps;                /* solves of the relaxation per accepted step */
   PetscBool relax_scaled;                /* weights 1/sqrt(face area) (CSOperatorScaledGraphLaplacian3), else 1 */
-  Mat       G, PGP;                      /* graph Laplacian (dmV3) and its tangential part (shell) */
+  Mat       G1, G, PGP;                  /* graph Laplacian (dmV1), the same on each coordinate (MAIJ, dmV3), its tangential part (shell) */
   KSP       kspT;
   Vec       at, bt;
 } Newton;
 
-static PetscErrorCode ProjectTangent(Newton *d, Vec v)
+/* w = P v, P = I - n n^T at each vertex (w may be v). */
+static PetscErrorCode ProjectTangentTo(Newton *d, Vec v, Vec w)
 {
   PetscScalar       *a;
-  const PetscScalar *n;
+  const PetscScalar *n, *b;
   PetscInt           nl;
   PetscFunctionBeginUser;
   PetscCall(VecGetLocalSize(v, &nl));
-  PetscCall(VecGetArray(v, &a));
   PetscCall(VecGetArrayRead(d->nrm, &n));
+  if (w == v) {
+    PetscCall(VecGetArray(w, &a));
+    b = a;
+  } else {
+    PetscCall(VecGetArrayRead(v, &b));
+    PetscCall(VecGetArrayWrite(w, &a));
+  }
   for (PetscInt i = 0; i < nl / 3; i++) {
-    PetscReal un = a[3 * i] * n[3 * i] + a[3 * i + 1] * n[3 * i + 1] + a[3 * i + 2] * n[3 * i + 2];
-    for (int c = 0; c < 3; c++) a[3 * i + c] -= un * n[3 * i + c];
+    PetscReal un = b[3 * i] * n[3 * i] + b[3 * i + 1] * n[3 * i + 1] + b[3 * i + 2] * n[3 * i + 2];
+    for (int c = 0; c < 3; c++) a[3 * i + c] = b[3 * i + c] - un * n[3 * i + c];
+  }
+  if (w == v) PetscCall(VecRestoreArray(w, &a));
+  else {
+    PetscCall(VecRestoreArrayRead(v, &b));
+    PetscCall(VecRestoreArrayWrite(w, &a));
   }
   PetscCall(VecRestoreArrayRead(d->nrm, &n));
-  PetscCall(VecRestoreArray(v, &a));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode ProjectTangent(Newton *d, Vec v)
+{
+  PetscFunctionBeginUser;
+  PetscCall(ProjectTangentTo(d, v, v));
   PetscFunctionReturn(0);
 }
 
@@ -64,8 +82,7 @@ static PetscErrorCode PGPMult(Mat A, Vec v, Vec y)
   Newton *d;
   PetscFunctionBeginUser;
   PetscCall(MatShellGetContext(A, &d));
-  PetscCall(VecCopy(v, d->bt));
-  PetscCall(ProjectTangent(d, d->bt));
+  PetscCall(ProjectTangentTo(d, v, d->bt));
   PetscCall(MatMult(d->G, d->bt, y));
   PetscCall(ProjectTangent(d, y));
   PetscFunctionReturn(0);
@@ -161,7 +178,12 @@ static PetscErrorCode CreateData(CSWillmoreFlow F)
     PetscCall(KSPGetPC(d->inner, &pc));
   } else PetscCall(KSPGetPC(d->ksp, &pc));
   if (size > 1) PetscCall(PCSetType(pc, "cssubchol")); /* as the saddle solver's Schur complement (docs/solvers.md) */
-  else {
+  else if (d->factored) { /* the 1-ring s M + L_n: PETSc's own Cholesky with nested dissection factors it 3-4x faster than
+                             CHOLMOD (96 x 32 torus, under load: 5 ms against 20 ms per factorisation; docs/bench_evolver.md) */
+    PetscCall(PCSetType(pc, PCCHOLESKY));
+    PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERPETSC));
+    PetscCall(PCFactorSetMatOrderingType(pc, MATORDERINGND));
+  } else {
     PetscCall(PCSetType(pc, PCCHOLESKY));
     PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERCHOLMOD));
   }
@@ -213,8 +235,7 @@ static PetscErrorCode FactoredSetUp(CSWillmoreFlow F, Newton *d)
 {
   PetscReal s = PetscSqrtReal(F->metric.mass_weight);
   PetscFunctionBeginUser;
-  PetscCall(CSOperatorLaplacian3(F->mesh, F->x, d->L3 ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX, &d->L3));
-  PetscCall(MatPtAP(d->L3, d->N, d->Ln ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX, 2.0, &d->Ln));
+  PetscCall(CSOperatorNormalLaplacian(F->mesh, F->x, d->nrm, d->Ln ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX, &d->Ln)); /* N^T L3 N, N from d->nrm (FillNormals) */
   PetscCall(CSOperatorMass(F->mesh, F->x, d->m1));
   PetscCall(VecScale(d->m1, s));
   PetscCall(MatDiagonalSet(d->Ln, d->m1, ADD_VALUES));
@@ -294,8 +315,8 @@ static PetscErrorCode RelaxSweep(CSWillmoreFlow F, Newton *d)
 {
   PetscReal amax, h;
   PetscFunctionBeginUser;
-  if (d->relax_scaled) PetscCall(CSOperatorScaledGraphLaplacian3(F->mesh, F->x, MAT_REUSE_MATRIX, &d->G));
-  else PetscCall(CSOperatorGraphLaplacian3(F->mesh, F->x, MAT_REUSE_MATRIX, &d->G));
+  if (d->relax_scaled) PetscCall(CSOperatorScaledGraphLaplacian(F->mesh, F->x, MAT_REUSE_MATRIX, &d->G1)); /* G = G1 on each coordinate */
+  else PetscCall(CSOperatorGraphLaplacian(F->mesh, F->x, MAT_REUSE_MATRIX, &d->G1));
   PetscCall(CSGeometryVertexNormals(F->mesh, F->x, d->nrm));
   PetscCall(KSPSetOperators(d->kspT, d->PGP, d->PGP));
   PetscCall(MatMult(d->G, F->x, d->u));
@@ -317,7 +338,8 @@ static PetscErrorCode Relax(CSWillmoreFlow F, Newton *d)
   PetscFunctionBeginUser;
   if (!(d->relax > 0)) PetscFunctionReturn(0);
   if (!d->PGP) {
-    PetscCall(CSOperatorGraphLaplacian3(F->mesh, F->x, MAT_INITIAL_MATRIX, &d->G));
+    PetscCall(CSOperatorGraphLaplacian(F->mesh, F->x, MAT_INITIAL_MATRIX, &d->G1));
+    PetscCall(MatCreateMAIJ(d->G1, 3, &d->G)); /* dmV3 interlaces the 3 coordinates of the vertices dmV1 owns, in order */
     PetscCall(VecGetLocalSize(F->x, &n));
     PetscCall(VecGetSize(F->x, &N));
     PetscCall(MatCreateShell(F->comm, n, n, N, N, d, &d->PGP));
@@ -379,12 +401,12 @@ static PetscErrorCode DestroyNewton(CSWillmoreFlow F)
   PetscCall(MatDestroy(&d->N));
   PetscCall(MatDestroy(&d->A));
   PetscCall(MatDestroy(&d->Mn));
-  PetscCall(MatDestroy(&d->L3));
   PetscCall(MatDestroy(&d->Ln));
   PetscCall(VecDestroy(&d->m1));
   PetscCall(VecDestroy(&d->w1));
   PetscCall(KSPDestroy(&d->inner));
   PetscCall(MatDestroy(&d->G));
+  PetscCall(MatDestroy(&d->G1));
   PetscCall(MatDestroy(&d->PGP));
   PetscCall(KSPDestroy(&d->kspT));
   PetscCall(VecDestroy(&d->at));
