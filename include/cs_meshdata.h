@@ -44,6 +44,9 @@ PETSC_EXTERN PetscErrorCode CSMeshDataDisk(PetscReal radius, PetscInt rings, CSM
 /* levels regular 1-to-4 splits in place (loop: Loop subdivision, boundary vertices kept; else midpoints);
    md->name gets the suffix "(loop refined 2x)". Serial (rank 0 data). */
 PETSC_EXTERN PetscErrorCode CSMeshDataRefine(CSMeshData *md, PetscInt levels, PetscBool loop);
+/* One such split: the new vertex of edge e is nv + e, in the order the faces first meet the edges; face i becomes
+   faces 4i..4i+3 (the corners, then the middle). */
+PETSC_EXTERN PetscErrorCode CSMeshDataSplitOnce(CSMeshData *md, PetscBool loop);
 
 /* Builds md from the options database: -mesh FILE, or -gen icosphere|torus|flattorus|lattice|cylinder|disk with
    -gen_tau RE,IM (lattice), -gen_level, -gen_radius, -gen_torus_R, -gen_tube_r (PETSc option names ignore case), -gen_n, -gen_m, -gen_tau_re, -gen_tau_im, -gen_height, -gen_rings,

@@ -69,50 +69,15 @@ static void Project(PetscReal *p, PetscReal radius)
   for (int d = 0; d < 3; d++) p[d] *= s;
 }
 
-/* One 1-to-4 split; each edge gets one midpoint, found by a search in the bucket of its smaller vertex
-   (buckets hold about 3 edges, so this is linear in the mesh size). */
+/* One 1-to-4 split at the edge midpoints (CSMeshDataSplitOnce), the new vertices projected onto the sphere. */
 static PetscErrorCode Subdivide(CSMeshData *md, PetscBool project, PetscReal radius)
 {
-  PetscInt   nv = md->nv, nf = md->nf, nh = 3 * nf, ne = 0, *off, *fill, *hi, *id, *mid, *f;
-  PetscReal *x;
+  PetscInt nv = md->nv;
 
   PetscFunctionBeginUser;
-  PetscCall(PetscCalloc1(nv + 1, &off));
-  PetscCall(PetscMalloc4(nv, &fill, nh, &hi, nh, &id, nh, &mid));
-  for (PetscInt h = 0; h < nh; h++) off[PetscMin(md->f[h], md->f[h % 3 == 2 ? h - 2 : h + 1]) + 1]++;
-  for (PetscInt v = 0; v < nv; v++) off[v + 1] += off[v];
-  PetscCall(PetscArraycpy(fill, off, nv));
-  for (PetscInt h = 0; h < nh; h++) {
-    PetscInt a = md->f[h], b = md->f[h % 3 == 2 ? h - 2 : h + 1], lo = PetscMin(a, b), s;
-    for (s = off[lo]; s < fill[lo] && hi[s] != PetscMax(a, b); s++) {}
-    if (s == fill[lo]) {
-      hi[s] = PetscMax(a, b);
-      id[s] = nv + ne++;
-      fill[lo]++;
-    }
-    mid[h] = id[s];
-  }
-  PetscCall(PetscMalloc1(3 * (nv + ne), &x));
-  PetscCall(PetscMalloc1(12 * nf, &f));
-  PetscCall(PetscArraycpy(x, md->x, 3 * nv));
-  for (PetscInt h = 0; h < nh; h++) {
-    PetscInt a = md->f[h], b = md->f[h % 3 == 2 ? h - 2 : h + 1];
-    for (int d = 0; d < 3; d++) x[3 * mid[h] + d] = 0.5 * (md->x[3 * a + d] + md->x[3 * b + d]);
-    if (project) Project(x + 3 * mid[h], radius);
-  }
-  for (PetscInt i = 0; i < nf; i++) {
-    const PetscInt *t = md->f + 3 * i, *m = mid + 3 * i; /* m[k] is the midpoint of t[k] t[k+1] */
-    PetscInt        n[12] = {t[0], m[0], m[2], m[0], t[1], m[1], m[2], m[1], t[2], m[0], m[1], m[2]};
-    PetscCall(PetscArraycpy(f + 12 * i, n, 12));
-  }
-  PetscCall(PetscFree(off));
-  PetscCall(PetscFree4(fill, hi, id, mid));
-  PetscCall(PetscFree(md->x));
-  PetscCall(PetscFree(md->f));
-  md->x  = x;
-  md->f  = f;
-  md->nv = nv + ne;
-  md->nf = 4 * nf;
+  PetscCall(CSMeshDataSplitOnce(md, PETSC_FALSE));
+  if (project)
+    for (PetscInt v = nv; v < md->nv; v++) Project(md->x + 3 * v, radius);
   PetscFunctionReturn(0);
 }
 

@@ -69,8 +69,8 @@ static PetscErrorCode LoopPositions(const CSMeshData *md, const PetscInt *mid, P
   PetscFunctionReturn(0);
 }
 
-/* One 1-to-4 split of md in place. */
-static PetscErrorCode RefineOnce(CSMeshData *md, PetscBool loop)
+/* One 1-to-4 split of md in place (also the icosphere generator's split, with its new vertices projected). */
+PetscErrorCode CSMeshDataSplitOnce(CSMeshData *md, PetscBool loop)
 {
   PetscInt   nv = md->nv, nf = md->nf, ne = 0, *mid, *f;
   PetscReal *x;
@@ -110,7 +110,7 @@ PetscErrorCode CSMeshDataRefine(CSMeshData *md, PetscInt levels, PetscBool loop)
   PetscFunctionBeginUser;
   PetscCheck(levels >= 0 && levels <= 6, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "-mesh_refine %" PetscInt_FMT ": not in [0, 6] (each level multiplies the faces by 4)", levels);
   PetscCheck((double)md->nf * PetscPowReal(4, levels) * 3 <= (double)PETSC_MAX_INT, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "-mesh_refine %" PetscInt_FMT " of %s: %.0f faces exceed this PETSc build's PetscInt", levels, md->name, (double)md->nf * PetscPowReal(4, levels));
-  for (PetscInt l = 0; l < levels; l++) PetscCall(RefineOnce(md, loop));
+  for (PetscInt l = 0; l < levels; l++) PetscCall(CSMeshDataSplitOnce(md, loop));
   if (levels) {
     snprintf(name, sizeof(name), "%s(%s refined %" PetscInt_FMT "x)", md->name, loop ? "loop" : "midpoint", levels);
     PetscCall(PetscStrncpy(md->name, name, sizeof(md->name)));
