@@ -86,7 +86,8 @@ static PetscErrorCode SetUpNormalLayout(CSWillmoreFlow F)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CSWFSetUpVectors(CSWillmoreFlow F)
+/* The primal work vectors (the layout of F->x: positions, or a kind's own variables). */
+PetscErrorCode CSWFSetUpPrimalVectors(CSWillmoreFlow F)
 {
   PetscFunctionBeginUser;
   PetscCall(VecDuplicate(F->x, &F->g));
@@ -94,9 +95,15 @@ PetscErrorCode CSWFSetUpVectors(CSWillmoreFlow F)
   PetscCall(VecDuplicate(F->x, &F->df));
   PetscCall(VecDuplicate(F->x, &F->xt));
   PetscCall(VecDuplicate(F->x, &F->tmp));
-  if (F->conformal) {
-    if (F->normals) PetscCall(SetUpNormalLayout(F));
-    else PetscCall(DMCreateGlobalVector(F->mesh->dmE1, &F->c));
+  PetscFunctionReturn(0);
+}
+
+/* The multiplier block's vectors in the layout of F->c (created by the caller), mu = 0; and the k global rows'
+   scalars (constraint values, multipliers, weights). */
+PetscErrorCode CSWFSetUpMultiplierVectors(CSWillmoreFlow F)
+{
+  PetscFunctionBeginUser;
+  if (F->c) {
     PetscCall(VecDuplicate(F->c, &F->mu));
     PetscCall(VecDuplicate(F->c, &F->dmu));
     PetscCall(VecDuplicate(F->c, &F->iq));
@@ -106,6 +113,18 @@ PetscErrorCode CSWFSetUpVectors(CSWillmoreFlow F)
   }
   PetscCall(PetscCalloc6(F->k + 1, &F->cx, F->k + 1, &F->cxt, F->k + 1, &F->nu, F->k + 1, &F->dnu, F->k + 1, &F->gw, F->k + 1, &F->nun));
   PetscCall(PetscCalloc1(F->k + 1, &F->dnu2));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSWFSetUpVectors(CSWillmoreFlow F)
+{
+  PetscFunctionBeginUser;
+  PetscCall(CSWFSetUpPrimalVectors(F));
+  if (F->conformal) {
+    if (F->normals) PetscCall(SetUpNormalLayout(F));
+    else PetscCall(DMCreateGlobalVector(F->mesh->dmE1, &F->c));
+  }
+  PetscCall(CSWFSetUpMultiplierVectors(F));
   if (F->k) PetscCall(VecDuplicateVecs(F->x, F->k, &F->rows));
   PetscFunctionReturn(0);
 }

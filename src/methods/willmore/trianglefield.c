@@ -177,20 +177,9 @@ static PetscErrorCode SetUpHarmonicRows(CSWillmoreFlow F, CSTriangleField *d)
 static PetscErrorCode SetUpVectors(CSWillmoreFlow F, CSTriangleField *d)
 {
   PetscFunctionBeginUser;
-  PetscCall(VecDuplicate(F->x, &F->g));
-  PetscCall(VecDuplicate(F->x, &F->r));
-  PetscCall(VecDuplicate(F->x, &F->df));
-  PetscCall(VecDuplicate(F->x, &F->xt));
-  PetscCall(VecDuplicate(F->x, &F->tmp));
-  PetscCall(VecCreateMPI(F->comm, d->nH + d->nL, PETSC_DETERMINE, &F->c));
-  PetscCall(VecDuplicate(F->c, &F->mu));
-  PetscCall(VecDuplicate(F->c, &F->dmu));
-  PetscCall(VecDuplicate(F->c, &F->iq));
-  PetscCall(VecDuplicate(F->c, &F->ct));
-  PetscCall(VecDuplicate(F->c, &F->mun));
-  PetscCall(VecSet(F->mu, 0));
-  PetscCall(PetscCalloc6(F->k + 1, &F->cx, F->k + 1, &F->cxt, F->k + 1, &F->nu, F->k + 1, &F->dnu, F->k + 1, &F->gw, F->k + 1, &F->nun));
-  PetscCall(PetscCalloc1(F->k + 1, &F->dnu2));
+  PetscCall(CSWFSetUpPrimalVectors(F));
+  PetscCall(VecCreateMPI(F->comm, d->nH + d->nL, PETSC_DETERMINE, &F->c)); /* rows [C~ lambda - c0; d1 omega; closure] */
+  PetscCall(CSWFSetUpMultiplierVectors(F));
   PetscCall(DMCreateGlobalVector(d->dmH1, &d->lambda));
   PetscCall(VecDuplicate(d->lambda, &d->c0));
   PetscCall(VecDuplicate(d->lambda, &d->star1));

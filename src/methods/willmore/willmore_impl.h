@@ -203,6 +203,8 @@ PETSC_INTERN PetscErrorCode CSWFCheckStepGeometry(CSWillmoreFlow F, PetscBool *a
 /* setup.c */
 PETSC_INTERN PetscErrorCode CSWFSetUpBoundary(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFSetUpConstraints(CSWillmoreFlow F);
+PETSC_INTERN PetscErrorCode CSWFSetUpPrimalVectors(CSWillmoreFlow F);
+PETSC_INTERN PetscErrorCode CSWFSetUpMultiplierVectors(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFSetUpVectors(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFSetUpScaling(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFCreateEnergy(CSWillmoreFlow F);
