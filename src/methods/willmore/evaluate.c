@@ -1,6 +1,7 @@
 /* What the flow evaluates at a state: constraints and their Jacobians, the violation, the Lagrangian of the
    step filter, the Euler-Lagrange residual, the metrics of the multipliers. */
 #include "willmore_impl.h"
+#include "cs_linalg.h"
 
 PetscErrorCode CSWFZeroFixed(CSWillmoreFlow F, Vec v)
 {
@@ -9,53 +10,15 @@ PetscErrorCode CSWFZeroFixed(CSWillmoreFlow F, Vec v)
   PetscFunctionReturn(0);
 }
 
-/* Xext = [X; DN] in the multiplier layout (rows of X, then rows of DN, per rank), copied row by row
-   (MatConvert of a MATNEST with MAT_REUSE_MATRIX fails in parallel in PETSc 3.18: "Reuse matrix has
-   changed nonzero structure"). The pattern is fixed, so later calls only refill the values. */
+/* Xext = [X; DN] in the multiplier layout (rows of X, then rows of DN, per rank: the layout of F->c), copied row by
+   row by CSMatStackRows (MatConvert of a MATNEST with MAT_REUSE_MATRIX fails in parallel in PETSc 3.18: "Reuse
+   matrix has changed nonzero structure"). The pattern is fixed, so later calls only refill the values. */
 static PetscErrorCode StackRows(CSWillmoreFlow F)
 {
-  Mat      B[2] = {F->cc.X, F->nc.DN};
-  PetscInt rs, off = 0;
+  Mat B[2] = {F->cc.X, F->nc.DN};
+
   PetscFunctionBeginUser;
-  PetscCall(ISStrideGetInfo(F->isM[0], &rs, NULL));
-  if (!F->Xext) {
-    PetscInt n0, n1, nc, Nc, *dnz, *onz, cs, ce;
-    PetscCall(MatGetLocalSize(B[0], &n0, &nc));
-    PetscCall(MatGetLocalSize(B[1], &n1, NULL));
-    PetscCall(MatGetSize(B[0], NULL, &Nc));
-    PetscCall(MatGetOwnershipRangeColumn(B[0], &cs, &ce));
-    PetscCall(PetscCalloc2(n0 + n1, &dnz, n0 + n1, &onz));
-    for (int b = 0, r = 0; b < 2; b++) {
-      PetscInt rstart, rend;
-      PetscCall(MatGetOwnershipRange(B[b], &rstart, &rend));
-      for (PetscInt i = rstart; i < rend; i++, r++) {
-        PetscInt        ncols;
-        const PetscInt *cols;
-        PetscCall(MatGetRow(B[b], i, &ncols, &cols, NULL));
-        for (PetscInt k = 0; k < ncols; k++) {
-          if (cols[k] >= cs && cols[k] < ce) dnz[r]++;
-          else onz[r]++;
-        }
-        PetscCall(MatRestoreRow(B[b], i, &ncols, &cols, NULL));
-      }
-    }
-    PetscCall(MatCreateAIJ(F->comm, n0 + n1, nc, PETSC_DETERMINE, Nc, 0, dnz, 0, onz, &F->Xext));
-    PetscCall(PetscFree2(dnz, onz));
-  } else PetscCall(MatZeroEntries(F->Xext));
-  for (int b = 0; b < 2; b++) {
-    PetscInt rstart, rend;
-    PetscCall(MatGetOwnershipRange(B[b], &rstart, &rend));
-    for (PetscInt i = rstart; i < rend; i++, off++) {
-      PetscInt           ncols, row = rs + off;
-      const PetscInt    *cols;
-      const PetscScalar *vals;
-      PetscCall(MatGetRow(B[b], i, &ncols, &cols, &vals));
-      PetscCall(MatSetValues(F->Xext, 1, &row, ncols, cols, vals, INSERT_VALUES));
-      PetscCall(MatRestoreRow(B[b], i, &ncols, &cols, &vals));
-    }
-  }
-  PetscCall(MatAssemblyBegin(F->Xext, MAT_FINAL_ASSEMBLY));
-  PetscCall(MatAssemblyEnd(F->Xext, MAT_FINAL_ASSEMBLY));
+  PetscCall(CSMatStackRows(2, B, F->Xext ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX, &F->Xext));
   PetscFunctionReturn(0);
 }
 
