@@ -6,6 +6,10 @@
 set -u
 cd "$(dirname "$0")/.."
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
+# mpirun waits odls_base_sigkill_timeout (1 s) between SIGTERM and SIGKILL after any rank exits non-zero: a second of
+# idle per failing launch, ~200 launches in the bad-input cases. Our error paths exit on every rank by themselves (the
+# cases assert it), so the grace period only costs time; a hung rank is still killed, and caught by `timeout`.
+export OMPI_MCA_odls_base_sigkill_timeout=${OMPI_MCA_odls_base_sigkill_timeout:-0}
 export CS_ROOT=$PWD CS_BIN=${CS_BIN:-$PWD/bin/confsurf} CS_TESTS=${CS_TESTS:-$PWD/build/tests} # make sanitize: build/san/
 export CS_SHARED=${CS_SHARED:-$PWD/../shared}
 pass=0; fail=0; failed=()
