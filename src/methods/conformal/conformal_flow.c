@@ -6,8 +6,8 @@
 #include "cs_util.h"
 
 static const CSFlowLoopOps LoopOps; /* the flow's parts for the iteration driver (defined below) */
-static const char *const ReasonsShifted[]              = {"energy_growth", "max_it", "iterating", "converged_atol", "converged_rtol"};
-const char *const       *CSConformalFlowConvergedReasons = ReasonsShifted + 2;
+static const char *const ReasonsShifted[]              = {"resolution", "energy_growth", "max_it", "iterating", "converged_atol", "converged_rtol"};
+const char *const       *CSConformalFlowConvergedReasons = ReasonsShifted + 3;
 const char *const        CSConformalCurvatures[]       = {"barycentric", "voronoi", "CSConformalCurvature", "CS_CONFORMAL_CURVATURE_", NULL};
 const char *const        CSConformalMobiusSteps[]      = {"newton", "paper", "CSConformalMobiusStep", "CS_CONFORMAL_MOBIUS_", NULL};
 const char *const        CSConformalEigensolvers[]      = {"inverse", "eps", "CSConformalEigensolver", "CS_CONFORMAL_EIGEN_", NULL};
@@ -36,6 +36,7 @@ PetscErrorCode CSConformalFlowCreate(CSMesh mesh, CSConformalFlow *flow)
   F->curvature     = CS_CONFORMAL_CURVATURE_VORONOI; /* exact on inscribed spheres: the round sphere is a fixed point */
   F->bmode         = CS_CONFORMAL_BOUNDARY_NONE;
   F->max_halvings  = 6;
+  F->min_edge      = 1e-12; /* edge vectors then carry >= 4 digits: conformal_integrate.c */
   F->frame[2]      = 1; /* V = B: Sec. 6.3.1's choice for CMC surfaces */
   *flow            = F;
   PetscFunctionReturn(0);
@@ -95,6 +96,7 @@ static PetscErrorCode CheckOptions(CSConformalFlow F)
     {"max_seconds", F->loop.max_seconds, F->loop.max_seconds >= 0, "use 0 (no limit) or a positive number of seconds"},
     {"max_nonexact", F->max_nonexact, F->max_nonexact >= 0, "must be >= 0 (0: off)"},
     {"max_halvings", (PetscReal)F->max_halvings, F->max_halvings >= 0, "must be >= 0"},
+    {"min_edge", F->min_edge, F->min_edge >= 0 && F->min_edge < 1, "must lie in [0, 1) (0: off)"},
   };
   PetscFunctionBeginUser;
   PetscCall(CSCheckOptionValues(F->hdr.comm, F->hdr.prefix, sizeof(checks) / sizeof(checks[0]), checks));
@@ -129,6 +131,7 @@ PetscErrorCode CSConformalFlowSetFromOptions(CSConformalFlow F)
   PetscCall(PetscOptionsEnum("-curvature", "Table 1 I: H = (L f).N/(2A) with the barycentric area and area-weighted normal, or with the mixed Voronoi area and the 1-ring sphere-fit normal (exactly constant on inscribed spheres)", NULL, CSConformalCurvatures, (PetscEnum)F->curvature, (PetscEnum *)&F->curvature, NULL));
   PetscCall(PetscOptionsReal("-max_seconds", "Stop (as at max_it) once this many seconds have passed since the set-up (0: no limit); rank 0's clock decides", NULL, F->loop.max_seconds, &F->loop.max_seconds, NULL));
   PetscCall(PetscOptionsReal("-max_nonexact", "Safeguard (not the paper's): retry a step with tau / 2 while the Poisson step's relative least-squares residual |df~ - conj(lambda) df lambda| / |conj(lambda) df lambda| exceeds this (0: off)", NULL, F->max_nonexact, &F->max_nonexact, NULL));
+  PetscCall(PetscOptionsReal("-min_edge", "Reject a step (stop with reason resolution, the last good state kept) whose shortest edge is below this times the surface's bounding-box diagonal, or that has a face of zero area (0: off)", NULL, F->min_edge, &F->min_edge, NULL));
   PetscCall(PetscOptionsInt("-max_halvings", "-max_nonexact: at most this many halvings of tau per step", NULL, F->max_halvings, &F->max_halvings, NULL));
   PetscCall(PetscOptionsEnum("-eigensolver", "Eq. 5: one inverse-iteration step on a factorisation of the current X (Sec. 6.4.2), or SLEPc to convergence (options -spin_eps_*, -spin_st_*)", NULL, CSConformalEigensolvers, (PetscEnum)F->eigensolver, (PetscEnum *)&F->eigensolver, NULL));
   PetscOptionsEnd();
@@ -200,6 +203,7 @@ static PetscErrorCode Monitor(void *ctx, CSFlowEvent ev)
 {
   CSConformalFlow F = (CSConformalFlow)ctx;
   PetscFunctionBeginUser;
+  if (ev == CS_FLOW_EVENT_STEP && F->rejected) PetscFunctionReturn(0); /* no row for a rejected step */
   F->s.event        = (CSConformalMonitorEvent)ev;
   F->s.it           = F->loop.it;
   F->s.seconds      = F->loop.seconds;
@@ -215,7 +219,10 @@ static PetscErrorCode Judge(void *ctx, PetscInt *reason)
   CSConformalMonitorInfo *s = &F->s;
   PetscFunctionBeginUser;
   *reason = CS_CONFORMAL_ITERATING;
-  if (!(s->W == s->W) || s->W > F->egrow * F->W0) *reason = CS_CONFORMAL_DIVERGED_ENERGY;
+  if (F->rejected) { /* conformal_integrate.c: the step was not taken and is not counted */
+    *reason = CS_CONFORMAL_DIVERGED_RESOLUTION;
+    F->loop.it--;
+  } else if (!(s->W == s->W) || s->W > F->egrow * F->W0) *reason = CS_CONFORMAL_DIVERGED_ENERGY;
   else if (F->atol > 0 && s->W <= F->atol) *reason = CS_CONFORMAL_CONVERGED_ATOL;
   else if (F->loop.it > 0 && PetscAbsReal(s->W - F->Wprev) <= F->rtol * F->Wprev) *reason = CS_CONFORMAL_CONVERGED_RTOL;
   PetscFunctionReturn(0);

@@ -24,6 +24,9 @@ struct _p_CSConformalFlow {
   char                   target[PETSC_MAX_PATH_LEN];
   PetscReal              max_nonexact; /* > 0: retry a step with tau / 2 while its non-exact residual exceeds this */
   PetscInt               max_halvings;
+  PetscReal              min_edge;     /* reject a step whose shortest edge is below min_edge times the diameter */
+  PetscBool              rejected;     /* the last step was rejected (conformal_integrate.c) */
+  PetscReal              edge_ratio;   /* the new surface's shortest edge / its bounding-box diagonal */
   /* state: positions (current, input, next), per-vertex areas of the input, the step's fields */
   Vec       x, x0, xnew, area0;
   Vec       area, N, H, v, rho, work, lambda;

@@ -25,12 +25,43 @@ static PetscErrorCode Attempt(CSConformalFlow F, PetscReal tau)
   PetscFunctionReturn(0);
 }
 
+/* Is the new surface resolved in double precision? (issue 13, man_cgal; docs/conformal_flow.md "man_cgal")
+   A conformal map of a surface with long thin protrusions onto the sphere shrinks them exponentially in their
+   length/width; a step whose shortest edge falls below min_edge times the bounding-box diagonal D carries its edge
+   vectors (differences of coordinates of size D) to fewer than log10(min_edge / eps) digits, and the next
+   curvature is rounding noise (man_cgal: 6.8e-17 D after step 2, NaN areas at step 3). Such a step, or one with a
+   face of zero or non-finite area, is rejected: x is kept and the flow stops with reason "resolution". */
+static PetscErrorCode Resolved(CSConformalFlow F, Vec x, PetscBool *ok)
+{
+  Vec       l, a;
+  PetscReal lmin, amin, lo[3], hi[3], d2 = 0;
+  PetscFunctionBeginUser;
+  PetscCall(DMGetGlobalVector(F->mesh->dmE1, &l));
+  PetscCall(DMGetGlobalVector(F->mesh->dmF1, &a));
+  PetscCall(CSGeometryEdgeLengths(F->mesh, x, l));
+  PetscCall(CSGeometryFaceAreas(F->mesh, x, a));
+  PetscCall(VecMin(l, NULL, &lmin));
+  PetscCall(VecMin(a, NULL, &amin));
+  PetscCall(DMRestoreGlobalVector(F->mesh->dmE1, &l));
+  PetscCall(DMRestoreGlobalVector(F->mesh->dmF1, &a));
+  for (PetscInt d = 0; d < 3; d++) {
+    PetscCall(VecStrideMin(x, d, NULL, &lo[d]));
+    PetscCall(VecStrideMax(x, d, NULL, &hi[d]));
+    d2 += (hi[d] - lo[d]) * (hi[d] - lo[d]);
+  }
+  F->edge_ratio = lmin / PetscSqrtReal(d2);
+  *ok           = (PetscBool)(amin > 0 && PetscIsNormalReal(amin) && F->edge_ratio >= F->min_edge);
+  PetscFunctionReturn(0);
+}
+
 /* With -flow_max_nonexact eta_max > 0 (a safeguard, docs/conformal_flow.md "knot1"): a step whose non-exact
    residual exceeds eta_max is rejected and retried with tau / 2, at most max_halvings times; s.tau reports the
-   step taken. */
+   step taken. A step that Resolved() refuses is not taken (F->rejected; the state and its measures are kept). */
 PetscErrorCode CSConformalFlowIntegrate(CSConformalFlow F)
 {
-  PetscReal tau = F->tau;
+  PetscReal              tau = F->tau;
+  CSConformalMonitorInfo s0  = F->s;
+  PetscBool              ok  = PETSC_TRUE;
   PetscFunctionBeginUser;
   F->s.halvings = 0;
   PetscCall(Attempt(F, tau));
@@ -38,6 +69,13 @@ PetscErrorCode CSConformalFlowIntegrate(CSConformalFlow F)
     tau /= 2;
     F->s.halvings++;
     PetscCall(Attempt(F, tau));
+  }
+  PetscCall(Resolved(F, F->xnew, &ok));
+  if (!ok && F->min_edge > 0) {
+    PetscCall(PetscPrintf(F->hdr.comm, "conformal flow: step %" PetscInt_FMT " rejected: its shortest edge is %.2e of the diameter (-%smin_edge %g) or a face has no area; the surface's conformal factor is beyond double precision; the state of step %" PetscInt_FMT " is kept\n", F->loop.it + 1, (double)F->edge_ratio, F->hdr.prefix, (double)F->min_edge, F->loop.it));
+    F->s        = s0;
+    F->rejected = PETSC_TRUE;
+    PetscFunctionReturn(0);
   }
   F->s.tau       = tau;
   F->closing_max = PetscMax(F->closing_max, F->s.closing);
