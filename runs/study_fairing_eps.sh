@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Study (not a test), soliman2021 Fig. 20: Willmore-regularised fairing E = 1/2 |f - f0|^2 + eps W (Eq. 21) in the
-# conformal class of the input, for eps over three decades (EPS, default 0.01 0.1 1 10) on the low-resolution
+# conformal class of the input, for eps over four decades (EPS, default 0.001 0.01 0.1 1 10) on the low-resolution
 # bunny (meshes/bunny_lowres_npm.obj, 3674 faces; MESH= for another, e.g. meshes/bunny_closed_cgal.obj, 75k faces,
 # about 10x slower per iteration). CGD, MAXIT iterations (default 150), -flow_rtol 1e-6. The bunny's size sets the
 # scale of eps: area 218.7, so the fidelity term of a displacement d is ~ 109 d^2 against eps W (W(input) 136.2).
@@ -9,7 +9,7 @@
 # One rank; the machine is shared (seconds are upper bounds). docs/studies.md quotes the output.
 set -u
 cd "$(dirname "$0")/.."
-EPS=${EPS:-"0.01 0.1 1 10"}; MAXIT=${MAXIT:-150}; MESH=${MESH:-meshes/bunny_lowres_npm.obj}
+EPS=${EPS:-"0.001 0.01 0.1 1 10"}; MAXIT=${MAXIT:-150}; MESH=${MESH:-meshes/bunny_lowres_npm.obj}
 BIN=$PWD/bin/confsurf; PY=$(bash scripts/find-python.sh 2>/dev/null || echo /usr/bin/python3)
 out=runs/results/fairing_eps; mkdir -p "$out"
 "$BIN" -task info -mesh "$MESH" -summary "$out/input.json" -o "$out/input.obj" > /dev/null
