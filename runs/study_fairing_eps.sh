@@ -34,8 +34,8 @@ for e in eps:
     s['disp_max_rel'] = max(dist) / diag
     json.dump(s, open(d + '/eps_%s.json' % e, 'w'))
 PY
-{ echo "Fairing for eps over three decades ($(date -u '+%Y-%m-%d %H:%M UTC'), commit $(git rev-parse --short HEAD), $MESH, MAXIT=$MAXIT, one rank)"; echo
+{ echo "Fairing for eps over four decades ($(date -u '+%Y-%m-%d %H:%M UTC'), commit $(git rev-parse --short HEAD), $MESH, MAXIT=$MAXIT, one rank)"; echo
   "$PY" scripts/plots.py table - energy,willmore,disp_rms_rel,disp_max_rel,conformal_violation,el_residual,iterations,q_max,seconds,stop_reason "${runs[@]}"; } > "$out/fairing_eps.md"
 cat "$out/fairing_eps.md"
 "$PY" scripts/plots.py panel "$out/fairing_eps_shapes.png" --title "soliman2021 Fig. 20: E = |f-f0|^2/2 + eps W" --input "$out/input.obj" "${shapes[@]}"
-"$PY" scripts/plots.py curves "$out/fairing_eps_curves.png" --x it --title "fairing, eps over three decades" "${curves[@]}"
+"$PY" scripts/plots.py curves "$out/fairing_eps_curves.png" --x it --title "fairing, eps over four decades" "${curves[@]}"
