@@ -35,6 +35,7 @@ typedef struct {
   CSMesh    mesh;
   PetscBool h2;        /* else L2 */
   PetscReal mass_weight; /* w in w *0 + L *0^{-1} L (1 after Create; see CSMetricCreate) */
+  PetscReal scale;       /* the metric is scale (w *0 + L *0^{-1} L) (1 after Create; the fairing energy: eps) */
   Mat       L3, Ls;    /* L and *0^{-1} L (rows scaled) */
   Mat       H;         /* assembled metric (AIJ, 3V x 3V) */
   Mat       shell;     /* matrix-free H^2 */

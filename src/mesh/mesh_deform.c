@@ -1,5 +1,7 @@
-/* Test-input deformation of a mesh's positions (-gen_deform_bump, -gen_deform_bump_freq, -gen_deform_stretch):
-   a radial bump and a stretch, used by the flow tests and options/ to start away from a critical point. */
+/* Test-input deformation of a mesh's positions (-gen_deform_bump, -gen_deform_bump_freq, -gen_deform_stretch,
+   -gen_deform_twist, -gen_deform_invert): a radial bump and a stretch, used by the flow tests and options/ to start
+   away from a critical point; a twist about the z axis (a cylinder with rotated boundary, soliman2021 Fig. 2, 21)
+   and a Moebius map (another representative of the same discrete conformal class, Fig. 4). */
 #include "cs_mesh_deform.h"
 
 static PetscErrorCode Deform(Vec x, PetscReal a, PetscReal k, const PetscReal s[3])
@@ -17,18 +19,73 @@ static PetscErrorCode Deform(Vec x, PetscReal a, PetscReal k, const PetscReal s[
   PetscFunctionReturn(0);
 }
 
+/* Rotation about the z axis by the angle deg * (z - zmin) / (zmax - zmin) (degrees; z range over all ranks):
+   the bottom stays, the top turns by deg, linearly in between. */
+static PetscErrorCode Twist(MPI_Comm comm, Vec x, PetscReal deg)
+{
+  PetscInt     n;
+  PetscScalar *p;
+  PetscReal    lo[2] = {PETSC_MAX_REAL, PETSC_MAX_REAL}, g[2]; /* zmin, -zmax */
+  PetscFunctionBeginUser;
+  PetscCall(VecGetLocalSize(x, &n));
+  PetscCall(VecGetArray(x, &p));
+  for (PetscInt i = 0; i < n / 3; i++) {
+    lo[0] = PetscMin(lo[0], PetscRealPart(p[3 * i + 2]));
+    lo[1] = PetscMin(lo[1], -PetscRealPart(p[3 * i + 2]));
+  }
+  PetscCall(MPIU_Allreduce(lo, g, 2, MPIU_REAL, MPIU_MIN, comm));
+  for (PetscInt i = 0; i < n / 3 && -g[1] > g[0]; i++) {
+    PetscReal *q = (PetscReal *)p + 3 * i, a = deg * PETSC_PI / 180 * (q[2] - g[0]) / (-g[1] - g[0]);
+    PetscReal  c = PetscCosReal(a), s = PetscSinReal(a), x0 = q[0];
+    q[0] = c * x0 - s * q[1];
+    q[1] = s * x0 + c * q[1];
+  }
+  PetscCall(VecRestoreArray(x, &p));
+  PetscFunctionReturn(0);
+}
+
+/* An orientation-preserving Moebius map: the inversion in the unit sphere about c, then the mirror x -> 2 c_x - x.
+   Length cross ratios are Moebius invariant (soliman2021 Sec. 3), so the image lies in the input's discrete
+   conformal class (to rounding). A vertex at c has no image: refused. */
+static PetscErrorCode Invert(MPI_Comm comm, Vec x, const PetscReal c[3], const char *prefix)
+{
+  PetscInt     n;
+  PetscScalar *p;
+  PetscBool    bad = PETSC_FALSE, gbad;
+  PetscFunctionBeginUser;
+  PetscCall(VecGetLocalSize(x, &n));
+  PetscCall(VecGetArray(x, &p));
+  for (PetscInt i = 0; i < n / 3; i++) {
+    PetscReal *q = (PetscReal *)p + 3 * i, r2 = 0;
+    for (int d = 0; d < 3; d++) r2 += (q[d] - c[d]) * (q[d] - c[d]);
+    if (!(r2 > 1e-24)) { bad = PETSC_TRUE; continue; }
+    for (int d = 0; d < 3; d++) q[d] = c[d] + (q[d] - c[d]) / r2;
+    q[0] = 2 * c[0] - q[0];
+  }
+  PetscCall(VecRestoreArray(x, &p));
+  PetscCall(MPIU_Allreduce(&bad, &gbad, 1, MPIU_BOOL, MPI_LOR, comm));
+  PetscCheck(!gbad, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sgen_deform_invert %g,%g,%g: a vertex lies at the centre of the inversion (choose a centre off the surface)", prefix, (double)c[0], (double)c[1], (double)c[2]);
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode CSMeshDeformFromOptions(CSMesh mesh, const char prefix[])
 {
-  PetscReal bump = 0, freq = 3, stretch[3] = {1, 1, 1};
-  PetscInt  nstretch = 3;
-  PetscBool set;
+  PetscReal bump = 0, freq = 3, stretch[3] = {1, 1, 1}, twist = 0, centre[3] = {0, 0, 0};
+  PetscInt  nstretch = 3, ncentre = 3;
+  PetscBool set, inv;
   PetscFunctionBeginUser;
   PetscOptionsBegin(mesh->comm, prefix, "Test-input deformation", NULL);
   PetscCall(PetscOptionsReal("-gen_deform_bump", "Radial bump amplitude a applied to the input positions", "CSMeshDeformFromOptions", bump, &bump, NULL));
   PetscCall(PetscOptionsReal("-gen_deform_bump_freq", "Bump frequency k in sin(k x) sin(k y) sin(k z)", "CSMeshDeformFromOptions", freq, &freq, NULL));
   PetscCall(PetscOptionsRealArray("-gen_deform_stretch", "Stretch factors sx,sy,sz applied after the bump", "CSMeshDeformFromOptions", stretch, &nstretch, &set));
+  PetscCall(PetscOptionsReal("-gen_deform_twist", "Twist about the z axis: the top turns by this angle (degrees), linearly in z, after the stretch", "CSMeshDeformFromOptions", twist, &twist, NULL));
+  PetscCall(PetscOptionsRealArray("-gen_deform_invert", "Moebius map applied last: inversion in the unit sphere about cx,cy,cz and the mirror in x (the same discrete conformal class)", "CSMeshDeformFromOptions", centre, &ncentre, &inv));
   PetscOptionsEnd();
   PetscCheck(!set || nstretch == 3, mesh->comm, PETSC_ERR_ARG_SIZ, "-%sgen_deform_stretch needs three values sx,sy,sz", prefix ? prefix : "");
+  PetscCheck(!inv || ncentre == 3, mesh->comm, PETSC_ERR_ARG_SIZ, "-%sgen_deform_invert needs three values cx,cy,cz", prefix ? prefix : "");
+  PetscCheck(PetscIsNormalReal(twist) || twist == 0, mesh->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sgen_deform_twist %g: must be a finite angle in degrees", prefix ? prefix : "", (double)twist);
   if (bump != 0 || stretch[0] != 1 || stretch[1] != 1 || stretch[2] != 1) PetscCall(Deform(mesh->x, bump, freq, stretch));
+  if (twist != 0) PetscCall(Twist(mesh->comm, mesh->x, twist));
+  if (inv) PetscCall(Invert(mesh->comm, mesh->x, centre, prefix ? prefix : ""));
   PetscFunctionReturn(0);
 }

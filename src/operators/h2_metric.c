@@ -10,6 +10,7 @@ static PetscErrorCode H2ShellMult(Mat A, Vec u, Vec y)
   PetscCall(MatMult(m->L3, m->work, y));        /* L *0^{-1} L u */
   PetscCall(VecPointwiseMult(m->work, m->m3, u));
   PetscCall(VecAXPY(y, m->mass_weight, m->work)); /* + w *0 u */
+  PetscCall(VecScale(y, m->scale));
   PetscFunctionReturn(0);
 }
 
@@ -21,6 +22,7 @@ PetscErrorCode CSMetricCreate(CSMesh mesh, PetscBool h2, CSMetric *m)
   m->mesh = mesh;
   m->h2   = h2;
   m->mass_weight = 1.0;
+  m->scale       = 1.0;
   PetscCall(DMCreateGlobalVector(mesh->dmV3, &m->m3));
   PetscCall(VecDuplicate(m->m3, &m->minv3));
   PetscCall(VecDuplicate(m->m3, &m->work));
@@ -68,8 +70,9 @@ PetscErrorCode CSMetricUpdate(CSMetric *m, Vec x)
     PetscCall(VecScale(m->m3, m->mass_weight));
     PetscCall(MatDiagonalSet(m->H, m->m3, ADD_VALUES));
     PetscCall(VecScale(m->m3, 1.0 / m->mass_weight));
+    if (m->scale != 1) PetscCall(MatScale(m->H, m->scale));
     PetscCall(MatSetOption(m->H, MAT_SYMMETRIC, PETSC_TRUE));
-    if (first) PetscCall(CSH2PCCompose(m->H, m, 1.0, NULL));
+    if (first) PetscCall(CSH2PCCompose(m->H, m, m->scale, NULL));
   } else {
     if (!m->H) {
       PetscInt N;
@@ -78,9 +81,9 @@ PetscErrorCode CSMetricUpdate(CSMetric *m, Vec x)
       PetscCall(MatSetOption(m->H, MAT_SYMMETRIC, PETSC_TRUE));
       PetscCall(MatSetUp(m->H));
     }
-    PetscCall(VecScale(m->m3, m->mass_weight));
+    PetscCall(VecScale(m->m3, m->scale * m->mass_weight));
     PetscCall(MatDiagonalSet(m->H, m->m3, INSERT_VALUES));
-    PetscCall(VecScale(m->m3, 1.0 / m->mass_weight));
+    PetscCall(VecScale(m->m3, 1.0 / (m->scale * m->mass_weight)));
   }
   PetscCall(PetscLogEventEnd(CS_EVENT_Assemble, 0, 0, 0, 0));
   PetscFunctionReturn(0);

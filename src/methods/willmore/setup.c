@@ -138,6 +138,17 @@ PetscErrorCode CSWFSetUpScaling(CSWillmoreFlow F)
   PetscCall(CSGeometryAreaVolume(F->mesh, F->x0, &A, &V));
   sc                    = A / (4 * PETSC_PI);
   F->metric.mass_weight = 1.0 / (sc * sc);
+  /* The fairing energy E = 1/2 |f - f0|^2_{*0(f0)} + eps W (soliman2021 Eq. 21): its fidelity term is a fixed
+     quadratic with Hessian *0, which the metric of W alone (w *0 + L *0^{-1} L, w = 1/s^4) does not see: along
+     the low modes (translations, scalings) the step was t/w times the fidelity gradient, 300 t on the low-res
+     bunny, and the flow oscillated (the volume 194 -> 198 -> 191 -> 197 in the first steps at eps 0.1) and then
+     drifted (60 iterations: E 13.6 -> 1.6e7). The metric of the sum, eps (w *0 + L *0^{-1} L) + *0 =
+     eps ((w + 1/eps) *0 + L *0^{-1} L), is a Newton step on the fidelity and the W metric on the rest (with the
+     current mass *0(f) for *0(f0)). */
+  if (!strcmp(F->energy_name, "fairing")) {
+    F->metric.scale = F->eps;
+    F->metric.mass_weight += 1.0 / F->eps;
+  }
   /* the ceiling of t_mu: with its own ramp 1e3 t_max; following t, none but tmu_ratio_max (each rejection
      raises t_mu / t twofold for good, up to 1e3 times its initial value, see the step control) */
   if (F->tmu_max <= 0) F->tmu_max = F->tmu_grow > 0 ? 1e3 * F->tmax : PETSC_MAX_REAL;
