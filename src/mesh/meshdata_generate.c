@@ -191,7 +191,11 @@ static inline PetscInt GridStep(PetscInt a, PetscInt b, PetscInt k)
 PetscErrorCode CSMeshDataLattice(PetscReal tau_re, PetscReal tau_im, PetscInt n, PetscInt m, CSMeshData *md)
 {
   PetscFunctionBeginUser;
-  PetscCheck(tau_im > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "-gen_tau %g,%g: the lattice tau must lie in the upper half-plane (Im tau > 0)", (double)tau_re, (double)tau_im);
+  if (!(tau_im > 0)) { /* PETSc's %g prints 0 as "0." (a trailing point that reads as the sentence's end): C's snprintf */
+    char t[64];
+    snprintf(t, sizeof(t), "%g,%g", (double)tau_re, (double)tau_im);
+    SETERRQ(PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "-gen_tau %s: the lattice tau must lie in the upper half-plane (Im tau > 0)", t);
+  }
   PetscCheck(n >= 3 && m >= 3, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "-gen lattice needs -gen_n, -gen_m >= 3, got %" PetscInt_FMT ", %" PetscInt_FMT, n, m);
   PetscCall(MeshAlloc("-gen lattice", (double)n * m, 2 * (double)n * m, md));
   FlatTorusPositions(tau_im, n, m, md->x);
