@@ -25,6 +25,7 @@ typedef struct {
   PetscBool project;
   PetscInt  refine;      /* -mesh_refine: 1-to-4 splits after validation (meshdata_refine.c) */
   PetscBool refine_loop; /* -mesh_refine_type loop (default) or midpoint */
+  char      lengths[PETSC_MAX_PATH_LEN]; /* -mesh_lengths FILE: an intrinsic metric (the target conformal class) */
 } MeshSource;
 static const char *const RefineNames[] = {"midpoint", "loop"};
 
@@ -48,6 +49,7 @@ static PetscErrorCode MeshSourceLoad(const MeshSource *src, CSMeshData *md, CSTo
     }
   }
   ierr = CSMeshDataValidate(md, topo);
+  if (!ierr && src->lengths[0]) ierr = CSMeshDataReadLengths("-mesh_lengths", src->lengths, md);
   if (!ierr && src->refine) {
     ierr = CSMeshDataRefine(md, src->refine, src->refine_loop);
     if (!ierr) ierr = CSMeshDataValidate(md, topo);
@@ -105,12 +107,14 @@ PetscErrorCode CSMeshDataFromOptions(MPI_Comm comm, const char prefix[], CSMeshD
   PetscCall(PetscOptionsReal("-gen_spike_width", "Spiky sphere: angular half-width of a spike (radians)", "CSMeshDataSpikySphere", src.spike_w, &src.spike_w, NULL));
   PetscCall(PetscOptionsReal("-gen_morin_perturb", "Morin surface: size of the symmetry-breaking perturbation", "CSMeshDataMorin", src.morin_eps, &src.morin_eps, NULL));
   PetscCall(PetscOptionsInt("-gen_rings", "Disk: number of rings", "CSMeshDataDisk", src.rings, &src.rings, NULL));
+  PetscCall(PetscOptionsString("-mesh_lengths", "File of 3 |F| edge lengths (per face, opposite corners 0, 1, 2): the conformal class the flows' conformal rows target", "CSMeshDataReadLengths", src.lengths, src.lengths, sizeof(src.lengths), NULL));
   PetscCall(PetscOptionsInt("-mesh_refine", "Regular 1-to-4 refinements of the input (file or generator); the refined mesh's conformal class is a flow's constraint", "CSMeshDataRefine", src.refine, &src.refine, NULL));
   PetscCall(PetscOptionsEList("-mesh_refine_type", "Positions of the refined vertices: midpoint (shape kept) or loop (Loop subdivision)", "CSMeshDataRefine", RefineNames, 2, RefineNames[rtype], &rtype, NULL));
   PetscOptionsEnd();
   PetscCheck(src.refine >= 0 && src.refine <= 6, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%smesh_refine %" PetscInt_FMT ": not in [0, 6] (each level multiplies the faces by 4)", pre, src.refine);
   PetscCheck(!tauset || ntau == 2, comm, PETSC_ERR_ARG_WRONG, "-%sgen_tau: give two numbers RE,IM (got %" PetscInt_FMT ")", pre, ntau);
   PetscCheck(!src.refine || gen != GEN_LATTICE, comm, PETSC_ERR_ARG_INCOMP, "-%smesh_refine with -%sgen lattice: refine with -%sgen_n, -%sgen_m instead (the lattice's lengths are not refined)", pre, pre, pre, pre);
+  PetscCheck(!src.refine || !src.lengths[0], comm, PETSC_ERR_ARG_INCOMP, "-%smesh_refine with -%smesh_lengths: the lengths are given for the unrefined faces", pre, pre);
   src.refine_loop = rtype == 1 ? PETSC_TRUE : PETSC_FALSE;
   PetscCheck(src.file != genset, comm, PETSC_ERR_ARG_WRONG, "give exactly one of -%smesh FILE and -%sgen icosphere|torus|flattorus|cylinder|disk|lattice|spiky|morin (%s)", pre, pre, src.file ? "both were given" : "neither was given");
   src.gen = (GenType)gen;

@@ -108,7 +108,8 @@ static PetscErrorCode CheckOptions(CSWillmoreFlow F)
   PetscFunctionBeginUser;
   PetscCall(PetscStrcmp(F->energy_name, "willmore", &willmore));
   PetscCheck(willmore, F->comm, PETSC_ERR_SUP, "-%senergy %s: -%stype trianglefield minimises the Willmore energy W~ of App. D.1 only", p, F->energy_name, p);
-  PetscCheck(F->conformal, F->comm, PETSC_ERR_SUP, "-%sconformal false: -%stype trianglefield always has the conformal rows (Algorithm 2)", p, p);
+  ((CSTriangleField *)F->data)->noconf = (PetscBool)!F->conformal; /* unconstrained W~ (Fig. 8): integrability rows only */
+  F->conformal = PETSC_TRUE; /* the multiplier block holds the integrability rows either way */
   PetscCheck(!F->area_set && !F->mobius && !F->rotation && !F->target[0], F->comm, PETSC_ERR_SUP, "-%stype trianglefield: the area, Moebius and rotation constraints and -%starget_mesh are not built for triangle fields (App. B: volume and points only)", p, p);
   PetscCheck(F->metric_type == CS_FLOW_METRIC_H2, F->comm, PETSC_ERR_SUP, "-%smetric l2: -%stype trianglefield uses the I_H1 metric (Eq. 32) only", p, p);
   PetscFunctionReturn(0);
@@ -134,8 +135,9 @@ static PetscErrorCode SetUpOperators(CSWillmoreFlow F, CSTriangleField *d)
   PetscCall(MatMatMult(d->C, d->D, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &d->CD));
   B[0] = d->CD;
   B[1] = d->Klin;
-  PetscCall(CSMatStackRows(2, B, MAT_INITIAL_MATRIX, &d->X));
+  PetscCall(CSMatStackRows(d->noconf ? 1 : 2, d->noconf ? B + 1 : B, MAT_INITIAL_MATRIX, &d->X));
   PetscCall(MatGetLocalSize(d->CD, &d->nH, NULL));
+  if (d->noconf) d->nH = 0;
   PetscCall(MatGetLocalSize(d->Klin, &d->nL, NULL));
   PetscFunctionReturn(0);
 }

@@ -13,7 +13,7 @@ PetscErrorCode CSTFConstraints(CSWillmoreFlow F, Vec x, Vec c, PetscReal cx[], P
   PetscFunctionBeginUser;
   PetscCall(CSTriangleFieldLogLengths(F->mesh, d->dmH3, x, d->dmH1, d->lambda));
   PetscCall(VecGetArray(c, &a));
-  { /* conformal rows: C~ lambda - c0 written straight into c's first nH entries */
+  if (!d->noconf) { /* conformal rows: C~ lambda - c0 written straight into c's first nH entries */
     Vec cH;
     PetscCall(VecCreateMPIWithArray(F->comm, 1, d->nH, PETSC_DETERMINE, a, &cH));
     PetscCall(MatMult(d->C, d->lambda, cH));
@@ -31,7 +31,8 @@ PetscErrorCode CSTFConstraints(CSWillmoreFlow F, Vec x, Vec c, PetscReal cx[], P
     cx[j] = PetscRealPart(v);
   }
   PetscCall(CSTFAppBEvaluate(F, x, cx + 3 * d->nforms, F->rows ? F->rows + 3 * d->nforms : NULL, wantJ));
-  if (wantJ) {
+  if (wantJ && d->noconf) F->Xc = d->X; /* = Klin, constant */
+  else if (wantJ) {
     Mat B[2];
     PetscCall(CSOperatorLensLogLengthDerivative(F->mesh, d->dmH1, d->dmH3, x, MAT_REUSE_MATRIX, &d->D));
     PetscCall(MatMatMult(d->C, d->D, MAT_REUSE_MATRIX, PETSC_DEFAULT, &d->CD));
@@ -126,6 +127,7 @@ PetscErrorCode CSTFOperators(CSWillmoreFlow F)
   PetscScalar     *a;
   const PetscScalar *b;
   PetscFunctionBeginUser;
+  CSTFScheduleApply(F, d);
   PetscCall(Metric(F));
   PetscCall(CSTriangleFieldQuadDiffMetric(F->mesh, d->dmH3, F->x, d->dmH1, F->wmin, d->iqH, &ng));
   F->nguard = PetscMax(F->nguard, ng);

@@ -29,6 +29,8 @@ typedef struct {
   PetscInt  nD1;           /* local rows of d1 (the first 3 nD1 linear rows are the lens rows d1 omega) */
   PetscInt  istart;        /* -flow_integrability_start (trianglefield_schedule.c) */
   PetscReal wrelax;        /* -flow_integrability_relaxed_weight */
+  PetscReal vmax0;         /* -flow_vmax, lifted while the rows are relaxed */
+  PetscBool noconf;        /* -flow_conformal false: no C~ rows (nH = 0), X = Klin */
 } CSTriangleField;
 
 PETSC_INTERN PetscErrorCode CSTFConstraints(CSWillmoreFlow F, Vec x, Vec c, PetscReal cx[], PetscBool wantJ);
@@ -41,4 +43,5 @@ PETSC_INTERN PetscInt       CSTFAppBRows(CSWillmoreFlow F);
 /* trianglefield_schedule.c: integrability enforced from an iteration on (Fig. 8) */
 PETSC_INTERN PetscErrorCode CSTFScheduleSetFromOptions(CSWillmoreFlow F, CSTriangleField *d);
 PETSC_INTERN PetscReal      CSTFIntegrabilityWeight(CSWillmoreFlow F, CSTriangleField *d);
+PETSC_INTERN void           CSTFScheduleApply(CSWillmoreFlow F, CSTriangleField *d);
 #endif

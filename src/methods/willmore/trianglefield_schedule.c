@@ -1,7 +1,8 @@
 /* When integrability is enforced (soliman2021 Fig. 8: "Enforcing integrability only near the end of the
    optimization then provides a richer set of paths"). The schedule acts on the multiplier metric of the lens
    rows d1 omega (Eq. 31) and the period rows <<Y_i|omega>> (Eq. 13): before iteration -flow_integrability_start
-   they get the weight -flow_integrability_relaxed_weight (default 1e4, against the stiff 1e-4 after), so CGD's
+   they get the weight -flow_integrability_relaxed_weight (default 1e4, against the stiff 1e-4 after) and the step
+   filter's violation ceiling is lifted (CSTFScheduleApply), so CGD's
    regularised dual block -I_Q/t_mu makes their multipliers step by t_mu/w * c ~ 0 and the rows barely act on
    the primal step (the Schur complement's t_mu X^T w^{-1} X term of these rows is 1e8 times weaker): the
    triangles move without having to glue. The face closure rows always keep the stiff weight: they make omega a
@@ -26,4 +27,14 @@ PetscErrorCode CSTFScheduleSetFromOptions(CSWillmoreFlow F, CSTriangleField *d)
 PetscReal CSTFIntegrabilityWeight(CSWillmoreFlow F, CSTriangleField *d)
 {
   return F->it < d->istart ? d->wrelax : d->wint;
+}
+
+/* At every step: the step filter's violation ceiling -flow_vmax (a trial step whose violation exceeds max(v,
+   vmax) is rejected) is lifted while the rows are relaxed, or the violation of the relaxed rows reaches it and t
+   collapses (measured: the spiky sphere of options/trianglefield_spiky.opts sat at violation 1e-2 with t falling
+   to 4e-6 in five steps); it is restored when integrability is switched on. */
+void CSTFScheduleApply(CSWillmoreFlow F, CSTriangleField *d)
+{
+  if (d->vmax0 <= 0) d->vmax0 = F->vmax;
+  F->vmax = F->it < d->istart ? PETSC_MAX_REAL : d->vmax0;
 }
