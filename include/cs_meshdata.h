@@ -37,8 +37,9 @@ PETSC_EXTERN PetscErrorCode CSMeshDataValidate(CSMeshData *md, CSTopology *topo)
 PETSC_EXTERN PetscErrorCode CSMeshDataIcosphere(PetscInt level, PetscReal radius, PetscBool project, CSMeshData *md);
 PETSC_EXTERN PetscErrorCode CSMeshDataTorus(PetscReal R, PetscReal r, PetscInt n, PetscInt m, CSMeshData *md);
 PETSC_EXTERN PetscErrorCode CSMeshDataLattice(PetscReal tau_re, PetscReal tau_im, PetscInt n, PetscInt m, CSMeshData *md);
-/* soliman2021 Fig. 8: the level-L icosphere with 12 spikes of height h and angular width w (meshdata_shapes.c). */
-PETSC_EXTERN PetscErrorCode CSMeshDataSpikySphere(PetscInt level, PetscReal height, PetscReal width, CSMeshData *md);
+/* soliman2021 Fig. 8: the level-L icosphere with 12 spikes of height h and angular width w; round: md->len = the
+   round icosphere's edge lengths (the target class of the flows) (meshdata_shapes.c). */
+PETSC_EXTERN PetscErrorCode CSMeshDataSpikySphere(PetscInt level, PetscReal height, PetscReal width, PetscBool round, CSMeshData *md);
 /* soliman2021 Fig. 15: Apery's Morin surface (an immersed sphere, fourfold symmetric) on n x (m - 1) rings and two
    poles, plus a smooth symmetry-breaking perturbation of size eps (meshdata_shapes.c). */
 PETSC_EXTERN PetscErrorCode CSMeshDataMorin(PetscInt n, PetscInt m, PetscReal eps, CSMeshData *md);

@@ -22,6 +22,7 @@ typedef struct {
   PetscInt  level, n, m, rings;
   PetscReal radius, R, r, tau_re, tau_im, height, tau[2]; /* tau: -gen lattice */
   PetscReal spike_h, spike_w, morin_eps;                 /* -gen spiky, -gen morin */
+  PetscBool spike_round;                                  /* -gen_spike_round_class */
   PetscBool project;
   PetscInt  refine;      /* -mesh_refine: 1-to-4 splits after validation (meshdata_refine.c) */
   PetscBool refine_loop; /* -mesh_refine_type loop (default) or midpoint */
@@ -44,7 +45,7 @@ static PetscErrorCode MeshSourceLoad(const MeshSource *src, CSMeshData *md, CSTo
     case GEN_CYLINDER: PetscCall(CSMeshDataCylinder(src->radius, src->height, src->n, src->m, md)); break;
     case GEN_DISK: PetscCall(CSMeshDataDisk(src->radius, src->rings, md)); break;
     case GEN_LATTICE: PetscCall(CSMeshDataLattice(src->tau[0], src->tau[1], src->n, src->m, md)); break;
-    case GEN_SPIKY: PetscCall(CSMeshDataSpikySphere(src->level, src->spike_h, src->spike_w, md)); break;
+    case GEN_SPIKY: PetscCall(CSMeshDataSpikySphere(src->level, src->spike_h, src->spike_w, src->spike_round, md)); break;
     case GEN_MORIN: PetscCall(CSMeshDataMorin(src->n, src->m, src->morin_eps, md)); break;
     }
   }
@@ -105,6 +106,7 @@ PetscErrorCode CSMeshDataFromOptions(MPI_Comm comm, const char prefix[], CSMeshD
   PetscCall(PetscOptionsReal("-gen_height", "Cylinder: height", "CSMeshDataCylinder", src.height, &src.height, NULL));
   PetscCall(PetscOptionsReal("-gen_spike_height", "Spiky sphere: height of the 12 spikes (radius 1)", "CSMeshDataSpikySphere", src.spike_h, &src.spike_h, NULL));
   PetscCall(PetscOptionsReal("-gen_spike_width", "Spiky sphere: angular half-width of a spike (radians)", "CSMeshDataSpikySphere", src.spike_w, &src.spike_w, NULL));
+  PetscCall(PetscOptionsBool("-gen_spike_round_class", "Spiky sphere: the target conformal class is the round icosphere's (its edge lengths), not the spiky mesh's", "CSMeshDataSpikySphere", src.spike_round, &src.spike_round, NULL));
   PetscCall(PetscOptionsReal("-gen_morin_perturb", "Morin surface: size of the symmetry-breaking perturbation", "CSMeshDataMorin", src.morin_eps, &src.morin_eps, NULL));
   PetscCall(PetscOptionsInt("-gen_rings", "Disk: number of rings", "CSMeshDataDisk", src.rings, &src.rings, NULL));
   PetscCall(PetscOptionsString("-mesh_lengths", "File of 3 |F| edge lengths (per face, opposite corners 0, 1, 2): the conformal class the flows' conformal rows target", "CSMeshDataReadLengths", src.lengths, src.lengths, sizeof(src.lengths), NULL));
@@ -113,6 +115,7 @@ PetscErrorCode CSMeshDataFromOptions(MPI_Comm comm, const char prefix[], CSMeshD
   PetscOptionsEnd();
   PetscCheck(src.refine >= 0 && src.refine <= 6, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%smesh_refine %" PetscInt_FMT ": not in [0, 6] (each level multiplies the faces by 4)", pre, src.refine);
   PetscCheck(!tauset || ntau == 2, comm, PETSC_ERR_ARG_WRONG, "-%sgen_tau: give two numbers RE,IM (got %" PetscInt_FMT ")", pre, ntau);
+  PetscCheck(!src.refine || !(gen == GEN_SPIKY && src.spike_round), comm, PETSC_ERR_ARG_INCOMP, "-%smesh_refine with -%sgen_spike_round_class: refine with -%sgen_level instead (the lengths are not refined)", pre, pre, pre);
   PetscCheck(!src.refine || gen != GEN_LATTICE, comm, PETSC_ERR_ARG_INCOMP, "-%smesh_refine with -%sgen lattice: refine with -%sgen_n, -%sgen_m instead (the lattice's lengths are not refined)", pre, pre, pre, pre);
   PetscCheck(!src.refine || !src.lengths[0], comm, PETSC_ERR_ARG_INCOMP, "-%smesh_refine with -%smesh_lengths: the lengths are given for the unrefined faces", pre, pre);
   src.refine_loop = rtype == 1 ? PETSC_TRUE : PETSC_FALSE;

@@ -4,12 +4,22 @@
 
 /* -gen spiky: the icosphere of -gen_level L, radius 1, with a spike on each of the 12 icosahedron directions s_k
    (the first 12 vertices: the subdivision appends): r(x) = 1 + h sum_k max(0, 1 - theta_k / w)^2, theta_k the
-   angle between x and s_k. The spike tips are mesh vertices (cone points of the discrete surface). */
-PetscErrorCode CSMeshDataSpikySphere(PetscInt level, PetscReal height, PetscReal width, CSMeshData *md)
+   angle between x and s_k. The spike tips are mesh vertices (cone points of the discrete surface). With round,
+   md->len holds the edge lengths of the round icosphere before the spikes: the flows' target class is then the
+   round sphere's (Fig. 8: the spikes must go, which the class of the spiky mesh itself does not allow). */
+PetscErrorCode CSMeshDataSpikySphere(PetscInt level, PetscReal height, PetscReal width, PetscBool round, CSMeshData *md)
 {
   PetscFunctionBeginUser;
   PetscCheck(height > -1 && width > 0 && width < 0.55, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "-gen spiky: -gen_spike_height %g must be > -1 and -gen_spike_width %g in (0, 0.55) radians (spikes that do not overlap: the icosahedron's directions are 1.107 apart)", (double)height, (double)width);
   PetscCall(CSMeshDataIcosphere(level, 1.0, PETSC_TRUE, md));
+  if (round) {
+    PetscCall(PetscMalloc1(3 * md->nf, &md->len));
+    for (PetscInt f = 0; f < md->nf; f++)
+      for (int k = 0; k < 3; k++) {
+        const PetscReal *a = md->x + 3 * md->f[3 * f + (k + 1) % 3], *b = md->x + 3 * md->f[3 * f + (k + 2) % 3];
+        md->len[3 * f + k] = PetscSqrtReal(PetscSqr(a[0] - b[0]) + PetscSqr(a[1] - b[1]) + PetscSqr(a[2] - b[2]));
+      }
+  }
   for (PetscInt v = 12; v < md->nv; v++) {
     PetscReal *p = md->x + 3 * v, r = 1;
     for (PetscInt k = 0; k < 12; k++) {
@@ -22,7 +32,7 @@ PetscErrorCode CSMeshDataSpikySphere(PetscInt level, PetscReal height, PetscReal
   }
   for (PetscInt k = 0; k < 12; k++)
     for (int c = 0; c < 3; c++) md->x[3 * k + c] *= 1 + height;
-  snprintf(md->name, sizeof(md->name), "spiky(level=%" PetscInt_FMT ",height=%g,width=%g)", level, (double)height, (double)width);
+  snprintf(md->name, sizeof(md->name), "spiky(level=%" PetscInt_FMT ",height=%g,width=%g%s)", level, (double)height, (double)width, round ? ",round class" : "");
   PetscFunctionReturn(0);
 }
 
