@@ -4,7 +4,8 @@
 # round class minimiser: W within 1 % of W of the round icosphere in fewer iterations than Algorithm 1 (cgd) from the
 # same input, which converges to another critical point (W 33.5 measured) and so never gets there (a count of
 # infinity). The full-size run (level 3, W within 1 % of 4 pi) is options/trianglefield_spiky.opts (docs). Bad
-# input: a lengths file of the wrong length or with an edge given two lengths, and -o of a non-integrable field.
+# input: a lengths file of the wrong length or with an edge given two lengths, -o of a non-integrable field, and
+# -gen_tau 0,-1 (the message without PETSc's stray "."). -gen morin gives a closed genus-0 mesh.
 # nprocs: 1 2
 source tests/lib.sh
 "$CS_BIN" -task flow -gen icosphere -gen_level 2 -flow_max_it 0 -o "$TMP/ico.obj" -summary "$TMP/ico.json" > /dev/null 2>&1 || exit 1
@@ -50,3 +51,7 @@ EXPECT="upper half-plane" expect_fail $MPIEXEC "$CS_BIN" -task info -gen lattice
 out=$($MPIEXEC "$CS_BIN" -task info -gen lattice -gen_tau 0,0 2>&1 || true)
 if grep -q "0\.,0\.\|0,0\.:" <<< "$out"; then echo "BAD: stray '.' in the -gen_tau message: $out"; exit 1; fi
 echo "ok: -gen_tau message without a stray '.'"
+# the Morin generator (Fig. 15): a closed immersed sphere (genus 0, no boundary) of 2 + n (m - 1) vertices
+out=$($MPIEXEC "$CS_BIN" -task info -gen morin -gen_n 16 -gen_m 8 2>&1) || { echo "$out"; exit 1; }
+grep -q "V=114 E=336 F=224 genus=0 boundary_loops=0" <<< "$out" || { echo "BAD: -gen morin: $out"; exit 1; }
+echo "ok: -gen morin 16 x 8 is a closed genus-0 mesh of 114 vertices"
