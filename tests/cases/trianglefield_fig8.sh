@@ -55,3 +55,8 @@ echo "ok: -gen_tau message without a stray '.'"
 out=$($MPIEXEC "$CS_BIN" -task info -gen morin -gen_n 16 -gen_m 8 2>&1) || { echo "$out"; exit 1; }
 grep -q "V=114 E=336 F=224 genus=0 boundary_loops=0" <<< "$out" || { echo "BAD: -gen morin: $out"; exit 1; }
 echo "ok: -gen morin 16 x 8 is a closed genus-0 mesh of 114 vertices"
+# -gen_deform_nfold N,A (an N-fold symmetric start, Fig. 17): the area changes; a non-integer N is refused
+a0=$($MPIEXEC "$CS_BIN" -task info -gen torus -gen_torus_R 3 -gen_tube_r 1 -gen_n 24 -gen_m 8 2>&1 | sed -n 's/.*area=\([0-9.e+-]*\).*/\1/p')
+a3=$($MPIEXEC "$CS_BIN" -task info -gen torus -gen_torus_R 3 -gen_tube_r 1 -gen_n 24 -gen_m 8 -gen_deform_nfold 3,0.2 2>&1 | sed -n 's/.*area=\([0-9.e+-]*\).*/\1/p')
+python3 -c "import sys; a0, a3 = float(sys.argv[1]), float(sys.argv[2]); ok = a3 > 1.005 * a0; print(('ok  ' if ok else 'BAD ') + '-gen_deform_nfold 3,0.2 changes the area: %g -> %g' % (a0, a3)); sys.exit(not ok)" "$a0" "$a3" || exit 1
+EXPECT="gen_deform_nfold N,A" expect_fail $MPIEXEC "$CS_BIN" -task info -gen torus -gen_deform_nfold 2.5,0.1 || exit 1
