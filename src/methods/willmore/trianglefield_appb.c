@@ -10,17 +10,23 @@ PetscErrorCode CSTFAppBSetUp(CSWillmoreFlow F, CSTriangleField *d)
   CSMesh                 m = F->mesh;
   CSTriangleFieldPoisson P;
   char                   opt[96];
+  PetscErrorCode         ierr = 0;
   PetscFunctionBeginUser;
   if (!F->vol_set && !F->points[0]) PetscFunctionReturn(0);
   PetscCall(CSTriangleFieldPoissonCreate(m, d->dmH1, d->dmH3, d->xpos0, &P));
+  PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%sconstraint_points", F->prefix));
   if (F->vol_set) {
     PetscReal A, V;
     PetscCall(CSGeometryAreaVolume(m, d->xpos0, &A, &V));
-    PetscCall(CSConstraintCreateTriangleFieldVolume(m, P, F->vol_given ? F->vol_target : V, &F->gc[F->ng++]));
+    ierr = CSConstraintCreateTriangleFieldVolume(m, P, F->vol_given ? F->vol_target : V, &F->gc[F->ng]);
+    if (!ierr) F->ng++;
   }
-  PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%sconstraint_points", F->prefix));
-  if (F->points[0]) PetscCall(CSConstraintCreateTriangleFieldPoints(m, P, opt, F->points, &F->gc[F->ng++]));
-  PetscCall(CSTriangleFieldPoissonDestroy(&P));
+  if (!ierr && F->points[0]) {
+    ierr = CSConstraintCreateTriangleFieldPoints(m, P, opt, F->points, &F->gc[F->ng]);
+    if (!ierr) F->ng++;
+  }
+  PetscCall(CSTriangleFieldPoissonDestroy(&P)); /* the constraints hold references; on an error nothing leaks */
+  PetscCall(ierr);
   PetscFunctionReturn(0);
 }
 
