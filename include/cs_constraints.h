@@ -8,6 +8,7 @@
 #define CS_CONSTRAINTS_H
 #include "cs_operators_conformal.h"
 #include "cs_energy.h"
+#include "cs_operators_lens.h"
 
 typedef struct {
   CSMesh    mesh;
@@ -65,6 +66,15 @@ PETSC_EXTERN PetscErrorCode CSConstraintCreateVolume(CSMesh mesh, PetscReal targ
    indices; '#' starts a comment). Clear errors for an unreadable file, a bad line, an index out of range or
    a repeated vertex. 3 rows per point. */
 PETSC_EXTERN PetscErrorCode CSConstraintCreatePointsFromFile(CSMesh mesh, const char option[], const char path[], CSGlobalConstraint *g);
+
+/* Triangle-field extensions (soliman2021 App. B) of translation-invariant global constraints: c~(omega) =
+   c(R omega) with R the frozen-metric Poisson reconstruction (CSTriangleFieldPoissonCreate), rows R^T rows(R
+   omega) on dmH3 vectors. The volume (B.2): V(R omega) = target. The points (B.1), from the file of
+   CSConstraintCreatePointsFromFile: a triangle field fixes positions only up to translation, so the first point
+   of the file anchors the others, f_v - f_v0 = p_v - p_v0 (3 (n - 1) rows, linear: <<omega, dp>> with L0 p =
+   delta_v - delta_v0, the source/sink form of B.1); fewer than 2 points is refused. P is referenced. */
+PETSC_EXTERN PetscErrorCode CSConstraintCreateTriangleFieldVolume(CSMesh mesh, CSTriangleFieldPoisson P, PetscReal target, CSGlobalConstraint *g);
+PETSC_EXTERN PetscErrorCode CSConstraintCreateTriangleFieldPoints(CSMesh mesh, CSTriangleFieldPoisson P, const char option[], const char path[], CSGlobalConstraint *g);
 
 /* Moebius balancing (gauge of the Moebius orbit left free by the conformal constraint, along which the
    discrete Willmore energy is not invariant): the 3 rows sum_i A_i(f) (f0_i - c0) = 0, normalised by

@@ -37,6 +37,16 @@ PETSC_EXTERN PetscErrorCode CSMeshDataValidate(CSMeshData *md, CSTopology *topo)
 PETSC_EXTERN PetscErrorCode CSMeshDataIcosphere(PetscInt level, PetscReal radius, PetscBool project, CSMeshData *md);
 PETSC_EXTERN PetscErrorCode CSMeshDataTorus(PetscReal R, PetscReal r, PetscInt n, PetscInt m, CSMeshData *md);
 PETSC_EXTERN PetscErrorCode CSMeshDataLattice(PetscReal tau_re, PetscReal tau_im, PetscInt n, PetscInt m, CSMeshData *md);
+/* soliman2021 Fig. 8: the level-L icosphere with 12 spikes of height h and angular width w; round: md->len = the
+   round icosphere's edge lengths (the target class of the flows) (meshdata_shapes.c). */
+PETSC_EXTERN PetscErrorCode CSMeshDataSpikySphere(PetscInt level, PetscReal height, PetscReal width, PetscBool round, CSMeshData *md);
+/* soliman2021 Fig. 15: Apery's Morin surface (an immersed sphere, fourfold symmetric) on n x (m - 1) rings and two
+   poles, plus a smooth symmetry-breaking perturbation of size eps (meshdata_shapes.c). */
+PETSC_EXTERN PetscErrorCode CSMeshDataMorin(PetscInt n, PetscInt m, PetscReal eps, CSMeshData *md);
+/* md->len from a file of 3 |F| edge lengths (per face, opposite corners 0, 1, 2): the conformal class that the
+   flows' conformal rows then target (-mesh_lengths FILE). One-line errors: wrong count, not a triangle, an edge
+   given two lengths. Rank 0 (meshdata_lengths.c). */
+PETSC_EXTERN PetscErrorCode CSMeshDataReadLengths(const char option[], const char path[], CSMeshData *md);
 PETSC_EXTERN PetscErrorCode CSMeshDataFlatTorus(PetscReal tau_re, PetscReal tau_im, PetscInt n, PetscInt m, CSMeshData *md);
 PETSC_EXTERN PetscErrorCode CSMeshDataCylinder(PetscReal radius, PetscReal height, PetscInt n, PetscInt m, CSMeshData *md);
 PETSC_EXTERN PetscErrorCode CSMeshDataDisk(PetscReal radius, PetscInt rings, CSMeshData *md);

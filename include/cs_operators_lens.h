@@ -73,4 +73,19 @@ PETSC_EXTERN PetscErrorCode CSTriangleFieldReconstruct(CSMesh mesh, DM dmH1, DM 
    viewer's face vector layout), the face's own triangle of the field, not glued to its neighbours. */
 PETSC_EXTERN PetscErrorCode CSTriangleFieldFaceVectors(CSMesh mesh, DM dmH3, Vec omega, PetscInt a, Vec *w);
 
+/* The linear Poisson reconstruction of App. B (soliman2021 Eq. 22) with the metric frozen at the input x0:
+   R omega = f with L0 f = d0^T *1(x0) omega, vertex 0 grounded (f_0 = 0), per component. For every integrable
+   omega = df, R omega = f - f_0, so F(R omega) is a triangle-field extension of any translation-invariant F(f)
+   (App. B), and its gradient R^T grad F(R omega) = *1(x0) d0 L0^{-1} grad F is exact for every omega (the paper's
+   d varphi of Eq. 22: the Poisson problem is linear only for a fixed L). KSP prefix -trianglefield_extension_
+   (default a direct Cholesky, factored once). Reference counted (shared by the App. B constraints). */
+typedef struct _p_CSTriangleFieldPoisson *CSTriangleFieldPoisson;
+PETSC_EXTERN PetscErrorCode CSTriangleFieldPoissonCreate(CSMesh mesh, DM dmH1, DM dmH3, Vec x0, CSTriangleFieldPoisson *P);
+PETSC_EXTERN PetscErrorCode CSTriangleFieldPoissonReference(CSTriangleFieldPoisson P);
+/* f (dmV3) = R omega (dmH3) */
+PETSC_EXTERN PetscErrorCode CSTriangleFieldPoissonApply(CSTriangleFieldPoisson P, Vec omega, Vec f);
+/* w (dmH3) = R^T v (dmV3): the triangle-field gradient of F(R omega) from grad F = v */
+PETSC_EXTERN PetscErrorCode CSTriangleFieldPoissonApplyTranspose(CSTriangleFieldPoisson P, Vec v, Vec w);
+PETSC_EXTERN PetscErrorCode CSTriangleFieldPoissonDestroy(CSTriangleFieldPoisson *P);
+
 #endif

@@ -1,7 +1,8 @@
 /* Test-input deformation of a mesh's positions (-gen_deform_bump, -gen_deform_bump_freq, -gen_deform_stretch,
-   -gen_deform_twist, -gen_deform_invert): a radial bump and a stretch, used by the flow tests and options/ to start
-   away from a critical point; a twist about the z axis (a cylinder with rotated boundary, soliman2021 Fig. 2, 21)
-   and a Moebius map (another representative of the same discrete conformal class, Fig. 4). */
+   -gen_deform_twist, -gen_deform_invert, -gen_deform_nfold): a radial bump and a stretch, used by the flow tests and
+   options/ to start away from a critical point; a twist about the z axis (a cylinder with rotated boundary,
+   soliman2021 Fig. 2, 21); a Moebius map (another representative of the same discrete conformal class, Fig. 4); an
+   n-fold wave about the z axis (a symmetric start, Fig. 17). */
 #include "cs_mesh_deform.h"
 
 static PetscErrorCode Deform(Vec x, PetscReal a, PetscReal k, const PetscReal s[3])
@@ -14,6 +15,23 @@ static PetscErrorCode Deform(Vec x, PetscReal a, PetscReal k, const PetscReal s[
   for (PetscInt i = 0; i < n / 3; i++) {
     PetscReal *q = (PetscReal *)p + 3 * i, b = 1 + a * PetscSinReal(k * q[0]) * PetscSinReal(k * q[1]) * PetscSinReal(k * q[2]);
     for (int d = 0; d < 3; d++) q[d] *= b * s[d];
+  }
+  PetscCall(VecRestoreArray(x, &p));
+  PetscFunctionReturn(0);
+}
+
+/* the distance from the z axis times 1 + a cos(n phi), phi the angle about z: n-fold rotational symmetry */
+static PetscErrorCode NFold(Vec x, PetscInt n, PetscReal a)
+{
+  PetscInt     m;
+  PetscScalar *p;
+  PetscFunctionBeginUser;
+  PetscCall(VecGetLocalSize(x, &m));
+  PetscCall(VecGetArray(x, &p));
+  for (PetscInt i = 0; i < m / 3; i++) {
+    PetscReal *q = (PetscReal *)p + 3 * i, b = 1 + a * PetscCosReal(n * PetscAtan2Real(q[1], q[0]));
+    q[0] *= b;
+    q[1] *= b;
   }
   PetscCall(VecRestoreArray(x, &p));
   PetscFunctionReturn(0);
@@ -71,8 +89,9 @@ static PetscErrorCode Invert(MPI_Comm comm, Vec x, const PetscReal c[3], const c
 PetscErrorCode CSMeshDeformFromOptions(CSMesh mesh, const char prefix[])
 {
   PetscReal bump = 0, freq = 3, stretch[3] = {1, 1, 1}, twist = 0, centre[3] = {0, 0, 0};
-  PetscInt  nstretch = 3, ncentre = 3;
-  PetscBool set, inv;
+  PetscReal nfold[2] = {0, 0};
+  PetscInt  nstretch = 3, ncentre = 3, nn = 2;
+  PetscBool set, inv, nset = PETSC_FALSE;
   PetscFunctionBeginUser;
   PetscOptionsBegin(mesh->comm, prefix, "Test-input deformation", NULL);
   PetscCall(PetscOptionsReal("-gen_deform_bump", "Radial bump amplitude a applied to the input positions", "CSMeshDeformFromOptions", bump, &bump, NULL));
@@ -80,7 +99,10 @@ PetscErrorCode CSMeshDeformFromOptions(CSMesh mesh, const char prefix[])
   PetscCall(PetscOptionsRealArray("-gen_deform_stretch", "Stretch factors sx,sy,sz applied after the bump", "CSMeshDeformFromOptions", stretch, &nstretch, &set));
   PetscCall(PetscOptionsReal("-gen_deform_twist", "Twist about the z axis: the top turns by this angle (degrees), linearly in z, after the stretch", "CSMeshDeformFromOptions", twist, &twist, NULL));
   PetscCall(PetscOptionsRealArray("-gen_deform_invert", "Moebius map applied last: inversion in the unit sphere about cx,cy,cz and the mirror in x (the same discrete conformal class)", "CSMeshDeformFromOptions", centre, &ncentre, &inv));
+  PetscCall(PetscOptionsRealArray("-gen_deform_nfold", "N,A: the distance from the z axis times 1 + A cos(N phi) (an N-fold symmetric start), applied first", "CSMeshDeformFromOptions", nfold, &nn, &nset));
   PetscOptionsEnd();
+  PetscCheck(!nset || (nn == 2 && nfold[0] == (PetscInt)nfold[0] && nfold[0] >= 0 && PetscAbsReal(nfold[1]) < 1), mesh->comm, PETSC_ERR_ARG_WRONG, "-%sgen_deform_nfold N,A: N a non-negative integer, |A| < 1 (got %" PetscInt_FMT " values)", prefix ? prefix : "", nn);
+  if (nfold[0] > 0 && nfold[1] != 0) PetscCall(NFold(mesh->x, (PetscInt)nfold[0], nfold[1]));
   PetscCheck(!set || nstretch == 3, mesh->comm, PETSC_ERR_ARG_SIZ, "-%sgen_deform_stretch needs three values sx,sy,sz", prefix ? prefix : "");
   PetscCheck(!inv || ncentre == 3, mesh->comm, PETSC_ERR_ARG_SIZ, "-%sgen_deform_invert needs three values cx,cy,cz", prefix ? prefix : "");
   PetscCheck(PetscIsNormalReal(twist) || twist == 0, mesh->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sgen_deform_twist %g: must be a finite angle in degrees", prefix ? prefix : "", (double)twist);

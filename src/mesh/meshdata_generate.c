@@ -2,7 +2,7 @@
    open cylinder,
    flat disk. All are outward oriented (normals by the right-hand rule on counter-clockwise corners) and have
    no duplicate vertices. */
-#include "cs_meshdata.h"
+#include "meshdata_generate_impl.h"
 #include "cs_util.h"
 #include <stdio.h>
 
@@ -20,7 +20,7 @@ static PetscErrorCode CheckSize(const char what[], double nv, double nf)
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode MeshAlloc(const char what[], double nv, double nf, CSMeshData *md)
+PetscErrorCode CSMeshDataAlloc(const char what[], double nv, double nf, CSMeshData *md)
 {
   PetscFunctionBeginUser;
   PetscCall(CheckSize(what, nv, nf));
@@ -44,7 +44,7 @@ static inline void Quad(PetscInt *t, PetscInt a, PetscInt b, PetscInt c, PetscIn
 }
 
 /* Closed surfaces only: flip every face if the enclosed (signed) volume is negative. */
-static void OrientOutward(CSMeshData *md)
+void CSMeshDataOrientOutward(CSMeshData *md)
 {
   PetscReal vol = 0;
   for (PetscInt i = 0; i < md->nf; i++) {
@@ -92,13 +92,13 @@ PetscErrorCode CSMeshDataIcosphere(PetscInt level, PetscReal radius, PetscBool p
   PetscCheck(level >= 0 && level <= 9, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "-gen_level %" PetscInt_FMT ": not in [0, 9] (level L has 20 4^L faces)", level);
   PetscCheck(radius > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "icosphere radius %g must be positive", (double)radius);
   PetscCall(CheckSize("-gen icosphere", 10 * PetscPowReal(4, level) + 2, 20 * PetscPowReal(4, level)));
-  PetscCall(MeshAlloc("-gen icosphere", 12, 20, md));
+  PetscCall(CSMeshDataAlloc("-gen icosphere", 12, 20, md));
   for (PetscInt i = 0; i < 12; i++) {
     PetscCall(PetscArraycpy(md->x + 3 * i, v + 3 * i, 3));
     Project(md->x + 3 * i, radius); /* circumradius = radius, projected or not */
   }
   PetscCall(PetscArraycpy(md->f, t, 60));
-  OrientOutward(md);
+  CSMeshDataOrientOutward(md);
   for (PetscInt l = 0; l < level; l++) PetscCall(Subdivide(md, project, radius));
   snprintf(md->name, sizeof(md->name), "icosphere(level=%" PetscInt_FMT ",radius=%g,project=%s)", level, (double)radius, project ? "true" : "false");
   PetscFunctionReturn(0);
@@ -119,7 +119,7 @@ PetscErrorCode CSMeshDataTorus(PetscReal R, PetscReal r, PetscInt n, PetscInt m,
   PetscFunctionBeginUser;
   PetscCheck(R > r && r > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "torus needs -gen_torus_R > -gen_tube_r > 0, got R = %g, r = %g", (double)R, (double)r);
   PetscCheck(n >= 3 && m >= 3, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "torus needs n, m >= 3, got %" PetscInt_FMT ", %" PetscInt_FMT, n, m);
-  PetscCall(MeshAlloc("-gen torus", (double)n * m, 2 * (double)n * m, md));
+  PetscCall(CSMeshDataAlloc("-gen torus", (double)n * m, 2 * (double)n * m, md));
   for (PetscInt i = 0; i < n; i++)
     for (PetscInt j = 0; j < m; j++) {
       PetscReal u = 2 * PETSC_PI * i / n, v = 2 * PETSC_PI * j / m, rho = R + r * PetscCosReal(v);
@@ -129,7 +129,7 @@ PetscErrorCode CSMeshDataTorus(PetscReal R, PetscReal r, PetscInt n, PetscInt m,
       p[2]         = r * PetscSinReal(v);
     }
   TorusGrid(n, m, md->f);
-  OrientOutward(md);
+  CSMeshDataOrientOutward(md);
   snprintf(md->name, sizeof(md->name), "torus(R=%g,r=%g,n=%" PetscInt_FMT ",m=%" PetscInt_FMT ")", (double)R, (double)r, n, m);
   PetscFunctionReturn(0);
 }
@@ -165,10 +165,10 @@ PetscErrorCode CSMeshDataFlatTorus(PetscReal tau_re, PetscReal tau_im, PetscInt 
   PetscCheck(tau_re == 0, PETSC_COMM_SELF, PETSC_ERR_SUP, "flat torus with tau = %g + %g i: only rectangular conformal classes (tau_re = 0) have a flat realisation as a product of circles in S^3 (use -gen lattice -gen_tau RE,IM)", (double)tau_re, (double)tau_im);
   PetscCheck(tau_im > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "flat torus needs tau_im > 0, got %g", (double)tau_im);
   PetscCheck(n >= 3 && m >= 3, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "flat torus needs n, m >= 3, got %" PetscInt_FMT ", %" PetscInt_FMT, n, m);
-  PetscCall(MeshAlloc("-gen flattorus", (double)n * m, 2 * (double)n * m, md));
+  PetscCall(CSMeshDataAlloc("-gen flattorus", (double)n * m, 2 * (double)n * m, md));
   FlatTorusPositions(tau_im, n, m, md->x);
   TorusGrid(n, m, md->f);
-  OrientOutward(md);
+  CSMeshDataOrientOutward(md);
   snprintf(md->name, sizeof(md->name), "flattorus(tau=%g+%gi,n=%" PetscInt_FMT ",m=%" PetscInt_FMT ")", (double)tau_re, (double)tau_im, n, m);
   PetscFunctionReturn(0);
 }
@@ -191,9 +191,13 @@ static inline PetscInt GridStep(PetscInt a, PetscInt b, PetscInt k)
 PetscErrorCode CSMeshDataLattice(PetscReal tau_re, PetscReal tau_im, PetscInt n, PetscInt m, CSMeshData *md)
 {
   PetscFunctionBeginUser;
-  PetscCheck(tau_im > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "-gen_tau %g,%g: the lattice tau must lie in the upper half-plane (Im tau > 0)", (double)tau_re, (double)tau_im);
+  if (!(tau_im > 0)) { /* PETSc's %g prints 0 as "0." (a trailing point that reads as the sentence's end): C's snprintf */
+    char t[64];
+    snprintf(t, sizeof(t), "%g,%g", (double)tau_re, (double)tau_im);
+    SETERRQ(PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "-gen_tau %s: the lattice tau must lie in the upper half-plane (Im tau > 0)", t);
+  }
   PetscCheck(n >= 3 && m >= 3, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "-gen lattice needs -gen_n, -gen_m >= 3, got %" PetscInt_FMT ", %" PetscInt_FMT, n, m);
-  PetscCall(MeshAlloc("-gen lattice", (double)n * m, 2 * (double)n * m, md));
+  PetscCall(CSMeshDataAlloc("-gen lattice", (double)n * m, 2 * (double)n * m, md));
   FlatTorusPositions(tau_im, n, m, md->x);
   TorusGrid(n, m, md->f);
   if (tau_re > 0) /* quad a b c d = (i,j) (i+1,j) (i+1,j+1) (i,j+1): cut along b d instead of a c */
@@ -204,7 +208,7 @@ PetscErrorCode CSMeshDataLattice(PetscReal tau_re, PetscReal tau_im, PetscInt n,
       t[4] = c;
       t[5] = d;
     }
-  OrientOutward(md);
+  CSMeshDataOrientOutward(md);
   PetscCall(PetscMalloc1(3 * md->nf, &md->len));
   for (PetscInt f = 0; f < md->nf; f++) {
     const PetscInt *t = md->f + 3 * f;
@@ -226,7 +230,7 @@ PetscErrorCode CSMeshDataCylinder(PetscReal radius, PetscReal height, PetscInt n
   PetscFunctionBeginUser;
   PetscCheck(radius > 0 && height > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "cylinder needs radius, height > 0, got %g, %g", (double)radius, (double)height);
   PetscCheck(n >= 3 && m >= 1, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "cylinder needs n >= 3, m >= 1, got %" PetscInt_FMT ", %" PetscInt_FMT, n, m);
-  PetscCall(MeshAlloc("-gen cylinder", (double)n * (m + 1), 2 * (double)n * m, md));
+  PetscCall(CSMeshDataAlloc("-gen cylinder", (double)n * (m + 1), 2 * (double)n * m, md));
   for (PetscInt j = 0; j <= m; j++)
     for (PetscInt i = 0; i < n; i++) {
       PetscReal  u = 2 * PETSC_PI * i / n, *p = md->x + 3 * (j * n + i);
@@ -253,7 +257,7 @@ PetscErrorCode CSMeshDataDisk(PetscReal radius, PetscInt rings, CSMeshData *md)
 
   PetscFunctionBeginUser;
   PetscCheck(radius > 0 && rings >= 1, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "disk needs radius > 0 and rings >= 1, got %g, %" PetscInt_FMT, (double)radius, rings);
-  PetscCall(MeshAlloc("-gen disk", 1 + 3 * (double)rings * (rings + 1), 6 * (double)rings * rings, md));
+  PetscCall(CSMeshDataAlloc("-gen disk", 1 + 3 * (double)rings * (rings + 1), 6 * (double)rings * rings, md));
   md->x[0] = md->x[1] = md->x[2] = 0;
   for (PetscInt k = 1; k <= rings; k++) {
     PetscInt start = 1 + 3 * k * (k - 1);

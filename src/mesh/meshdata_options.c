@@ -9,9 +9,11 @@ typedef enum {
   GEN_FLATTORUS,
   GEN_CYLINDER,
   GEN_DISK,
-  GEN_LATTICE
+  GEN_LATTICE,
+  GEN_SPIKY,
+  GEN_MORIN
 } GenType;
-static const char *const GenNames[] = {"icosphere", "torus", "flattorus", "cylinder", "disk", "lattice"};
+static const char *const GenNames[] = {"icosphere", "torus", "flattorus", "cylinder", "disk", "lattice", "spiky", "morin"};
 
 typedef struct {
   char      path[PETSC_MAX_PATH_LEN];
@@ -19,9 +21,12 @@ typedef struct {
   GenType   gen;
   PetscInt  level, n, m, rings;
   PetscReal radius, R, r, tau_re, tau_im, height, tau[2]; /* tau: -gen lattice */
+  PetscReal spike_h, spike_w, morin_eps;                 /* -gen spiky, -gen morin */
+  PetscBool spike_round;                                  /* -gen_spike_round_class */
   PetscBool project;
   PetscInt  refine;      /* -mesh_refine: 1-to-4 splits after validation (meshdata_refine.c) */
   PetscBool refine_loop; /* -mesh_refine_type loop (default) or midpoint */
+  char      lengths[PETSC_MAX_PATH_LEN]; /* -mesh_lengths FILE: an intrinsic metric (the target conformal class) */
 } MeshSource;
 static const char *const RefineNames[] = {"midpoint", "loop"};
 
@@ -40,9 +45,12 @@ static PetscErrorCode MeshSourceLoad(const MeshSource *src, CSMeshData *md, CSTo
     case GEN_CYLINDER: PetscCall(CSMeshDataCylinder(src->radius, src->height, src->n, src->m, md)); break;
     case GEN_DISK: PetscCall(CSMeshDataDisk(src->radius, src->rings, md)); break;
     case GEN_LATTICE: PetscCall(CSMeshDataLattice(src->tau[0], src->tau[1], src->n, src->m, md)); break;
+    case GEN_SPIKY: PetscCall(CSMeshDataSpikySphere(src->level, src->spike_h, src->spike_w, src->spike_round, md)); break;
+    case GEN_MORIN: PetscCall(CSMeshDataMorin(src->n, src->m, src->morin_eps, md)); break;
     }
   }
   ierr = CSMeshDataValidate(md, topo);
+  if (!ierr && src->lengths[0]) ierr = CSMeshDataReadLengths("-mesh_lengths", src->lengths, md);
   if (!ierr && src->refine) {
     ierr = CSMeshDataRefine(md, src->refine, src->refine_loop);
     if (!ierr) ierr = CSMeshDataValidate(md, topo);
@@ -79,9 +87,12 @@ PetscErrorCode CSMeshDataFromOptions(MPI_Comm comm, const char prefix[], CSMeshD
   src.tau[1]  = 1;
   src.height  = 2;
   src.rings   = 8;
+  src.spike_h   = 1.0;
+  src.spike_w   = 0.5;
+  src.morin_eps = 0.02;
   PetscOptionsBegin(comm, prefix, "Mesh source", NULL);
   PetscCall(PetscOptionsString("-mesh", "Mesh file (.obj, .off, .ply)", "CSMeshDataFromOptions", src.path, src.path, sizeof(src.path), &src.file));
-  PetscCall(PetscOptionsEList("-gen", "Generated mesh", "CSMeshDataFromOptions", GenNames, 6, GenNames[gen], &gen, &genset));
+  PetscCall(PetscOptionsEList("-gen", "Generated mesh", "CSMeshDataFromOptions", GenNames, 8, GenNames[gen], &gen, &genset));
   PetscCall(PetscOptionsInt("-gen_level", "Icosphere: subdivision level", "CSMeshDataIcosphere", src.level, &src.level, NULL));
   PetscCall(PetscOptionsReal("-gen_radius", "Icosphere, cylinder, disk: radius", "CSMeshDataIcosphere", src.radius, &src.radius, NULL));
   PetscCall(PetscOptionsBool("-gen_project", "Icosphere: project the new vertices to the sphere", "CSMeshDataIcosphere", src.project, &src.project, NULL));
@@ -93,15 +104,22 @@ PetscErrorCode CSMeshDataFromOptions(MPI_Comm comm, const char prefix[], CSMeshD
   PetscCall(PetscOptionsReal("-gen_tau_im", "Flat torus: imaginary part of tau", "CSMeshDataFlatTorus", src.tau_im, &src.tau_im, NULL));
   PetscCall(PetscOptionsRealArray("-gen_tau", "Lattice: the conformal class tau = RE,IM (Im tau > 0) of C/(Z + tau Z)", "CSMeshDataLattice", src.tau, &ntau, &tauset));
   PetscCall(PetscOptionsReal("-gen_height", "Cylinder: height", "CSMeshDataCylinder", src.height, &src.height, NULL));
+  PetscCall(PetscOptionsReal("-gen_spike_height", "Spiky sphere: height of the 12 spikes (radius 1)", "CSMeshDataSpikySphere", src.spike_h, &src.spike_h, NULL));
+  PetscCall(PetscOptionsReal("-gen_spike_width", "Spiky sphere: angular half-width of a spike (radians)", "CSMeshDataSpikySphere", src.spike_w, &src.spike_w, NULL));
+  PetscCall(PetscOptionsBool("-gen_spike_round_class", "Spiky sphere: the target conformal class is the round icosphere's (its edge lengths), not the spiky mesh's", "CSMeshDataSpikySphere", src.spike_round, &src.spike_round, NULL));
+  PetscCall(PetscOptionsReal("-gen_morin_perturb", "Morin surface: size of the symmetry-breaking perturbation", "CSMeshDataMorin", src.morin_eps, &src.morin_eps, NULL));
   PetscCall(PetscOptionsInt("-gen_rings", "Disk: number of rings", "CSMeshDataDisk", src.rings, &src.rings, NULL));
+  PetscCall(PetscOptionsString("-mesh_lengths", "File of 3 |F| edge lengths (per face, opposite corners 0, 1, 2): the conformal class the flows' conformal rows target", "CSMeshDataReadLengths", src.lengths, src.lengths, sizeof(src.lengths), NULL));
   PetscCall(PetscOptionsInt("-mesh_refine", "Regular 1-to-4 refinements of the input (file or generator); the refined mesh's conformal class is a flow's constraint", "CSMeshDataRefine", src.refine, &src.refine, NULL));
   PetscCall(PetscOptionsEList("-mesh_refine_type", "Positions of the refined vertices: midpoint (shape kept) or loop (Loop subdivision)", "CSMeshDataRefine", RefineNames, 2, RefineNames[rtype], &rtype, NULL));
   PetscOptionsEnd();
   PetscCheck(src.refine >= 0 && src.refine <= 6, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%smesh_refine %" PetscInt_FMT ": not in [0, 6] (each level multiplies the faces by 4)", pre, src.refine);
   PetscCheck(!tauset || ntau == 2, comm, PETSC_ERR_ARG_WRONG, "-%sgen_tau: give two numbers RE,IM (got %" PetscInt_FMT ")", pre, ntau);
+  PetscCheck(!src.refine || !(gen == GEN_SPIKY && src.spike_round), comm, PETSC_ERR_ARG_INCOMP, "-%smesh_refine with -%sgen_spike_round_class: refine with -%sgen_level instead (the lengths are not refined)", pre, pre, pre);
   PetscCheck(!src.refine || gen != GEN_LATTICE, comm, PETSC_ERR_ARG_INCOMP, "-%smesh_refine with -%sgen lattice: refine with -%sgen_n, -%sgen_m instead (the lattice's lengths are not refined)", pre, pre, pre, pre);
+  PetscCheck(!src.refine || !src.lengths[0], comm, PETSC_ERR_ARG_INCOMP, "-%smesh_refine with -%smesh_lengths: the lengths are given for the unrefined faces", pre, pre);
   src.refine_loop = rtype == 1 ? PETSC_TRUE : PETSC_FALSE;
-  PetscCheck(src.file != genset, comm, PETSC_ERR_ARG_WRONG, "give exactly one of -%smesh FILE and -%sgen icosphere|torus|flattorus|cylinder|disk|lattice (%s)", pre, pre, src.file ? "both were given" : "neither was given");
+  PetscCheck(src.file != genset, comm, PETSC_ERR_ARG_WRONG, "give exactly one of -%smesh FILE and -%sgen icosphere|torus|flattorus|cylinder|disk|lattice|spiky|morin (%s)", pre, pre, src.file ? "both were given" : "neither was given");
   src.gen = (GenType)gen;
   CSRootCall(comm, MeshSourceLoad(&src, md, topo));
   PetscFunctionReturn(0);

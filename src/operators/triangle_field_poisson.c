@@ -2,12 +2,12 @@
    d0^T *1 d0 f = d0^T *1 omega per component, with the lens d0 (H x V) and the halfedge *1 = 1/2 cot of omega's
    own triangles. It is the *1-least-squares fit of df to omega, so an integrable omega = df gives f back up to a
    translation, which is fixed by the centroid of xref. */
-#include "cs_operators_lens.h"
+#include "triangle_field_poisson_impl.h"
 #include "cs_cholmod.h"
 
 /* L = d0^T *1 d0 (the cotan Laplacian of omega's triangles, PSD as a sum of P1 stiffness matrices) with vertex 0
    grounded (its row and column the identity), and B = *1 d0. */
-static PetscErrorCode PoissonOperator(CSMesh m, DM dmH1, Vec star1, Mat *L, Mat *B)
+PetscErrorCode CSTriangleFieldPoissonOperator(CSMesh m, DM dmH1, Vec star1, Mat *L, Mat *B)
 {
   Mat      d0;
   PetscInt rs, ground = 0;
@@ -23,7 +23,7 @@ static PetscErrorCode PoissonOperator(CSMesh m, DM dmH1, Vec star1, Mat *L, Mat 
 }
 
 /* component c of a dmH3 (dmV3) global vector to / from a dmH1 (dmV1) one: the same points own both, 3 dofs each */
-static PetscErrorCode Component(Vec v3, PetscInt c, Vec v1, PetscBool gather)
+PetscErrorCode CSTriangleFieldComponent(Vec v3, PetscInt c, Vec v1, PetscBool gather)
 {
   PetscInt     n;
   PetscScalar *a3, *a1;
@@ -52,7 +52,7 @@ PetscErrorCode CSTriangleFieldReconstruct(CSMesh m, DM dmH1, DM dmH3, Vec omega,
   PetscCall(DMCreateGlobalVector(dmH1, &star1));
   PetscCall(DMCreateGlobalVector(m->dmV1, &star0));
   PetscCall(CSTriangleFieldStars(m, dmH3, omega, dmH1, star1, star0));
-  PetscCall(PoissonOperator(m, dmH1, star1, &L, &B));
+  PetscCall(CSTriangleFieldPoissonOperator(m, dmH1, star1, &L, &B));
   PetscCall(KSPCreate(m->comm, &ksp));
   PetscCall(KSPSetOptionsPrefix(ksp, "trianglefield_poisson_"));
   PetscCall(KSPSetOperators(ksp, L, L));
@@ -67,18 +67,18 @@ PetscErrorCode CSTriangleFieldReconstruct(CSMesh m, DM dmH1, DM dmH3, Vec omega,
   for (PetscInt c = 0; c < 3; c++) {
     PetscScalar sf, sr;
     PetscInt    nv;
-    PetscCall(Component(omega, c, wc, PETSC_TRUE));
+    PetscCall(CSTriangleFieldComponent(omega, c, wc, PETSC_TRUE));
     PetscCall(MatMultTranspose(B, wc, b));
     if (rs == 0) PetscCall(VecSetValue(b, 0, 0.0, INSERT_VALUES)); /* the grounded vertex */
     PetscCall(VecAssemblyBegin(b));
     PetscCall(VecAssemblyEnd(b));
     PetscCall(KSPSolve(ksp, b, f));
-    PetscCall(Component(xref, c, b, PETSC_TRUE));
+    PetscCall(CSTriangleFieldComponent(xref, c, b, PETSC_TRUE));
     PetscCall(VecSum(b, &sr));
     PetscCall(VecSum(f, &sf));
     PetscCall(VecGetSize(f, &nv));
     PetscCall(VecShift(f, (sr - sf) / nv));
-    PetscCall(Component(x, c, f, PETSC_FALSE));
+    PetscCall(CSTriangleFieldComponent(x, c, f, PETSC_FALSE));
   }
   PetscCall(KSPDestroy(&ksp));
   PetscCall(MatDestroy(&L));

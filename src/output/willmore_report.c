@@ -39,6 +39,24 @@ static PetscErrorCode SummaryKeys(CSWillmoreFlow flow, CSOutput *out, const CSWi
   PetscFunctionReturn(0);
 }
 
+
+/* -o of a triangle-field flow (-flow_type trianglefield) writes the Poisson reconstruction of omega, an immersion of
+   omega only when omega is integrable: above -flow_immersion_tol (default 1e-6) of integrability violation the
+   summary is written and the mesh is refused with one line (issue 15: a non-integrable omega where an immersion is
+   required). */
+static PetscErrorCode CheckImmersion(CSWillmoreFlow flow, CSOutput *out, CSMesh mesh, const CSWillmoreFlowInfo *i)
+{
+  PetscReal   tol = 1e-6;
+  const char *prefix;
+  PetscFunctionBeginUser;
+  if (!out->has_out || i->integrability_violation < 0) PetscFunctionReturn(0);
+  PetscCall(CSWillmoreFlowGetOptionsPrefix(flow, &prefix));
+  PetscCall(PetscOptionsGetReal(NULL, prefix, "-immersion_tol", &tol, NULL));
+  if (i->integrability_violation <= tol) PetscFunctionReturn(0);
+  PetscCall(CSOutputAddRunFacts(out, mesh->comm));
+  PetscCall(CSOutputWriteSummary(out, mesh->comm));
+  SETERRQ(mesh->comm, PETSC_ERR_NOT_CONVERGED, "-o %s: the triangle field is not integrable (integrability violation %.2e > -%simmersion_tol %.1e), so its Poisson reconstruction is not an immersion of it; the mesh was not written (run the flow to convergence)", out->out, (double)i->integrability_violation, prefix ? prefix : "", (double)tol);
+}
 PetscErrorCode CSWillmoreFlowReport(CSWillmoreFlow flow, CSOutput *out)
 {
   CSWillmoreFlowInfo            i;
@@ -57,6 +75,7 @@ PetscErrorCode CSWillmoreFlowReport(CSWillmoreFlow flow, CSOutput *out)
   PetscCall(PetscPrintf(mesh->comm, "flow %s: %s after %" PetscInt_FMT " iterations (%s; %" PetscInt_FMT " rejected steps, %" PetscInt_FMT " KSP iterations, %" PetscInt_FMT " edges with guarded I_Q weight), %.3f s; conformal violation %.2e, constraint violation %.2e (largest of the run %.2e), EL residual %.2e\n", type, CSWillmoreFlowReasonConverged(reason) ? "converged" : "NOT converged", i.it, CSWillmoreFlowStopReasons[reason], i.rejections, i.ksp_its_total, i.nguard, i.seconds, (double)i.conformal_violation, (double)i.constraint_violation, (double)i.violation_max, (double)i.el_residual));
   PetscCall(SummaryKeys(flow, out, &i));
   PetscCall(CSOutputAddMeshFacts(out, mesh, x, x0));
+  PetscCall(CheckImmersion(flow, out, mesh, &i));
   PetscCall(CSOutputFinish(out, mesh, x));
   PetscFunctionReturn(0);
 }

@@ -95,6 +95,7 @@ static PetscErrorCode SetFromOptionsTF(CSWillmoreFlow F)
   PetscCall(PetscOptionsReal("-init_amplitude", "-flow_init random: each halfedge vector gets a uniform random vector in [-a, a]^3 times the mean edge length", NULL, d->amp, &d->amp, NULL));
   PetscCall(PetscOptionsReal("-integrability_weight", "Multiplier metric of the integrability rows (d1 omega, face closure, <<Y_i|omega>>) relative to their size; small = stiff", NULL, d->wint, &d->wint, NULL));
   PetscOptionsEnd();
+  PetscCall(CSTFScheduleSetFromOptions(F, d));
   PetscCheck(d->wint > 0 && !PetscIsInfOrNanReal(d->wint), F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sintegrability_weight %g: must be > 0", F->prefix, (double)d->wint);
   PetscFunctionReturn(0);
 }
@@ -107,8 +108,9 @@ static PetscErrorCode CheckOptions(CSWillmoreFlow F)
   PetscFunctionBeginUser;
   PetscCall(PetscStrcmp(F->energy_name, "willmore", &willmore));
   PetscCheck(willmore, F->comm, PETSC_ERR_SUP, "-%senergy %s: -%stype trianglefield minimises the Willmore energy W~ of App. D.1 only", p, F->energy_name, p);
-  PetscCheck(F->conformal, F->comm, PETSC_ERR_SUP, "-%sconformal false: -%stype trianglefield always has the conformal rows (Algorithm 2)", p, p);
-  PetscCheck(!F->area_set && !F->vol_set && !F->points[0] && !F->mobius && !F->rotation && !F->target[0], F->comm, PETSC_ERR_SUP, "-%stype trianglefield: the area, volume, point, Moebius and rotation constraints and -%starget_mesh are not built for triangle fields (App. B is not built)", p, p);
+  ((CSTriangleField *)F->data)->noconf = (PetscBool)!F->conformal; /* unconstrained W~ (Fig. 8): integrability rows only */
+  F->conformal = PETSC_TRUE; /* the multiplier block holds the integrability rows either way */
+  PetscCheck(!F->area_set && !F->mobius && !F->rotation && !F->target[0], F->comm, PETSC_ERR_SUP, "-%stype trianglefield: the area, Moebius and rotation constraints and -%starget_mesh are not built for triangle fields (App. B: volume and points only)", p, p);
   PetscCheck(F->metric_type == CS_FLOW_METRIC_H2, F->comm, PETSC_ERR_SUP, "-%smetric l2: -%stype trianglefield uses the I_H1 metric (Eq. 32) only", p, p);
   PetscFunctionReturn(0);
 }
@@ -120,6 +122,7 @@ static PetscErrorCode SetUpOperators(CSWillmoreFlow F, CSTriangleField *d)
   PetscFunctionBeginUser;
   PetscCall(CSOperatorLensCrossRatio(F->mesh, d->dmH1, &d->C));
   PetscCall(CSOperatorLensD1(F->mesh, d->dmH1, &d1));
+  PetscCall(MatGetLocalSize(d1, &d->nD1, NULL));
   PetscCall(CSOperatorLensFaceClosure(F->mesh, d->dmH1, &S));
   B[0] = d1;
   B[1] = S;
@@ -132,26 +135,30 @@ static PetscErrorCode SetUpOperators(CSWillmoreFlow F, CSTriangleField *d)
   PetscCall(MatMatMult(d->C, d->D, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &d->CD));
   B[0] = d->CD;
   B[1] = d->Klin;
-  PetscCall(CSMatStackRows(2, B, MAT_INITIAL_MATRIX, &d->X));
+  PetscCall(CSMatStackRows(d->noconf ? 1 : 2, d->noconf ? B + 1 : B, MAT_INITIAL_MATRIX, &d->X));
   PetscCall(MatGetLocalSize(d->CD, &d->nH, NULL));
+  if (d->noconf) d->nH = 0;
   PetscCall(MatGetLocalSize(d->Klin, &d->nL, NULL));
   PetscFunctionReturn(0);
 }
 
 /* The rows <<Y_i|omega>> per component (Eq. 13): y_i = CSLensHarmonicDual of the harmonic basis at the input's
-   positions, co-closed, so <<Y_i|df>> = 0 for every f and the rows only remove omega's periods. */
+   positions, co-closed, so <<Y_i|df>> = 0 for every f and the rows only remove omega's periods. The App. B rows
+   (CSTFAppBSetUp) follow them. */
 static PetscErrorCode SetUpHarmonicRows(CSWillmoreFlow F, CSTriangleField *d)
 {
-  CSHarmonicBasis hb;
+  CSHarmonicBasis hb = NULL;
   Vec             y;
   PetscInt        n;
   PetscFunctionBeginUser;
-  if (F->mesh->topo.genus == 0) PetscFunctionReturn(0);
-  PetscCall(CSHarmonicBasisCreate(F->mesh, d->xpos0, &hb));
-  PetscCall(CSHarmonicBasisSetFromOptions(hb));
-  PetscCall(CSHarmonicBasisGetSize(hb, &d->nforms));
-  F->k = 3 * d->nforms;
-  PetscCall(VecDuplicateVecs(F->x, F->k, &F->rows));
+  if (F->mesh->topo.genus > 0) {
+    PetscCall(CSHarmonicBasisCreate(F->mesh, d->xpos0, &hb));
+    PetscCall(CSHarmonicBasisSetFromOptions(hb));
+    PetscCall(CSHarmonicBasisGetSize(hb, &d->nforms));
+  }
+  F->k = 3 * d->nforms + CSTFAppBRows(F);
+  if (F->k) PetscCall(VecDuplicateVecs(F->x, F->k, &F->rows));
+  if (!hb) PetscFunctionReturn(0);
   PetscCall(DMCreateGlobalVector(d->dmH1, &y));
   PetscCall(VecGetLocalSize(y, &n));
   for (PetscInt i = 0; i < d->nforms; i++) {
@@ -229,6 +236,7 @@ static PetscErrorCode SetUpTriangleField(CSWillmoreFlow F)
   if (d->init == CS_TF_INIT_RANDOM) PetscCall(RandomizeField(F, d));
   PetscCall(CreateEnergy(F, d->dmH3));
   PetscCall(SetUpOperators(F, d));
+  PetscCall(CSTFAppBSetUp(F, d));
   PetscCall(SetUpHarmonicRows(F, d));
   PetscCall(SetUpVectors(F, d));
   if (m->lt) PetscCall(CSTriangleFieldLogLengthsFromEdges(m, m->lt, d->dmH1, d->lambda)); /* -gen lattice: the lattice's class */
@@ -310,5 +318,6 @@ PetscErrorCode CSWillmoreFlowCreate_TriangleField(CSWillmoreFlow F)
   d->init              = CS_TF_INIT_DF;
   d->seed              = 1;
   d->amp               = 0.5;
+  d->wrelax            = 1e4;
   PetscFunctionReturn(0);
 }

@@ -13,7 +13,7 @@ PetscErrorCode CSTFConstraints(CSWillmoreFlow F, Vec x, Vec c, PetscReal cx[], P
   PetscFunctionBeginUser;
   PetscCall(CSTriangleFieldLogLengths(F->mesh, d->dmH3, x, d->dmH1, d->lambda));
   PetscCall(VecGetArray(c, &a));
-  { /* conformal rows: C~ lambda - c0 written straight into c's first nH entries */
+  if (!d->noconf) { /* conformal rows: C~ lambda - c0 written straight into c's first nH entries */
     Vec cH;
     PetscCall(VecCreateMPIWithArray(F->comm, 1, d->nH, PETSC_DETERMINE, a, &cH));
     PetscCall(MatMult(d->C, d->lambda, cH));
@@ -25,12 +25,14 @@ PetscErrorCode CSTFConstraints(CSWillmoreFlow F, Vec x, Vec c, PetscReal cx[], P
   for (PetscInt i = 0; i < d->nL; i++) a[d->nH + i] = b[i];
   PetscCall(VecRestoreArrayRead(d->clin, &b));
   PetscCall(VecRestoreArray(c, &a));
-  for (PetscInt j = 0; j < F->k; j++) {
+  for (PetscInt j = 0; j < 3 * d->nforms; j++) {
     PetscScalar v;
     PetscCall(VecDot(F->rows[j], x, &v));
     cx[j] = PetscRealPart(v);
   }
-  if (wantJ) {
+  PetscCall(CSTFAppBEvaluate(F, x, cx + 3 * d->nforms, F->rows ? F->rows + 3 * d->nforms : NULL, wantJ));
+  if (wantJ && d->noconf) F->Xc = d->X; /* = Klin, constant */
+  else if (wantJ) {
     Mat B[2];
     PetscCall(CSOperatorLensLogLengthDerivative(F->mesh, d->dmH1, d->dmH3, x, MAT_REUSE_MATRIX, &d->D));
     PetscCall(MatMatMult(d->C, d->D, MAT_REUSE_MATRIX, PETSC_DEFAULT, &d->CD));
@@ -55,10 +57,11 @@ static PetscErrorCode Violations(CSWillmoreFlow F)
   PetscCall(VecRestoreArrayRead(F->c, &a));
   PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &vc, 1, MPIU_REAL, MPIU_MAX, F->comm));
   PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &vl, 1, MPIU_REAL, MPIU_MAX, F->comm));
-  for (PetscInt j = 0; j < F->k; j++) vy = PetscMax(vy, PetscAbsReal(F->cx[j]));
+  for (PetscInt j = 0; j < 3 * d->nforms; j++) vy = PetscMax(vy, PetscAbsReal(F->cx[j]));
   F->conf  = vc;
   F->integ = PetscMax(vl, vy);
-  F->glob  = F->integ; /* the stopping test takes max(conf, glob): every row */
+  F->glob  = F->integ; /* the stopping test takes max(conf, glob): every row, App. B's included */
+  for (PetscInt j = 3 * d->nforms; j < F->k; j++) F->glob = PetscMax(F->glob, PetscAbsReal(F->cx[j]));
   PetscFunctionReturn(0);
 }
 
@@ -124,16 +127,17 @@ PetscErrorCode CSTFOperators(CSWillmoreFlow F)
   PetscScalar     *a;
   const PetscScalar *b;
   PetscFunctionBeginUser;
+  CSTFScheduleApply(F, d);
   PetscCall(Metric(F));
   PetscCall(CSTriangleFieldQuadDiffMetric(F->mesh, d->dmH3, F->x, d->dmH1, F->wmin, d->iqH, &ng));
   F->nguard = PetscMax(F->nguard, ng);
   PetscCall(VecGetArray(F->iq, &a));
   PetscCall(VecGetArrayRead(d->iqH, &b));
   for (PetscInt i = 0; i < d->nH; i++) a[i] = b[i];
-  for (PetscInt i = d->nH; i < d->nH + d->nL; i++) a[i] = d->wint;
+  for (PetscInt i = d->nH; i < d->nH + d->nL; i++) a[i] = i < d->nH + 3 * d->nD1 ? CSTFIntegrabilityWeight(F, d) : d->wint;
   PetscCall(VecRestoreArrayRead(d->iqH, &b));
   PetscCall(VecRestoreArray(F->iq, &a));
   if (F->k) PetscCall(CSWFGlobalWeights(F));
-  for (PetscInt j = 0; j < F->k; j++) F->gw[j] *= d->wint;
+  for (PetscInt j = 0; j < 3 * d->nforms; j++) F->gw[j] *= CSTFIntegrabilityWeight(F, d); /* not the App. B rows */
   PetscFunctionReturn(0);
 }

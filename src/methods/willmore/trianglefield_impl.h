@@ -26,9 +26,22 @@ typedef struct {
   PetscReal sc;            /* area / 4 pi of the input (size scaling of the metric and of t_mu) */
   PetscInt  nforms;        /* harmonic forms (2g): 3 nforms rows <<Y_i|omega>> */
   PetscReal wint;          /* -flow_integrability_weight: multiplier metric of the integrability rows */
+  PetscInt  nD1;           /* local rows of d1 (the first 3 nD1 linear rows are the lens rows d1 omega) */
+  PetscInt  istart;        /* -flow_integrability_start (trianglefield_schedule.c) */
+  PetscReal wrelax;        /* -flow_integrability_relaxed_weight */
+  PetscReal vmax0;         /* -flow_vmax, lifted while the rows are relaxed */
+  PetscBool noconf;        /* -flow_conformal false: no C~ rows (nH = 0), X = Klin */
 } CSTriangleField;
 
 PETSC_INTERN PetscErrorCode CSTFConstraints(CSWillmoreFlow F, Vec x, Vec c, PetscReal cx[], PetscBool wantJ);
 PETSC_INTERN PetscErrorCode CSTFEvaluate(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSTFOperators(CSWillmoreFlow F);
+/* trianglefield_appb.c: the App. B constraints (volume, points) in F->gc, rows after the 3 nforms period rows */
+PETSC_INTERN PetscErrorCode CSTFAppBSetUp(CSWillmoreFlow F, CSTriangleField *d);
+PETSC_INTERN PetscErrorCode CSTFAppBEvaluate(CSWillmoreFlow F, Vec x, PetscReal cx[], Vec rows[], PetscBool wantJ);
+PETSC_INTERN PetscInt       CSTFAppBRows(CSWillmoreFlow F);
+/* trianglefield_schedule.c: integrability enforced from an iteration on (Fig. 8) */
+PETSC_INTERN PetscErrorCode CSTFScheduleSetFromOptions(CSWillmoreFlow F, CSTriangleField *d);
+PETSC_INTERN PetscReal      CSTFIntegrabilityWeight(CSWillmoreFlow F, CSTriangleField *d);
+PETSC_INTERN void           CSTFScheduleApply(CSWillmoreFlow F, CSTriangleField *d);
 #endif

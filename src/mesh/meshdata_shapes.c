@@ -1,0 +1,82 @@
+/* Generated inputs of soliman2021's genus-0 examples: the spiky sphere (Fig. 8) and a Morin surface (Fig. 15). */
+#include "meshdata_generate_impl.h"
+#include <stdio.h>
+
+/* -gen spiky: the icosphere of -gen_level L, radius 1, with a spike on each of the 12 icosahedron directions s_k
+   (the first 12 vertices: the subdivision appends): r(x) = 1 + h sum_k max(0, 1 - theta_k / w)^2, theta_k the
+   angle between x and s_k. The spike tips are mesh vertices (cone points of the discrete surface). With round,
+   md->len holds the edge lengths of the round icosphere before the spikes: the flows' target class is then the
+   round sphere's (Fig. 8: the spikes must go, which the class of the spiky mesh itself does not allow). */
+PetscErrorCode CSMeshDataSpikySphere(PetscInt level, PetscReal height, PetscReal width, PetscBool round, CSMeshData *md)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(height > -1 && width > 0 && width < 0.55, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "-gen spiky: -gen_spike_height %g must be > -1 and -gen_spike_width %g in (0, 0.55) radians (spikes that do not overlap: the icosahedron's directions are 1.107 apart)", (double)height, (double)width);
+  PetscCall(CSMeshDataIcosphere(level, 1.0, PETSC_TRUE, md));
+  if (round) {
+    PetscCall(PetscMalloc1(3 * md->nf, &md->len));
+    for (PetscInt f = 0; f < md->nf; f++)
+      for (int k = 0; k < 3; k++) {
+        const PetscReal *a = md->x + 3 * md->f[3 * f + (k + 1) % 3], *b = md->x + 3 * md->f[3 * f + (k + 2) % 3];
+        md->len[3 * f + k] = PetscSqrtReal(PetscSqr(a[0] - b[0]) + PetscSqr(a[1] - b[1]) + PetscSqr(a[2] - b[2]));
+      }
+  }
+  for (PetscInt v = 12; v < md->nv; v++) {
+    PetscReal *p = md->x + 3 * v, r = 1;
+    for (PetscInt k = 0; k < 12; k++) {
+      const PetscReal *s = md->x + 3 * k;
+      PetscReal        d = PetscMin(1.0, PetscMax(-1.0, p[0] * s[0] + p[1] * s[1] + p[2] * s[2]));
+      PetscReal        b = PetscMax(0.0, 1.0 - PetscAcosReal(d) / width);
+      r += height * b * b;
+    }
+    for (int c = 0; c < 3; c++) p[c] *= r;
+  }
+  for (PetscInt k = 0; k < 12; k++)
+    for (int c = 0; c < 3; c++) md->x[3 * k + c] *= 1 + height;
+  snprintf(md->name, sizeof(md->name), "spiky(level=%" PetscInt_FMT ",height=%g,width=%g%s)", level, (double)height, (double)width, round ? ",round class" : "");
+  PetscFunctionReturn(0);
+}
+
+/* Apery's Morin surface of order 2 (mathcurve.com "Morin surface", k = 1): for u in [-pi/2, pi/2], v in [0, 2pi),
+     K = cos u / (sqrt2 - sin 2u sin 2v),  X = K (2 cos u cos v + sqrt2 sin u cos v, 2 cos u sin v - sqrt2 sin u
+     sin v, cos u),
+   an immersed sphere (measured: the sine of the angle between X_u and X_v stays >= 0.12 away from the poles, which
+   both map to the origin, tangent to z = 0) invariant under the rotation by pi/2 about z. The symmetry-breaking
+   perturbation (soliman2021 Fig. 15: "slightly perturbed to break the symmetry") adds eps (sin(u + 0.3) cos v,
+   cos^2 u sin 3v, 0.5 cos u sin(v + 1)) to every vertex, eps = -gen_morin_perturb. */
+static void MorinPoint(PetscReal u, PetscReal v, PetscReal eps, PetscReal *x)
+{
+  const PetscReal s2 = PetscSqrtReal(2.0), cu = PetscCosReal(u), su = PetscSinReal(u);
+  const PetscReal K  = cu / (s2 - PetscSinReal(2 * u) * PetscSinReal(2 * v));
+  x[0] = K * (2 * cu * PetscCosReal(v) + s2 * su * PetscCosReal(v)) + eps * PetscSinReal(u + 0.3) * PetscCosReal(v);
+  x[1] = K * (2 * cu * PetscSinReal(v) - s2 * su * PetscSinReal(v)) + eps * cu * cu * PetscSinReal(3 * v);
+  x[2] = K * cu + eps * 0.5 * cu * PetscSinReal(v + 1);
+}
+
+/* n around (v), m - 1 rings (u = -pi/2 + j pi/m, 0 < j < m) and the two poles: 2 + n(m - 1) vertices. */
+PetscErrorCode CSMeshDataMorin(PetscInt n, PetscInt m, PetscReal eps, CSMeshData *md)
+{
+  PetscInt R, *t;
+  PetscFunctionBeginUser;
+  PetscCheck(n >= 8 && m >= 4, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "-gen morin needs -gen_n >= 8 and -gen_m >= 4, got %" PetscInt_FMT ", %" PetscInt_FMT, n, m);
+  R = n * (m - 1);
+  PetscCall(CSMeshDataAlloc("-gen morin", (double)R + 2, 2 * (double)n * (m - 1), md));
+  for (PetscInt j = 1; j < m; j++)
+    for (PetscInt i = 0; i < n; i++) MorinPoint(-PETSC_PI / 2 + j * PETSC_PI / m, 2 * PETSC_PI * i / n, eps, md->x + 3 * ((j - 1) * n + i));
+  MorinPoint(-PETSC_PI / 2, 0, eps, md->x + 3 * R);    /* south pole */
+  MorinPoint(PETSC_PI / 2, 0, eps, md->x + 3 * (R + 1)); /* north pole */
+  t = md->f;
+  for (PetscInt j = 1; j < m - 1; j++)
+    for (PetscInt i = 0; i < n; i++) {
+      PetscInt a = (j - 1) * n + i, b = (j - 1) * n + (i + 1) % n, c = j * n + (i + 1) % n, d = j * n + i;
+      t[0] = a, t[1] = b, t[2] = c, t[3] = a, t[4] = c, t[5] = d;
+      t += 6;
+    }
+  for (PetscInt i = 0; i < n; i++) { /* the fans, oriented as the quads */
+    t[0] = R, t[1] = (i + 1) % n, t[2] = i;
+    t[3] = R + 1, t[4] = (m - 2) * n + i, t[5] = (m - 2) * n + (i + 1) % n;
+    t += 6;
+  }
+  CSMeshDataOrientOutward(md);
+  snprintf(md->name, sizeof(md->name), "morin(n=%" PetscInt_FMT ",m=%" PetscInt_FMT ",perturb=%g)", n, m, (double)eps);
+  PetscFunctionReturn(0);
+}
