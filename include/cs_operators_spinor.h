@@ -51,5 +51,10 @@ PETSC_EXTERN PetscErrorCode CSSpinorDirichlet(CSSpinorSpace sp, Vec psi, PetscRe
 /* The pinch-point test (App. C.1): the number of edges with |psi_jil - tau_ij psi_ijk| >= sqrt(2) (global), and
    the largest |psi_jil - tau_ij psi_ijk| (dmax may be NULL). */
 PETSC_EXTERN PetscErrorCode CSSpinorPinchEdges(CSSpinorSpace sp, Vec psi, PetscInt *npinch, PetscReal *dmax);
+/* The regulariser on triangle fields: E_tau(psi(omega)) for the lift psi(omega) of CSSpinorFromTriangleField
+   (signs nearer to psi_prev, may be NULL), its gradient with respect to omega (dmH3, may be NULL: the adjoint of
+   the lift, exact for the lift as defined, whose rotation depends on omega_0, omega_1 of each face), and the lift
+   itself in psi (dmF4, may be NULL). */
+PETSC_EXTERN PetscErrorCode CSSpinorDirichletTriangleField(CSSpinorSpace sp, DM dmH3, Vec omega, Vec psi_prev, PetscReal *E, Vec grad, Vec psi);
 
 #endif

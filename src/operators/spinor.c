@@ -91,6 +91,61 @@ static void FaceSpinorSigned(const PetscReal dz[6], const PetscReal om[9], const
     for (int c = 0; c < 4; c++) psi[c] = -psi[c];
 }
 
+/* The adjoint of the face lift: given G = dE/dpsi at psi = FaceSpinor(dz, om), the gradient dE/dom (9 reals,
+   om_2 gets none). delta psi = -1/2 psi delta theta for the frame's angular velocity delta theta
+   = 1/2 sum_c e_c x delta e_c (e = n, r1, r2; delta R = [delta theta]x R, q v conj(q) = R v, psi = conj(q)), so
+   dE = gamma . delta theta with gamma = -1/2 Im(conj(psi) G); then back through r2 = n x r1, r1 = N(a - n x b),
+   n = N(a x b) and the linear a, b of om_0, om_1 (N(v) = v/|v|, delta N = (I - N N^T) delta v/|v|). */
+static void FaceSpinorAdjoint(const PetscReal dz[6], const PetscReal om[9], const PetscReal psi[4], const PetscReal G[4], PetscReal gom[9])
+{
+  const PetscReal det = dz[0] * dz[3] - dz[2] * dz[1];
+  PetscReal       a[3], b[3], c[3], n[3], nb[3], v[3], r1[3], r2[3], cg[4], gam[3], gn[3], gr1[3], gr2[3], gv[3], gc[3], ga[3] = {0, 0, 0}, gb[3] = {0, 0, 0}, t[3], lc, lv, pr;
+  for (int k = 0; k < 3; k++) {
+    a[k] = (dz[3] * om[k] - dz[1] * om[3 + k]) / det;
+    b[k] = (-dz[2] * om[k] + dz[0] * om[3 + k]) / det;
+  }
+  Cross(a, b, c);
+  lc = PetscSqrtReal(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+  for (int k = 0; k < 3; k++) n[k] = c[k] / lc;
+  Cross(n, b, nb);
+  for (int k = 0; k < 3; k++) v[k] = a[k] - nb[k];
+  lv = PetscSqrtReal(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  for (int k = 0; k < 3; k++) r1[k] = v[k] / lv;
+  Cross(n, r1, r2);
+  CSQuatConjMul(psi, G, cg);
+  for (int k = 0; k < 3; k++) gam[k] = -0.5 * cg[1 + k];
+  Cross(gam, n, gn); /* dE/de_c = 1/2 gamma x e_c */
+  Cross(gam, r1, gr1);
+  Cross(gam, r2, gr2);
+  for (int k = 0; k < 3; k++) {
+    gn[k] *= 0.5;
+    gr1[k] *= 0.5;
+    gr2[k] *= 0.5;
+  }
+  Cross(r1, gr2, t); /* r2 = n x r1 */
+  for (int k = 0; k < 3; k++) gn[k] += t[k];
+  Cross(gr2, n, t);
+  for (int k = 0; k < 3; k++) gr1[k] += t[k];
+  pr = gr1[0] * r1[0] + gr1[1] * r1[1] + gr1[2] * r1[2]; /* r1 = N(v) */
+  for (int k = 0; k < 3; k++) gv[k] = (gr1[k] - pr * r1[k]) / lv;
+  for (int k = 0; k < 3; k++) ga[k] += gv[k]; /* v = a - n x b */
+  Cross(b, gv, t);
+  for (int k = 0; k < 3; k++) gn[k] -= t[k];
+  Cross(gv, n, t);
+  for (int k = 0; k < 3; k++) gb[k] -= t[k];
+  pr = gn[0] * n[0] + gn[1] * n[1] + gn[2] * n[2]; /* n = N(c), c = a x b */
+  for (int k = 0; k < 3; k++) gc[k] = (gn[k] - pr * n[k]) / lc;
+  Cross(b, gc, t);
+  for (int k = 0; k < 3; k++) ga[k] += t[k];
+  Cross(gc, a, t);
+  for (int k = 0; k < 3; k++) gb[k] += t[k];
+  for (int k = 0; k < 3; k++) {
+    gom[k]     = (dz[3] * ga[k] - dz[2] * gb[k]) / det;
+    gom[3 + k] = (-dz[1] * ga[k] + dz[0] * gb[k]) / det;
+    gom[6 + k] = 0;
+  }
+}
+
 /* Both sides of every local edge: loc (local vector of dmS, k reals per halfedge) holds this rank's faces' sides
    (zeros elsewhere); on return it holds both sides of every local edge. */
 static PetscErrorCode ExchangeSides(DM dmS, Vec loc)
@@ -407,5 +462,54 @@ PetscErrorCode CSSpinorPinchEdges(CSSpinorSpace sp, Vec psi, PetscInt *npinch, P
   PetscCall(DMRestoreLocalVector(sp->dmS4, &sl));
   PetscCall(MPIU_Allreduce(&n, npinch, 1, MPIU_INT, MPI_SUM, m->comm));
   if (dmax) PetscCall(MPIU_Allreduce(&mx, dmax, 1, MPIU_REAL, MPIU_MAX, m->comm));
+  PetscFunctionReturn(0);
+}
+
+/* E_tau(psi(omega)) with psi the lift of omega (signs nearer to psi_prev, NULL: Re psi >= 0), written to psi (dmF4,
+   may be NULL), and its gradient with respect to omega (dmH3; may be NULL) through FaceSpinorAdjoint. */
+PetscErrorCode CSSpinorDirichletTriangleField(CSSpinorSpace sp, DM dmH3, Vec omega, Vec psi_prev, PetscReal *E, Vec grad, Vec psi)
+{
+  CSMesh             m = sp->mesh;
+  Vec                p = psi, G = NULL, ol, gl;
+  const PetscScalar *o, *pa, *ga;
+  PetscScalar       *g;
+  PetscFunctionBeginUser;
+  if (!p) PetscCall(DMGetGlobalVector(sp->dmF4, &p));
+  PetscCall(CSSpinorFromTriangleField(sp, dmH3, omega, psi_prev, p));
+  if (grad) PetscCall(DMGetGlobalVector(sp->dmF4, &G));
+  PetscCall(CSSpinorDirichlet(sp, p, E, G));
+  if (grad) {
+    PetscCall(DMGetLocalVector(dmH3, &ol));
+    PetscCall(DMGlobalToLocal(dmH3, omega, INSERT_VALUES, ol));
+    PetscCall(DMGetLocalVector(dmH3, &gl));
+    PetscCall(VecZeroEntries(gl));
+    PetscCall(VecGetArrayRead(ol, &o));
+    PetscCall(VecGetArray(gl, &g));
+    PetscCall(VecGetArrayRead(p, &pa));
+    PetscCall(VecGetArrayRead(G, &ga));
+    for (CSFaceIter F = CS_FACE_ITER_INIT; CSMeshFaceNext(m, NULL, &F);) {
+      PetscReal dz[6], om[9], q[4], gq[4], gom[9];
+      Chart(sp->l0 + 3 * F.f, dz);
+      for (int a = 0; a < 3; a++)
+        for (int c = 0; c < 3; c++) om[3 * a + c] = PetscRealPart(o[6 * F.e[a] + 3 * CSMeshEdgeSide(m, &F, a) + c]);
+      for (int c = 0; c < 4; c++) {
+        q[c]  = PetscRealPart(pa[4 * F.f + c]);
+        gq[c] = PetscRealPart(ga[4 * F.f + c]);
+      }
+      FaceSpinorAdjoint(dz, om, q, gq, gom);
+      for (int a = 0; a < 3; a++)
+        for (int c = 0; c < 3; c++) g[6 * F.e[a] + 3 * CSMeshEdgeSide(m, &F, a) + c] = gom[3 * a + c];
+    }
+    PetscCall(VecRestoreArrayRead(G, &ga));
+    PetscCall(VecRestoreArrayRead(p, &pa));
+    PetscCall(VecRestoreArray(gl, &g));
+    PetscCall(VecRestoreArrayRead(ol, &o));
+    PetscCall(VecZeroEntries(grad));
+    PetscCall(DMLocalToGlobal(dmH3, gl, ADD_VALUES, grad));
+    PetscCall(DMRestoreLocalVector(dmH3, &gl));
+    PetscCall(DMRestoreLocalVector(dmH3, &ol));
+    PetscCall(DMRestoreGlobalVector(sp->dmF4, &G));
+  }
+  if (!psi) PetscCall(DMRestoreGlobalVector(sp->dmF4, &p));
   PetscFunctionReturn(0);
 }

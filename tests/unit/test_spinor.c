@@ -170,6 +170,43 @@ static PetscErrorCode CheckGradient(CSMesh m, CSSpinorSpace sp, Vec psi, const c
   PetscFunctionReturn(0);
 }
 
+/* d/domega E_tau(psi(omega)) against central differences at omega = df + noise (signs held by psi_prev) */
+static PetscErrorCode CheckLiftGradient(CSMesh m, CSSpinorSpace sp, DM dmH3, Vec df, Vec psi, const char name[])
+{
+  Vec         om, g, v, t;
+  PetscRandom r;
+  PetscReal   E, Ep, Em, h = 1e-6, fd, an, err, nrm;
+  PetscScalar gv;
+  char        what[200];
+  PetscFunctionBeginUser;
+  PetscCall(VecDuplicate(df, &om));
+  PetscCall(VecDuplicate(df, &g));
+  PetscCall(VecDuplicate(df, &v));
+  PetscCall(VecDuplicate(df, &t));
+  PetscCall(CSTestRandom(m->comm, -1, 1, 41, &r));
+  PetscCall(VecSetRandom(v, r));
+  PetscCall(VecNorm(df, NORM_INFINITY, &nrm));
+  PetscCall(VecWAXPY(om, 0.2 * nrm, v, df));
+  PetscCall(VecSetRandom(v, r));
+  PetscCall(PetscRandomDestroy(&r));
+  PetscCall(CSSpinorDirichletTriangleField(sp, dmH3, om, NULL, &E, g, psi));
+  PetscCall(VecDot(g, v, &gv));
+  an = PetscRealPart(gv);
+  PetscCall(VecWAXPY(t, h, v, om));
+  PetscCall(CSSpinorDirichletTriangleField(sp, dmH3, t, psi, &Ep, NULL, NULL));
+  PetscCall(VecWAXPY(t, -h, v, om));
+  PetscCall(CSSpinorDirichletTriangleField(sp, dmH3, t, psi, &Em, NULL, NULL));
+  fd  = (Ep - Em) / (2 * h);
+  err = PetscAbsReal(fd - an) / PetscAbsReal(an);
+  PetscCall(PetscSNPrintf(what, sizeof(what), "%s: d/domega E_tau(psi(omega)) against central differences (omega = df + 20%% noise, E_tau = %.6g)", name, (double)E));
+  PetscCall(CSTestCheck(m->comm, (PetscBool)(err <= 1e-6), what, err, 1e-6));
+  PetscCall(VecDestroy(&om));
+  PetscCall(VecDestroy(&g));
+  PetscCall(VecDestroy(&v));
+  PetscCall(VecDestroy(&t));
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode CheckMesh(CSMesh m, const char name[])
 {
   DM            dmH1, dmH3, dmF4;
@@ -189,6 +226,7 @@ static PetscErrorCode CheckMesh(CSMesh m, const char name[])
   PetscCall(CheckLiftAndPinch(m, sp, dmH3, df, psi, name));
   PetscCall(CheckConformal(m, sp, dmH1, dmH3, lambda0, psi, name));
   PetscCall(CheckGradient(m, sp, psi, name));
+  PetscCall(CheckLiftGradient(m, sp, dmH3, df, psi, name));
   PetscCall(VecDestroy(&psi));
   PetscCall(VecDestroy(&df));
   PetscCall(VecDestroy(&lambda0));
