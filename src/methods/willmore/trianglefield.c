@@ -8,38 +8,63 @@
    The surface of a state is the solution of the Poisson problem L f = d*omega (CSTriangleFieldReconstruct). */
 #include "trianglefield_impl.h"
 
+/* W~(omega) + wspin E_tau(psi(omega)), psi(omega) the face lift with the signs nearest to the accepted state's
+   spinors (the regulariser of App. C.3 on triangle fields). */
+static PetscErrorCode EnergyEval(CSEnergy e, Vec x, PetscReal *E, Vec g)
+{
+  CSTriangleField *d = (CSTriangleField *)e->ctx;
+  PetscReal        Es = 0;
+  Vec              gs = NULL;
+  PetscFunctionBeginUser;
+  PetscCall(CSTriangleFieldWillmore(e->mesh, d->dmH3, x, E, g));
+  if (d->wspin <= 0) PetscFunctionReturn(0);
+  if (g) PetscCall(VecDuplicate(g, &gs));
+  PetscCall(CSSpinorDirichletTriangleField(d->sp, d->dmH3, x, d->psi, &Es, gs, NULL));
+  if (E) *E += d->wspin * Es;
+  if (g) PetscCall(VecAXPY(g, d->wspin, gs));
+  PetscCall(VecDestroy(&gs));
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode EnergyValue(CSEnergy e, Vec x, PetscReal *E)
 {
   PetscFunctionBeginUser;
-  PetscCall(CSTriangleFieldWillmore(e->mesh, (DM)e->ctx, x, E, NULL));
+  PetscCall(EnergyEval(e, x, E, NULL));
   PetscFunctionReturn(0);
 }
 
 static PetscErrorCode EnergyGradient(CSEnergy e, Vec x, PetscReal *E, Vec g)
 {
   PetscFunctionBeginUser;
-  PetscCall(CSTriangleFieldWillmore(e->mesh, (DM)e->ctx, x, E, g));
+  PetscCall(EnergyEval(e, x, E, g));
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode EnergyDestroy(CSEnergy e)
-{
-  DM dm = (DM)e->ctx;
-  PetscFunctionBeginUser;
-  PetscCall(DMDestroy(&dm));
-  PetscFunctionReturn(0);
-}
-
-/* W~(omega) = 1/4 <d*omega, d*omega> (App. D.1) as a CSEnergy on dmH3 vectors. */
-static PetscErrorCode CreateEnergy(CSWillmoreFlow F, DM dmH3)
+/* W~(omega) = 1/4 <d*omega, d*omega> (App. D.1), plus -flow_spin_weight E_tau, as a CSEnergy on dmH3 vectors
+   (ctx: the kind's data, which outlives the evaluations). */
+static PetscErrorCode CreateEnergy(CSWillmoreFlow F, CSTriangleField *d)
 {
   PetscFunctionBeginUser;
   PetscCall(CSEnergyCreateShell(F->mesh, "willmore_trianglefield", &F->energy));
-  PetscCall(PetscObjectReference((PetscObject)dmH3));
-  F->energy->ctx      = dmH3;
+  F->energy->ctx      = d;
   F->energy->value    = EnergyValue;
   F->energy->gradient = EnergyGradient;
-  F->energy->destroy  = EnergyDestroy;
+  PetscFunctionReturn(0);
+}
+
+/* The spinors (App. C): charts and weights of the target metric lambda0 (d->lambda), the spin connection of the
+   input's df (x0), psi = the lift of the start omega with the signs nearest to the input's own spinors. */
+static PetscErrorCode SetUpSpinors(CSWillmoreFlow F, CSTriangleField *d)
+{
+  DM dmF4;
+  PetscFunctionBeginUser;
+  PetscCall(CSSpinorSpaceCreate(F->mesh, d->dmH1, d->lambda, &d->sp));
+  PetscCall(CSSpinorSpaceSetConnection(d->sp, d->dmH3, F->x0));
+  PetscCall(CSSpinorSpaceGetDM(d->sp, &dmF4));
+  PetscCall(DMCreateGlobalVector(dmF4, &d->psi));
+  PetscCall(VecDuplicate(d->psi, &d->psit));
+  PetscCall(CSSpinorFromTriangleField(d->sp, d->dmH3, F->x0, NULL, d->psit));
+  PetscCall(CSSpinorFromTriangleField(d->sp, d->dmH3, F->x, d->psit, d->psi));
   PetscFunctionReturn(0);
 }
 
@@ -93,9 +118,11 @@ static PetscErrorCode SetFromOptionsTF(CSWillmoreFlow F)
   PetscCall(PetscOptionsEnum("-init", "Initial triangle field: df of the input, or df plus a random field", NULL, CSTriangleFieldInits, (PetscEnum)d->init, (PetscEnum *)&d->init, NULL));
   PetscCall(PetscOptionsInt("-seed", "Seed of -flow_init random", NULL, d->seed, &d->seed, NULL));
   PetscCall(PetscOptionsReal("-init_amplitude", "-flow_init random: each halfedge vector gets a uniform random vector in [-a, a]^3 times the mean edge length", NULL, d->amp, &d->amp, NULL));
+  PetscCall(PetscOptionsReal("-spin_weight", "Weight of the spin Dirichlet energy E_tau(psi(omega)) added to W~ (soliman2021 App. C.3); 0: none", NULL, d->wspin, &d->wspin, NULL));
   PetscCall(PetscOptionsReal("-integrability_weight", "Multiplier metric of the integrability rows (d1 omega, face closure, <<Y_i|omega>>) relative to their size; small = stiff", NULL, d->wint, &d->wint, NULL));
   PetscOptionsEnd();
   PetscCheck(d->wint > 0 && !PetscIsInfOrNanReal(d->wint), F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sintegrability_weight %g: must be > 0", F->prefix, (double)d->wint);
+  PetscCheck(d->wspin >= 0 && !PetscIsInfOrNanReal(d->wspin), F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sspin_weight %g: must be >= 0", F->prefix, (double)d->wspin);
   PetscFunctionReturn(0);
 }
 
@@ -227,23 +254,28 @@ static PetscErrorCode SetUpTriangleField(CSWillmoreFlow F)
   PetscCall(VecDuplicate(F->x, &F->x0));
   PetscCall(VecCopy(F->x, F->x0)); /* c0 is the input's class: C~ lambda(df) */
   if (d->init == CS_TF_INIT_RANDOM) PetscCall(RandomizeField(F, d));
-  PetscCall(CreateEnergy(F, d->dmH3));
+  PetscCall(CreateEnergy(F, d));
   PetscCall(SetUpOperators(F, d));
   PetscCall(SetUpHarmonicRows(F, d));
   PetscCall(SetUpVectors(F, d));
   if (m->lt) PetscCall(CSTriangleFieldLogLengthsFromEdges(m, m->lt, d->dmH1, d->lambda)); /* -gen lattice: the lattice's class */
   else PetscCall(CSTriangleFieldLogLengths(m, d->dmH3, F->x0, d->dmH1, d->lambda));
   PetscCall(MatMult(d->C, d->lambda, d->c0));
+  PetscCall(SetUpSpinors(F, d));
   PetscCall(SetUpScaling(F, d));
   PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "%ssaddle_", F->prefix));
   PetscCall(CSSaddleCreate(m, prefix, PETSC_TRUE, PETSC_TRUE, (PetscBool)(F->saddle_mat == CS_SADDLE_MAT_AIJ), F->reuse_its, F->k, &F->saddle));
   PetscFunctionReturn(0);
 }
 
-/* x = xt done: the multipliers mu += dmu, nu += dnu (no restoration by projection: CSWFProject works on positions). */
+/* x = xt done: the multipliers mu += dmu, nu += dnu (no restoration by projection: CSWFProject works on positions);
+   the spinors follow omega (signs nearest to the previous ones). */
 static PetscErrorCode Accept(CSWillmoreFlow F)
 {
+  CSTriangleField *d = (CSTriangleField *)F->data;
   PetscFunctionBeginUser;
+  PetscCall(CSSpinorFromTriangleField(d->sp, d->dmH3, F->x, d->psi, d->psit));
+  PetscCall(VecCopy(d->psit, d->psi));
   PetscCall(VecAXPY(F->mu, 1.0, F->dmu));
   for (PetscInt j = 0; j < F->k; j++) F->nu[j] += F->dnu[j];
   PetscFunctionReturn(0);
@@ -282,6 +314,9 @@ static PetscErrorCode Destroy(CSWillmoreFlow F)
   PetscCall(VecDestroy(&d->clin));
   PetscCall(VecDestroy(&d->xpos0));
   PetscCall(VecDestroy(&d->xpos));
+  PetscCall(VecDestroy(&d->psi));
+  PetscCall(VecDestroy(&d->psit));
+  PetscCall(CSSpinorSpaceDestroy(&d->sp));
   PetscCall(PetscFree(F->data));
   PetscFunctionReturn(0);
 }

@@ -3,6 +3,7 @@
 #define CS_TRIANGLEFIELD_IMPL_H
 #include "willmore_impl.h"
 #include "cs_operators_lens.h"
+#include "cs_operators_spinor.h"
 #include "cs_linalg.h"
 
 typedef enum { CS_TF_INIT_DF, CS_TF_INIT_RANDOM } CSTriangleFieldInit;
@@ -26,6 +27,9 @@ typedef struct {
   PetscReal sc;            /* area / 4 pi of the input (size scaling of the metric and of t_mu) */
   PetscInt  nforms;        /* harmonic forms (2g): 3 nforms rows <<Y_i|omega>> */
   PetscReal wint;          /* -flow_integrability_weight: multiplier metric of the integrability rows */
+  CSSpinorSpace sp;        /* charts of the target metric, spin connection of the input (App. C) */
+  Vec       psi, psit;     /* the face spinors of the accepted omega (signs followed along the flow), a work copy */
+  PetscReal wspin;         /* -flow_spin_weight: the energy is W~ + wspin E_tau(psi(omega)) (App. C.3) */
 } CSTriangleField;
 
 PETSC_INTERN PetscErrorCode CSTFConstraints(CSWillmoreFlow F, Vec x, Vec c, PetscReal cx[], PetscBool wantJ);
