@@ -250,6 +250,7 @@ PetscErrorCode CSWillmoreFlowGetInfo(CSWillmoreFlow F, CSWillmoreFlowInfo *info)
   info->seconds              = now - F->t0;
   info->integrability_violation = F->integ;
   info->pinch_edges          = F->pinch;
+  info->spin_energy          = F->espin;
   info->k                    = F->k;
   info->constraint_values    = F->cx;
   PetscFunctionReturn(0);

@@ -78,6 +78,7 @@ PetscErrorCode CSTFEvaluate(CSWillmoreFlow F)
   F->A      = PetscRealPart(A);
   PetscCall(CSSpinorFromTriangleField(d->sp, d->dmH3, F->x, d->psi, d->psit));
   PetscCall(CSSpinorPinchEdges(d->sp, d->psit, &F->pinch, NULL));
+  PetscCall(CSSpinorDirichlet(d->sp, d->psit, &F->espin, NULL));
   F->V      = 0; /* not tracked: a triangle field encloses no volume until it is integrated (docs/triangle_fields.md) */
   F->spread = 0;
   F->qmax   = 0;

@@ -6,7 +6,7 @@
 #include "cs_operators_spinor.h"
 #include "cs_linalg.h"
 
-typedef enum { CS_TF_INIT_DF, CS_TF_INIT_RANDOM } CSTriangleFieldInit;
+typedef enum { CS_TF_INIT_DF, CS_TF_INIT_RANDOM, CS_TF_INIT_RANDOM_SPINOR } CSTriangleFieldInit;
 PETSC_INTERN const char *const CSTriangleFieldInits[];
 
 typedef struct {
