@@ -71,6 +71,8 @@ typedef struct {
   PetscReal        violation_max;       /* the largest constraint violation (conformal or global) of any iterate */
   CSWillmoreFlowDegeneration degeneration; /* set when the resolution guard stopped the flow */
   PetscReal        integrability_violation; /* trianglefield: max of |d1 omega|, face closure, |<<Y_i|omega>>| (-1: other kinds) */
+  PetscReal        spin_energy;         /* trianglefield: E_tau(psi(omega)) (App. C.3), unweighted */
+  PetscInt         pinch_edges;         /* trianglefield: edges with |psi_jil - tau_ij psi_ijk| >= sqrt 2 (App. C.1; -1: other kinds) */
   PetscInt         k;                   /* global constraint values */
   const PetscReal *constraint_values;
 } CSWillmoreFlowInfo;

@@ -35,6 +35,8 @@ static PetscErrorCode SummaryKeys(CSWillmoreFlow flow, CSOutput *out, const CSWi
   PetscCall(CSJSONAddReal(out->json, "t_final", i->t));
   PetscCall(CSJSONAddReal(out->json, "seconds_per_iteration", i->it ? i->seconds / i->it : 0));
   if (i->integrability_violation >= 0) PetscCall(CSJSONAddReal(out->json, "integrability_violation", i->integrability_violation));
+  if (i->pinch_edges >= 0) PetscCall(CSJSONAddInt(out->json, "pinch_edges", i->pinch_edges));
+  if (i->pinch_edges >= 0) PetscCall(CSJSONAddReal(out->json, "spin_energy", i->spin_energy));
   if (i->k) PetscCall(CSJSONAddRealArray(out->json, "constraint_values", i->k, i->constraint_values));
   PetscFunctionReturn(0);
 }

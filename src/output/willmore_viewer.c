@@ -1,4 +1,5 @@
-/* The ParaView series of a Willmore flow (-viewer_dir DIR, -flow_viewer_every N): one CSViewer for the run, so
+/* The ParaView series of a Willmore flow (-viewer_dir DIR, -flow_viewer_every N and/or -flow_viewer_iterations
+   i1,i2,...): one CSViewer for the run, so
    the steps written during the flow and the final state land in one DIR/series.pvd. With N = 0 (the default)
    only the final state is written, as before the flow had monitors. Every step carries the fields
    mean_curvature (|h|, pointwise, as -task info), vertex_area (point data), face_area and Q (cell data: the
@@ -13,6 +14,7 @@
 struct _n_CSWillmoreViewer {
   CSViewer v;
   PetscInt every, last; /* last: the iteration of the last step written, -1 before any */
+  PetscInt nits, its[32]; /* -flow_viewer_iterations: these iterations too (soliman2021 Fig. 16: 1, 10, 20, 30, 47) */
 };
 
 /* The conformal multiplier (constrained flows): vertex field conformal_force (soliman2021 Eq. 7, 8: the tension
@@ -115,13 +117,17 @@ static PetscErrorCode MonitorViewer(CSWillmoreFlow flow, PetscInt it, void *ctx)
 {
   CSWillmoreViewer V = (CSWillmoreViewer)ctx;
   PetscFunctionBeginUser;
-  if (it % V->every == 0 && it != V->last) PetscCall(WriteStep(flow, V, it));
+  PetscBool listed = PETSC_FALSE;
+  for (PetscInt k = 0; k < V->nits; k++) listed = (PetscBool)(listed || V->its[k] == it);
+  if (((V->every > 0 && it % V->every == 0) || listed) && it != V->last) PetscCall(WriteStep(flow, V, it));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode CSWillmoreFlowMonitorViewerSet(CSWillmoreFlow flow, CSOutput *out, PetscInt every, CSWillmoreViewer *wv)
 {
-  CSMesh mesh;
+  CSMesh      mesh;
+  const char *prefix;
+  PetscBool   listed;
   PetscFunctionBeginUser;
   *wv = NULL;
   if (!out->has_viewer) PetscFunctionReturn(0);
@@ -129,9 +135,14 @@ PetscErrorCode CSWillmoreFlowMonitorViewerSet(CSWillmoreFlow flow, CSOutput *out
   PetscCall(PetscNew(wv));
   (*wv)->every = every;
   (*wv)->last  = -1;
+  (*wv)->nits  = 32;
+  PetscCall(CSWillmoreFlowGetOptionsPrefix(flow, &prefix));
+  PetscCall(PetscOptionsGetIntArray(NULL, prefix, "-viewer_iterations", (*wv)->its, &(*wv)->nits, &listed));
+  if (!listed) (*wv)->nits = 0;
+  for (PetscInt k = 0; k < (*wv)->nits; k++) PetscCheck((*wv)->its[k] >= 0, mesh->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sviewer_iterations: iteration %" PetscInt_FMT " must be >= 0", prefix, (*wv)->its[k]);
   PetscCall(CSViewerCreate(mesh, out->viewer_dir, &(*wv)->v));
   /* the context belongs to the caller (CSWillmoreFlowViewerFinish writes the final state with it) */
-  if (every > 0) PetscCall(CSWillmoreFlowMonitorSet(flow, MonitorViewer, *wv, NULL));
+  if (every > 0 || (*wv)->nits) PetscCall(CSWillmoreFlowMonitorSet(flow, MonitorViewer, *wv, NULL));
   PetscFunctionReturn(0);
 }
 

@@ -23,6 +23,7 @@ checks = [
   ("W = cgd's W to 1e-8", abs(t['energy'] - c['energy']) < 1e-8, (t['energy'], c['energy'])),
   ("W of the reconstructed mesh = W~ to 1e-8", abs(t['willmore'] - t['energy']) < 1e-8, (t['willmore'], t['energy'])),
   ("positions = cgd's to 1e-6 (similarity aligned)", d < 1e-6, d),
+  ("no pinch edges (App. C.1 spinor test)", t.get('pinch_edges') == 0, t.get('pinch_edges')),
 ]
 if name == 'torus': checks.append(("six <<Y_i|omega>> rows", len(t.get('constraint_values', [])) == 6, t.get('constraint_values')))
 bad = 0

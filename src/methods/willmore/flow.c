@@ -87,6 +87,7 @@ static void SetDefaults(CSWillmoreFlow F)
   F->boundary        = CS_FLOW_BOUNDARY_DIRICHLET;
   F->saddle_mat      = CS_SADDLE_MAT_NEST;
   F->integ           = -1;
+  F->pinch           = -1;
 }
 
 PetscErrorCode CSWillmoreFlowCreate(CSMesh mesh, CSWillmoreFlow *flow)
@@ -248,6 +249,8 @@ PetscErrorCode CSWillmoreFlowGetInfo(CSWillmoreFlow F, CSWillmoreFlowInfo *info)
   info->degeneration         = F->degeneration;
   info->seconds              = now - F->t0;
   info->integrability_violation = F->integ;
+  info->pinch_edges          = F->pinch;
+  info->spin_energy          = F->espin;
   info->k                    = F->k;
   info->constraint_values    = F->cx;
   PetscFunctionReturn(0);

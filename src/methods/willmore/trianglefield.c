@@ -7,43 +7,106 @@
    and metric I_H1 (Eq. 32). Integrability (d1, closure, Y rows) is enforced at every step (docs/triangle_fields.md).
    The surface of a state is the solution of the Poisson problem L f = d*omega (CSTriangleFieldReconstruct). */
 #include "trianglefield_impl.h"
+#include "cs_quaternion.h"
+
+static PetscReal HashUniform(PetscInt seed, PetscInt e, PetscInt s, PetscInt c);
+
+/* W~(omega) + wspin E_tau(psi(omega)), psi(omega) the face lift with the signs nearest to the accepted state's
+   spinors (the regulariser of App. C.3 on triangle fields). */
+static PetscErrorCode EnergyEval(CSEnergy e, Vec x, PetscReal *E, Vec g)
+{
+  CSTriangleField *d = (CSTriangleField *)e->ctx;
+  PetscReal        Es = 0;
+  Vec              gs = NULL;
+  PetscFunctionBeginUser;
+  PetscCall(CSTriangleFieldWillmore(e->mesh, d->dmH3, x, E, g));
+  if (d->wspin <= 0) PetscFunctionReturn(0);
+  if (g) PetscCall(VecDuplicate(g, &gs));
+  PetscCall(CSSpinorDirichletTriangleField(d->sp, d->dmH3, x, d->psi, &Es, gs, NULL));
+  if (E) *E += d->wspin * Es;
+  if (g) PetscCall(VecAXPY(g, d->wspin, gs));
+  PetscCall(VecDestroy(&gs));
+  PetscFunctionReturn(0);
+}
 
 static PetscErrorCode EnergyValue(CSEnergy e, Vec x, PetscReal *E)
 {
   PetscFunctionBeginUser;
-  PetscCall(CSTriangleFieldWillmore(e->mesh, (DM)e->ctx, x, E, NULL));
+  PetscCall(EnergyEval(e, x, E, NULL));
   PetscFunctionReturn(0);
 }
 
 static PetscErrorCode EnergyGradient(CSEnergy e, Vec x, PetscReal *E, Vec g)
 {
   PetscFunctionBeginUser;
-  PetscCall(CSTriangleFieldWillmore(e->mesh, (DM)e->ctx, x, E, g));
+  PetscCall(EnergyEval(e, x, E, g));
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode EnergyDestroy(CSEnergy e)
-{
-  DM dm = (DM)e->ctx;
-  PetscFunctionBeginUser;
-  PetscCall(DMDestroy(&dm));
-  PetscFunctionReturn(0);
-}
-
-/* W~(omega) = 1/4 <d*omega, d*omega> (App. D.1) as a CSEnergy on dmH3 vectors. */
-static PetscErrorCode CreateEnergy(CSWillmoreFlow F, DM dmH3)
+/* W~(omega) = 1/4 <d*omega, d*omega> (App. D.1), plus -flow_spin_weight E_tau, as a CSEnergy on dmH3 vectors
+   (ctx: the kind's data, which outlives the evaluations). */
+static PetscErrorCode CreateEnergy(CSWillmoreFlow F, CSTriangleField *d)
 {
   PetscFunctionBeginUser;
   PetscCall(CSEnergyCreateShell(F->mesh, "willmore_trianglefield", &F->energy));
-  PetscCall(PetscObjectReference((PetscObject)dmH3));
-  F->energy->ctx      = dmH3;
+  F->energy->ctx      = d;
   F->energy->value    = EnergyValue;
   F->energy->gradient = EnergyGradient;
-  F->energy->destroy  = EnergyDestroy;
   PetscFunctionReturn(0);
 }
 
-const char *const CSTriangleFieldInits[] = {"df", "random", "CSTriangleFieldInit", "CS_TF_INIT_", NULL};
+/* -flow_init random_spinor: omega = S(l0, psi) (App. C.2) in the target metric l0, psi_f = psi_ref,f r_f with
+   psi_ref the input's face spinors and r_f a rotation by an angle uniform in [-a pi, a pi] about a uniform random
+   axis (hashed from the seed and the face's natural number: the same field on any number of ranks), scaled to the
+   input's size (|omega| = |df|). Conformal rows and face closure hold exactly; the lenses do not close. */
+static PetscErrorCode RandomSpinorField(CSWillmoreFlow F, CSTriangleField *d, Vec psiref)
+{
+  CSMesh       m = F->mesh;
+  Vec          psi;
+  PetscScalar *p;
+  PetscReal    n0, n1;
+  PetscFunctionBeginUser;
+  PetscCall(VecDuplicate(psiref, &psi));
+  PetscCall(VecCopy(psiref, psi));
+  PetscCall(VecGetArray(psi, &p));
+  for (PetscInt f = 0; f < m->nf; f++) {
+    PetscReal ax[3], an = d->amp * PETSC_PI * HashUniform(d->seed, m->faceNatural[f], 2, 3), r[4], q[4], t[4];
+    for (int c = 0; c < 3; c++) ax[c] = HashUniform(d->seed, m->faceNatural[f], 2, c);
+    n0 = PetscSqrtReal(ax[0] * ax[0] + ax[1] * ax[1] + ax[2] * ax[2]);
+    if (n0 == 0) ax[0] = n0 = 1; /* the hash gave the zero vector: any axis */
+    r[0] = PetscCosReal(an / 2);
+    for (int c = 0; c < 3; c++) r[1 + c] = PetscSinReal(an / 2) * ax[c] / n0;
+    for (int c = 0; c < 4; c++) q[c] = PetscRealPart(p[4 * f + c]);
+    CSQuatMul(q, r, t);
+    for (int c = 0; c < 4; c++) p[4 * f + c] = t[c];
+  }
+  PetscCall(VecRestoreArray(psi, &p));
+  PetscCall(CSSpinorTriangleField(d->sp, NULL, psi, d->dmH3, F->x));
+  PetscCall(VecNorm(F->x0, NORM_2, &n0));
+  PetscCall(VecNorm(F->x, NORM_2, &n1));
+  PetscCall(VecScale(F->x, n0 / n1));
+  PetscCall(VecDestroy(&psi));
+  PetscFunctionReturn(0);
+}
+
+/* The spinors (App. C): charts and weights of the target metric lambda0 (d->lambda), the spin connection of the
+   input's df (x0), psi = the lift of the start omega with the signs nearest to the input's own spinors. */
+static PetscErrorCode SetUpSpinors(CSWillmoreFlow F, CSTriangleField *d)
+{
+  DM dmF4;
+  PetscFunctionBeginUser;
+  PetscCall(CSSpinorSpaceCreate(F->mesh, d->dmH1, d->lambda, &d->sp));
+  PetscCall(CSSpinorSpaceSetConnection(d->sp, d->dmH3, F->x0));
+  PetscCall(CSSpinorSpaceGetDM(d->sp, &dmF4));
+  PetscCall(DMCreateGlobalVector(dmF4, &d->psi));
+  PetscCall(VecDuplicate(d->psi, &d->psit));
+  PetscCall(CSSpinorFromTriangleField(d->sp, d->dmH3, F->x0, NULL, d->psit));
+  if (d->init == CS_TF_INIT_RANDOM_SPINOR) PetscCall(RandomSpinorField(F, d, d->psit));
+  PetscCall(CSSpinorFromTriangleField(d->sp, d->dmH3, F->x, d->psit, d->psi));
+  PetscFunctionReturn(0);
+}
+
+const char *const CSTriangleFieldInits[] = {"df", "random", "random_spinor", "CSTriangleFieldInit", "CS_TF_INIT_", NULL};
 
 /* A uniform number in [-1, 1) from (seed, natural edge, side, component): the same field on any number of ranks. */
 static PetscReal HashUniform(PetscInt seed, PetscInt e, PetscInt s, PetscInt c)
@@ -90,13 +153,15 @@ static PetscErrorCode SetFromOptionsTF(CSWillmoreFlow F)
   CSTriangleField *d = (CSTriangleField *)F->data;
   PetscFunctionBeginUser;
   PetscOptionsBegin(F->comm, F->prefix, "Triangle-field flow (soliman2021 Algorithm 2)", NULL);
-  PetscCall(PetscOptionsEnum("-init", "Initial triangle field: df of the input, or df plus a random field", NULL, CSTriangleFieldInits, (PetscEnum)d->init, (PetscEnum *)&d->init, NULL));
+  PetscCall(PetscOptionsEnum("-init", "Initial triangle field: df of the input, df plus a random field, or S(l0, psi) with randomly rotated face spinors (App. C.2)", NULL, CSTriangleFieldInits, (PetscEnum)d->init, (PetscEnum *)&d->init, NULL));
   PetscCall(PetscOptionsInt("-seed", "Seed of -flow_init random", NULL, d->seed, &d->seed, NULL));
-  PetscCall(PetscOptionsReal("-init_amplitude", "-flow_init random: each halfedge vector gets a uniform random vector in [-a, a]^3 times the mean edge length", NULL, d->amp, &d->amp, NULL));
+  PetscCall(PetscOptionsReal("-init_amplitude", "-flow_init random: each halfedge vector gets a uniform random vector in [-a, a]^3 times the mean edge length; random_spinor: each face rotated by up to a pi", NULL, d->amp, &d->amp, NULL));
+  PetscCall(PetscOptionsReal("-spin_weight", "Weight of the spin Dirichlet energy E_tau(psi(omega)) added to W~ (soliman2021 App. C.3); 0: none", NULL, d->wspin, &d->wspin, NULL));
   PetscCall(PetscOptionsReal("-integrability_weight", "Multiplier metric of the integrability rows (d1 omega, face closure, <<Y_i|omega>>) relative to their size; small = stiff", NULL, d->wint, &d->wint, NULL));
   PetscOptionsEnd();
   PetscCall(CSTFScheduleSetFromOptions(F, d));
   PetscCheck(d->wint > 0 && !PetscIsInfOrNanReal(d->wint), F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sintegrability_weight %g: must be > 0", F->prefix, (double)d->wint);
+  PetscCheck(d->wspin >= 0 && !PetscIsInfOrNanReal(d->wspin), F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sspin_weight %g: must be >= 0", F->prefix, (double)d->wspin);
   PetscFunctionReturn(0);
 }
 
@@ -234,7 +299,7 @@ static PetscErrorCode SetUpTriangleField(CSWillmoreFlow F)
   PetscCall(VecDuplicate(F->x, &F->x0));
   PetscCall(VecCopy(F->x, F->x0)); /* c0 is the input's class: C~ lambda(df) */
   if (d->init == CS_TF_INIT_RANDOM) PetscCall(RandomizeField(F, d));
-  PetscCall(CreateEnergy(F, d->dmH3));
+  PetscCall(CreateEnergy(F, d));
   PetscCall(SetUpOperators(F, d));
   PetscCall(CSTFAppBSetUp(F, d));
   PetscCall(SetUpHarmonicRows(F, d));
@@ -242,16 +307,21 @@ static PetscErrorCode SetUpTriangleField(CSWillmoreFlow F)
   if (m->lt) PetscCall(CSTriangleFieldLogLengthsFromEdges(m, m->lt, d->dmH1, d->lambda)); /* -gen lattice: the lattice's class */
   else PetscCall(CSTriangleFieldLogLengths(m, d->dmH3, F->x0, d->dmH1, d->lambda));
   PetscCall(MatMult(d->C, d->lambda, d->c0));
+  PetscCall(SetUpSpinors(F, d));
   PetscCall(SetUpScaling(F, d));
   PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "%ssaddle_", F->prefix));
   PetscCall(CSSaddleCreate(m, prefix, PETSC_TRUE, PETSC_TRUE, (PetscBool)(F->saddle_mat == CS_SADDLE_MAT_AIJ), F->reuse_its, F->k, &F->saddle));
   PetscFunctionReturn(0);
 }
 
-/* x = xt done: the multipliers mu += dmu, nu += dnu (no restoration by projection: CSWFProject works on positions). */
+/* x = xt done: the multipliers mu += dmu, nu += dnu (no restoration by projection: CSWFProject works on positions);
+   the spinors follow omega (signs nearest to the previous ones). */
 static PetscErrorCode Accept(CSWillmoreFlow F)
 {
+  CSTriangleField *d = (CSTriangleField *)F->data;
   PetscFunctionBeginUser;
+  PetscCall(CSSpinorFromTriangleField(d->sp, d->dmH3, F->x, d->psi, d->psit));
+  PetscCall(VecCopy(d->psit, d->psi));
   PetscCall(VecAXPY(F->mu, 1.0, F->dmu));
   for (PetscInt j = 0; j < F->k; j++) F->nu[j] += F->dnu[j];
   PetscFunctionReturn(0);
@@ -290,6 +360,9 @@ static PetscErrorCode Destroy(CSWillmoreFlow F)
   PetscCall(VecDestroy(&d->clin));
   PetscCall(VecDestroy(&d->xpos0));
   PetscCall(VecDestroy(&d->xpos));
+  PetscCall(VecDestroy(&d->psi));
+  PetscCall(VecDestroy(&d->psit));
+  PetscCall(CSSpinorSpaceDestroy(&d->sp));
   PetscCall(PetscFree(F->data));
   PetscFunctionReturn(0);
 }

@@ -79,6 +79,9 @@ PetscErrorCode CSTFEvaluate(CSWillmoreFlow F)
   PetscCall(CSTriangleFieldStars(F->mesh, d->dmH3, F->x, d->dmH1, d->star1, d->star0));
   PetscCall(VecSum(d->star0, &A));
   F->A      = PetscRealPart(A);
+  PetscCall(CSSpinorFromTriangleField(d->sp, d->dmH3, F->x, d->psi, d->psit));
+  PetscCall(CSSpinorPinchEdges(d->sp, d->psit, &F->pinch, NULL));
+  PetscCall(CSSpinorDirichlet(d->sp, d->psit, &F->espin, NULL));
   F->V      = 0; /* not tracked: a triangle field encloses no volume until it is integrated (docs/triangle_fields.md) */
   F->spread = 0;
   F->qmax   = 0;

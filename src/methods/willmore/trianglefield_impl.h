@@ -3,9 +3,10 @@
 #define CS_TRIANGLEFIELD_IMPL_H
 #include "willmore_impl.h"
 #include "cs_operators_lens.h"
+#include "cs_operators_spinor.h"
 #include "cs_linalg.h"
 
-typedef enum { CS_TF_INIT_DF, CS_TF_INIT_RANDOM } CSTriangleFieldInit;
+typedef enum { CS_TF_INIT_DF, CS_TF_INIT_RANDOM, CS_TF_INIT_RANDOM_SPINOR } CSTriangleFieldInit;
 PETSC_INTERN const char *const CSTriangleFieldInits[];
 
 typedef struct {
@@ -31,6 +32,9 @@ typedef struct {
   PetscReal wrelax;        /* -flow_integrability_relaxed_weight */
   PetscReal vmax0;         /* -flow_vmax, lifted while the rows are relaxed */
   PetscBool noconf;        /* -flow_conformal false: no C~ rows (nH = 0), X = Klin */
+  CSSpinorSpace sp;        /* charts of the target metric, spin connection of the input (App. C) */
+  Vec       psi, psit;     /* the face spinors of the accepted omega (signs followed along the flow), a work copy */
+  PetscReal wspin;         /* -flow_spin_weight: the energy is W~ + wspin E_tau(psi(omega)) (App. C.3) */
 } CSTriangleField;
 
 PETSC_INTERN PetscErrorCode CSTFConstraints(CSWillmoreFlow F, Vec x, Vec c, PetscReal cx[], PetscBool wantJ);

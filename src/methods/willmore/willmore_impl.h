@@ -171,6 +171,8 @@ struct _p_CSWillmoreFlow {
   PetscLogDouble        t0;
   PetscReal             E, el, conf, glob, A, V, area_ratio, spread, qmax; /* at x, from the last evaluation */
   PetscReal             integ; /* integrability violation of a triangle field (-1: not a triangle-field kind) */
+  PetscReal             espin; /* E_tau(psi(omega)) of a triangle field (App. C.3), whatever its weight */
+  PetscInt              pinch; /* edges failing the spinor pinch test (soliman2021 App. C.1; -1: not a triangle-field kind) */
   PetscReal             viol_max; /* the largest max(conf, glob) of any evaluated state (before a projection at the stop) */
 };
 
