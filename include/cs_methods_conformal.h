@@ -85,11 +85,13 @@ typedef enum {
    vertices (fixed boundary, else 0); vnorm = |v| (the step's direction before tau); tau (the one the last step
    used: smaller than the option after -flow_max_nonexact halvings); nonexact = |df~ - beta|_*1 / |beta|_*1, the part
    of the last step's transformed edges beta the Poisson step could not integrate (its least-squares residual);
-   halvings = how often the last step was retried with tau / 2; seconds of the last step and since the start. */
+   halvings = how often the last step was retried with tau / 2; q_step = q_mean of the last step's own map (the
+   previous surface to this one; q_mean compounds these; docs/conformal_flow.md "The bumpy torus: why q_mean grows");
+   seconds of the last step and since the start. */
 typedef struct {
   CSConformalMonitorEvent event;
   PetscInt                it;
-  PetscReal               W, EH, gamma, q_mean, q_max, area, res_total, res_inversion, res_exact, closing, log_area_spread, H_spread, boundary_error, vnorm, tau, nonexact;
+  PetscReal               W, EH, gamma, q_mean, q_max, area, res_total, res_inversion, res_exact, closing, log_area_spread, H_spread, boundary_error, vnorm, tau, nonexact, q_step;
   PetscInt                halvings;
   PetscReal               step_seconds, seconds;
 } CSConformalMonitorInfo;
@@ -124,7 +126,7 @@ PETSC_EXTERN PetscErrorCode CSConformalFlowGetQuasiConformal(CSConformalFlow flo
 /* The current state's measures, the initial W, the stepping time (without SetUp) and the options in use. */
 typedef struct {
   CSConformalMonitorInfo state;
-  PetscReal              W_initial, tau, filter_sigma, closing_max;
+  PetscReal              W_initial, tau, filter_sigma, closing_max, q_step_max;
   PetscInt               filter_k;
   PetscBool              inversion, mobius, exactness;
   PetscInt               genus;

@@ -12,7 +12,7 @@ PETSC_EXTERN PetscErrorCode CSConformalFlowMonitorProgress(CSConformalFlow flow,
 PETSC_EXTERN PetscErrorCode CSConformalFlowMonitorSetHistory(CSConformalFlow flow, CSOutput *out);
 PETSC_EXTERN PetscErrorCode CSConformalFlowMonitorSetViewer(CSConformalFlow flow, CSOutput *out, PetscInt every);
 /* Summary keys iterations, converged, stop_reason, willmore (and the mesh facts), willmore_initial, willmore_bs,
-   E_H, gamma, q_mean, q_max, res_total, res_inversion, res_exact, exactness, closing_error_max, log_area_spread, tau, filter_sigma, filter_k, seconds_per_step, seconds_setup;
+   E_H, gamma, q_mean, q_max, res_total, res_inversion, res_exact, exactness, closing_error_max, q_step_max, log_area_spread, tau, filter_sigma, filter_k, seconds_per_step, seconds_setup;
    then -o and -summary. */
 PETSC_EXTERN PetscErrorCode CSConformalFlowReport(CSConformalFlow flow, CSOutput *out);
 

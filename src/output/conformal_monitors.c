@@ -8,7 +8,7 @@ PetscErrorCode CSConformalFlowMonitorProgress(CSConformalFlow flow, const CSConf
   PetscFunctionBeginUser;
   if (s->event == CS_CONFORMAL_MONITOR_END) PetscFunctionReturn(0);
   PetscCall(CSConformalFlowGetMesh(flow, &mesh));
-  PetscCall(PetscPrintf(mesh->comm, "conformal step %3" PetscInt_FMT "  W=%.10e  W/4pi=%.6f  gamma=%.3e  q_mean=%.4f  q_max=%.4f  |v|=%.3e  res=%.1e/%.1e/%.1e  closing=%.1e  nonexact=%.1e  tau=%.3g  %.3f s\n", s->it, (double)s->W, (double)(s->W / (4 * PETSC_PI)), (double)s->gamma, (double)s->q_mean, (double)s->q_max, (double)s->vnorm, (double)s->res_total, (double)s->res_inversion, (double)s->res_exact, (double)s->closing, (double)s->nonexact, (double)s->tau,
+  PetscCall(PetscPrintf(mesh->comm, "conformal step %3" PetscInt_FMT "  W=%.10e  W/4pi=%.6f  gamma=%.3e  q_mean=%.4f  q_max=%.4f  |v|=%.3e  res=%.1e/%.1e/%.1e  closing=%.1e  nonexact=%.1e  q_step=%.4f  tau=%.3g  %.3f s\n", s->it, (double)s->W, (double)(s->W / (4 * PETSC_PI)), (double)s->gamma, (double)s->q_mean, (double)s->q_max, (double)s->vnorm, (double)s->res_total, (double)s->res_inversion, (double)s->res_exact, (double)s->closing, (double)s->nonexact, (double)s->q_step, (double)s->tau,
                         (double)(s->event == CS_CONFORMAL_MONITOR_STEP ? s->step_seconds : 0)));
   PetscFunctionReturn(0);
 }
@@ -22,7 +22,7 @@ static PetscErrorCode MonitorHistory(CSConformalFlow flow, const CSConformalMoni
 {
   HistoryCtx *H = (HistoryCtx *)ctx;
   Vec         x;
-  PetscReal   Wbs, row[21];
+  PetscReal   Wbs, row[22];
   PetscFunctionBeginUser;
   if (s->event == CS_CONFORMAL_MONITOR_END) PetscFunctionReturn(0);
   PetscCall(CSConformalFlowGetSolution(flow, &x));
@@ -48,7 +48,8 @@ static PetscErrorCode MonitorHistory(CSConformalFlow flow, const CSConformalMoni
   row[18] = s->boundary_error;
   row[19] = s->nonexact;
   row[20] = (PetscReal)s->halvings;
-  PetscCall(CSHistoryAppend(H->hist, 21, row));
+  row[21] = s->it > 0 ? s->q_step : 1;
+  PetscCall(CSHistoryAppend(H->hist, 22, row));
   PetscFunctionReturn(0);
 }
 
@@ -70,7 +71,7 @@ PetscErrorCode CSConformalFlowMonitorSetHistory(CSConformalFlow flow, CSOutput *
   if (!out->has_history) PetscFunctionReturn(0);
   PetscCall(CSConformalFlowGetMesh(flow, &mesh));
   PetscCall(PetscNew(&H));
-  PetscCall(CSOutputHistoryCreate(out, mesh->comm, "it,willmore,willmore_bs,E_H,gamma,q_mean,q_max,area,res_total,res_inversion,res_exact,closing_error,log_area_spread,vnorm,tau,step_seconds,seconds,H_spread,boundary_error,nonexact,halvings", 0, &H->hist));
+  PetscCall(CSOutputHistoryCreate(out, mesh->comm, "it,willmore,willmore_bs,E_H,gamma,q_mean,q_max,area,res_total,res_inversion,res_exact,closing_error,log_area_spread,vnorm,tau,step_seconds,seconds,H_spread,boundary_error,nonexact,halvings,q_step", 0, &H->hist));
   PetscCall(CSEnergyCreateWillmoreBS(mesh, CS_BS_BOUNDARY_FIXED, 1e-6, &H->bs));
   PetscCall(CSConformalFlowMonitorSet(flow, MonitorHistory, H, HistoryDestroy));
   PetscFunctionReturn(0);
@@ -159,6 +160,7 @@ PetscErrorCode CSConformalFlowReport(CSConformalFlow flow, CSOutput *out)
   PetscCall(CSJSONAddBool(out->json, "exactness", i.exactness));
   PetscCall(CSJSONAddReal(out->json, "log_area_spread", i.state.log_area_spread));
   PetscCall(CSJSONAddReal(out->json, "closing_error_max", i.closing_max));
+  PetscCall(CSJSONAddReal(out->json, "q_step_max", i.q_step_max));
   PetscCall(CSJSONAddReal(out->json, "H_spread", i.state.H_spread));
   PetscCall(CSJSONAddReal(out->json, "boundary_error", i.state.boundary_error));
   PetscCall(CSJSONAddReal(out->json, "tau", i.tau));

@@ -233,7 +233,9 @@ static PetscErrorCode Start(void *ctx)
 {
   CSConformalFlow F = (CSConformalFlow)ctx;
   PetscFunctionBeginUser;
-  F->s.tau = F->tau;
+  F->s.tau      = F->tau;
+  F->s.q_step   = 1;
+  F->q_step_max = 1;
   PetscCall(CSConformalFlowEvaluate(F));
   F->W0    = F->s.W;
   F->Wprev = F->s.W;

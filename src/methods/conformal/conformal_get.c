@@ -57,6 +57,7 @@ PetscErrorCode CSConformalFlowGetInfo(CSConformalFlow F, CSConformalFlowInfo *in
   info->exactness     = (PetscBool)(F->exactness && F->ng > 0);
   info->genus         = F->mesh->topo.genus;
   info->closing_max   = F->closing_max;
+  info->q_step_max    = F->q_step_max;
   info->setup_seconds = F->loop.t_setup;
   info->step_seconds  = F->loop.t_steps;
   PetscFunctionReturn(0);

@@ -50,7 +50,7 @@ struct _p_CSConformalFlow {
   /* progress */
   CSFlowLoop             loop; /* it, reason, -max_it, -max_seconds, the times (src/methods/flow_loop.c) */
   CSConformalMonitorInfo s;
-  PetscReal              W0, Wprev, closing_max;
+  PetscReal              W0, Wprev, closing_max, q_step_max;
 };
 
 /* conformal_direction.c: H, W, the filtered and projected direction v and the measures of the state */

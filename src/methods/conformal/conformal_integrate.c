@@ -79,6 +79,9 @@ PetscErrorCode CSConformalFlowIntegrate(CSConformalFlow F)
   }
   F->s.tau       = tau;
   F->closing_max = PetscMax(F->closing_max, F->s.closing);
+  /* the step's own distortion (scale-invariant: before the area is restored) */
+  PetscCall(CSGeometryQuasiConformal(F->mesh, F->x, F->xnew, NULL, &F->s.q_step, NULL));
+  F->q_step_max = PetscMax(F->q_step_max, F->s.q_step);
   if (F->keep_area && F->bmode != CS_CONFORMAL_BOUNDARY_FIXED) { /* (the fixed boundary sets the scale) */
     PetscReal A, vol;
     PetscCall(CSGeometryAreaVolume(F->mesh, F->xnew, &A, &vol));
