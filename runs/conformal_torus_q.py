@@ -12,7 +12,8 @@ prints per step:
   u = 1/2 log(A_i / A_i input) (barycentric vertex areas), the mean of h |grad u| per face (h the side of the
   equilateral triangle of the input face's area) and the fit (q - 1) ~ c h |grad u| with its per-face correlation.
 The floor: the piecewise-linear interpolant of the exact conformal map z -> exp(z) has c = 0.59-0.61 on equilateral
-and 0.67-0.71 on right isosceles triangles (--floor prints it).
+and 0.67-0.71 on right isosceles triangles, 0.70 and 0.76 for right triangles with legs 1.5:1 and 2:1
+(--floor prints it).
   python3 runs/conformal_torus_q.py DIR [R]     (dense linear algebra: ~3 s per step at 2048 vertices)
   python3 runs/conformal_torus_q.py --floor"""
 import re, sys, glob, os
@@ -75,7 +76,8 @@ def scale_gradient(P0, P, C):
     return np.linalg.norm(g, axis=1) * np.sqrt(A0 * 4 / np.sqrt(3))
 
 def floor():
-    for name, tri in [("equilateral", np.array([0, 1, 0.5 + 0.5j * np.sqrt(3)])), ("right isosceles", np.array([0, 1, 1j]))]:
+    for name, tri in [("equilateral", np.array([0, 1, 0.5 + 0.5j * np.sqrt(3)])), ("right isosceles", np.array([0, 1, 1j])),
+                      ("right, legs 1.5:1", np.array([0, 1.5, 1j])), ("right, legs 2:1", np.array([0, 2, 1j]))]:
         for h in [0.05, 0.1, 0.2]:
             r = []
             for th in np.linspace(0, 2 * np.pi, 24, endpoint=False):
