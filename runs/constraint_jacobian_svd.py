@@ -78,6 +78,7 @@ def main():
     p = U.T @ c
     print("violation |c|_inf %.3e |c|_2 %.3e; along the smallest singular vector %.3e, along the other %d %.3e, outside the range %.3e"
           % (abs(c).max(), np.linalg.norm(c), abs(p[r - 1]), r - 1, np.linalg.norm(p[:r - 1]), np.linalg.norm(p[r:])))
+    print("violation along the 8 smallest singular vectors: %s" % " ".join("%.1e" % abs(x) for x in p[r - 8:r]))
     if len(sys.argv) > 3:
         n = int(sys.argv[3])
         u = U[:, r - 1] * np.sign(U[:, r - 1].sum() or 1)
