@@ -58,4 +58,8 @@ PETSC_EXTERN PetscErrorCode CSVecBlockNorms(Vec x, PetscInt bs, Vec norms);
 PETSC_EXTERN PetscErrorCode CSMatStackRows(PetscInt n, Mat B[], MatReuse reuse, Mat *X);
 /* B = A (x) I_bs on interlaced vectors, B(bs i + c, bs j + c) = A(i, j), as AIJ; MAT_REUSE_MATRIX refills *B. */
 PETSC_EXTERN PetscErrorCode CSMatKronIdentity(Mat A, PetscInt bs, MatReuse reuse, Mat *B);
+/* After the PC's SetFromOptions: if pc is a MUMPS LU/Cholesky without -<prefix>mat_mumps_icntl_7, order with AMD
+   (ICNTL(7) = 0; src/linalg/mumps_ordering.c). Needs operators: A (of the size and type of the matrix to be
+   factored) is set when pc has none yet. */
+PETSC_EXTERN PetscErrorCode CSMumpsDefaultOrdering(PC pc, Mat A);
 #endif
