@@ -45,6 +45,9 @@ typedef struct {
   PetscBool   have_pc;
   CSSchurSolveType schur; /* -<prefix>schur_solver: direct (default) or an iterative Schur solve (docs/scaling.md) */
   PetscReal   schur_rtol; /* -<prefix>schur_rtol of the iterative Schur solve */
+  CSMetric   *metric;     /* the flow's (borrowed): its terms build the unassembled S for bddc */
+  PetscReal   t;          /* this step's t */
+  Mat         Sis;        /* bddc: S unassembled (MATIS), the user Schur preconditioner */
 } CSSaddle;
 
 /* prefix: of the KSP; reuse_its < 0: the default (10 with the edge block, else 0) */
