@@ -16,7 +16,7 @@
 #   the substructuring forced (-pc_cssubchol_max_interface_ratio 1e9), mumps = MUMPS Cholesky with AMD ordering,
 #   primal = the iterative path with one hypre V-cycle inside csh2 (-flow_saddle_fieldsplit_1_h2_pc_type hypre;
 #   only up to PRIMAL_MAXNP ranks: hundreds of CG iterations, each with global reductions, crawl when
-#   oversubscribed): outer and Schur iterations, memory per rank (-memory_view: maximum process memory, max and
+#   oversubscribed), bddc = CG + PCBDDC (deluxe, adaptive coarse space) on S as a MATIS: outer and Schur iterations, memory per rank (-memory_view: maximum process memory, max and
 #   mean over ranks), MPI message volume (-log_view, total), the interface (cssubchol's -ksp_view: all ranks and
 #   the largest local part) and which engine ran. Time on 1-2 ranks only means anything.
 # The machine is shared (2 cores, load 10-20 while this was written): seconds are upper bounds, iteration counts
@@ -29,7 +29,9 @@ export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OPENBLAS_NUM_TH
 LEVELS=${LEVELS:-"4 5 6 7"}; CS=${CS:-"1 100 1000 4000"}; NITER=${NITER:-2}; MULT_MAX=${MULT_MAX:-5}
 CFIX=${CFIX:-1000}; PATHS=${PATHS:-"direct direct+reuse primal multiplier"}
 MULT_CMAX=${MULT_CMAX:-100}; NPS=${NPS:-"1 2 4 8 16"}; RLEVELS=${RLEVELS:-"4 5"}
-RPATHS=${RPATHS:-"auto cssubchol mumps primal"}; PRIMAL_MAXNP=${PRIMAL_MAXNP:-2}
+RPATHS=${RPATHS:-"auto cssubchol mumps primal bddc"}
+# Part 3 (PART=bddc): BDDC's CG iterations of the first Schur solve (t = 1, t_mu = c) against size and c on BNP ranks
+BLEVELS=${BLEVELS:-"3 4 5"}; BCS=${BCS:-"1 100 1000 4000"}; BNP=${BNP:-4}; bcsv=runs/study_scaling_bddc.csv; PRIMAL_MAXNP=${PRIMAL_MAXNP:-2}
 FLEVELS=${FLEVELS:-"3 4 5 6"}; FCS=${FCS:-"1 10 100 1000 4000"}; fcsv=runs/study_scaling_first.csv
 PART=${PART:-all} # first | serial | ranks | all | report (the tables and figures from the csv files already there)
 out=runs/study_scaling.md; csv=runs/study_scaling.csv; rcsv=runs/study_scaling_ranks.csv
@@ -86,6 +88,7 @@ rank_args() { # path -> options
     cssubchol) echo "$v -flow_saddle_fieldsplit_1_pc_cssubchol_max_interface_ratio 1e9" ;;
     mumps) echo "$v -flow_saddle_fieldsplit_1_pc_type cholesky -flow_saddle_fieldsplit_1_pc_factor_mat_solver_type mumps -flow_saddle_fieldsplit_1_mat_mumps_icntl_7 0" ;;
     primal) echo "-flow_saddle_schur_solver primal -flow_saddle_fieldsplit_1_h2_pc_type hypre -flow_saddle_fieldsplit_1_ksp_converged_reason" ;;
+    bddc) echo "-flow_saddle_schur_solver bddc -flow_saddle_fieldsplit_1_ksp_converged_reason" ;; # rebuilt every step (-flow_factor_reuse_its 0 in every run here)
   esac
 }
 rank_run() { # level np path
@@ -101,7 +104,7 @@ rank_run() { # level np path
   G=$(grep -m1 -oE 'interface (has )?[0-9]+ dofs' "$tmp/log" | grep -oE '[0-9]+')
   gp=$(grep -m1 -oE 'up to [0-9]+ (interface dofs )?per' "$tmp/log" | grep -oE '[0-9]+')
   engine=$p
-  case $p in auto|cssubchol) if grep -q "MUMPS Cholesky instead" "$tmp/log"; then engine=MUMPS; elif [ "$np" = 1 ]; then engine=CHOLMOD; else engine=cssubchol; fi ;; mumps) engine=MUMPS ;; primal) engine="CG+csh2(hypre)" ;; esac
+  case $p in auto|cssubchol) if grep -q "MUMPS Cholesky instead" "$tmp/log"; then engine=MUMPS; elif [ "$np" = 1 ]; then engine=CHOLMOD; else engine=cssubchol; fi ;; mumps) engine=MUMPS ;; primal) engine="CG+csh2(hypre)" ;; bddc) engine="CG+BDDC(deluxe, adaptive)" ;; esac
   echo "$p,$L,$((20 * 4 ** L)),$np,,${schur:-$outer},$spi,$outer,,${mem:-},${mean:-},${msg:-},${G:-},${gp:-},$engine" >> "$rcsv"
   echo "level $L $np ranks $p ($engine): its ${schur:-$outer} outer $outer s/step $spi MB/rank max $mem mean $mean msg bytes $msg interface ${G:--} (per rank ${gp:--})"
 }
@@ -114,7 +117,19 @@ if [ "$PART" = ranks ] || [ "$PART" = all ]; then
   done; done; done
 fi
 
-[ "$PART" = first ] || [ "$PART" = serial ] || [ "$PART" = ranks ] && exit 0 # PART=report afterwards
+if [ "$PART" = bddc ]; then
+  echo "series,level,faces,ranks,c,its,seconds,max_MB_per_rank" > "$bcsv"
+  for L in $BLEVELS; do for c in $BCS; do
+    if ! mpirun --oversubscribe -n "$BNP" bin/confsurf -task flow $(GEN "$L") -flow_t 1 -flow_t_max 1 -flow_t_mu "$c" -flow_max_it 1 -flow_rtol 0 -flow_factor_reuse_its 0 $(rank_args bddc) -memory_view > "$tmp/log" 2>&1; then
+      echo "FAILED: bddc level $L c $c"; tail -3 "$tmp/log"; continue
+    fi
+    its=$(awk '/flow_saddle_fieldsplit_1_ solve converged/ { print $NF; exit }' "$tmp/log")
+    mem=$(awk '/^Maximum \(over computational time\) process memory/ { for (i = 1; i <= NF; i++) if ($i == "max") printf "%.0f", $(i + 1) / 1048576; exit }' "$tmp/log")
+    echo "bddc first solve,$L,$((20 * 4 ** L)),$BNP,$c,$its,,$mem" >> "$bcsv"
+    echo "bddc level $L c $c on $BNP ranks: CG its $its, max MB/rank $mem"
+  done; done
+fi
+[ "$PART" = first ] || [ "$PART" = serial ] || [ "$PART" = ranks ] || [ "$PART" = bddc ] && exit 0 # PART=report afterwards
 # tables and figures
 python3 - "$csv" "$rcsv" "$CFIX" "$NITER" > "$out" <<'EOF'
 import csv, sys, os
@@ -137,6 +152,13 @@ if os.path.exists(first):
     print("|---|---|---|---|---|---|---|")
     for r in sorted(csv.DictReader(open(first)), key=lambda r: (float(r["c"]), int(r["level"]))):
         print("| %s | %s | %s | %s | %s | %s | %.3g |" % (r["level"], r["faces"], r["c"], r["its"], r["sv_max"], r["sv_min"], float(r["sv_max"]) / float(r["c"])))
+bddc = sys.argv[2].replace("_ranks.csv", "_bddc.csv")
+if os.path.exists(bddc):
+    print("\n## BDDC (deluxe scaling, adaptive coarse space): the first Schur solve (t = 1, t_mu = c)\n")
+    print("| level | faces | ranks | c | CG its | max MB per rank |")
+    print("|---|---|---|---|---|---|")
+    for r in sorted(csv.DictReader(open(bddc)), key=lambda r: (float(r["c"]), int(r["level"]))):
+        print("| %s | %s | %s | %s | %s | %s |" % (r["level"], r["faces"], r["ranks"], r["c"], r["its"], r["max_MB_per_rank"]))
 if os.path.exists(sys.argv[2]):
     print("\n## Ranks (oversubscribed beyond 2; time meaningful on 1-2 ranks only)\n")
     print("| path | engine | faces | ranks | Schur its | outer | s/step | MB per rank max / mean | MPI message bytes (total) | interface dofs (all / largest local) |")
