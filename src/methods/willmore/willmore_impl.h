@@ -32,6 +32,7 @@ typedef struct {
   Vec        *B, *W;      /* k rows, k solutions (each an (E+3V) or 3V vector) */
   PetscReal  *G;
   PetscInt    reuse_its;  /* keep the preconditioner while the last solve took <= this many its */
+  PetscBool   reuse_set;  /* reuse_its given by the user (-flow_factor_reuse_its), not the default */
   PetscInt    last_its;   /* Krylov iterations of the last solve */
   PetscInt    setups;     /* preconditioner (factorisation) builds so far */
   PetscInt    solves;     /* linear solves (right-hand sides) so far */
