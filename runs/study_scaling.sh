@@ -31,6 +31,9 @@ CFIX=${CFIX:-1000}; PATHS=${PATHS:-"direct direct+reuse primal multiplier"}
 MULT_CMAX=${MULT_CMAX:-100}; NPS=${NPS:-"1 2 4 8 16"}; RLEVELS=${RLEVELS:-"4 5"}
 RPATHS=${RPATHS:-"auto cssubchol mumps primal bddc"}
 # Part 3 (PART=bddc): BDDC's CG iterations of the first Schur solve (t = 1, t_mu = c) against size and c on BNP ranks
+# Part 4 (PART=large): one CGD step, one Bobenko-Schroeder step and one spin transformation on icosphere levels
+#   LLEVELS, on 1 and 2 ranks: wall seconds and peak memory per rank (-memory_view, max over ranks)
+LLEVELS=${LLEVELS:-7}; lcsv=runs/study_scaling_large.csv
 BLEVELS=${BLEVELS:-"3 4 5"}; BCS=${BCS:-"1 100 1000 4000"}; BNP=${BNP:-4}; bcsv=runs/study_scaling_bddc.csv; PRIMAL_MAXNP=${PRIMAL_MAXNP:-2}
 FLEVELS=${FLEVELS:-"3 4 5 6"}; FCS=${FCS:-"1 10 100 1000 4000"}; fcsv=runs/study_scaling_first.csv
 PART=${PART:-all} # first | serial | ranks | all | report (the tables and figures from the csv files already there)
@@ -129,7 +132,25 @@ if [ "$PART" = bddc ]; then
     echo "bddc level $L c $c on $BNP ranks: CG its $its, max MB/rank $mem"
   done; done
 fi
-[ "$PART" = first ] || [ "$PART" = serial ] || [ "$PART" = ranks ] || [ "$PART" = bddc ] && exit 0 # PART=report afterwards
+large_args() { # what level -> options
+  case $1 in
+    cgd) echo "-task flow $(GEN "$2") -flow_max_it 1 -flow_rtol 0" ;;
+    bs) echo "-task flow -flow_type bs $(GEN "$2") -bs_max_it 1 -bs_atol 0 -bs_rtol 0" ;;
+    spin) echo "-task spin -gen icosphere -gen_level $2 -rho_bump_center 0,0,1 -rho_bump_radius 0.5 -rho_bump_height 3" ;;
+  esac
+}
+if [ "$PART" = large ]; then
+  echo "series,level,faces,ranks,seconds,max_MB_per_rank" > "$lcsv"
+  for L in $LLEVELS; do for w in cgd bs spin; do for np in 1 2; do
+    s0=$(date +%s.%N)
+    if ! mpirun -n "$np" bin/confsurf $(large_args "$w" "$L") -memory_view > "$tmp/log" 2>&1; then echo "FAILED: large $w level $L $np ranks"; tail -3 "$tmp/log"; continue; fi
+    sec=$(echo "$(date +%s.%N) - $s0" | bc)
+    mem=$(awk '/^Maximum \(over computational time\) process memory/ { for (i = 1; i <= NF; i++) if ($i == "max") printf "%.0f", $(i + 1) / 1048576; exit }' "$tmp/log")
+    echo "$w,$L,$((20 * 4 ** L)),$np,$sec,$mem" >> "$lcsv"
+    echo "large: $w level $L on $np ranks: $sec s wall, max MB per rank $mem"
+  done; done; done
+fi
+[ "$PART" = first ] || [ "$PART" = serial ] || [ "$PART" = ranks ] || [ "$PART" = bddc ] || [ "$PART" = large ] && exit 0 # PART=report afterwards
 # tables and figures
 python3 - "$csv" "$rcsv" "$CFIX" "$NITER" > "$out" <<'EOF'
 import csv, sys, os
