@@ -39,14 +39,16 @@ PETSC_EXTERN PetscErrorCode CSMatShiftedShared(Mat A, PetscScalar shift, MatReus
    SetDefaults (before the PC's SetFromOptions): fieldsplit Schur, full factorisation, Schur preconditioner a11.
    SetSplits: the splits in the type's order (isE the multiplier/edge rows, isV the positions). SetSubSolvers (after
    the PC's first KSPSetUp): the split solvers' defaults, then their SetFromOptions; schur_rtol is the Schur
-   solve's relative tolerance. */
+   solve's relative tolerance. "bddc" = CG + PCBDDC on S as a MATIS (the caller assembles it, CSMatISFromSquares,
+   and hands it to the fieldsplit as the user Schur preconditioner; SetDefaults sets schur_precondition user). */
 typedef enum {
   CS_SCHUR_DIRECT,
   CS_SCHUR_PRIMAL,
-  CS_SCHUR_MULTIPLIER
+  CS_SCHUR_MULTIPLIER,
+  CS_SCHUR_BDDC
 } CSSchurSolveType;
 PETSC_EXTERN const char *const CSSchurSolveTypes[];
-PETSC_EXTERN PetscErrorCode    CSSchurIterativeSetDefaults(PC pc);
+PETSC_EXTERN PetscErrorCode    CSSchurIterativeSetDefaults(PC pc, CSSchurSolveType type);
 PETSC_EXTERN PetscErrorCode    CSSchurIterativeSetSplits(PC pc, CSSchurSolveType type, IS isE, IS isV);
 PETSC_EXTERN PetscErrorCode    CSSchurIterativeSetSubSolvers(PC pc, CSSchurSolveType type, PetscReal schur_rtol);
 
@@ -58,4 +60,12 @@ PETSC_EXTERN PetscErrorCode CSVecBlockNorms(Vec x, PetscInt bs, Vec norms);
 PETSC_EXTERN PetscErrorCode CSMatStackRows(PetscInt n, Mat B[], MatReuse reuse, Mat *X);
 /* B = A (x) I_bs on interlaced vectors, B(bs i + c, bs j + c) = A(i, j), as AIJ; MAT_REUSE_MATRIX refills *B. */
 PETSC_EXTERN PetscErrorCode CSMatKronIdentity(Mat A, PetscInt bs, MatReuse reuse, Mat *B);
+/* After the PC's SetFromOptions: if pc is a MUMPS LU/Cholesky without -<prefix>mat_mumps_icntl_7, order with AMD
+   (ICNTL(7) = 0; src/linalg/mumps_ordering.c). Needs operators: A (of the size and type of the matrix to be
+   factored) is set when pc has none yet. */
+PETSC_EXTERN PetscErrorCode CSMumpsDefaultOrdering(PC pc, Mat A);
+/* S = diag(d) + sum_k A_k^T diag(w_k) A_k (d, w_k >= 0; A_k MPIAIJ with d's column layout, w_k with A_k's row layout)
+   as an unassembled MATIS for PCBDDC: rank p holds diag(d) on its owned dofs and the terms of A_k's owned rows
+   (src/linalg/mat_is_squares.c). MAT_REUSE_MATRIX replaces the local matrix of *S (same pattern). */
+PETSC_EXTERN PetscErrorCode CSMatISFromSquares(Vec d, PetscInt n, Mat A[], Vec w[], MatReuse reuse, Mat *S);
 #endif

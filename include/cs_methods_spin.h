@@ -97,8 +97,6 @@ PETSC_EXTERN PetscErrorCode CSSpinSetUpScalarPC(CSSpin spin, Vec x, CSRhoLocatio
 /* PC type "csspinlap" (spin_precond.c): the scalar preconditioner of -spin_solver precond; registered by CSInitializePackage */
 #define PCCSSPINLAP "csspinlap"
 PETSC_EXTERN PetscErrorCode PCCreate_CSSpinLap(PC);
-/* If pc is a MUMPS factorisation without a user ordering, choose AMD (cleared again at CSSpinDestroy). */
-PETSC_EXTERN PetscErrorCode CSSpinMumpsDefaultOrdering(PC pc, Mat A);
 PETSC_EXTERN PetscErrorCode CSSpinCreate(CSMesh mesh, CSSpin *spin);
 PETSC_EXTERN PetscErrorCode CSSpinSetFromOptions(CSSpin spin);
 /* Boundary tangents (Sec. 5.7): Ttarget is a dmV3 global vector (read on boundary vertices), NULL for "keep". */

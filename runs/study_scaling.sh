@@ -11,10 +11,14 @@
 # Part 0 (serial, PART=first): the first Schur solve of the first step only (t = 1 and t_mu = c exactly: later
 #   solves of a step see rejected steps' smaller t and the restoration's t_mu = -flow_pgd_t_mu), primal path: CG
 #   iterations and the extreme singular values of the preconditioned Schur operator, levels FLEVELS, c in FCS.
-# Part 2 (ranks, oversubscribed): the default on NPS ranks at level RLEVEL, and the primal path with one hypre
-#   V-cycle inside csh2 (-flow_saddle_fieldsplit_1_h2_pc_type hypre): outer and Schur iterations, memory per rank
-#   (-memory_view: maximum process memory, max over ranks), MPI message volume (-log_view), interface size of
-#   cssubchol (-ksp_view). Time on 1-2 ranks only means anything.
+# Part 2 (ranks, oversubscribed): on NPS ranks at levels RLEVELS, the Schur complement's engines RPATHS:
+#   auto = the default (cssubchol, which switches to MUMPS where its dense interface does not fit), cssubchol =
+#   the substructuring forced (-pc_cssubchol_max_interface_ratio 1e9), mumps = MUMPS Cholesky with AMD ordering,
+#   primal = the iterative path with one hypre V-cycle inside csh2 (-flow_saddle_fieldsplit_1_h2_pc_type hypre;
+#   only up to PRIMAL_MAXNP ranks: hundreds of CG iterations, each with global reductions, crawl when
+#   oversubscribed), bddc = CG + PCBDDC (deluxe, adaptive coarse space) on S as a MATIS: outer and Schur iterations, memory per rank (-memory_view: maximum process memory, max and
+#   mean over ranks), MPI message volume (-log_view, total), the interface (cssubchol's -ksp_view: all ranks and
+#   the largest local part) and which engine ran. Time on 1-2 ranks only means anything.
 # The machine is shared (2 cores, load 10-20 while this was written): seconds are upper bounds, iteration counts
 # are reliable. Writes runs/study_scaling.md, runs/study_scaling*.csv and runs/study_scaling_{size,c,ranks}.png.
 #   bash runs/study_scaling.sh
@@ -24,7 +28,13 @@ cd "$(dirname "$0")/.."
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1
 LEVELS=${LEVELS:-"4 5 6 7"}; CS=${CS:-"1 100 1000 4000"}; NITER=${NITER:-2}; MULT_MAX=${MULT_MAX:-5}
 CFIX=${CFIX:-1000}; PATHS=${PATHS:-"direct direct+reuse primal multiplier"}
-MULT_CMAX=${MULT_CMAX:-100}; NPS=${NPS:-"1 2 4 8"}; RLEVEL=${RLEVEL:-5}
+MULT_CMAX=${MULT_CMAX:-100}; NPS=${NPS:-"1 2 4 8 16"}; RLEVELS=${RLEVELS:-"4 5"}
+RPATHS=${RPATHS:-"auto cssubchol mumps primal bddc"}
+# Part 3 (PART=bddc): BDDC's CG iterations of the first Schur solve (t = 1, t_mu = c) against size and c on BNP ranks
+# Part 4 (PART=large): one CGD step, one Bobenko-Schroeder step and one spin transformation on icosphere levels
+#   LLEVELS, on 1 and 2 ranks: wall seconds and peak memory per rank (-memory_view, max over ranks)
+LLEVELS=${LLEVELS:-7}; lcsv=runs/study_scaling_large.csv
+BLEVELS=${BLEVELS:-"3 4 5"}; BCS=${BCS:-"1 100 1000 4000"}; BNP=${BNP:-4}; bcsv=runs/study_scaling_bddc.csv; PRIMAL_MAXNP=${PRIMAL_MAXNP:-2}
 FLEVELS=${FLEVELS:-"3 4 5 6"}; FCS=${FCS:-"1 10 100 1000 4000"}; fcsv=runs/study_scaling_first.csv
 PART=${PART:-all} # first | serial | ranks | all | report (the tables and figures from the csv files already there)
 out=runs/study_scaling.md; csv=runs/study_scaling.csv; rcsv=runs/study_scaling_ranks.csv
@@ -74,29 +84,73 @@ if [ "$PART" = serial ] || [ "$PART" = all ]; then
 fi
 
 # Part 2: ranks
-rank_run() { # np label args...
-  local np=$1 label=$2; shift 2
-  if ! mpirun --oversubscribe -n "$np" bin/confsurf -task flow $(GEN "$RLEVEL") -flow_max_it "$NITER" -flow_rtol 0 -flow_factor_reuse_its 0 "$@" -memory_view -log_view ":$tmp/lv" -summary "$tmp/s.json" > "$tmp/log" 2>&1; then
-    echo "FAILED: $np ranks $label"; tail -3 "$tmp/log"; return
+rank_args() { # path -> options
+  local v="-flow_saddle_fieldsplit_1_ksp_view"
+  case $1 in
+    auto) echo "$v" ;;
+    cssubchol) echo "$v -flow_saddle_fieldsplit_1_pc_cssubchol_max_interface_ratio 1e9" ;;
+    mumps) echo "$v -flow_saddle_fieldsplit_1_pc_type cholesky -flow_saddle_fieldsplit_1_pc_factor_mat_solver_type mumps -flow_saddle_fieldsplit_1_mat_mumps_icntl_7 0" ;;
+    primal) echo "-flow_saddle_schur_solver primal -flow_saddle_fieldsplit_1_h2_pc_type hypre -flow_saddle_fieldsplit_1_ksp_converged_reason" ;;
+    bddc) echo "-flow_saddle_schur_solver bddc -flow_saddle_fieldsplit_1_ksp_converged_reason" ;; # rebuilt every step (-flow_factor_reuse_its 0 in every run here)
+  esac
+}
+rank_run() { # level np path
+  local L=$1 np=$2 p=$3
+  if ! mpirun --oversubscribe -n "$np" bin/confsurf -task flow $(GEN "$L") -flow_max_it "$NITER" -flow_rtol 0 -flow_factor_reuse_its 0 $(rank_args "$p") -memory_view -log_view ":$tmp/lv" -summary "$tmp/s.json" > "$tmp/log" 2>&1; then
+    echo "FAILED: level $L $np ranks $p"; tail -3 "$tmp/log"; return
   fi
-  local spi outer schur mem msg G
+  local spi outer schur mem mean msg G gp engine
   read -r spi outer < <(python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); print(d["seconds_per_iteration"], d["ksp_iterations"] / max(d["linear_solves"], 1))' "$tmp/s.json")
   schur=$(mean_its "$tmp/log" 1)
-  mem=$(awk '/process memory/ { for (i = 1; i <= NF; i++) if ($i == "max") { printf "%.0f", $(i + 1) / 1048576; exit } }' "$tmp/log")
+  read -r mem mean < <(awk -v np="$np" '/^Maximum \(over computational time\) process memory/ { for (i = 1; i <= NF; i++) { if ($i == "max") mx = $(i + 1); if ($i == "total") tot = $(i + 1) } printf "%.0f %.0f\n", mx / 1048576, tot / np / 1048576; exit }' "$tmp/log")
   msg=$(awk '/^MPI Msg Len \(bytes\):/ { printf "%.3g", $NF }' "$tmp/lv")
-  G=$(grep -m1 -o 'interface [0-9]* dofs' "$tmp/log" | awk '{print $2}')
-  echo "$label,$RLEVEL,$((20 * 4 ** RLEVEL)),$np,,${schur:-$outer},$spi,$outer,,${mem:-},${msg:-},${G:-}" >> "$rcsv"
-  echo "$np ranks $label: its ${schur:-$outer} outer $outer s/step $spi max MB/rank $mem msg bytes $msg interface ${G:--}"
+  G=$(grep -m1 -oE 'interface (has )?[0-9]+ dofs' "$tmp/log" | grep -oE '[0-9]+')
+  gp=$(grep -m1 -oE 'up to [0-9]+ (interface dofs )?per' "$tmp/log" | grep -oE '[0-9]+')
+  engine=$p
+  case $p in auto|cssubchol) if grep -q "MUMPS Cholesky instead" "$tmp/log"; then engine=MUMPS; elif [ "$np" = 1 ]; then engine=CHOLMOD; else engine=cssubchol; fi ;; mumps) engine=MUMPS ;; primal) engine="CG+csh2(hypre)" ;; bddc) engine="CG+BDDC(deluxe, adaptive)" ;; esac
+  echo "$p,$L,$((20 * 4 ** L)),$np,,${schur:-$outer},$spi,$outer,,${mem:-},${mean:-},${msg:-},${G:-},${gp:-},$engine" >> "$rcsv"
+  echo "level $L $np ranks $p ($engine): its ${schur:-$outer} outer $outer s/step $spi MB/rank max $mem mean $mean msg bytes $msg interface ${G:--} (per rank ${gp:--})"
 }
 if [ "$PART" = ranks ] || [ "$PART" = all ]; then
-  echo "series,level,faces,ranks,c,its,seconds,outer_its,inner_its,max_MB_per_rank,msg_bytes,interface" > "$rcsv"
-  for np in $NPS; do
-    rank_run "$np" "default (direct)" -flow_saddle_fieldsplit_1_ksp_view
-    rank_run "$np" "primal (csh2 inner hypre)" -flow_saddle_schur_solver primal -flow_saddle_fieldsplit_1_h2_pc_type hypre -flow_saddle_fieldsplit_1_ksp_converged_reason
-  done
+  echo "series,level,faces,ranks,c,its,seconds,outer_its,inner_its,max_MB_per_rank,mean_MB_per_rank,msg_bytes,interface,interface_per_rank,engine" > "$rcsv"
+  for L in $RLEVELS; do for np in $NPS; do for p in $RPATHS; do
+    [ "$p" = primal ] && [ "$np" -gt "$PRIMAL_MAXNP" ] && continue
+    [ "$p" = cssubchol ] || [ "$p" = mumps ] && [ "$np" = 1 ] && continue # = auto (CHOLMOD) / the serial MUMPS is not the question
+    rank_run "$L" "$np" "$p"
+  done; done; done
 fi
 
-[ "$PART" = first ] || [ "$PART" = serial ] || [ "$PART" = ranks ] && exit 0 # PART=report afterwards
+if [ "$PART" = bddc ]; then
+  echo "series,level,faces,ranks,c,its,seconds,max_MB_per_rank" > "$bcsv"
+  for L in $BLEVELS; do for c in $BCS; do
+    if ! mpirun --oversubscribe -n "$BNP" bin/confsurf -task flow $(GEN "$L") -flow_t 1 -flow_t_max 1 -flow_t_mu "$c" -flow_max_it 1 -flow_rtol 0 -flow_factor_reuse_its 0 $(rank_args bddc) -memory_view > "$tmp/log" 2>&1; then
+      echo "FAILED: bddc level $L c $c"; tail -3 "$tmp/log"; continue
+    fi
+    its=$(awk '/flow_saddle_fieldsplit_1_ solve converged/ { print $NF; exit }' "$tmp/log")
+    mem=$(awk '/^Maximum \(over computational time\) process memory/ { for (i = 1; i <= NF; i++) if ($i == "max") printf "%.0f", $(i + 1) / 1048576; exit }' "$tmp/log")
+    echo "bddc first solve,$L,$((20 * 4 ** L)),$BNP,$c,$its,,$mem" >> "$bcsv"
+    echo "bddc level $L c $c on $BNP ranks: CG its $its, max MB/rank $mem"
+  done; done
+fi
+large_args() { # what level -> options
+  case $1 in
+    cgd) echo "-task flow $(GEN "$2") -flow_max_it 1 -flow_rtol 0" ;;
+    bs) echo "-task flow -flow_type bs $(GEN "$2") -bs_max_it 1 -bs_atol 0 -bs_rtol 0" ;;
+    spin) echo "-task spin -gen icosphere -gen_level $2 -rho_bump_center 0,0,1 -rho_bump_radius 0.5 -rho_bump_height 3" ;;
+  esac
+}
+if [ "$PART" = large ]; then
+  echo "series,level,faces,ranks,seconds,max_MB_per_rank" > "$lcsv"
+  for L in $LLEVELS; do for w in cgd bs spin; do for np in 1 2; do
+    s0=$(date +%s.%N)
+    if ! mpirun -n "$np" bin/confsurf $(large_args "$w" "$L") -memory_view > "$tmp/log" 2>&1; then echo "FAILED: large $w level $L $np ranks"; tail -3 "$tmp/log"; continue; fi
+    sec=$(echo "$(date +%s.%N) - $s0" | bc)
+    mem=$(awk '/^Maximum \(over computational time\) process memory/ { for (i = 1; i <= NF; i++) if ($i == "max") printf "%.0f", $(i + 1) / 1048576; exit }' "$tmp/log")
+    echo "$w,$L,$((20 * 4 ** L)),$np,$sec,$mem" >> "$lcsv"
+    echo "large: $w level $L on $np ranks: $sec s wall, max MB per rank $mem"
+  done; done; done
+fi
+[ "$PART" = first ] || [ "$PART" = serial ] || [ "$PART" = ranks ] || [ "$PART" = bddc ] || [ "$PART" = large ] && exit 0 # PART=report afterwards
 # tables and figures
 python3 - "$csv" "$rcsv" "$CFIX" "$NITER" > "$out" <<'EOF'
 import csv, sys, os
@@ -119,12 +173,19 @@ if os.path.exists(first):
     print("|---|---|---|---|---|---|---|")
     for r in sorted(csv.DictReader(open(first)), key=lambda r: (float(r["c"]), int(r["level"]))):
         print("| %s | %s | %s | %s | %s | %s | %.3g |" % (r["level"], r["faces"], r["c"], r["its"], r["sv_max"], r["sv_min"], float(r["sv_max"]) / float(r["c"])))
+bddc = sys.argv[2].replace("_ranks.csv", "_bddc.csv")
+if os.path.exists(bddc):
+    print("\n## BDDC (deluxe scaling, adaptive coarse space): the first Schur solve (t = 1, t_mu = c)\n")
+    print("| level | faces | ranks | c | CG its | max MB per rank |")
+    print("|---|---|---|---|---|---|")
+    for r in sorted(csv.DictReader(open(bddc)), key=lambda r: (float(r["c"]), int(r["level"]))):
+        print("| %s | %s | %s | %s | %s | %s |" % (r["level"], r["faces"], r["ranks"], r["c"], r["its"], r["max_MB_per_rank"]))
 if os.path.exists(sys.argv[2]):
     print("\n## Ranks (oversubscribed beyond 2; time meaningful on 1-2 ranks only)\n")
-    print("| path | faces | ranks | Schur its | outer | s/step | max MB per rank | MPI message bytes (total) | cssubchol interface dofs |")
-    print("|---|---|---|---|---|---|---|---|---|")
-    for r in csv.DictReader(open(sys.argv[2])):
-        print("| %s | %s | %s | %.1f | %.2f | %.3g | %s | %s | %s |" % (r["series"], r["faces"], r["ranks"], float(r["its"]), float(r["outer_its"]), float(r["seconds"]), r["max_MB_per_rank"], r["msg_bytes"], r["interface"] or "-"))
+    print("| path | engine | faces | ranks | Schur its | outer | s/step | MB per rank max / mean | MPI message bytes (total) | interface dofs (all / largest local) |")
+    print("|---|---|---|---|---|---|---|---|---|---|")
+    for r in sorted(csv.DictReader(open(sys.argv[2])), key=lambda r: (int(r["level"]), r["series"], int(r["ranks"]))):
+        print("| %s | %s | %s | %s | %.1f | %.2f | %.3g | %s / %s | %s | %s / %s |" % (r["series"], r["engine"], r["faces"], r["ranks"], float(r["its"]), float(r["outer_its"]), float(r["seconds"]), r["max_MB_per_rank"], r["mean_MB_per_rank"], r["msg_bytes"], r["interface"] or "-", r["interface_per_rank"] or "-"))
 EOF
 # one csv per figure: series by path at c = CFIX (size), by path and level (c), by path (ranks)
 awk -F, -v c="$CFIX" 'NR == 1 || $5 == c' "$csv" > "$tmp/size.csv"
@@ -132,5 +193,5 @@ awk -F, 'BEGIN { OFS = "," } NR == 1 { print; next } $2 <= 5 { $1 = $1 " level "
 /usr/bin/python3 scripts/plots.py scaling runs/study_scaling_size.png --x faces --title "Schur solves against mesh size (c = t t_mu = $CFIX)" "$tmp/size.csv"
 /usr/bin/python3 scripts/plots.py scaling runs/study_scaling_c.png --x c --title "Schur solves against c = t t_mu" "$tmp/c.csv"
 [ -s "$fcsv" ] && /usr/bin/python3 scripts/plots.py scaling runs/study_scaling_first.png --x faces --title "first Schur solve (primal): CG iterations against size, one line per c" <(awk -F, 'BEGIN { OFS = "," } NR == 1 { print; next } { $1 = "c = " $5; print }' "$fcsv")
-[ -s "$rcsv" ] && /usr/bin/python3 scripts/plots.py scaling runs/study_scaling_ranks.png --x ranks --title "level $RLEVEL on several ranks" "$rcsv"
+[ -s "$rcsv" ] && /usr/bin/python3 scripts/plots.py scaling runs/study_scaling_ranks.png --x ranks --title "several ranks (levels $RLEVELS)" <(awk -F, 'BEGIN { OFS = "," } NR == 1 { print; next } { $1 = $1 " level " $2; print }' "$rcsv")
 echo "wrote $out"

@@ -15,11 +15,18 @@
      issue's two-level split is already solved exactly; on the D-orthogonal complement range(D^{-1} X),
      S_mu D^{-1} X = (t/t_mu) X H^{-1} S, i.e. the same spectrum 1 + c lambda(X^T D^{-1} X, H) as the primal path.
      S_mu is negative definite in the fieldsplit's sign, so the outer Krylov method is GMRES (CG checks the sign).
+   - CS_SCHUR_BDDC ("bddc", the issue's (b)): splits as primal; S (applied matrix-free) solved by CG preconditioned
+     by PCBDDC on the unassembled S (MATIS, built by the caller from the mesh partition: CSMatISFromSquares), the
+     user Schur preconditioner, with deluxe scaling and the adaptive coarse space (threshold 2) by default: measured
+     on the level-4 bumpy sphere at c = 800, plain BDDC (vertices, edges) needs 500-1300 CG iterations on 2-4 ranks,
+     deluxe alone is exact on 2 ranks (1 iteration) but not on 4 (570-690), deluxe + adaptive 5-6 on 4 ranks
+     (docs/scaling.md). The options -<prefix>fieldsplit_1_pc_bddc_* override.
    Every choice is a default set in code before the sub-solvers' SetFromOptions: -<prefix>fieldsplit_{0,1}_*
    options still override it. */
+#include <petsc/private/pcbddcimpl.h> /* PCBDDC's deluxe scaling and adaptive threshold have no setters in 3.18 */
 #include "cs_linalg.h"
 
-const char *const CSSchurSolveTypes[] = {"direct", "primal", "multiplier", "CSSchurSolveType", "CS_SCHUR_", NULL};
+const char *const CSSchurSolveTypes[] = {"direct", "primal", "multiplier", "bddc", "CSSchurSolveType", "CS_SCHUR_", NULL};
 
 /* CG with the csh2 preconditioner on a positions (H/t) block, to relative tolerance rtol */
 static PetscErrorCode SetCGH2(KSP ksp, PetscReal rtol)
@@ -45,20 +52,21 @@ static PetscErrorCode SetJacobi(KSP ksp, KSPType type, PetscReal rtol)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CSSchurIterativeSetDefaults(PC pc)
+PetscErrorCode CSSchurIterativeSetDefaults(PC pc, CSSchurSolveType type)
 {
   PetscFunctionBeginUser;
   PetscCall(PCSetType(pc, PCFIELDSPLIT));
   PetscCall(PCFieldSplitSetType(pc, PC_COMPOSITE_SCHUR));
   PetscCall(PCFieldSplitSetSchurFactType(pc, PC_FIELDSPLIT_SCHUR_FACT_FULL));
-  PetscCall(PCFieldSplitSetSchurPre(pc, PC_FIELDSPLIT_SCHUR_PRE_A11, NULL)); /* no assembled S */
+  /* no assembled S, or (bddc) the caller's unassembled one */
+  PetscCall(PCFieldSplitSetSchurPre(pc, type == CS_SCHUR_BDDC ? PC_FIELDSPLIT_SCHUR_PRE_USER : PC_FIELDSPLIT_SCHUR_PRE_A11, NULL));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode CSSchurIterativeSetSplits(PC pc, CSSchurSolveType type, IS isE, IS isV)
 {
   PetscFunctionBeginUser;
-  if (type == CS_SCHUR_PRIMAL) {
+  if (type == CS_SCHUR_PRIMAL || type == CS_SCHUR_BDDC) {
     PetscCall(PCFieldSplitSetIS(pc, "0", isE));
     PetscCall(PCFieldSplitSetIS(pc, "1", isV));
   } else {
@@ -77,6 +85,19 @@ PetscErrorCode CSSchurIterativeSetSubSolvers(PC pc, CSSchurSolveType type, Petsc
   if (type == CS_SCHUR_PRIMAL) {
     PetscCall(SetJacobi(sub[0], KSPPREONLY, 0));
     PetscCall(SetCGH2(sub[1], schur_rtol));
+  } else if (type == CS_SCHUR_BDDC) {
+    PC bddc;
+    PetscCall(SetJacobi(sub[0], KSPPREONLY, 0));
+    PetscCall(KSPSetType(sub[1], KSPCG));
+    PetscCall(KSPSetTolerances(sub[1], schur_rtol, PETSC_DEFAULT, PETSC_DEFAULT, 10000));
+    PetscCall(KSPGetPC(sub[1], &bddc));
+    PetscCall(PCSetType(bddc, PCBDDC));
+    { /* defaults before SetFromOptions, which reads the options with these as defaults */
+      PC_BDDC *b               = (PC_BDDC *)bddc->data;
+      b->use_deluxe_scaling    = PETSC_TRUE;
+      b->adaptive_threshold[0] = 2.0;
+      b->adaptive_threshold[1] = 2.0;
+    }
   } else {
     /* the inner H solve sits inside every application of S_mu: it must be much tighter than the outer one */
     PetscCall(SetCGH2(sub[0], 1e-3 * schur_rtol));

@@ -73,6 +73,11 @@ typedef struct {
   PetscInt       *own_loc; /* for each: local number, or -1 - (interface number) on the interface */
   VecScatter      scat;    /* global -> local dofs */
   Vec             bloc;
+  PetscReal       max_ratio; /* -pc_cssubchol_max_interface_ratio: dense interface / largest local factor, in bytes */
+  PetscReal       fits_mb;   /* -pc_cssubchol_fits_mb: a dense interface of at most this many MB per rank always fits */
+  PC              fallback;  /* MUMPS Cholesky, where the dense interface does not fit (ChooseEngine) */
+  PetscInt        Gseen, gpmax; /* the interface (all ranks, and the largest local part) of the last split */
+  PetscLogDouble  dense_mb, factor_mb; /* its dense storage per rank, the largest local sparse factor */
 } PC_SubChol;
 
 static PetscErrorCode CholCheck(cholmod_common *c, const char *what)
@@ -500,6 +505,65 @@ static PetscErrorCode SetUpNumeric(PC pc, PC_SubChol *s)
   PetscFunctionReturn(0);
 }
 
+/* Collective, after the split and the analysis: does the dense interface fit? Every rank stores S_Gamma twice
+   (its Cholesky factor, G^2 entries, and the packed lower triangle for the reduction, G (G + 1) / 2), 12 G^2 bytes,
+   redundantly; its sparse local factor takes about 12 lnz bytes (value and row index). The interface grows with the
+   ranks (2D cuts: G ~ sqrt(P N), so 12 G^2 ~ P N) while the local factors shrink (~ N / P): past some rank count
+   the redundant dense block dominates the memory per rank. It fits while 12 G^2 <= max_ratio x the largest local
+   factor or it takes at most fits_mb MB (small problems: the redundancy costs nothing measurable); else
+   *use_fallback (docs/scaling.md, "Several ranks"). */
+static PetscErrorCode ChooseEngine(PC pc, PC_SubChol *s, PetscBool *use_fallback)
+{
+  PetscLogDouble lnz = s->lnz, lnzmax;
+  PetscInt       gpmax;
+  MPI_Comm       comm = PetscObjectComm((PetscObject)pc);
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Allreduce(&lnz, &lnzmax, 1, MPI_DOUBLE, MPI_MAX, comm));
+  PetscCallMPI(MPI_Allreduce(&s->gp, &gpmax, 1, MPIU_INT, MPI_MAX, comm));
+  s->Gseen     = s->G;
+  s->gpmax     = gpmax;
+  s->dense_mb  = 8.0 * ((PetscLogDouble)s->G * s->G + (PetscLogDouble)s->G * (s->G + 1) / 2) / 1048576.0;
+  s->factor_mb = 12.0 * lnzmax / 1048576.0;
+  *use_fallback = (PetscBool)(s->G > 0 && s->dense_mb > PetscMax(s->max_ratio * s->factor_mb, s->fits_mb));
+  PetscCall(PetscInfo(pc, "interface %" PetscInt_FMT " dofs (up to %" PetscInt_FMT " per rank), dense %.3g MB per rank, largest local factor %.3g MB: %s\n", s->G, gpmax, s->dense_mb, s->factor_mb, *use_fallback ? "MUMPS" : "substructured"));
+  PetscFunctionReturn(0);
+}
+
+/* The MUMPS Cholesky that replaces the substructuring (options prefix <prefix>cssubchol_fallback_; AMD ordering by
+   default, the best Debian's MUMPS has), with a note on the output. */
+static PetscErrorCode SetUpFallback(PC pc, PC_SubChol *s)
+{
+  const char *prefix;
+  PetscFunctionBeginUser;
+  PetscCall(PCGetOptionsPrefix(pc, &prefix));
+  PetscCall(PetscPrintf(PetscObjectComm((PetscObject)pc), "cssubchol (%s): the interface has %" PetscInt_FMT " dofs (up to %" PetscInt_FMT " per rank), %.3g MB dense on every rank > %g x the largest local factor (%.3g MB) and > %g MB: MUMPS Cholesky instead (-%spc_cssubchol_max_interface_ratio, -%spc_cssubchol_fits_mb)\n", prefix ? prefix : "", s->Gseen, s->gpmax, s->dense_mb, (double)s->max_ratio, s->factor_mb, (double)s->fits_mb, prefix ? prefix : "", prefix ? prefix : ""));
+  PetscCall(PCCreate(PetscObjectComm((PetscObject)pc), &s->fallback));
+  PetscCall(PCSetOptionsPrefix(s->fallback, prefix));
+  PetscCall(PCAppendOptionsPrefix(s->fallback, "cssubchol_fallback_"));
+  PetscCall(PCSetOperators(s->fallback, pc->mat, pc->pmat));
+  PetscCall(PCSetType(s->fallback, PCCHOLESKY));
+  PetscCall(PCFactorSetMatSolverType(s->fallback, MATSOLVERMUMPS));
+  PetscCall(PCSetFromOptions(s->fallback));
+  PetscCall(CSMumpsDefaultOrdering(s->fallback, pc->pmat));
+  PetscFunctionReturn(0);
+}
+
+/* The fallback's factorisation; a failure (not positive definite, MUMPS out of workspace) is this PC's */
+static PetscErrorCode SetUpNumericFallback(PC pc, PC_SubChol *s)
+{
+  PCFailedReason reason;
+  PetscFunctionBeginUser;
+  PetscCall(PCSetUp(s->fallback));
+  PetscCall(PCGetFailedReasonRank(s->fallback, &reason));
+  {
+    PetscMPIInt r = (PetscMPIInt)reason, worst;
+    PetscCallMPI(MPI_Allreduce(&r, &worst, 1, MPI_INT, MPI_MAX, PetscObjectComm((PetscObject)pc)));
+    if (worst) PetscCall(PCSetFailedReason(pc, (PCFailedReason)worst));
+  }
+  s->nfact++;
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode PCSetUp_SubChol(PC pc)
 {
   PC_SubChol    *s = (PC_SubChol *)pc->data;
@@ -510,16 +574,27 @@ static PetscErrorCode PCSetUp_SubChol(PC pc)
     s->c.print = 0; /* silent: a matrix that is not positive definite is reported through the PC, errors by status */
     s->started = PETSC_TRUE;
   }
-  if (!pc->setupcalled || pc->flag == DIFFERENT_NONZERO_PATTERN || !s->L) {
+  if (!pc->setupcalled || pc->flag == DIFFERENT_NONZERO_PATTERN || !(s->L || s->fallback)) {
+    PetscBool use_fallback;
     PetscCall(PetscLogEventBegin(CS_EVENT_SubCholSym, pc, 0, 0, 0));
     PetscCall(ResetSymbolic(s));
+    PetscCall(PCDestroy(&s->fallback));
     PetscCall(SetUpSplit(pc, s));
     CSCaptureError(ierr, SetUpAnalysis(s));
     if (ierr) PetscCall(ResetSymbolic(s)); /* free what a half-done analysis left */
     PetscCall(CSSyncError(PetscObjectComm((PetscObject)pc), ierr));
+    PetscCall(ChooseEngine(pc, s, &use_fallback));
+    if (use_fallback) {
+      PetscCall(ResetSymbolic(s));
+      PetscCall(SetUpFallback(pc, s));
+    }
     PetscCall(PetscLogEventEnd(CS_EVENT_SubCholSym, pc, 0, 0, 0));
   }
   PetscCall(PCSetFailedReason(pc, PC_NOERROR));
+  if (s->fallback) {
+    PetscCall(SetUpNumericFallback(pc, s));
+    PetscFunctionReturn(0);
+  }
   PetscCall(PetscLogEventBegin(CS_EVENT_SubCholNum, pc, 0, 0, 0));
   PetscCall(SetUpNumeric(pc, s));
   PetscCall(PetscLogEventEnd(CS_EVENT_SubCholNum, pc, 0, 0, 0));
@@ -564,6 +639,10 @@ static PetscErrorCode PCApply_SubChol(PC pc, Vec b, Vec x)
     PetscCall(VecSetInf(x));
     PetscFunctionReturn(0);
   }
+  if (s->fallback) {
+    PetscCall(PCApply(s->fallback, b, x));
+    PetscFunctionReturn(0);
+  }
   PetscCall(PetscLogEventBegin(CS_EVENT_SubCholSolve, pc, b, x, 0));
   PetscCall(PetscObjectGetComm((PetscObject)pc, &comm));
   PetscCallMPI(MPI_Comm_size(comm, &size));
@@ -600,6 +679,7 @@ static PetscErrorCode PCReset_SubChol(PC pc)
   PC_SubChol *s = (PC_SubChol *)pc->data;
   PetscFunctionBeginUser;
   PetscCall(ResetSymbolic(s));
+  PetscCall(PCDestroy(&s->fallback));
   PetscFunctionReturn(0);
 }
 
@@ -608,6 +688,7 @@ static PetscErrorCode PCDestroy_SubChol(PC pc)
   PC_SubChol *s = (PC_SubChol *)pc->data;
   PetscFunctionBeginUser;
   PetscCall(ResetSymbolic(s));
+  PetscCall(PCDestroy(&s->fallback));
   if (s->started) cholmod_finish(&s->c);
   PetscCall(PetscObjectComposeFunction((PetscObject)pc, "CSSubCholGetInfo_C", NULL));
   PetscCall(PetscFree(pc->data));
@@ -621,7 +702,11 @@ static PetscErrorCode PCSetFromOptions_SubChol(PC pc, PetscOptionItems *PetscOpt
   PetscOptionsHeadBegin(PetscOptionsObject, "Substructured CHOLMOD Cholesky (cssubchol)");
   PetscCall(PetscOptionsEList("-pc_cssubchol_ordering", "Ordering of each rank's interior", NULL, OrderingNames, 3, OrderingNames[s->ordering], &s->ordering, NULL));
   PetscCall(PetscOptionsEList("-pc_cssubchol_interface", "Side of each cut that holds the interface (auto: the smaller largest local matrix)", NULL, SideNames, 3, SideNames[s->side_opt], &s->side_opt, NULL));
+  PetscCall(PetscOptionsReal("-pc_cssubchol_max_interface_ratio", "Substructure while the dense interface per rank takes at most this times the memory of the largest local factor, else MUMPS", NULL, s->max_ratio, &s->max_ratio, NULL));
+  PetscCall(PetscOptionsReal("-pc_cssubchol_fits_mb", "A dense interface of at most this many MB per rank is always substructured", NULL, s->fits_mb, &s->fits_mb, NULL));
   PetscOptionsHeadEnd();
+  PetscCheck(s->fits_mb >= 0, PetscObjectComm((PetscObject)pc), PETSC_ERR_ARG_OUTOFRANGE, "-%spc_cssubchol_fits_mb %g: must be >= 0", ((PetscObject)pc)->prefix ? ((PetscObject)pc)->prefix : "", (double)s->fits_mb);
+  PetscCheck(s->max_ratio >= 0, PetscObjectComm((PetscObject)pc), PETSC_ERR_ARG_OUTOFRANGE, "-%spc_cssubchol_max_interface_ratio %g: must be >= 0", ((PetscObject)pc)->prefix ? ((PetscObject)pc)->prefix : "", (double)s->max_ratio);
   PetscFunctionReturn(0);
 }
 
@@ -631,8 +716,14 @@ static PetscErrorCode PCView_SubChol(PC pc, PetscViewer viewer)
   PetscBool   ascii;
   PetscFunctionBeginUser;
   PetscCall(PetscObjectTypeCompare((PetscObject)viewer, PETSCVIEWERASCII, &ascii));
-  if (ascii) {
+  if (ascii && s->fallback) {
+    PetscCall(PetscViewerASCIIPrintf(viewer, "  MUMPS Cholesky instead of the substructuring: interface %" PetscInt_FMT " dofs (up to %" PetscInt_FMT " per rank), %.3g MB dense per rank > %g x the largest local factor (%.3g MB)\n", s->Gseen, s->gpmax, s->dense_mb, (double)s->max_ratio, s->factor_mb));
+    PetscCall(PetscViewerASCIIPushTab(viewer));
+    PetscCall(PCView(s->fallback, viewer));
+    PetscCall(PetscViewerASCIIPopTab(viewer));
+  } else if (ascii) {
     PetscCall(PetscViewerASCIIPrintf(viewer, "  substructured CHOLMOD Cholesky: interior ordering %s, interface %" PetscInt_FMT " dofs (dense, redundant), on the %s side of each cut\n", OrderingNames[s->ordering], s->G, s->side ? "upper" : "lower"));
+    PetscCall(PetscViewerASCIIPrintf(viewer, "    dense interface %.3g MB per rank (up to %" PetscInt_FMT " interface dofs per local matrix), largest local factor %.3g MB: fits (<= %g x, or <= %g MB)\n", s->dense_mb, s->gpmax, s->factor_mb, (double)s->max_ratio, (double)s->fits_mb));
     PetscCall(PetscViewerASCIIPushSynchronized(viewer));
     if (s->L) PetscCall(PetscViewerASCIISynchronizedPrintf(viewer, "    [local] %" PetscInt_FMT " dofs, %" PetscInt_FMT " on the interface, factor %.3g entries, %.3g flops; %" PetscInt_FMT " factorisations\n", s->m, s->gp, s->lnz, s->fl, s->nfact));
     PetscCall(PetscViewerFlush(viewer));
@@ -645,7 +736,7 @@ static PetscErrorCode GetInfo_SubChol(PC pc, PetscInt *G, PetscInt *factorisatio
 {
   PC_SubChol *s = (PC_SubChol *)pc->data;
   PetscFunctionBeginUser;
-  if (G) *G = s->G;
+  if (G) *G = s->fallback ? s->Gseen : s->G;
   if (factorisations) *factorisations = s->nfact;
   PetscFunctionReturn(0);
 }
@@ -665,6 +756,8 @@ PetscErrorCode PCCreate_CSSubChol(PC pc)
   PC_SubChol *s;
   PetscFunctionBeginUser;
   PetscCall(PetscNew(&s));
+  s->max_ratio             = 1.0; /* docs/scaling.md, "Several ranks" */
+  s->fits_mb               = 16.0;
   pc->data                 = s;
   pc->ops->setup           = PCSetUp_SubChol;
   pc->ops->apply           = PCApply_SubChol;

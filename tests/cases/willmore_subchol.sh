@@ -3,8 +3,11 @@
 # two-ring 3-dof matrix with METIS/AMD/NESDIS interiors, a refactorisation on the same pattern, the interface size,
 # an indefinite matrix ending the KSP with DIVERGED_PC_FAILED on every rank), then a cgd flow whose steps equal those
 # with the Schur complement factored by Cholesky (MUMPS on several ranks, CHOLMOD on one): positions within 1e-9,
-# one FGMRES iteration per linear solve (an exact factorisation), the same number of iterations; unknown values of
-# -pc_cssubchol_ordering / -pc_cssubchol_interface fail with an error naming the option.
+# one FGMRES iteration per linear solve (an exact factorisation), the same number of iterations; the automatic
+# switch to MUMPS where the dense interface does not fit (forced by -pc_cssubchol_max_interface_ratio 0
+# -pc_cssubchol_fits_mb 0): a note on several ranks (none serially, where there is no interface), and the same steps;
+# unknown values of -pc_cssubchol_ordering / -pc_cssubchol_interface and a negative ratio fail with an error naming
+# the option.
 # nprocs: 1 2 3
 source tests/lib.sh
 P=tests/cases/spin_tools.py
@@ -20,6 +23,17 @@ its=$(json ksp_iterations "$TMP/a.json")
 echo "FGMRES iterations $its for $solves linear solves"
 [ "$its" = "$solves" ] || { echo "BAD: an exact factorisation needs one FGMRES iteration per solve"; exit 1; }
 [ "$its" = "$(json ksp_iterations "$TMP/b.json")" ] || { echo "BAD: iteration counts differ from the Cholesky run"; exit 1; }
+# the dense interface "does not fit": MUMPS instead of the substructuring, with a note, same flow
+F="-flow_saddle_fieldsplit_1_pc_cssubchol_max_interface_ratio 0 -flow_saddle_fieldsplit_1_pc_cssubchol_fits_mb 0"
+timeout 120 $MPIEXEC "$CS_BIN" $S -flow_saddle_fieldsplit_1_pc_type cssubchol $F -summary "$TMP/c.json" -o "$TMP/c.obj" > "$TMP/c.log" 2>&1 || { tail "$TMP/c.log"; exit 1; }
+notes=$(grep -c "MUMPS Cholesky instead" "$TMP/c.log" || true)
+echo "fallback notes: $notes"
+if [ "$NP" = 1 ]; then [ "$notes" = 0 ] || { echo "BAD: a fallback note serially (no interface)"; exit 1; }
+else [ "$notes" -ge 1 ] || { echo "BAD: no note of the switch to MUMPS on $NP ranks"; exit 1; }; fi
+check_close "$(python3 $P rigid "$TMP/c.obj" "$TMP/b.obj")" 0 1e-9 "cssubchol falling back to MUMPS vs Cholesky of S: positions after 4 steps"
+check_close "$(json willmore "$TMP/c.json")" "$(json willmore "$TMP/b.json")" 1e-12 "W (fallback)"
+[ "$(json ksp_iterations "$TMP/c.json")" = "$(json ksp_iterations "$TMP/b.json")" ] || { echo "BAD: fallback iteration counts differ from the Cholesky run"; exit 1; }
 # bad option values: a clear error naming the option, non-zero exit
 EXPECT="Unknown option foo for -flow_saddle_fieldsplit_1_pc_cssubchol_ordering" expect_fail timeout 60 $MPIEXEC "$CS_BIN" $S -flow_saddle_fieldsplit_1_pc_type cssubchol -flow_saddle_fieldsplit_1_pc_cssubchol_ordering foo
 EXPECT="Unknown option middle for -flow_saddle_fieldsplit_1_pc_cssubchol_interface" expect_fail timeout 60 $MPIEXEC "$CS_BIN" $S -flow_saddle_fieldsplit_1_pc_type cssubchol -flow_saddle_fieldsplit_1_pc_cssubchol_interface middle
+EXPECT="-flow_saddle_fieldsplit_1_pc_cssubchol_max_interface_ratio -1.*must be >= 0" expect_fail timeout 60 $MPIEXEC "$CS_BIN" $S -flow_saddle_fieldsplit_1_pc_type cssubchol -flow_saddle_fieldsplit_1_pc_cssubchol_max_interface_ratio -1

@@ -198,7 +198,7 @@ PetscErrorCode CSConformalFlowApplyFilter(CSConformalFlow F, Vec v)
     PetscCall(PCSetType(pc, PCCHOLESKY));
     PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
     PetscCall(KSPSetFromOptions(F->kspf));
-    PetscCall(CSSpinMumpsDefaultOrdering(pc, F->B));
+    PetscCall(CSMumpsDefaultOrdering(pc, F->B));
   }
   PetscCall(KSPSetOperators(F->kspf, F->B, F->B));
   PetscCall(VecPointwiseMult(F->work, F->area, v)); /* B w = M v */

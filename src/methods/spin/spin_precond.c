@@ -133,7 +133,7 @@ PetscErrorCode CSSpinSetUpScalarPC(CSSpin s, Vec x, CSRhoLocation loc, Vec rho, 
     PetscCall(KSPGetPC(s->klap, &lpc));
     PetscCall(CSSetDefaultCholesky(lpc));
     PetscCall(KSPSetFromOptions(s->klap));
-    PetscCall(CSSpinMumpsDefaultOrdering(lpc, s->Ls));
+    PetscCall(CSMumpsDefaultOrdering(lpc, s->Ls));
   }
   PetscCall(KSPSetOperators(s->klap, s->Ls, s->Ls));
   PetscCall(KSPSetUp(s->klap));

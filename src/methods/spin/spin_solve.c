@@ -321,31 +321,6 @@ static PetscErrorCode SetDefaultFactor(CSSpin s, PC pc, PetscBool lu, PetscBool 
   PetscFunctionReturn(0);
 }
 
-/* After SetFromOptions: a MUMPS factorisation orders with AMD (ICNTL(7) = 0) unless -<prefix>mat_mumps_icntl_7 is
-   given (docs/solvers.md: Debian's MUMPS has no METIS/SCOTCH, PORD is slow). Set on the factor (MatMumpsSetIcntl),
-   which needs operators: A (of the size and type of the matrix to be factored) when pc has none yet. */
-PetscErrorCode CSSpinMumpsDefaultOrdering(PC pc, Mat A)
-{
-  PetscBool     isfactor, set, has_op;
-  MatSolverType st = NULL;
-  const char   *prefix;
-  Mat           F;
-  PetscFunctionBeginUser;
-  PetscCall(PetscObjectTypeCompareAny((PetscObject)pc, &isfactor, PCLU, PCCHOLESKY, ""));
-  if (!isfactor) PetscFunctionReturn(0);
-  PetscCall(PCFactorGetMatSolverType(pc, &st));
-  if (!st || strcmp(st, MATSOLVERMUMPS)) PetscFunctionReturn(0);
-  PetscCall(PCGetOptionsPrefix(pc, &prefix));
-  PetscCall(PetscOptionsHasName(NULL, prefix, "-mat_mumps_icntl_7", &set));
-  if (set) PetscFunctionReturn(0);
-  PetscCall(PCGetOperatorsSet(pc, NULL, &has_op));
-  if (!has_op) PetscCall(PCSetOperators(pc, A, A));
-  PetscCall(PCFactorSetUpMatSolverType(pc));
-  PetscCall(PCFactorGetMatrix(pc, &F));
-  PetscCall(MatMumpsSetIcntl(F, 7, 0));
-  PetscFunctionReturn(0);
-}
-
 /* Serial Eq. 7 on the full space: the ST gets ST_MATMODE_SHELL and a preconditioner matrix instead of forming
    K - sigma I by MatDuplicate + MatShift (ST_MATMODE_COPY): K itself when the factor is csquat or cscholmod, told
    the shift (MatCSQuatFactorSetShift: subtracted as the entries are read, as the former PCSHELL did), else
@@ -445,7 +420,7 @@ static PetscErrorCode SetupEPS(CSSpin s, Vec x, CSRhoLocation loc, Vec rho, Pets
     PetscCall(EPSSetFromOptions(s->eps));
     PetscCall(KSPGetPC(ksp, &pc));
     if (shifted) PetscCall(SetShiftedPmat(s, st, pc));
-    PetscCall(CSSpinMumpsDefaultOrdering(pc, s->shell ? s->X : (s->Ks ? s->Ks : s->K))); /* the shell's PC factors a copy of X */
+    PetscCall(CSMumpsDefaultOrdering(pc, s->shell ? s->X : (s->Ks ? s->Ks : s->K))); /* the shell's PC factors a copy of X */
   } else {
     PetscCall(EPSSetOperators(s->eps, s->K, s->generalized ? s->Y : NULL));
     PetscCall(EPSGetST(s->eps, &st));
@@ -534,7 +509,7 @@ static PetscErrorCode InverseIteration(CSSpin s, Vec xr, PetscReal *kr)
     PetscCall(KSPGetPC(s->kinv, &pc));
     PetscCall(SetDefaultFactor(s, pc, PETSC_FALSE, PETSC_TRUE));
     PetscCall(KSPSetFromOptions(s->kinv));
-    PetscCall(CSSpinMumpsDefaultOrdering(pc, s->K));
+    PetscCall(CSMumpsDefaultOrdering(pc, s->K));
     PetscCall(MatDuplicate(s->K, MAT_COPY_VALUES, &s->Kinv));
   } else {
     PetscCall(MatCopy(s->K, s->Kinv, SAME_NONZERO_PATTERN));

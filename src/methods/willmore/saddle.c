@@ -21,7 +21,7 @@ static PetscErrorCode SetDefaultSolver(CSSaddle *s)
     PetscCall(KSPSetType(s->ksp, KSPFGMRES));
     /* relative to |b| = |(-g - X^T mu, -c)|, which falls with the run (docs/willmore_flow.md) */
     PetscCall(KSPSetTolerances(s->ksp, 1e-6, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
-    if (s->schur != CS_SCHUR_DIRECT) PetscCall(CSSchurIterativeSetDefaults(pc));
+    if (s->schur != CS_SCHUR_DIRECT) PetscCall(CSSchurIterativeSetDefaults(pc, s->schur));
     else {
       PetscCall(PCSetType(pc, PCFIELDSPLIT));
       PetscCall(PCFieldSplitSetType(pc, PC_COMPOSITE_SCHUR));
@@ -87,6 +87,7 @@ PetscErrorCode CSSaddleCreate(CSMesh mesh, const char prefix[], PetscBool edges,
   s->schur_rtol = 1e-4;
   /* the csh2 metric PC is cheap to rebuild, and a kept one costs 3x the CG its */
   s->reuse_its  = reuse_its >= 0 ? reuse_its : (edges ? 10 : 0);
+  s->reuse_set  = (PetscBool)(reuse_its >= 0);
   PetscCall(PetscStrncpy(s->prefix, prefix, sizeof(s->prefix)));
   PetscCall(NewKSP(s));
   if (k) {
@@ -122,6 +123,40 @@ static PetscErrorCode AssembleSchur(CSSaddle *s, Vec iq, PetscReal tmu, Mat X)
     PetscCall(CSMatAddFixedPattern(s->S, 1.0, s->XtDX, &s->add_xtdx));
     PetscCall(CSMatAddFixedPattern(s->S, 1.0, s->H11, &s->add_h11));
   }
+  PetscFunctionReturn(0);
+}
+
+/* bddc: S = H/t + t_mu X^T I_Q^{-1} X unassembled (MATIS) from the terms of H = w *0 + L *0^{-1} L (soliman2021
+   Eq. 26) and of X, each rank's share from its owned rows (CSMatISFromSquares): d = w *0 / t, L with *0^{-1} / t,
+   X with t_mu / I_Q. The L2 metric (H diagonal): d = diag(H)/t, X only. Dirichlet dofs: identity rows/columns
+   (1/t) as in H11. */
+static PetscErrorCode AssembleSchurIS(CSSaddle *s, Vec iq, PetscReal tmu, Mat X)
+{
+  CSMetric *m = s->metric;
+  Vec       d, w[2];
+  Mat       A[2];
+  PetscInt  n = 0;
+  PetscFunctionBeginUser;
+  PetscCheck(m, s->mesh->comm, PETSC_ERR_ARG_WRONGSTATE, "-%sschur_solver bddc: no metric to build the unassembled Schur complement from", s->prefix);
+  PetscCall(VecDuplicate(iq, &w[1]));
+  PetscCall(VecCopy(iq, w[1]));
+  PetscCall(VecReciprocal(w[1]));
+  PetscCall(VecScale(w[1], tmu));
+  PetscCall(VecDuplicate(m->m3, &d));
+  if (m->h2) {
+    PetscCall(VecAXPBY(d, m->mass_weight / s->t, 0.0, m->m3));
+    PetscCall(VecDuplicate(m->minv3, &w[0]));
+    PetscCall(VecAXPBY(w[0], 1.0 / s->t, 0.0, m->minv3));
+    A[n++] = m->L3;
+  } else PetscCall(MatGetDiagonal(s->H11, d));
+  A[n] = X;
+  if (n == 0) w[0] = w[1];
+  PetscCall(CSMatISFromSquares(d, n + 1, A, w, s->Sis ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX, &s->Sis));
+  if (s->fixed) PetscCall(MatZeroRowsColumnsIS(s->Sis, s->fixed, 1.0 / s->t, NULL, NULL));
+  PetscCall(VecDestroy(&d));
+  if (n == 1) PetscCall(VecDestroy(&w[0]));
+  else w[0] = NULL;
+  PetscCall(VecDestroy(&w[1]));
   PetscFunctionReturn(0);
 }
 
@@ -205,8 +240,9 @@ static PetscErrorCode ConfigureFieldSplit(CSSaddle *s, PC pc, PetscBool chosen, 
   PetscCall(PCFieldSplitGetType(pc, &type));
   PetscCall(PCFieldSplitGetSchurPre(pc, &pre, &pmat)); /* (the matrix argument may not be NULL in 3.18) */
   if (type == PC_COMPOSITE_SCHUR && pre == PC_FIELDSPLIT_SCHUR_PRE_USER) {
-    PetscCall(AssembleSchur(s, iq, tmu, X));
-    PetscCall(PCFieldSplitSetSchurPre(pc, PC_FIELDSPLIT_SCHUR_PRE_USER, s->S));
+    if (!chosen && s->schur == CS_SCHUR_BDDC) PetscCall(AssembleSchurIS(s, iq, tmu, X));
+    else PetscCall(AssembleSchur(s, iq, tmu, X));
+    PetscCall(PCFieldSplitSetSchurPre(pc, PC_FIELDSPLIT_SCHUR_PRE_USER, s->Sis ? s->Sis : s->S));
   }
   if (!chosen && type == PC_COMPOSITE_SCHUR) {
     PetscCall(KSPSetUp(s->ksp)); /* creates the fieldsplit's solvers */
@@ -225,6 +261,10 @@ static PetscErrorCode ReadSchurOptions(CSSaddle *s)
   PetscCall(PetscOptionsEnum("-schur_solver", "Solver of the Schur complement: direct factorisation, or iterative in the primal or the multiplier space (docs/scaling.md)", NULL, CSSchurSolveTypes, (PetscEnum)s->schur, (PetscEnum *)&s->schur, NULL));
   PetscCall(PetscOptionsReal("-schur_rtol", "Relative tolerance of the iterative Schur solve", NULL, s->schur_rtol, &s->schur_rtol, NULL));
   PetscOptionsEnd();
+  /* a kept BDDC (built for an earlier S) preconditions the current S badly: level 3 on 4 ranks, 8-9 CG iterations
+     in the first step, 41-64 in the second, 147-220 in the third (docs/scaling.md); rebuilt every step unless the
+     user set -flow_factor_reuse_its */
+  if (s->schur == CS_SCHUR_BDDC && !s->reuse_set) s->reuse_its = 0;
   PetscCheck(s->schur_rtol > 0 && s->schur_rtol < 1, s->mesh->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sschur_rtol %g: must be in (0, 1)", s->prefix, (double)s->schur_rtol);
   PetscFunctionReturn(0);
 }
@@ -272,6 +312,7 @@ static PetscErrorCode ReuseOrRebuild(CSSaddle *s, Vec iq, PetscReal tmu, Mat X)
   } else s->reusing = (PetscBool)(s->reuse_its > 0 && s->last_its <= s->reuse_its);
   if (!s->reusing) {
     if (s->S) PetscCall(AssembleSchur(s, iq, tmu, X));
+    if (s->Sis) PetscCall(AssembleSchurIS(s, iq, tmu, X));
     s->setups++;
   }
   PetscCall(KSPSetReusePreconditioner(s->ksp, s->reusing));
@@ -286,6 +327,7 @@ PetscErrorCode CSSaddleSetOperators(CSSaddle *s, Mat H, PetscReal t, Vec iq, Pet
   if (first) PetscCall(MatDuplicate(H, MAT_COPY_VALUES, &s->H11));
   else PetscCall(MatCopy(H, s->H11, SAME_NONZERO_PATTERN));
   PetscCall(MatScale(s->H11, 1.0 / t));
+  s->t = t;
   if (s->fixed) PetscCall(MatZeroRowsColumnsIS(s->H11, s->fixed, 1.0 / t, NULL, NULL));
   PetscCall(CSH2PCComposeFrom(H, s->H11, 1.0 / t, s->fixed)); /* for -flow_saddle_[fieldsplit_1_]pc_type csh2 */
   if (s->edges) PetscCall(EdgeOperator(s, first, iq, tmu, X, &op));
@@ -330,6 +372,7 @@ static PetscErrorCode KSolve(CSSaddle *s, Vec b, Vec z, PetscInt *its, KSPConver
     s->reusing = PETSC_FALSE;
     s->setups++;
     if (s->S) PetscCall(AssembleSchur(s, s->iq, s->tmu, s->X));
+    if (s->Sis) PetscCall(AssembleSchurIS(s, s->iq, s->tmu, s->X));
     PetscCall(KSPSetReusePreconditioner(s->ksp, PETSC_FALSE));
   }
   PetscCall(KSPSolve(s->ksp, b, z));
@@ -446,6 +489,7 @@ PetscErrorCode CSSaddleDestroy(CSSaddle *s)
   PetscCall(MatDestroy(&s->XtD));
   PetscCall(MatDestroy(&s->XtDX));
   PetscCall(MatDestroy(&s->S));
+  PetscCall(MatDestroy(&s->Sis));
   PetscCall(CSMatAddMapDestroy(&s->add_xtdx));
   PetscCall(CSMatAddMapDestroy(&s->add_h11));
   PetscCall(MatDestroy(&s->H11));

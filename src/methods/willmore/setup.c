@@ -204,6 +204,7 @@ PetscErrorCode CSWillmoreFlowSetUp(CSWillmoreFlow F)
   plain = (PetscBool)(F->ops.penalty && F->alm_metric == CS_ALM_METRIC_PLAIN);
   PetscCall(CSSaddleCreate(F->mesh, prefix, (PetscBool)(F->conformal && !plain), (PetscBool)(F->metric_type == CS_FLOW_METRIC_H2), (PetscBool)(F->saddle_mat == CS_SADDLE_MAT_AIJ), F->reuse_its, plain ? 0 : F->k, &F->saddle));
   F->saddle.fixed = F->fixedIS;
+  F->saddle.metric = &F->metric;
   F->setupcalled  = PETSC_TRUE;
   PetscFunctionReturn(0);
 }

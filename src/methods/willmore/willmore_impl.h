@@ -32,6 +32,7 @@ typedef struct {
   Vec        *B, *W;      /* k rows, k solutions (each an (E+3V) or 3V vector) */
   PetscReal  *G;
   PetscInt    reuse_its;  /* keep the preconditioner while the last solve took <= this many its */
+  PetscBool   reuse_set;  /* reuse_its given by the user (-flow_factor_reuse_its), not the default */
   PetscInt    last_its;   /* Krylov iterations of the last solve */
   PetscInt    setups;     /* preconditioner (factorisation) builds so far */
   PetscInt    solves;     /* linear solves (right-hand sides) so far */
@@ -45,6 +46,9 @@ typedef struct {
   PetscBool   have_pc;
   CSSchurSolveType schur; /* -<prefix>schur_solver: direct (default) or an iterative Schur solve (docs/scaling.md) */
   PetscReal   schur_rtol; /* -<prefix>schur_rtol of the iterative Schur solve */
+  CSMetric   *metric;     /* the flow's (borrowed): its terms build the unassembled S for bddc */
+  PetscReal   t;          /* this step's t */
+  Mat         Sis;        /* bddc: S unassembled (MATIS), the user Schur preconditioner */
 } CSSaddle;
 
 /* prefix: of the KSP; reuse_its < 0: the default (10 with the edge block, else 0) */
