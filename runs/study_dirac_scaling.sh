@@ -8,10 +8,11 @@
 #   iterative Generalised Davidson (STPRECOND) with csspinlap: one GAMG V-cycle of L + cM per quaternion component
 #             (-spin_solver precond -spin_lap_pc_type gamg); no 4V factorisation
 #   iterative_lobpcg  the same with -spin_eps_type lobpcg
+#   iterative_amgpoisson  iterative, and the Poisson step (Eq. 8) by CG + GAMG too (no factorisation at all)
 # x ranks 1, 2, 4, 8, 16 (beyond 2 oversubscribed on this 2-core machine: iterations and memory only).
 # Records eps iterations, inner iterations (shifted solves / scalar V-cycles), eigenvalue and residual, the
 # eigen-phase seconds (wall), and the peak RSS of every rank (/usr/bin/time per rank; max and mean over ranks).
-# The Poisson step (Eq. 8) uses its default (CHOLMOD / cssubchol) in every row: memory includes it.
+# The Poisson step (Eq. 8) uses its default (CHOLMOD / cssubchol) except in iterative_amgpoisson: memory includes it.
 # Usage: bash runs/study_dirac_scaling.sh [levels] [ranks] [solvers] [timeout_s]
 #   e.g. bash runs/study_dirac_scaling.sh "6 7" "1 2 4 8 16" "direct mumps iterative" 900
 # Appends to runs/results/study_dirac_scaling.tsv (one line per run; delete it to start over) and rewrites
@@ -29,6 +30,7 @@ declare -A CONF=(
   [mumps]="-spin_st_pc_type cholesky -spin_st_pc_factor_mat_solver_type mumps"
   [iterative]="-spin_solver precond -spin_lap_pc_type gamg"
   [iterative_lobpcg]="-spin_solver precond -spin_lap_pc_type gamg -spin_eps_type lobpcg"
+  [iterative_amgpoisson]="-spin_solver precond -spin_lap_pc_type gamg -spin_poisson_ksp_type cg -spin_poisson_pc_type gamg -spin_poisson_ksp_rtol 1e-10"
 )
 B="-rho_bump_center 0,0,1 -rho_bump_radius 0.5 -rho_bump_height 3"
 tmp=$(mktemp -d)
