@@ -127,7 +127,7 @@ PetscErrorCode CSWillmoreFlowMonitorViewerSet(CSWillmoreFlow flow, CSOutput *out
 {
   CSMesh      mesh;
   const char *prefix;
-  PetscBool   listed;
+  PetscBool   listed = PETSC_FALSE;
   PetscFunctionBeginUser;
   *wv = NULL;
   if (!out->has_viewer) PetscFunctionReturn(0);
@@ -137,7 +137,9 @@ PetscErrorCode CSWillmoreFlowMonitorViewerSet(CSWillmoreFlow flow, CSOutput *out
   (*wv)->last  = -1;
   (*wv)->nits  = 32;
   PetscCall(CSWillmoreFlowGetOptionsPrefix(flow, &prefix));
-  PetscCall(PetscOptionsGetIntArray(NULL, prefix, "-viewer_iterations", (*wv)->its, &(*wv)->nits, &listed));
+  PetscOptionsBegin(mesh->comm, prefix, "ParaView series of the Willmore flow", "CSWillmoreFlowMonitorViewerSet");
+  PetscCall(PetscOptionsIntArray("-viewer_iterations", "Also write these iterations i1,i2,... (with -viewer_dir)", "CSWillmoreFlowMonitorViewerSet", (*wv)->its, &(*wv)->nits, &listed));
+  PetscOptionsEnd();
   if (!listed) (*wv)->nits = 0;
   for (PetscInt k = 0; k < (*wv)->nits; k++) PetscCheck((*wv)->its[k] >= 0, mesh->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sviewer_iterations: iteration %" PetscInt_FMT " must be >= 0", prefix, (*wv)->its[k]);
   PetscCall(CSViewerCreate(mesh, out->viewer_dir, &(*wv)->v));
