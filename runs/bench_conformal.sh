@@ -46,6 +46,9 @@ for fac in 1 2; do run "ico4 bumpy stretched, 3 steps" 1 $fac 3 $ICO4; done
 for fac in 1 2; do run "ico4 bumpy stretched" 1 $fac 10 $ICO4; run "ico4 bumpy stretched" 2 $fac 10 $ICO4; done
 run "bunny_lowres_npm" 1 1 10 -mesh meshes/bunny_lowres_npm.obj
 run "bunny_lowres_npm" 2 1 10 -mesh meshes/bunny_lowres_npm.obj
+# ~13k faces genus 0 (the 0.1 s/step target): the low-res bunny Loop-refined once, 14696 faces
+run "bunny_lowres_npm Loop-refined once" 1 1 10 -mesh meshes/bunny_lowres_npm.obj -mesh_refine 1
+run "bunny_lowres_npm Loop-refined once" 2 1 10 -mesh meshes/bunny_lowres_npm.obj -mesh_refine 1
 run "torus R3 r1 114x57 bumpy (genus 1, exactness)" 1 1 5 -gen torus -gen_torus_R 3 -gen_tube_r 1 -gen_n 114 -gen_m 57 -gen_deform_bump 0.1
 run "torus R3 r1 114x57 bumpy (genus 1, exactness)" 2 1 5 -gen torus -gen_torus_R 3 -gen_tube_r 1 -gen_n 114 -gen_m 57 -gen_deform_bump 0.1
 run "ico5 bumpy stretched" 1 1 10 -gen icosphere -gen_level 5 -gen_deform_bump 0.5 -gen_deform_stretch 1.5,1,0.8
