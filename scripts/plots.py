@@ -77,8 +77,8 @@ def curves(out, x, runs, title):
 
 def panel(out, meshes, view, title):
     n = len(meshes)
-    cols = min(n, 5)
-    rows = math.ceil(n / cols)
+    rows = math.ceil(n / 6)  # at most 6 a row, rows filled evenly (6 shapes: one row, not 5 + 1)
+    cols = math.ceil(n / rows)
     fig, axes = plt.subplots(rows, cols, figsize=(3 * cols, 3.2 * rows), squeeze=False)
     hs = [(label, V, F, mean_curvature(V, F)) for label, (V, F) in meshes]
     allh = np.concatenate([h for *_, h in hs])
