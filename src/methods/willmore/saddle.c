@@ -126,8 +126,8 @@ static PetscErrorCode AssembleSchur(CSSaddle *s, Vec iq, PetscReal tmu, Mat X)
   PetscFunctionReturn(0);
 }
 
-/* bddc: S = H/t + t_mu X^T I_Q^{-1} X unassembled (MATIS) from the terms of H = w *0 + L *0^{-1} L (soliman2021
-   Eq. 26) and of X, each rank's share from its owned rows (CSMatISFromSquares): d = w *0 / t, L with *0^{-1} / t,
+/* bddc: S = H/t + t_mu X^T I_Q^{-1} X unassembled (MATIS) from the terms of H = scale (w *0 + L *0^{-1} L)
+   (soliman2021 Eq. 26; scale != 1 for the fairing energy's metric, setup.c) and of X, each rank's share from its owned rows (CSMatISFromSquares): d = w *0 / t, L with *0^{-1} / t,
    X with t_mu / I_Q. The L2 metric (H diagonal): d = diag(H)/t, X only. Dirichlet dofs: identity rows/columns
    (1/t) as in H11. */
 static PetscErrorCode AssembleSchurIS(CSSaddle *s, Vec iq, PetscReal tmu, Mat X)
@@ -144,9 +144,9 @@ static PetscErrorCode AssembleSchurIS(CSSaddle *s, Vec iq, PetscReal tmu, Mat X)
   PetscCall(VecScale(w[1], tmu));
   PetscCall(VecDuplicate(m->m3, &d));
   if (m->h2) {
-    PetscCall(VecAXPBY(d, m->mass_weight / s->t, 0.0, m->m3));
+    PetscCall(VecAXPBY(d, m->scale * m->mass_weight / s->t, 0.0, m->m3)); /* H = scale (w *0 + L *0^{-1} L) */
     PetscCall(VecDuplicate(m->minv3, &w[0]));
-    PetscCall(VecAXPBY(w[0], 1.0 / s->t, 0.0, m->minv3));
+    PetscCall(VecAXPBY(w[0], m->scale / s->t, 0.0, m->minv3));
     A[n++] = m->L3;
   } else PetscCall(MatGetDiagonal(s->H11, d));
   A[n] = X;
