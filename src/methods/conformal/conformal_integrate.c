@@ -70,8 +70,8 @@ PetscErrorCode CSConformalFlowIntegrate(CSConformalFlow F)
     F->s.halvings++;
     PetscCall(Attempt(F, tau));
   }
-  PetscCall(Resolved(F, F->xnew, &ok));
-  if (!ok && F->min_edge > 0) {
+  if (F->min_edge > 0) PetscCall(Resolved(F, F->xnew, &ok)); /* (0: off, nothing measured) */
+  if (!ok) {
     PetscCall(PetscPrintf(F->hdr.comm, "conformal flow: step %" PetscInt_FMT " rejected: its shortest edge is %.2e of the diameter (-%smin_edge %g) or a face has no area; the surface's conformal factor is beyond double precision; the state of step %" PetscInt_FMT " is kept\n", F->loop.it + 1, (double)F->edge_ratio, F->hdr.prefix, (double)F->min_edge, F->loop.it));
     F->s        = s0;
     F->rejected = PETSC_TRUE;
