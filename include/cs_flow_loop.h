@@ -19,9 +19,11 @@ typedef enum {
 typedef struct {
   PetscErrorCode (*setup)(void *);                /* allocations and solvers (once) */
   PetscErrorCode (*start)(void *);                /* the input's state: evaluate it and record the initial measures */
-  PetscErrorCode (*advance)(void *);              /* one step: the current positions <- the next */
+  PetscErrorCode (*advance)(void *, PetscBool *); /* one step: the current positions <- the next; PETSC_FALSE when
+                                                     the flow rejected the step and kept its state */
   PetscErrorCode (*evaluate)(void *);             /* the new state's measures and the next direction */
-  PetscErrorCode (*judge)(void *, PetscInt *);    /* the flow's own tests of the state (0: none met) */
+  PetscErrorCode (*judge)(void *, PetscInt *);    /* the flow's own tests of the state, also after a rejected step
+                                                     (0: none met, go on) */
   PetscErrorCode (*monitor)(void *, CSFlowEvent); /* call the flow's monitors (loop.it and the times are set) */
 } CSFlowLoopOps;
 
@@ -33,6 +35,8 @@ typedef struct {
                                    have passed since the set-up began */
   PetscInt       max_it_reason; /* the flow's DIVERGED_MAX_IT */
   PetscInt       it, reason;    /* steps taken; why the loop stopped (0 while iterating) */
+  PetscInt       rejections;    /* steps the flow rejected (not counted in it, no STEP event) */
+  PetscBool      step_taken;    /* the last advance was taken */
   PetscReal      seconds, step_seconds; /* since the set-up began, at the last monitor call; of the last step */
   PetscLogDouble t0, t_setup, t_steps;  /* set-up start; set-up time; the steps' total time */
   PetscBool      setupcalled, started;
@@ -42,7 +46,8 @@ typedef struct {
 PETSC_EXTERN PetscErrorCode CSFlowLoopInit(CSFlowLoop *, MPI_Comm, const CSFlowLoopOps *, PetscInt max_it_reason);
 /* ops.setup once, timed (t0, t_setup) */
 PETSC_EXTERN PetscErrorCode CSFlowLoopSetUp(CSFlowLoop *, void *flow);
-/* one step (after the set-up and the input's evaluation, when not yet done); nothing once stopped */
+/* one step (after the set-up and the input's evaluation, when not yet done); nothing once stopped. A step the flow
+   rejects is neither counted nor evaluated nor monitored; the flow's judge then decides whether to stop. */
 PETSC_EXTERN PetscErrorCode CSFlowLoopStep(CSFlowLoop *, void *flow);
 /* steps until a stopping test is met, then the END event */
 PETSC_EXTERN PetscErrorCode CSFlowLoopSolve(CSFlowLoop *, void *flow);

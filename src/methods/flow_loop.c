@@ -71,14 +71,16 @@ PetscErrorCode CSFlowLoopStep(CSFlowLoop *L, void *flow)
   PetscCall(Start(L, flow));
   if (L->reason) PetscFunctionReturn(0);
   PetscCall(PetscTime(&t0));
-  PetscCall(L->ops.advance(flow));
-  L->it++;
-  PetscCall(L->ops.evaluate(flow));
+  PetscCall(L->ops.advance(flow, &L->step_taken));
+  if (L->step_taken) {
+    L->it++;
+    PetscCall(L->ops.evaluate(flow));
+  } else L->rejections++;
   PetscCall(PetscTime(&t1));
   L->step_seconds = (PetscReal)(t1 - t0);
   L->t_steps += t1 - t0;
   PetscCall(Judge(L, flow, PETSC_TRUE));
-  PetscCall(Monitor(L, flow, CS_FLOW_EVENT_STEP));
+  if (L->step_taken) PetscCall(Monitor(L, flow, CS_FLOW_EVENT_STEP));
   PetscFunctionReturn(0);
 }
 

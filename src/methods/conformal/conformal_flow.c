@@ -203,7 +203,6 @@ static PetscErrorCode Monitor(void *ctx, CSFlowEvent ev)
 {
   CSConformalFlow F = (CSConformalFlow)ctx;
   PetscFunctionBeginUser;
-  if (ev == CS_FLOW_EVENT_STEP && F->rejected) PetscFunctionReturn(0); /* no row for a rejected step */
   F->s.event        = (CSConformalMonitorEvent)ev;
   F->s.it           = F->loop.it;
   F->s.seconds      = F->loop.seconds;
@@ -219,10 +218,8 @@ static PetscErrorCode Judge(void *ctx, PetscInt *reason)
   CSConformalMonitorInfo *s = &F->s;
   PetscFunctionBeginUser;
   *reason = CS_CONFORMAL_ITERATING;
-  if (F->rejected) { /* conformal_integrate.c: the step was not taken and is not counted */
-    *reason = CS_CONFORMAL_DIVERGED_RESOLUTION;
-    F->loop.it--;
-  } else if (!(s->W == s->W) || s->W > F->egrow * F->W0) *reason = CS_CONFORMAL_DIVERGED_ENERGY;
+  if (F->rejected) *reason = CS_CONFORMAL_DIVERGED_RESOLUTION; /* conformal_integrate.c: the step was not taken */
+  else if (!(s->W == s->W) || s->W > F->egrow * F->W0) *reason = CS_CONFORMAL_DIVERGED_ENERGY;
   else if (F->atol > 0 && s->W <= F->atol) *reason = CS_CONFORMAL_CONVERGED_ATOL;
   else if (F->loop.it > 0 && PetscAbsReal(s->W - F->Wprev) <= F->rtol * F->Wprev) *reason = CS_CONFORMAL_CONVERGED_RTOL;
   PetscFunctionReturn(0);
@@ -243,12 +240,13 @@ static PetscErrorCode Start(void *ctx)
 }
 
 /* Table 1 V-VII */
-static PetscErrorCode Advance(void *ctx)
+static PetscErrorCode Advance(void *ctx, PetscBool *taken)
 {
   CSConformalFlow F = (CSConformalFlow)ctx;
   PetscFunctionBeginUser;
   F->Wprev = F->s.W;
   PetscCall(CSConformalFlowIntegrate(F));
+  *taken = (PetscBool)!F->rejected;
   PetscFunctionReturn(0);
 }
 

@@ -153,12 +153,13 @@ static PetscErrorCode Start(void *ctx)
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode Advance(void *ctx)
+static PetscErrorCode Advance(void *ctx, PetscBool *taken)
 {
   CSCurveFlow F = (CSCurveFlow)ctx;
   PetscFunctionBeginUser;
   PetscCall(CSCurveFlowIntegrate(F));   /* Eq. 2 and Sec. 5.2: theta, tangents, right-hand side, gap */
   PetscCall(CSCurveFlowReconstruct(F)); /* Sec. 5.2: L f = b, minus the mean motion */
+  *taken = PETSC_TRUE;                  /* (the curve flow never rejects a step) */
   PetscFunctionReturn(0);
 }
 
