@@ -18,7 +18,6 @@ static PetscErrorCode EnergyEval(CSEnergy e, Vec x, PetscReal *E, Vec g)
 {
   CSTriangleField *d = (CSTriangleField *)e->ctx;
   PetscReal        Es = 0;
-  Vec              gs = NULL;
   PetscFunctionBeginUser;
   if (d->spinor) {
     PetscCall(CSTFSpinorEnergy(d->flow, d, x, E, g));
@@ -26,11 +25,10 @@ static PetscErrorCode EnergyEval(CSEnergy e, Vec x, PetscReal *E, Vec g)
   }
   PetscCall(CSTriangleFieldWillmore(e->mesh, d->dmH3, x, E, g));
   if (d->wspin <= 0) PetscFunctionReturn(0);
-  if (g) PetscCall(VecDuplicate(g, &gs));
-  PetscCall(CSSpinorDirichletTriangleField(d->sp, d->dmH3, x, d->psi, &Es, gs, NULL));
+  if (g && !d->gspin) PetscCall(VecDuplicate(g, &d->gspin)); /* kept for the run */
+  PetscCall(CSSpinorDirichletTriangleField(d->sp, d->dmH3, x, d->psi, &Es, g ? d->gspin : NULL, NULL));
   if (E) *E += d->wspin * Es;
-  if (g) PetscCall(VecAXPY(g, d->wspin, gs));
-  PetscCall(VecDestroy(&gs));
+  if (g) PetscCall(VecAXPY(g, d->wspin, d->gspin));
   PetscFunctionReturn(0);
 }
 
@@ -186,8 +184,6 @@ static PetscErrorCode CheckOptions(CSWillmoreFlow F)
   PetscFunctionBeginUser;
   PetscCall(PetscStrcmp(F->energy_name, "willmore", &willmore));
   PetscCheck(willmore, F->comm, PETSC_ERR_SUP, "-%senergy %s: -%stype trianglefield minimises the Willmore energy W~ of App. D.1 only", p, F->energy_name, p);
-  ((CSTriangleField *)F->data)->noconf = (PetscBool)!F->conformal; /* unconstrained W~ (Fig. 8): integrability rows only */
-  F->conformal = PETSC_TRUE; /* the multiplier block holds the integrability rows either way */
   PetscCheck(!F->area_set && !F->mobius && !F->rotation && !F->target[0], F->comm, PETSC_ERR_SUP, "-%stype trianglefield: the area, Moebius and rotation constraints and -%starget_mesh are not built for triangle fields (App. B: volume and points only)", p, p);
   PetscCheck(F->metric_type == CS_FLOW_METRIC_H2, F->comm, PETSC_ERR_SUP, "-%smetric l2: -%stype trianglefield uses the I_H1 metric (Eq. 32) only", p, p);
   PetscFunctionReturn(0);
@@ -303,6 +299,8 @@ static PetscErrorCode SetUpTriangleField(CSWillmoreFlow F)
   PetscFunctionBeginUser;
   PetscCheck(m->topo.boundary_loops == 0, F->comm, PETSC_ERR_SUP, "-%stype trianglefield: the mesh %s has %" PetscInt_FMT " boundary loop(s); triangle-field flows are built for closed surfaces", F->prefix, m->name, m->topo.boundary_loops);
   PetscCall(CheckOptions(F));
+  d->noconf    = (PetscBool)!F->conformal; /* unconstrained W~ (Fig. 8): integrability rows only */
+  F->conformal = PETSC_TRUE;               /* the multiplier block holds the integrability rows either way */
   F->max_area_ratio = 0; /* the vertex-area guard measures positions */
   PetscCall(CSLensCreateHalfedgeDM(m, 1, &d->dmH1));
   PetscCall(CSLensCreateHalfedgeDM(m, 3, &d->dmH3));
@@ -436,6 +434,7 @@ static PetscErrorCode Destroy(CSWillmoreFlow F)
   PetscCall(VecDestroy(&d->psi));
   PetscCall(VecDestroy(&d->psit));
   PetscCall(VecDestroy(&d->lamt));
+  PetscCall(VecDestroy(&d->gspin));
   PetscCall(CSTFSpinorDestroy(d));
   PetscCall(CSSpinorSpaceDestroy(&d->sp));
   PetscCall(PetscFree(F->data));

@@ -35,6 +35,7 @@ typedef struct {
   CSSpinorSpace sp;        /* charts of the target metric, spin connection of the input (App. C) */
   Vec       psi, psit;     /* the face spinors of the accepted omega (signs followed along the flow), a work copy */
   PetscReal wspin;         /* -flow_spin_weight: the energy is W~ + wspin E_tau(psi(omega)) (App. C.3) */
+  Vec       gspin;         /* grad_omega E_tau(psi(omega)) (dmH3), created at the first weighted gradient */
   /* -flow_variables spinor (trianglefield_spinor.c): x = (u, psi), omega = S_c(u, psi) (App. C.2) */
   PetscBool spinor;
   CSWillmoreFlow flow;     /* the flow (for the energy's evaluations) */

@@ -12,6 +12,7 @@
 #include "trianglefield_impl.h"
 #include "cs_quaternion.h"
 #include "cs_mesh_adjacency.h"
+#include <math.h>
 
 /* The two parts of x: u as a dmV1 global vector, psi as a dmF4 global vector (copies). */
 static PetscErrorCode SplitX(CSTriangleField *d, Vec x, Vec u, Vec psi)
@@ -156,12 +157,45 @@ PetscErrorCode CSTFSpinorJacobian(CSWillmoreFlow F, CSTriangleField *d, Vec x)
   PetscFunctionReturn(0);
 }
 
-/* The energy in the spinor variables: W~(S_c(x)) + w E_tau(psi), gradient J^T grad W~ + w (0, grad E_tau). */
+/* The faces (global count) whose lengths e^{(u_i + u_j)/2} l0 violate a triangle inequality at the split u (d->ug):
+   S_c is not defined there (the chart does not exist; CSSpinorTriangleField flattens such a face, which breaks the
+   conformal class). */
+static PetscErrorCode FlatFaces(CSWillmoreFlow F, CSTriangleField *d, PetscInt *nflat)
+{
+  CSMesh             m = F->mesh;
+  Vec                ul;
+  const PetscScalar *ua;
+  const PetscReal   *l0;
+  PetscInt           n = 0;
+  PetscFunctionBeginUser;
+  PetscCall(CSSpinorSpaceGetLengths(d->sp, &l0));
+  PetscCall(DMGetLocalVector(m->dmV1, &ul));
+  PetscCall(DMGlobalToLocal(m->dmV1, d->ug, INSERT_VALUES, ul));
+  PetscCall(VecGetArrayRead(ul, &ua));
+  for (CSFaceIter f = CS_FACE_ITER_INIT; CSMeshFaceNext(m, NULL, &f);) {
+    PetscReal l[3];
+    for (int a = 0; a < 3; a++) l[a] = l0[3 * f.f + a] * PetscExpReal(0.5 * PetscRealPart(ua[f.v[(a + 1) % 3]] + ua[f.v[(a + 2) % 3]]));
+    if (!(l[0] < l[1] + l[2] && l[1] < l[2] + l[0] && l[2] < l[0] + l[1])) n++;
+  }
+  PetscCall(VecRestoreArrayRead(ul, &ua));
+  PetscCall(DMRestoreLocalVector(m->dmV1, &ul));
+  PetscCall(MPIU_Allreduce(&n, nflat, 1, MPIU_INT, MPI_SUM, F->comm));
+  PetscFunctionReturn(0);
+}
+
+/* The energy in the spinor variables: W~(S_c(x)) + w E_tau(psi), gradient J^T grad W~ + w (0, grad E_tau); not a
+   number outside S_c's domain (a face violating the triangle inequality), so that the step filter rejects it. */
 PetscErrorCode CSTFSpinorEnergy(CSWillmoreFlow F, CSTriangleField *d, Vec x, PetscReal *E, Vec g)
 {
   PetscReal Es = 0;
+  PetscInt  nflat;
   PetscFunctionBeginUser;
   PetscCall(CSTFSpinorOmega(d, x, d->omt));
+  PetscCall(FlatFaces(F, d, &nflat));
+  if (nflat && E && !g) {
+    *E = (PetscReal)NAN;
+    PetscFunctionReturn(0);
+  }
   PetscCall(CSTriangleFieldWillmore(F->mesh, d->dmH3, d->omt, E, g ? d->gom : NULL));
   if (g) {
     PetscCall(CSTFSpinorJacobian(F, d, x));
