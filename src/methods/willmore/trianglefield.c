@@ -5,7 +5,8 @@
      [C~ lambda(omega) - c0; d1 omega; S omega]   (Eq. 14 / 30, Eq. 31, face closure; sparse, multiplier block)
      <<Y_i|omega>> = 0, i < 2g                     (Eq. 13; dense, bordered like the global constraints)
    and metric I_H1 (Eq. 32). Integrability (d1, closure, Y rows) is enforced at every step (docs/triangle_fields.md).
-   The surface of a state is the solution of the Poisson problem L f = d*omega (CSTriangleFieldReconstruct). */
+   The surface of a state is the solution of the Poisson problem L f = d*omega (CSTriangleFieldReconstruct).
+   -flow_variables spinor: the same kind over x = (u, psi), omega = S_c(u, psi) (App. C.2/C.3, trianglefield_spinor.c). */
 #include "trianglefield_impl.h"
 #include "cs_quaternion.h"
 
