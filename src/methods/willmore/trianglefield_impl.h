@@ -45,6 +45,7 @@ typedef struct {
   Vec       lamt;          /* log lengths of omega (dmH1): the measured class C~ lambda - c0 */
   Mat       J, P, KJ, Hom; /* dS_c, the sphere rows' Jacobian, Kd1 J, the triangle fields' metric I_H1 */
   PetscReal wgauge;        /* -flow_scale_gauge_weight: multiplier metric of the gauge row (relative to |row|^2) */
+  PetscReal mshift;        /* -flow_spinor_metric_shift: + mshift a I on the pulled-back metric (0: none) */
   PetscReal ubar0;         /* the scale gauge: mean(u) of the start */
   Vec      *rowsOm;        /* the <<Y_i|.>> rows on triangle fields (F->rows holds J^T of them) */
 } CSTriangleField;

@@ -319,6 +319,7 @@ PetscErrorCode CSTFSpinorMetric(CSWillmoreFlow F, CSTriangleField *d)
   PetscCall(VecRestoreArrayRead(d->pg, &p));
   PetscCall(MatAssemblyBegin(F->metric.H, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(F->metric.H, MAT_FINAL_ASSEMBLY));
+  if (d->mshift > 0) PetscCall(MatShift(F->metric.H, d->mshift * a)); /* -flow_spinor_metric_shift */
   PetscFunctionReturn(0);
 }
 
