@@ -97,6 +97,8 @@ PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetInitial(CSWillmoreFlow flow, Vec *x
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetVariables(CSWillmoreFlow flow, Vec *x);
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetMesh(CSWillmoreFlow flow, CSMesh *mesh);
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetInfo(CSWillmoreFlow flow, CSWillmoreFlowInfo *info);
+/* The flow's energy on its own variables (borrowed; after SetUp): for tests of its gradient. */
+PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetEnergy(CSWillmoreFlow flow, CSEnergy *e);
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetEnergyName(CSWillmoreFlow flow, const char **name);
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetInitialEnergy(CSWillmoreFlow flow, PetscReal *E0);
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowView(CSWillmoreFlow flow, PetscViewer viewer); /* NULL: stdout */

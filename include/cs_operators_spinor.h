@@ -28,6 +28,8 @@ typedef struct _p_CSSpinorSpace *CSSpinorSpace;
    lengths (dmH1 global vector, e.g. CSTriangleFieldLogLengthsFromEdges of mesh->lt, or of df). */
 PETSC_EXTERN PetscErrorCode CSSpinorSpaceCreate(CSMesh mesh, DM dmH1, Vec lambda0, CSSpinorSpace *sp);
 PETSC_EXTERN PetscErrorCode CSSpinorSpaceDestroy(CSSpinorSpace *sp);
+/* The background halfedge lengths l0 per local face (3 per face, opposite corners 0, 1, 2), borrowed. */
+PETSC_EXTERN PetscErrorCode CSSpinorSpaceGetLengths(CSSpinorSpace sp, const PetscReal **l0);
 /* The spinor DM: 4 reals per face (dmF4). */
 PETSC_EXTERN PetscErrorCode CSSpinorSpaceGetDM(CSSpinorSpace sp, DM *dmF4);
 /* The spin connection tau (App. C.1) from the charts and the spin structure of the reference field omega_ref (dmH3). */

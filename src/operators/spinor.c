@@ -228,6 +228,13 @@ PetscErrorCode CSSpinorSpaceGetDM(CSSpinorSpace sp, DM *dmF4)
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode CSSpinorSpaceGetLengths(CSSpinorSpace sp, const PetscReal **l0)
+{
+  PetscFunctionBeginUser;
+  *l0 = sp->l0;
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode CSSpinorSpaceGetEdge(CSSpinorSpace sp, PetscInt e, PetscReal tau[2], PetscReal *w)
 {
   PetscFunctionBeginUser;

@@ -217,6 +217,14 @@ PetscErrorCode CSWillmoreFlowGetEnergyName(CSWillmoreFlow F, const char **name)
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode CSWillmoreFlowGetEnergy(CSWillmoreFlow F, CSEnergy *e)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(F->setupcalled, F->comm, PETSC_ERR_ORDER, "CSWillmoreFlowSetUp first");
+  *e = F->energy;
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode CSWillmoreFlowGetInitialEnergy(CSWillmoreFlow F, PetscReal *E0)
 {
   PetscFunctionBeginUser;

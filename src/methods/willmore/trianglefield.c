@@ -5,11 +5,13 @@
      [C~ lambda(omega) - c0; d1 omega; S omega]   (Eq. 14 / 30, Eq. 31, face closure; sparse, multiplier block)
      <<Y_i|omega>> = 0, i < 2g                     (Eq. 13; dense, bordered like the global constraints)
    and metric I_H1 (Eq. 32). Integrability (d1, closure, Y rows) is enforced at every step (docs/triangle_fields.md).
-   The surface of a state is the solution of the Poisson problem L f = d*omega (CSTriangleFieldReconstruct). */
+   The surface of a state is the solution of the Poisson problem L f = d*omega (CSTriangleFieldReconstruct).
+   -flow_variables spinor: the same kind over x = (u, psi), omega = S_c(u, psi) (App. C.2/C.3, trianglefield_spinor.c). */
 #include "trianglefield_impl.h"
 #include "cs_quaternion.h"
 
 static PetscReal HashUniform(PetscInt seed, PetscInt e, PetscInt s, PetscInt c);
+static PetscErrorCode SetUpTriangleFieldSpinor(CSWillmoreFlow F, CSTriangleField *d);
 
 /* W~(omega) + wspin E_tau(psi(omega)), psi(omega) the face lift with the signs nearest to the accepted state's
    spinors (the regulariser of App. C.3 on triangle fields). */
@@ -17,15 +19,17 @@ static PetscErrorCode EnergyEval(CSEnergy e, Vec x, PetscReal *E, Vec g)
 {
   CSTriangleField *d = (CSTriangleField *)e->ctx;
   PetscReal        Es = 0;
-  Vec              gs = NULL;
   PetscFunctionBeginUser;
+  if (d->spinor) {
+    PetscCall(CSTFSpinorEnergy(d->flow, d, x, E, g));
+    PetscFunctionReturn(0);
+  }
   PetscCall(CSTriangleFieldWillmore(e->mesh, d->dmH3, x, E, g));
   if (d->wspin <= 0) PetscFunctionReturn(0);
-  if (g) PetscCall(VecDuplicate(g, &gs));
-  PetscCall(CSSpinorDirichletTriangleField(d->sp, d->dmH3, x, d->psi, &Es, gs, NULL));
+  if (g && !d->gspin) PetscCall(VecDuplicate(g, &d->gspin)); /* kept for the run */
+  PetscCall(CSSpinorDirichletTriangleField(d->sp, d->dmH3, x, d->psi, &Es, g ? d->gspin : NULL, NULL));
   if (E) *E += d->wspin * Es;
-  if (g) PetscCall(VecAXPY(g, d->wspin, gs));
-  PetscCall(VecDestroy(&gs));
+  if (g) PetscCall(VecAXPY(g, d->wspin, d->gspin));
   PetscFunctionReturn(0);
 }
 
@@ -106,6 +110,7 @@ static PetscErrorCode SetUpSpinors(CSWillmoreFlow F, CSTriangleField *d)
   PetscFunctionReturn(0);
 }
 
+const char *const CSTriangleFieldVariables[] = {"omega", "spinor", NULL};
 const char *const CSTriangleFieldInits[] = {"df", "random", "random_spinor", "CSTriangleFieldInit", "CS_TF_INIT_", NULL};
 
 /* A uniform number in [-1, 1) from (seed, natural edge, side, component): the same field on any number of ranks. */
@@ -154,6 +159,13 @@ static PetscErrorCode SetFromOptionsTF(CSWillmoreFlow F)
   PetscFunctionBeginUser;
   PetscOptionsBegin(F->comm, F->prefix, "Triangle-field flow (soliman2021 Algorithm 2)", NULL);
   PetscCall(PetscOptionsEnum("-init", "Initial triangle field: df of the input, df plus a random field, or S(l0, psi) with randomly rotated face spinors (App. C.2)", NULL, CSTriangleFieldInits, (PetscEnum)d->init, (PetscEnum *)&d->init, NULL));
+  {
+    PetscInt v = d->spinor;
+    PetscCall(PetscOptionsEList("-variables", "Variables of the flow: the triangle field omega, or (u, psi) with omega = S_c(u, psi) (soliman2021 App. C.2)", NULL, CSTriangleFieldVariables, 2, CSTriangleFieldVariables[v], &v, NULL));
+    d->spinor = (PetscBool)(v == 1);
+  }
+  PetscCall(PetscOptionsReal("-scale_gauge_weight", "-flow_variables spinor: multiplier metric of the scale gauge row mean(u) = const, relative to its |row|^2; 0: no gauge row", NULL, d->wgauge, &d->wgauge, NULL));
+  PetscCall(PetscOptionsReal("-spinor_metric_shift", "-flow_variables spinor: add this times the mean psi diagonal of J^T I_H1 J to the whole metric (0: none)", NULL, d->mshift, &d->mshift, NULL));
   PetscCall(PetscOptionsInt("-seed", "Seed of -flow_init random", NULL, d->seed, &d->seed, NULL));
   PetscCall(PetscOptionsReal("-init_amplitude", "-flow_init random: each halfedge vector gets a uniform random vector in [-a, a]^3 times the mean edge length; random_spinor: each face rotated by up to a pi", NULL, d->amp, &d->amp, NULL));
   PetscCall(PetscOptionsReal("-spin_weight", "Weight of the spin Dirichlet energy E_tau(psi(omega)) added to W~ (soliman2021 App. C.3); 0: none", NULL, d->wspin, &d->wspin, NULL));
@@ -161,6 +173,8 @@ static PetscErrorCode SetFromOptionsTF(CSWillmoreFlow F)
   PetscOptionsEnd();
   PetscCall(CSTFScheduleSetFromOptions(F, d));
   PetscCheck(d->wint > 0 && !PetscIsInfOrNanReal(d->wint), F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sintegrability_weight %g: must be > 0", F->prefix, (double)d->wint);
+  PetscCheck(d->mshift >= 0 && !PetscIsInfOrNanReal(d->mshift), F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sspinor_metric_shift %g: must be >= 0", F->prefix, (double)d->mshift);
+  PetscCheck(d->wgauge >= 0 && !PetscIsInfOrNanReal(d->wgauge), F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sscale_gauge_weight %g: must be >= 0", F->prefix, (double)d->wgauge);
   PetscCheck(d->wspin >= 0 && !PetscIsInfOrNanReal(d->wspin), F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sspin_weight %g: must be >= 0", F->prefix, (double)d->wspin);
   PetscFunctionReturn(0);
 }
@@ -173,8 +187,6 @@ static PetscErrorCode CheckOptions(CSWillmoreFlow F)
   PetscFunctionBeginUser;
   PetscCall(PetscStrcmp(F->energy_name, "willmore", &willmore));
   PetscCheck(willmore, F->comm, PETSC_ERR_SUP, "-%senergy %s: -%stype trianglefield minimises the Willmore energy W~ of App. D.1 only", p, F->energy_name, p);
-  ((CSTriangleField *)F->data)->noconf = (PetscBool)!F->conformal; /* unconstrained W~ (Fig. 8): integrability rows only */
-  F->conformal = PETSC_TRUE; /* the multiplier block holds the integrability rows either way */
   PetscCheck(!F->area_set && !F->mobius && !F->rotation && !F->target[0], F->comm, PETSC_ERR_SUP, "-%stype trianglefield: the area, Moebius and rotation constraints and -%starget_mesh are not built for triangle fields (App. B: volume and points only)", p, p);
   PetscCheck(F->metric_type == CS_FLOW_METRIC_H2, F->comm, PETSC_ERR_SUP, "-%smetric l2: -%stype trianglefield uses the I_H1 metric (Eq. 32) only", p, p);
   PetscFunctionReturn(0);
@@ -221,8 +233,9 @@ static PetscErrorCode SetUpHarmonicRows(CSWillmoreFlow F, CSTriangleField *d)
     PetscCall(CSHarmonicBasisSetFromOptions(hb));
     PetscCall(CSHarmonicBasisGetSize(hb, &d->nforms));
   }
-  F->k = 3 * d->nforms + CSTFAppBRows(F);
+  F->k = 3 * d->nforms + CSTFAppBRows(F) + (d->spinor && d->wgauge > 0 ? 1 : 0); /* spinor: the scale gauge row last */
   if (F->k) PetscCall(VecDuplicateVecs(F->x, F->k, &F->rows));
+  if (d->spinor && d->nforms) PetscCall(VecDuplicateVecs(d->omega, 3 * d->nforms, &d->rowsOm));
   if (!hb) PetscFunctionReturn(0);
   PetscCall(DMCreateGlobalVector(d->dmH1, &y));
   PetscCall(VecGetLocalSize(y, &n));
@@ -234,10 +247,11 @@ static PetscErrorCode SetUpHarmonicRows(CSWillmoreFlow F, CSTriangleField *d)
     PetscCall(VecGetArrayRead(y, &a));
     for (PetscInt c = 0; c < 3; c++) {
       PetscScalar *r;
-      PetscCall(VecGetArray(F->rows[3 * i + c], &r));
+      Vec row = d->spinor ? d->rowsOm[3 * i + c] : F->rows[3 * i + c];
+      PetscCall(VecGetArray(row, &r));
       for (PetscInt h = 0; h < 3 * n; h++) r[h] = 0;
       for (PetscInt h = 0; h < n; h++) r[3 * h + c] = a[h];
-      PetscCall(VecRestoreArray(F->rows[3 * i + c], &r));
+      PetscCall(VecRestoreArray(row, &r));
     }
     PetscCall(VecRestoreArrayRead(y, &a));
   }
@@ -288,12 +302,19 @@ static PetscErrorCode SetUpTriangleField(CSWillmoreFlow F)
   PetscFunctionBeginUser;
   PetscCheck(m->topo.boundary_loops == 0, F->comm, PETSC_ERR_SUP, "-%stype trianglefield: the mesh %s has %" PetscInt_FMT " boundary loop(s); triangle-field flows are built for closed surfaces", F->prefix, m->name, m->topo.boundary_loops);
   PetscCall(CheckOptions(F));
+  d->noconf    = (PetscBool)!F->conformal; /* unconstrained W~ (Fig. 8): integrability rows only */
+  F->conformal = PETSC_TRUE;               /* the multiplier block holds the integrability rows either way */
   F->max_area_ratio = 0; /* the vertex-area guard measures positions */
   PetscCall(CSLensCreateHalfedgeDM(m, 1, &d->dmH1));
   PetscCall(CSLensCreateHalfedgeDM(m, 3, &d->dmH3));
   PetscCall(VecDuplicate(m->x, &d->xpos0));
   PetscCall(VecCopy(m->x, d->xpos0));
   PetscCall(VecDuplicate(m->x, &d->xpos));
+  d->flow = F;
+  if (d->spinor) {
+    PetscCall(SetUpTriangleFieldSpinor(F, d));
+    PetscFunctionReturn(0);
+  }
   PetscCall(DMCreateGlobalVector(d->dmH3, &F->x));
   PetscCall(CSTriangleFieldFromPositions(m, d->xpos0, d->dmH3, F->x));
   PetscCall(VecDuplicate(F->x, &F->x0));
@@ -314,14 +335,67 @@ static PetscErrorCode SetUpTriangleField(CSWillmoreFlow F)
   PetscFunctionReturn(0);
 }
 
+/* -flow_variables spinor: the target class l0 (the lattice's lengths, or df's), the spin structure of df, the
+   variables x = (u, psi) and their start, the energy, the rows [d1 omega; sphere] and <<Y_i|omega>>, the vectors,
+   the scaling and the saddle solver (trianglefield_spinor.c). */
+static PetscErrorCode SetUpTriangleFieldSpinor(CSWillmoreFlow F, CSTriangleField *d)
+{
+  CSMesh m = F->mesh;
+  char   prefix[80];
+  PetscFunctionBeginUser;
+  PetscCall(DMCreateGlobalVector(d->dmH1, &d->lambda));
+  PetscCall(VecDuplicate(d->lambda, &d->c0));
+  PetscCall(VecDuplicate(d->lambda, &d->lamt));
+  PetscCall(VecDuplicate(d->lambda, &d->star1));
+  PetscCall(VecDuplicate(d->lambda, &d->iqH));
+  PetscCall(DMCreateGlobalVector(m->dmV1, &d->star0));
+  PetscCall(DMCreateGlobalVector(d->dmH3, &d->omt));
+  PetscCall(CSTriangleFieldFromPositions(m, d->xpos0, d->dmH3, d->omt)); /* df: the spin structure */
+  if (m->lt) PetscCall(CSTriangleFieldLogLengthsFromEdges(m, m->lt, d->dmH1, d->lambda));
+  else PetscCall(CSTriangleFieldLogLengths(m, d->dmH3, d->omt, d->dmH1, d->lambda));
+  PetscCall(CSOperatorLensCrossRatio(m, d->dmH1, &d->C));
+  PetscCall(MatMult(d->C, d->lambda, d->c0));
+  PetscCall(CSSpinorSpaceCreate(m, d->dmH1, d->lambda, &d->sp));
+  PetscCall(CSSpinorSpaceSetConnection(d->sp, d->dmH3, d->omt));
+  PetscCall(VecDestroy(&d->omt));
+  PetscCall(CSTFSpinorSetUp(F, d));
+  PetscCall(CSTriangleFieldFromPositions(m, d->xpos0, d->dmH3, d->omega));
+  PetscCall(CSTFSpinorStart(F, d, HashUniform));
+  PetscCall(VecDuplicate(F->x, &F->x0));
+  PetscCall(VecCopy(F->x, F->x0));
+  PetscCall(CreateEnergy(F, d));
+  PetscCall(CSTFAppBSetUp(F, d));
+  PetscCheck(CSTFAppBRows(F) == 0, F->comm, PETSC_ERR_SUP, "-%svariables spinor: the App. B constraints (volume, points) are built for -%svariables omega only", F->prefix, F->prefix);
+  PetscCall(SetUpHarmonicRows(F, d));
+  if (d->wgauge > 0) { /* the gauge row: d mean(u) */
+    PetscScalar *r;
+    PetscCall(VecSet(F->rows[F->k - 1], 0));
+    PetscCall(VecGetArray(F->rows[F->k - 1], &r));
+    for (PetscInt i = 0; i < d->nVo; i++) r[i] = 1.0 / m->Nv;
+    PetscCall(VecRestoreArray(F->rows[F->k - 1], &r));
+  }
+  PetscCall(CSWFSetUpPrimalVectors(F));
+  PetscCall(VecCreateMPI(F->comm, d->nL + m->nf, PETSC_DETERMINE, &F->c)); /* rows [d1 omega; (|psi_f|^2 - 1)/2] */
+  PetscCall(CSWFSetUpMultiplierVectors(F));
+  PetscCall(SetUpScaling(F, d));
+  PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "%ssaddle_", F->prefix));
+  PetscCall(CSSaddleCreate(m, prefix, PETSC_TRUE, PETSC_TRUE, (PetscBool)(F->saddle_mat == CS_SADDLE_MAT_AIJ), F->reuse_its, F->k, &F->saddle));
+  PetscFunctionReturn(0);
+}
+
 /* x = xt done: the multipliers mu += dmu, nu += dnu (no restoration by projection: CSWFProject works on positions);
    the spinors follow omega (signs nearest to the previous ones). */
 static PetscErrorCode Accept(CSWillmoreFlow F)
 {
   CSTriangleField *d = (CSTriangleField *)F->data;
   PetscFunctionBeginUser;
-  PetscCall(CSSpinorFromTriangleField(d->sp, d->dmH3, F->x, d->psi, d->psit));
-  PetscCall(VecCopy(d->psit, d->psi));
+  if (d->spinor) { /* the renormalisation onto (S^3)^F (the step is tangent to first order) */
+    PetscCall(CSTFSpinorNormalize(F, d, F->x));
+    PetscCall(CSTFSpinorOmega(d, F->x, d->omega));
+  } else {
+    PetscCall(CSSpinorFromTriangleField(d->sp, d->dmH3, F->x, d->psi, d->psit));
+    PetscCall(VecCopy(d->psit, d->psi));
+  }
   PetscCall(VecAXPY(F->mu, 1.0, F->dmu));
   for (PetscInt j = 0; j < F->k; j++) F->nu[j] += F->dnu[j];
   PetscFunctionReturn(0);
@@ -334,7 +408,7 @@ static PetscErrorCode Positions(CSWillmoreFlow F, PetscBool initial, Vec *x)
   PetscFunctionBeginUser;
   if (initial) *x = d->xpos0;
   else {
-    PetscCall(CSTriangleFieldReconstruct(F->mesh, d->dmH1, d->dmH3, F->x, d->xpos0, d->xpos));
+    PetscCall(CSTriangleFieldReconstruct(F->mesh, d->dmH1, d->dmH3, d->spinor ? d->omega : F->x, d->xpos0, d->xpos));
     *x = d->xpos;
   }
   PetscFunctionReturn(0);
@@ -362,6 +436,9 @@ static PetscErrorCode Destroy(CSWillmoreFlow F)
   PetscCall(VecDestroy(&d->xpos));
   PetscCall(VecDestroy(&d->psi));
   PetscCall(VecDestroy(&d->psit));
+  PetscCall(VecDestroy(&d->lamt));
+  PetscCall(VecDestroy(&d->gspin));
+  PetscCall(CSTFSpinorDestroy(d));
   PetscCall(CSSpinorSpaceDestroy(&d->sp));
   PetscCall(PetscFree(F->data));
   PetscFunctionReturn(0);
@@ -392,5 +469,6 @@ PetscErrorCode CSWillmoreFlowCreate_TriangleField(CSWillmoreFlow F)
   d->seed              = 1;
   d->amp               = 0.5;
   d->wrelax            = 1e4;
+  d->wgauge            = 0;
   PetscFunctionReturn(0);
 }

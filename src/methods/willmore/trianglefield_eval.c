@@ -11,6 +11,10 @@ PetscErrorCode CSTFConstraints(CSWillmoreFlow F, Vec x, Vec c, PetscReal cx[], P
   PetscScalar       *a;
   const PetscScalar *b;
   PetscFunctionBeginUser;
+  if (d->spinor) {
+    PetscCall(CSTFSpinorConstraints(F, x, c, cx, wantJ));
+    PetscFunctionReturn(0);
+  }
   PetscCall(CSTriangleFieldLogLengths(F->mesh, d->dmH3, x, d->dmH1, d->lambda));
   PetscCall(VecGetArray(c, &a));
   if (!d->noconf) { /* conformal rows: C~ lambda - c0 written straight into c's first nH entries */
@@ -65,6 +69,52 @@ static PetscErrorCode Violations(CSWillmoreFlow F)
   PetscFunctionReturn(0);
 }
 
+/* The spinor variables' violations: the class |C~ lambda(omega) - c0|inf is measured (S_c meets it by
+   construction), integrability = max(d1 omega, <<Y|omega>>), glob also the sphere rows. */
+static PetscErrorCode ViolationsSpinor(CSWillmoreFlow F, CSTriangleField *d)
+{
+  PetscReal          vl = 0, vs = 0, vy = 0;
+  const PetscScalar *a;
+  PetscFunctionBeginUser;
+  PetscCall(CSTriangleFieldLogLengths(F->mesh, d->dmH3, d->omega, d->dmH1, d->lamt));
+  PetscCall(MatMult(d->C, d->lamt, d->star1));
+  PetscCall(VecAXPY(d->star1, -1.0, d->c0));
+  PetscCall(VecNorm(d->star1, NORM_INFINITY, &F->conf));
+  PetscCall(VecGetArrayRead(F->c, &a));
+  for (PetscInt i = 0; i < d->nL; i++) vl = PetscMax(vl, PetscAbsScalar(a[i]));
+  for (PetscInt i = d->nL; i < d->nL + F->mesh->nf; i++) vs = PetscMax(vs, PetscAbsScalar(a[i]));
+  PetscCall(VecRestoreArrayRead(F->c, &a));
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &vl, 1, MPIU_REAL, MPIU_MAX, F->comm));
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &vs, 1, MPIU_REAL, MPIU_MAX, F->comm));
+  for (PetscInt j = 0; j < 3 * d->nforms; j++) vy = PetscMax(vy, PetscAbsReal(F->cx[j]));
+  F->integ = PetscMax(vl, vy);
+  F->glob  = PetscMax(F->integ, vs);
+  PetscFunctionReturn(0);
+}
+
+/* CSTFEvaluate for x = (u, psi): omega = S_c(x), E, its gradient, the rows, the residual, the violations, the
+   stars and area of omega, and the spinor diagnostics of psi itself (pinch edges, E_tau). */
+static PetscErrorCode EvaluateSpinor(CSWillmoreFlow F, CSTriangleField *d)
+{
+  PetscScalar A;
+  PetscFunctionBeginUser;
+  PetscCall(CSTFSpinorOmega(d, F->x, d->omega));
+  PetscCall(CSEnergyGradient(F->energy, F->x, &F->E, F->g));
+  PetscCall(CSWFEvalConstraints(F, F->x, F->c, F->cx, PETSC_TRUE));
+  PetscCall(CSWFResidual(F, &F->el));
+  PetscCall(ViolationsSpinor(F, d));
+  PetscCall(CSTriangleFieldStars(F->mesh, d->dmH3, d->omega, d->dmH1, d->star1, d->star0));
+  PetscCall(VecSum(d->star0, &A));
+  F->A = PetscRealPart(A);
+  PetscCall(CSTFSpinorOmega(d, F->x, d->omt)); /* d->pg = psi of x */
+  PetscCall(CSSpinorPinchEdges(d->sp, d->pg, &F->pinch, NULL));
+  PetscCall(CSSpinorDirichlet(d->sp, d->pg, &F->espin, NULL));
+  F->V      = 0;
+  F->spread = 0;
+  F->qmax   = 0;
+  PetscFunctionReturn(0);
+}
+
 /* Everything the stopping test, the monitors and the step need at x = omega: W~ and its gradient (App. D.1), the
    rows, the residual r = g + X^T mu + sum_j nu_j row_j, the violations, the triangle field's stars and area. */
 PetscErrorCode CSTFEvaluate(CSWillmoreFlow F)
@@ -72,6 +122,10 @@ PetscErrorCode CSTFEvaluate(CSWillmoreFlow F)
   CSTriangleField *d = (CSTriangleField *)F->data;
   PetscScalar      A;
   PetscFunctionBeginUser;
+  if (d->spinor) {
+    PetscCall(EvaluateSpinor(F, d));
+    PetscFunctionReturn(0);
+  }
   PetscCall(CSEnergyGradient(F->energy, F->x, &F->E, F->g));
   PetscCall(CSWFEvalConstraints(F, F->x, F->c, F->cx, PETSC_TRUE));
   PetscCall(CSWFResidual(F, &F->el));
@@ -91,7 +145,7 @@ PetscErrorCode CSTFEvaluate(CSWillmoreFlow F)
 /* The metric of the primal step: I_H1 = *1/s^2 + *1 d0 *0^{-1} d0^T *1 (soliman2021 Eq. 32) per component, with *1
    floored at -flow_iq_wmin so that it is positive definite, and the 1/s^2 (s^2 = area/4pi of the input) making it
    scale like length^-2 as the H^2 metric of Algorithm 1 (docs/triangle_fields.md). */
-static PetscErrorCode Metric(CSWillmoreFlow F)
+static PetscErrorCode Metric(CSWillmoreFlow F, Mat *H)
 {
   CSTriangleField *d = (CSTriangleField *)F->data;
   Vec              s1;
@@ -110,9 +164,29 @@ static PetscErrorCode Metric(CSWillmoreFlow F)
   PetscCall(CSOperatorLensH1Metric(F->mesh, d->dmH1, s1, d->star0, &H1));
   PetscCall(VecScale(s1, 1.0 / d->sc - 1.0));
   PetscCall(MatDiagonalSet(H1, s1, ADD_VALUES));
-  PetscCall(CSMatKronIdentity(H1, 3, F->metric.H ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX, &F->metric.H));
+  PetscCall(CSMatKronIdentity(H1, 3, *H ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX, H));
   PetscCall(MatDestroy(&H1));
   PetscCall(VecDestroy(&s1));
+  PetscFunctionReturn(0);
+}
+
+/* The spinor variables' step operators: the metric J^T I_H1 J + radial (CSTFSpinorMetric, I_H1 at omega), and the
+   multipliers' metric: the integrability weight on the lens rows and the period rows, the stiff -flow_integrability_
+   weight on the sphere rows. J is the one of the last evaluation (at x). */
+static PetscErrorCode OperatorsSpinor(CSWillmoreFlow F, CSTriangleField *d)
+{
+  PetscScalar *a;
+  PetscFunctionBeginUser;
+  PetscCall(Metric(F, &d->Hom));
+  PetscCall(CSTFSpinorJacobian(F, d, F->x));
+  PetscCall(CSTFSpinorMetric(F, d));
+  PetscCall(VecGetArray(F->iq, &a));
+  for (PetscInt i = 0; i < d->nL; i++) a[i] = CSTFIntegrabilityWeight(F, d);
+  for (PetscInt i = d->nL; i < d->nL + F->mesh->nf; i++) a[i] = d->wint;
+  PetscCall(VecRestoreArray(F->iq, &a));
+  if (F->k) PetscCall(CSWFGlobalWeights(F));
+  for (PetscInt j = 0; j < 3 * d->nforms; j++) F->gw[j] *= CSTFIntegrabilityWeight(F, d);
+  if (d->wgauge > 0) F->gw[F->k - 1] *= d->wgauge; /* the scale gauge row */
   PetscFunctionReturn(0);
 }
 
@@ -131,7 +205,11 @@ PetscErrorCode CSTFOperators(CSWillmoreFlow F)
   const PetscScalar *b;
   PetscFunctionBeginUser;
   CSTFScheduleApply(F, d);
-  PetscCall(Metric(F));
+  if (d->spinor) {
+    PetscCall(OperatorsSpinor(F, d));
+    PetscFunctionReturn(0);
+  }
+  PetscCall(Metric(F, &F->metric.H));
   PetscCall(CSTriangleFieldQuadDiffMetric(F->mesh, d->dmH3, F->x, d->dmH1, F->wmin, d->iqH, &ng));
   F->nguard = PetscMax(F->nguard, ng);
   PetscCall(VecGetArray(F->iq, &a));

@@ -35,7 +35,21 @@ typedef struct {
   CSSpinorSpace sp;        /* charts of the target metric, spin connection of the input (App. C) */
   Vec       psi, psit;     /* the face spinors of the accepted omega (signs followed along the flow), a work copy */
   PetscReal wspin;         /* -flow_spin_weight: the energy is W~ + wspin E_tau(psi(omega)) (App. C.3) */
+  Vec       gspin;         /* grad_omega E_tau(psi(omega)) (dmH3), created at the first weighted gradient */
+  /* -flow_variables spinor (trianglefield_spinor.c): x = (u, psi), omega = S_c(u, psi) (App. C.2) */
+  PetscBool spinor;
+  CSWillmoreFlow flow;     /* the flow (for the energy's evaluations) */
+  PetscInt  nVo, xstart;   /* owned vertices (the u part of x), first global index of x on this rank */
+  Vec       ug, pg, gpsi;  /* u (dmV1), psi (dmF4) of the last split x, grad E_tau (dmF4) */
+  Vec       omega, omt, gom; /* S_c of the accepted x, of the last evaluated x, grad W~ (dmH3) */
+  Vec       lamt;          /* log lengths of omega (dmH1): the measured class C~ lambda - c0 */
+  Mat       J, P, KJ, Hom; /* dS_c, the sphere rows' Jacobian, Kd1 J, the triangle fields' metric I_H1 */
+  PetscReal wgauge;        /* -flow_scale_gauge_weight: multiplier metric of the gauge row (relative to |row|^2) */
+  PetscReal mshift;        /* -flow_spinor_metric_shift: + mshift a I on the pulled-back metric (0: none) */
+  PetscReal ubar0;         /* the scale gauge: mean(u) of the start */
+  Vec      *rowsOm;        /* the <<Y_i|.>> rows on triangle fields (F->rows holds J^T of them) */
 } CSTriangleField;
+PETSC_INTERN const char *const CSTriangleFieldVariables[];
 
 PETSC_INTERN PetscErrorCode CSTFConstraints(CSWillmoreFlow F, Vec x, Vec c, PetscReal cx[], PetscBool wantJ);
 PETSC_INTERN PetscErrorCode CSTFEvaluate(CSWillmoreFlow F);
@@ -48,4 +62,14 @@ PETSC_INTERN PetscInt       CSTFAppBRows(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSTFScheduleSetFromOptions(CSWillmoreFlow F, CSTriangleField *d);
 PETSC_INTERN PetscReal      CSTFIntegrabilityWeight(CSWillmoreFlow F, CSTriangleField *d);
 PETSC_INTERN void           CSTFScheduleApply(CSWillmoreFlow F, CSTriangleField *d);
+/* trianglefield_spinor.c: the spinor variables (App. C.2, C.3) */
+PETSC_INTERN PetscErrorCode CSTFSpinorSetUp(CSWillmoreFlow F, CSTriangleField *d);
+PETSC_INTERN PetscErrorCode CSTFSpinorStart(CSWillmoreFlow F, CSTriangleField *d, PetscReal (*hash)(PetscInt, PetscInt, PetscInt, PetscInt));
+PETSC_INTERN PetscErrorCode CSTFSpinorOmega(CSTriangleField *d, Vec x, Vec omega);
+PETSC_INTERN PetscErrorCode CSTFSpinorJacobian(CSWillmoreFlow F, CSTriangleField *d, Vec x);
+PETSC_INTERN PetscErrorCode CSTFSpinorEnergy(CSWillmoreFlow F, CSTriangleField *d, Vec x, PetscReal *E, Vec g);
+PETSC_INTERN PetscErrorCode CSTFSpinorConstraints(CSWillmoreFlow F, Vec x, Vec c, PetscReal cx[], PetscBool wantJ);
+PETSC_INTERN PetscErrorCode CSTFSpinorMetric(CSWillmoreFlow F, CSTriangleField *d);
+PETSC_INTERN PetscErrorCode CSTFSpinorNormalize(CSWillmoreFlow F, CSTriangleField *d, Vec x);
+PETSC_INTERN PetscErrorCode CSTFSpinorDestroy(CSTriangleField *d);
 #endif
