@@ -2,7 +2,7 @@
 #include "willmore_impl.h"
 #include "cs_util.h"
 
-const char *const CSFlowMetricTypes[]   = {"h2", "l2", "CSFlowMetricType", "CS_FLOW_METRIC_", NULL};
+const char *const CSFlowMetricTypes[]   = {"h2", "l2", "h1", "CSFlowMetricType", "CS_FLOW_METRIC_", NULL};
 const char *const CSFlowBoundaryTypes[] = {"dirichlet", "free", "normals", "CSFlowBoundaryType", "CS_FLOW_BOUNDARY_", NULL};
 const char *const CSALMMetricTypes[]    = {"plain", "gauss_newton", "CSALMMetricType", "CS_ALM_METRIC_", NULL};
 const char *const CSSaddleMatTypes[]    = {"nest", "aij", "CSSaddleMatType", "CS_SADDLE_MAT_", NULL};
@@ -73,7 +73,7 @@ static PetscErrorCode ProblemOptions(CSWillmoreFlow F, PetscFunctionList energie
 {
   PetscBool conformal = F->ops.conformal;
   PetscFunctionBeginUser;
-  PetscCall(PetscOptionsEnum("-metric", "Metric of the primal step (soliman2021 Eq. 26 or the mass)", NULL, CSFlowMetricTypes, (PetscEnum)F->metric_type, (PetscEnum *)&F->metric_type, NULL));
+  PetscCall(PetscOptionsEnum("-metric", "Metric of the primal step: H^2 (soliman2021 Eq. 26), the mass (l2), or H^1 = sqrt(w) *0 + L, of the area energy's order (docs/boundary_twist.md)", NULL, CSFlowMetricTypes, (PetscEnum)F->metric_type, (PetscEnum *)&F->metric_type, NULL));
   PetscCall(PetscOptionsFList("-energy", "Energy of the flow", NULL, energies, F->energy_name, F->energy_name, sizeof(F->energy_name), NULL));
   PetscCall(PetscOptionsReal("-fairing_epsilon", "Weight of W in the fairing energy (soliman2021 Eq. 21)", NULL, F->eps, &F->eps, NULL));
   PetscCall(PetscOptionsBool("-conformal", "Exact conformal constraint (default on for cgd and pgd)", NULL, conformal, &conformal, &F->conformal_set));
