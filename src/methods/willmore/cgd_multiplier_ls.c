@@ -1,15 +1,14 @@
-/* CGD's least-squares multiplier estimate (-flow_multiplier_ls_every K; docs/boundary_twist.md "The fix").
-   CGD's dual step (soliman2021 Sec. 4.2, Algorithm 1 line 11 with the I_Q metric of Eq. 25) restores a constraint
-   direction of singular value s of X = C Dlambda at the rate ~ t t_mu s^2 / lambda_H; a nearly dependent
-   direction (the annulus' modulus with both boundary rings held: s ~ 3e-3) then creeps at 1 - 5e-5 per step.
-   Every K accepted iterations, before the step, the multipliers are replaced by
-       [mu; nu] <- argmin || g + X^T mu + B^T nu ||_{H^-1}
-   (at the current x, with H the step's metric): the saddle system of the step with rhs [0; -r; 0] (r = g + X^T mu
-   + B^T nu) and the dual step t_mu scaled by -flow_multiplier_ls_factor, which is t t_mu -> infinity on every
-   direction, solves  X H^-1 X^T dmu = -X H^-1 r  up to the exact dependencies of X (regularised away: -I_Q/t_mu).
-   The primal state is not moved. At CGD's fixed point (c = 0, r = 0: the constrained Euler-Lagrange equation,
-   soliman2021 Theorem 3.2) the right-hand side is zero, so dmu = 0 and the fixed point, hence the converged
-   answer, is unchanged; away from it mu is the multiplier that the constrained EL equation would have at x. */
+/* CGD's least-squares multipliers with a Gauss-Newton projection (-flow_multiplier_ls_every K; docs/boundary_twist.md
+   "The fix"). CGD's dual step (soliman2021 Sec. 4.2, Algorithm 1 line 11 with the I_Q metric of Eq. 25) restores a
+   constraint direction of singular value s of X = C Dlambda at the rate ~ t t_mu s^2 / lambda_H; a nearly dependent
+   direction (the annulus' modulus with both boundary rings held: s ~ 3e-3) then creeps at 1 - 5e-5 per step. Every
+   K iterations, with one factorisation each of the step's saddle matrix at t = 1 and t_mu = -flow_multiplier_ls_t_mu
+   (t t_mu -> infinity on every direction; the exact dependencies of X stay regularised by -I_Q/t_mu):
+     1. after the accepted step, PGD's Gauss-Newton projection onto c = 0 (projection.c) with that t_mu;
+     2. before the next step, at the projected state, [mu; nu] <- argmin || g + X^T mu + B^T nu ||_{H^-1}: the
+        saddle system with right-hand side [0; -r; 0], r = g + X^T mu + B^T nu, i.e. X H^-1 X^T dmu = -X H^-1 r.
+   At CGD's fixed point (c = 0, r = 0: the constrained Euler-Lagrange equation, soliman2021 Theorem 3.2) the
+   projection is skipped and dmu = 0, so the fixed points, hence the converged answers, are unchanged. */
 #include "willmore_impl.h"
 
 PetscErrorCode CSWFMultiplierLSOptions(CSWillmoreFlow F, PetscOptionItems *PetscOptionsObject)
