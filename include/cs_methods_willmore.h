@@ -52,7 +52,7 @@ typedef enum { CS_WILLMORE_FLOW_DEGENERATION_NONE, CS_WILLMORE_FLOW_DEGENERATION
 PETSC_EXTERN const char *const CSWillmoreFlowDegenerations[];
 
 /* Enumerated options (PetscOptionsEnum tables: values, then the enum name, the prefix, NULL). */
-typedef enum { CS_FLOW_METRIC_H2, CS_FLOW_METRIC_L2 } CSFlowMetricType;
+typedef enum { CS_FLOW_METRIC_H2, CS_FLOW_METRIC_L2, CS_FLOW_METRIC_H1 } CSFlowMetricType;
 typedef enum { CS_FLOW_BOUNDARY_DIRICHLET, CS_FLOW_BOUNDARY_FREE, CS_FLOW_BOUNDARY_NORMALS } CSFlowBoundaryType;
 typedef enum { CS_SADDLE_MAT_NEST, CS_SADDLE_MAT_AIJ } CSSaddleMatType;
 typedef enum { CS_ALM_METRIC_PLAIN, CS_ALM_METRIC_GAUSS_NEWTON } CSALMMetricType;

@@ -33,7 +33,8 @@ PETSC_EXTERN PetscErrorCode CSOperatorQuadDiffMetric(CSMesh mesh, Vec x, PetscRe
    in both terms and the flow does not depend on the size of the input (s = 1: Eq. 26 as printed). */
 typedef struct {
   CSMesh    mesh;
-  PetscBool h2;        /* else L2 */
+  PetscBool h2;        /* else L2, or H^1 if h1 */
+  PetscBool h1;        /* H^1 = sqrt(w) *0 + L (set after Create; h2 false): the order of the area energy's Hessian */
   PetscReal mass_weight; /* w in w *0 + L *0^{-1} L (1 after Create; see CSMetricCreate) */
   PetscReal scale;       /* the metric is scale (w *0 + L *0^{-1} L) (1 after Create; the fairing energy: eps) */
   Mat       L3, Ls;    /* L and *0^{-1} L (rows scaled) */

@@ -34,6 +34,25 @@ PetscErrorCode CSMetricCreate(CSMesh mesh, PetscBool h2, CSMetric *m)
   PetscFunctionReturn(0);
 }
 
+/* H^1 = scale (sqrt(w) *0 + L): the metric of the area energy's order (its Hessian is ~ L, second order), so
+   that its grid-scale modes are not slowed by h^2 as under H^2 (docs/boundary_twist.md); sqrt(w) = 1/s^2 makes
+   both terms size-free, as w does for H^2. */
+static PetscErrorCode UpdateH1(CSMetric *m, Vec x)
+{
+  PetscBool first = m->L3 ? PETSC_FALSE : PETSC_TRUE;
+  PetscReal sw    = PetscSqrtReal(m->mass_weight);
+  PetscFunctionBeginUser;
+  PetscCall(CSOperatorLaplacian3(m->mesh, x, first ? MAT_INITIAL_MATRIX : MAT_REUSE_MATRIX, &m->L3));
+  if (first) PetscCall(MatDuplicate(m->L3, MAT_COPY_VALUES, &m->H));
+  else PetscCall(MatCopy(m->L3, m->H, SAME_NONZERO_PATTERN));
+  PetscCall(VecScale(m->m3, sw));
+  PetscCall(MatDiagonalSet(m->H, m->m3, ADD_VALUES));
+  PetscCall(VecScale(m->m3, 1.0 / sw));
+  if (m->scale != 1) PetscCall(MatScale(m->H, m->scale));
+  PetscCall(MatSetOption(m->H, MAT_SYMMETRIC, PETSC_TRUE));
+  PetscFunctionReturn(0);
+}
+
 /* The product L *0^{-1} L couples two-rings, beyond the closure adjacency of the DM, so it is formed with
    MatMatMult (docs/solvers.md), symbolic product reused from the second call on. */
 PetscErrorCode CSMetricUpdate(CSMetric *m, Vec x)
@@ -60,7 +79,8 @@ PetscErrorCode CSMetricUpdate(CSMetric *m, Vec x)
   PetscCall(VecRestoreArray(m->m3, &m3));
   PetscCall(VecRestoreArrayRead(a, &aa));
   PetscCall(DMRestoreGlobalVector(mesh->dmV1, &a));
-  if (m->h2) {
+  if (m->h1) PetscCall(UpdateH1(m, x));
+  else if (m->h2) {
     PetscBool first = m->L3 ? PETSC_FALSE : PETSC_TRUE;
     PetscCall(CSOperatorLaplacian3(mesh, x, first ? MAT_INITIAL_MATRIX : MAT_REUSE_MATRIX, &m->L3));
     if (first) PetscCall(MatDuplicate(m->L3, MAT_COPY_VALUES, &m->Ls));

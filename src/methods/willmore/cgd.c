@@ -9,6 +9,7 @@ PetscErrorCode CSWFAcceptCGD(CSWillmoreFlow F)
   if (F->conformal || F->k) PetscCall(CSWFRestore(F, &F->kspits));
   if (F->conformal) PetscCall(VecAXPY(F->mu, 1.0, F->dmu));
   for (PetscInt j = 0; j < F->k; j++) F->nu[j] += F->dnu[j];
+  PetscCall(CSWFMultiplierLSRestore(F));
   PetscFunctionReturn(0);
 }
 
@@ -48,5 +49,6 @@ PetscErrorCode CSWillmoreFlowCreate_CGD(CSWillmoreFlow F)
   F->ops.accept    = CSWFAcceptCGD;
   F->ops.grow      = CSWFGrowCGD;
   F->ops.shrink    = CSWFShrinkCGD;
+  F->ops.dual      = CSWFMultiplierLS;
   PetscFunctionReturn(0);
 }

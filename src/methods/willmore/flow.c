@@ -69,6 +69,8 @@ static void SetDefaults(CSWillmoreFlow F)
   F->proj_max_it     = 20;
   F->soc_max_it      = 2;
   F->proj_tmu        = 1e6;
+  F->mu_ls_every     = 0;
+  F->mu_ls_tmu       = 1e12;
   F->step_control    = PETSC_TRUE;
   F->vmax            = 1e-2;
   F->restore_stalled = PETSC_TRUE;

@@ -2,7 +2,7 @@
 #include "willmore_impl.h"
 #include "cs_util.h"
 
-const char *const CSFlowMetricTypes[]   = {"h2", "l2", "CSFlowMetricType", "CS_FLOW_METRIC_", NULL};
+const char *const CSFlowMetricTypes[]   = {"h2", "l2", "h1", "CSFlowMetricType", "CS_FLOW_METRIC_", NULL};
 const char *const CSFlowBoundaryTypes[] = {"dirichlet", "free", "normals", "CSFlowBoundaryType", "CS_FLOW_BOUNDARY_", NULL};
 const char *const CSALMMetricTypes[]    = {"plain", "gauss_newton", "CSALMMetricType", "CS_ALM_METRIC_", NULL};
 const char *const CSSaddleMatTypes[]    = {"nest", "aij", "CSSaddleMatType", "CS_SADDLE_MAT_", NULL};
@@ -54,6 +54,7 @@ static PetscErrorCode StepOptions(CSWillmoreFlow F, PetscOptionItems *PetscOptio
   PetscCall(PetscOptionsReal("-max_seconds", "Stop (as at max_it) once this many seconds have passed since the set-up (0: no limit); rank 0's clock decides for all ranks", NULL, F->max_seconds, &F->max_seconds, NULL));
   PetscCall(PetscOptionsReal("-iq_wmin", "Floor on cotan weights in I_Q (Eq. 25) for non-Delaunay edges", NULL, F->wmin, &F->wmin, NULL));
   PetscCall(PetscOptionsReal("-pgd_t_mu", "PGD: regularising dual step of the (singular) PGD system and of the projection", NULL, F->proj_tmu, &F->proj_tmu, NULL));
+  PetscCall(CSWFMultiplierLSOptions(F, PetscOptionsObject));
   PetscCall(PetscOptionsInt("-soc_max_it", "CGD/GD: second-order corrections of each trial step toward the constraints (0: none)", NULL, F->soc_max_it, &F->soc_max_it, NULL));
   PetscCall(PetscOptionsInt("-pgd_projection_max_it", "PGD: Gauss-Newton iterations of the projection onto the constraint set", NULL, F->proj_max_it, &F->proj_max_it, NULL));
   PetscCall(PetscOptionsInt("-factor_reuse_its", "Keep the preconditioner (factorisation) of an earlier step while the last solve needed at most this many Krylov iterations (0: refactor every step; default 10 with the conformal constraint, else 0; ignored with a preonly saddle KSP)", NULL, F->reuse_its, &F->reuse_its, &set));
@@ -72,7 +73,7 @@ static PetscErrorCode ProblemOptions(CSWillmoreFlow F, PetscFunctionList energie
 {
   PetscBool conformal = F->ops.conformal;
   PetscFunctionBeginUser;
-  PetscCall(PetscOptionsEnum("-metric", "Metric of the primal step (soliman2021 Eq. 26 or the mass)", NULL, CSFlowMetricTypes, (PetscEnum)F->metric_type, (PetscEnum *)&F->metric_type, NULL));
+  PetscCall(PetscOptionsEnum("-metric", "Metric of the primal step: H^2 (soliman2021 Eq. 26), the mass (l2), or H^1 = sqrt(w) *0 + L, of the area energy's order (docs/boundary_twist.md)", NULL, CSFlowMetricTypes, (PetscEnum)F->metric_type, (PetscEnum *)&F->metric_type, NULL));
   PetscCall(PetscOptionsFList("-energy", "Energy of the flow", NULL, energies, F->energy_name, F->energy_name, sizeof(F->energy_name), NULL));
   PetscCall(PetscOptionsReal("-fairing_epsilon", "Weight of W in the fairing energy (soliman2021 Eq. 21)", NULL, F->eps, &F->eps, NULL));
   PetscCall(PetscOptionsBool("-conformal", "Exact conformal constraint (default on for cgd and pgd)", NULL, conformal, &conformal, &F->conformal_set));

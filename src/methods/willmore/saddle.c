@@ -138,6 +138,7 @@ static PetscErrorCode AssembleSchurIS(CSSaddle *s, Vec iq, PetscReal tmu, Mat X)
   PetscInt  n = 0;
   PetscFunctionBeginUser;
   PetscCheck(m, s->mesh->comm, PETSC_ERR_ARG_WRONGSTATE, "-%sschur_solver bddc: no metric to build the unassembled Schur complement from", s->prefix);
+  PetscCheck(!m->h1, s->mesh->comm, PETSC_ERR_SUP, "-%sschur_solver bddc: not built for -flow_metric h1 (use the direct Schur solve)", s->prefix);
   PetscCall(VecDuplicate(iq, &w[1]));
   PetscCall(VecCopy(iq, w[1]));
   PetscCall(VecReciprocal(w[1]));

@@ -198,6 +198,7 @@ PetscErrorCode CSWillmoreFlowSetUp(CSWillmoreFlow F)
   PetscCall(CSWFSetUpConstraints(F));
   PetscCall(CSWFSetUpVectors(F));
   PetscCall(CSMetricCreate(F->mesh, (PetscBool)(F->metric_type == CS_FLOW_METRIC_H2), &F->metric));
+  F->metric.h1 = (PetscBool)(F->metric_type == CS_FLOW_METRIC_H1);
   PetscCall(CSWFSetUpScaling(F));
   PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "%ssaddle_", F->prefix));
   /* ALM with the plain metric: the metric solve alone, no multiplier block and no bordering */

@@ -144,6 +144,7 @@ PetscErrorCode CSWillmoreFlowStep(CSWillmoreFlow F, CSWillmoreFlowConvergedReaso
   }
   if (!F->reason) {
     PetscCall(Operators(F));
+    if (F->ops.dual) PetscCall((*F->ops.dual)(F));
     PetscCall(StepWithRejections(F, &accepted));
     if (!accepted && !F->reason) F->reason = CS_WILLMORE_FLOW_DIVERGED_REJECTIONS;
   }

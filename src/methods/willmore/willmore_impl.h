@@ -74,6 +74,7 @@ struct _CSWillmoreFlowOps {
   PetscErrorCode (*accept)(CSWillmoreFlow);              /* x = xt done: multipliers, restoration */
   PetscErrorCode (*grow)(CSWillmoreFlow);                /* step sizes after an accepted step */
   PetscErrorCode (*shrink)(CSWillmoreFlow);              /* step sizes after a rejected step */
+  PetscErrorCode (*dual)(CSWillmoreFlow);                /* before the step, after its operators: a multiplier estimate (NULL: none) */
   PetscErrorCode (*residual)(CSWillmoreFlow, PetscReal *); /* the stopping residual at x (NULL: el_residual) */
   PetscErrorCode (*destroy)(CSWillmoreFlow);             /* the kind's own data (NULL: none) */
   PetscReal max_step;       /* default of -flow_max_step (0: off) */
@@ -152,6 +153,8 @@ struct _p_CSWillmoreFlow {
   PetscReal             proj_tmu;
   PetscReal             tmu_grow, tmu_max; /* own schedule of the dual step (0: t_mu follows t) */
   PetscReal             tmu_ratio_max;     /* following t: t_mu <= this * t (1e3 times the initial t_mu / t) */
+  PetscInt              mu_ls_every, mu_ls_count; /* CGD: least-squares multiplier estimate every mu_ls_every its (cgd_multiplier_ls.c), estimates made */
+  PetscReal             mu_ls_tmu;         /* t_mu (with t = 1) of its projection and least-squares solve */
   PetscReal             alm_rho, alm_grow, alm_rho_max; /* ALM penalty (relative to |E(input)|), its growth, ceiling */
   PetscInt              alm_inner_it;      /* ALM: accepted steps per inner loop */
   CSALMMetricType       alm_metric;        /* ALM: metric of the inner steps */
@@ -224,6 +227,10 @@ PETSC_INTERN PetscErrorCode CSWillmoreFlowCreate_ALM(CSWillmoreFlow);
 PETSC_INTERN PetscErrorCode CSWillmoreFlowCreate_Fairing(CSWillmoreFlow); /* the kind named by F->type */
 PETSC_INTERN PetscErrorCode CSWillmoreFlowCreate_TriangleField(CSWillmoreFlow);
 PETSC_INTERN PetscErrorCode CSWFMultiplierEstimate(CSWillmoreFlow F, Vec c, const PetscReal cx[]);
+/* cgd_multiplier_ls.c */
+PETSC_INTERN PetscErrorCode CSWFMultiplierLSOptions(CSWillmoreFlow F, PetscOptionItems *PetscOptionsObject);
+PETSC_INTERN PetscErrorCode CSWFMultiplierLS(CSWillmoreFlow F);
+PETSC_INTERN PetscErrorCode CSWFMultiplierLSRestore(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFAcceptCGD(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFGrowCGD(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFShrinkCGD(CSWillmoreFlow F);
