@@ -205,6 +205,7 @@ PETSC_INTERN PetscErrorCode CSWFProject(CSWillmoreFlow F, Vec x, PetscBool *ok, 
 PETSC_INTERN PetscErrorCode CSWFRestore(CSWillmoreFlow F, PetscInt *kspits);
 /* guards.c */
 PETSC_INTERN PetscErrorCode CSWFMeasureQuality(CSWillmoreFlow F);
+PETSC_INTERN PetscErrorCode CSWFMeasureQualityOf(CSWillmoreFlow F, Vec x0, Vec x);
 PETSC_INTERN PetscErrorCode CSWFCheckResolution(CSWillmoreFlow F, CSWillmoreFlowConvergedReason *reason);
 PETSC_INTERN PetscErrorCode CSWFCheckFolds(CSWillmoreFlow F, PetscBool *folded);
 PETSC_INTERN PetscErrorCode CSWFCheckStepGeometry(CSWillmoreFlow F, PetscBool *accept);
