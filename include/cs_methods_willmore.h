@@ -69,6 +69,9 @@ typedef struct {
   PetscInt         ksp_its_total, rejections, nguard, pc_setups, linear_solves;
   PetscReal        area_spread, q_max, seconds;
   PetscReal        violation_max;       /* the largest constraint violation (conformal or global) of any iterate */
+  PetscReal        violation_min;       /* the smallest of any iterate */
+  PetscInt         violation_max_it, violation_min_it; /* their iterations */
+  PetscBool        violation_grew;      /* the last state's violation is above ctol and 10x violation_min */
   CSWillmoreFlowDegeneration degeneration; /* set when the resolution guard stopped the flow */
   PetscReal        integrability_violation; /* trianglefield: max of |d1 omega|, face closure, |<<Y_i|omega>>| (-1: other kinds) */
   PetscReal        spin_energy;         /* trianglefield: E_tau(psi(omega)) (App. C.3), unweighted */

@@ -25,6 +25,10 @@ static PetscErrorCode SummaryKeys(CSWillmoreFlow flow, CSOutput *out, const CSWi
   PetscCall(CSJSONAddReal(out->json, "energy", i->energy));
   PetscCall(CSJSONAddReal(out->json, "area_spread", i->area_spread));
   PetscCall(CSJSONAddReal(out->json, "violation_max", i->violation_max)); /* a violation that grew and was projected away at the stop stays visible */
+  PetscCall(CSJSONAddBool(out->json, "violation_grew", i->violation_grew)); /* issue 21: the violation never grows unreported */
+  PetscCall(CSJSONAddReal(out->json, "violation_min", i->violation_min));
+  PetscCall(CSJSONAddInt(out->json, "violation_min_iteration", i->violation_min_it));
+  PetscCall(CSJSONAddInt(out->json, "violation_max_iteration", i->violation_max_it));
   PetscCall(CSJSONAddReal(out->json, "conformal_violation", i->conformal_violation));
   PetscCall(CSJSONAddReal(out->json, "constraint_violation", i->constraint_violation));
   PetscCall(CSJSONAddReal(out->json, "el_residual", i->el_residual));
@@ -66,8 +70,10 @@ PetscErrorCode CSWillmoreFlowReport(CSWillmoreFlow flow, CSOutput *out)
   CSWillmoreFlowConvergedReason reason;
   CSMesh                        mesh;
   Vec                           x, x0;
+  const char                   *prefix;
   PetscFunctionBeginUser;
   PetscCall(CSWillmoreFlowCheckpointFinal(flow, out));
+  PetscCall(CSWillmoreFlowGetOptionsPrefix(flow, &prefix));
   PetscCall(CSWillmoreFlowGetInfo(flow, &i));
   PetscCall(CSWillmoreFlowGetType(flow, &type));
   PetscCall(CSWillmoreFlowGetConvergedReason(flow, &reason));
@@ -75,6 +81,7 @@ PetscErrorCode CSWillmoreFlowReport(CSWillmoreFlow flow, CSOutput *out)
   PetscCall(CSWillmoreFlowGetSolution(flow, &x));
   PetscCall(CSWillmoreFlowGetInitial(flow, &x0));
   PetscCall(PetscPrintf(mesh->comm, "flow %s: %s after %" PetscInt_FMT " iterations (%s; %" PetscInt_FMT " rejected steps, %" PetscInt_FMT " KSP iterations, %" PetscInt_FMT " edges with guarded I_Q weight), %.3f s; conformal violation %.2e, constraint violation %.2e (largest of the run %.2e), EL residual %.2e\n", type, CSWillmoreFlowReasonConverged(reason) ? "converged" : "NOT converged", i.it, CSWillmoreFlowStopReasons[reason], i.rejections, i.ksp_its_total, i.nguard, i.seconds, (double)i.conformal_violation, (double)i.constraint_violation, (double)i.violation_max, (double)i.el_residual));
+  if (i.violation_grew) PetscCall(PetscPrintf(mesh->comm, "flow %s: the constraint violation GREW during the run: %.2e at the end against %.2e at iteration %" PetscInt_FMT " (largest %.2e at iteration %" PetscInt_FMT "); the result does not satisfy the constraints (conformal class, global rows) to -%sctol (summary key violation_grew)\n", type, (double)PetscMax(i.conformal_violation, i.constraint_violation), (double)i.violation_min, i.violation_min_it, (double)i.violation_max, i.violation_max_it, prefix ? prefix : ""));
   PetscCall(SummaryKeys(flow, out, &i));
   PetscCall(CSOutputAddMeshFacts(out, mesh, x, x0));
   PetscCall(CheckImmersion(flow, out, mesh, &i));

@@ -90,6 +90,7 @@ static void SetDefaults(CSWillmoreFlow F)
   F->saddle_mat      = CS_SADDLE_MAT_NEST;
   F->integ           = -1;
   F->pinch           = -1;
+  F->viol_min        = -1; /* none evaluated yet */
 }
 
 PetscErrorCode CSWillmoreFlowCreate(CSMesh mesh, CSWillmoreFlow *flow)
@@ -255,6 +256,11 @@ PetscErrorCode CSWillmoreFlowGetInfo(CSWillmoreFlow F, CSWillmoreFlowInfo *info)
   info->linear_solves        = F->saddle.solves;
   info->area_spread          = F->spread;
   info->violation_max        = F->viol_max;
+  info->violation_max_it     = F->viol_max_it;
+  info->violation_min        = PetscMax(F->viol_min, 0);
+  info->violation_min_it     = F->viol_min_it;
+  /* grew: the end's violation above -flow_ctol and 10x the smallest of the run (issue 21: reported, never silent) */
+  info->violation_grew       = (PetscBool)(PetscMax(F->conf, F->glob) > F->ctol && PetscMax(F->conf, F->glob) > 10 * PetscMax(F->viol_min, 0));
   info->q_max                = F->qmax;
   info->degeneration         = F->degeneration;
   info->seconds              = now - F->t0;

@@ -2,19 +2,29 @@
 #include "willmore_impl.h"
 #include "cs_linalg.h"
 
-PetscErrorCode CSWFMeasureQuality(CSWillmoreFlow F)
+/* The resolution measures of the surface x against the input x0 (positions): the total area relative to the input's,
+   the spread max(A/A0)/min(A/A0) of the vertex areas and the largest quasi-conformal error of a face. A kind with its
+   own variables passes its surface (trianglefield: the Poisson reconstruction of omega, issue 21). */
+PetscErrorCode CSWFMeasureQualityOf(CSWillmoreFlow F, Vec x0, Vec x)
 {
   PetscReal   amax, amin;
   PetscScalar atot;
   PetscFunctionBeginUser;
-  PetscCall(CSGeometryVertexAreas(F->mesh, F->x, F->areat));
+  PetscCall(CSGeometryVertexAreas(F->mesh, x, F->areat));
   PetscCall(VecSum(F->areat, &atot));
   F->area_ratio = PetscRealPart(atot) / F->area0_total;
   PetscCall(VecPointwiseDivide(F->areat, F->areat, F->area0));
   PetscCall(VecMax(F->areat, NULL, &amax));
   PetscCall(VecMin(F->areat, NULL, &amin));
   F->spread = amin > 0 ? amax / amin : PETSC_INFINITY;
-  PetscCall(CSGeometryQuasiConformal(F->mesh, F->x0, F->x, NULL, NULL, &F->qmax));
+  PetscCall(CSGeometryQuasiConformal(F->mesh, x0, x, NULL, NULL, &F->qmax));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSWFMeasureQuality(CSWillmoreFlow F)
+{
+  PetscFunctionBeginUser;
+  PetscCall(CSWFMeasureQualityOf(F, F->x0, F->x));
   PetscFunctionReturn(0);
 }
 

@@ -291,6 +291,30 @@ static PetscErrorCode SetUpScaling(CSWillmoreFlow F, CSTriangleField *d)
   PetscFunctionReturn(0);
 }
 
+/* The resolution guard (-flow_max_area_ratio) measures the reconstructed surface (CSTFEvaluate): opt-in for this kind
+   (off unless given), since a change of class (Fig. 8's spiky sphere to the round class) squeezes on purpose. */
+static PetscErrorCode SetUpResolutionGuard(CSWillmoreFlow F)
+{
+  PetscBool set;
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsHasName(NULL, F->prefix, "-max_area_ratio", &set));
+  if (!set) F->max_area_ratio = 0;
+  PetscFunctionReturn(0);
+}
+
+/* The input's vertex areas, against which the surface of every state is measured (CSWFMeasureQualityOf). */
+static PetscErrorCode SetUpResolutionMeasures(CSWillmoreFlow F, CSTriangleField *d)
+{
+  PetscScalar a0;
+  PetscFunctionBeginUser;
+  PetscCall(DMCreateGlobalVector(F->mesh->dmV1, &F->area0));
+  PetscCall(VecDuplicate(F->area0, &F->areat));
+  PetscCall(CSGeometryVertexAreas(F->mesh, d->xpos0, F->area0));
+  PetscCall(VecSum(F->area0, &a0));
+  F->area0_total = PetscRealPart(a0);
+  PetscFunctionReturn(0);
+}
+
 /* The variables omega_0 = df of the mesh's positions, the energy, the rows and their target c0 = C~ lambda(omega_0)
    (or C~ log l of the input's intrinsic lengths l = mesh->lt when it has them: -gen lattice),
    the vectors, the scaling and the saddle solver (multiplier block: the sparse rows; bordering: the Y rows). */
@@ -304,12 +328,13 @@ static PetscErrorCode SetUpTriangleField(CSWillmoreFlow F)
   PetscCall(CheckOptions(F));
   d->noconf    = (PetscBool)!F->conformal; /* unconstrained W~ (Fig. 8): integrability rows only */
   F->conformal = PETSC_TRUE;               /* the multiplier block holds the integrability rows either way */
-  F->max_area_ratio = 0; /* the vertex-area guard measures positions */
+  PetscCall(SetUpResolutionGuard(F));
   PetscCall(CSLensCreateHalfedgeDM(m, 1, &d->dmH1));
   PetscCall(CSLensCreateHalfedgeDM(m, 3, &d->dmH3));
   PetscCall(VecDuplicate(m->x, &d->xpos0));
   PetscCall(VecCopy(m->x, d->xpos0));
   PetscCall(VecDuplicate(m->x, &d->xpos));
+  PetscCall(SetUpResolutionMeasures(F, d));
   d->flow = F;
   if (d->spinor) {
     PetscCall(SetUpTriangleFieldSpinor(F, d));

@@ -137,8 +137,10 @@ PetscErrorCode CSTFEvaluate(CSWillmoreFlow F)
   PetscCall(CSSpinorPinchEdges(d->sp, d->psit, &F->pinch, NULL));
   PetscCall(CSSpinorDirichlet(d->sp, d->psit, &F->espin, NULL));
   F->V      = 0; /* not tracked: a triangle field encloses no volume until it is integrated (docs/triangle_fields.md) */
-  F->spread = 0;
-  F->qmax   = 0;
+  /* the surface of this state (the Poisson reconstruction) against the input: vertex-area spread and q_max for the
+     history, the summary and the resolution guard (issue 21: the bunny's squeeze was invisible here) */
+  PetscCall(CSTriangleFieldReconstruct(F->mesh, d->dmH1, d->dmH3, F->x, d->xpos0, d->xpos));
+  PetscCall(CSWFMeasureQualityOf(F, d->xpos0, d->xpos));
   PetscFunctionReturn(0);
 }
 

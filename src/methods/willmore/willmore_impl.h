@@ -181,6 +181,8 @@ struct _p_CSWillmoreFlow {
   PetscReal             espin; /* E_tau(psi(omega)) of a triangle field (App. C.3), whatever its weight */
   PetscInt              pinch; /* edges failing the spinor pinch test (soliman2021 App. C.1; -1: not a triangle-field kind) */
   PetscReal             viol_max; /* the largest max(conf, glob) of any evaluated state (before a projection at the stop) */
+  PetscReal             viol_min; /* the smallest max(conf, glob) of any evaluated state (-1: none yet) */
+  PetscInt              viol_min_it, viol_max_it; /* the iterations of viol_min, viol_max */
 };
 
 /* evaluate.c */
@@ -206,6 +208,7 @@ PETSC_INTERN PetscErrorCode CSWFProject(CSWillmoreFlow F, Vec x, PetscBool *ok, 
 PETSC_INTERN PetscErrorCode CSWFRestore(CSWillmoreFlow F, PetscInt *kspits);
 /* guards.c */
 PETSC_INTERN PetscErrorCode CSWFMeasureQuality(CSWillmoreFlow F);
+PETSC_INTERN PetscErrorCode CSWFMeasureQualityOf(CSWillmoreFlow F, Vec x0, Vec x);
 PETSC_INTERN PetscErrorCode CSWFCheckResolution(CSWillmoreFlow F, CSWillmoreFlowConvergedReason *reason);
 PETSC_INTERN PetscErrorCode CSWFCheckFolds(CSWillmoreFlow F, PetscBool *folded);
 PETSC_INTERN PetscErrorCode CSWFCheckStepGeometry(CSWillmoreFlow F, PetscBool *accept);
