@@ -69,6 +69,8 @@ typedef struct {
   PetscInt         ksp_its_total, rejections, nguard, pc_setups, linear_solves;
   PetscReal        area_spread, q_max, seconds;
   PetscReal        violation_max;       /* the largest constraint violation (conformal or global) of any iterate */
+  PetscReal        el_first, el_min, energy_el_min; /* the EL residual of the first state, the smallest of the run and W there */
+  PetscInt         it_el_min;           /* ... at this iteration (how near a critical point the path passed) */
   CSWillmoreFlowDegeneration degeneration; /* set when the resolution guard stopped the flow */
   PetscReal        integrability_violation; /* trianglefield: max of |d1 omega|, face closure, |<<Y_i|omega>>| (-1: other kinds) */
   PetscReal        spin_energy;         /* trianglefield: E_tau(psi(omega)) (App. C.3), unweighted */

@@ -245,6 +245,10 @@ PetscErrorCode CSWillmoreFlowGetInfo(CSWillmoreFlow F, CSWillmoreFlowInfo *info)
   info->linear_solves        = F->saddle.solves;
   info->area_spread          = F->spread;
   info->violation_max        = F->viol_max;
+  info->el_first             = F->el_first;
+  info->el_min               = F->el_min;
+  info->energy_el_min        = F->E_el_min;
+  info->it_el_min            = F->it_el_min;
   info->q_max                = F->qmax;
   info->degeneration         = F->degeneration;
   info->seconds              = now - F->t0;

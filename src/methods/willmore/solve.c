@@ -17,6 +17,7 @@ static PetscErrorCode Evaluate(CSWillmoreFlow F)
     PetscCall(CSWFMeasureQuality(F));
   }
   F->viol_max = PetscMax(F->viol_max, PetscMax(F->conf, F->glob)); /* every kind: reported as violation_max */
+  PetscCall(CSWFTrackPath(F));
   PetscFunctionReturn(0);
 }
 

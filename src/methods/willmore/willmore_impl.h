@@ -178,6 +178,9 @@ struct _p_CSWillmoreFlow {
   PetscReal             espin; /* E_tau(psi(omega)) of a triangle field (App. C.3), whatever its weight */
   PetscInt              pinch; /* edges failing the spinor pinch test (soliman2021 App. C.1; -1: not a triangle-field kind) */
   PetscReal             viol_max; /* the largest max(conf, glob) of any evaluated state (before a projection at the stop) */
+  PetscBool             path_set; /* path.c: the EL residual along the run (since the set-up or the resume) */
+  PetscReal             el_first, el_min, E_el_min;
+  PetscInt              it_el_min;
 };
 
 /* evaluate.c */
@@ -203,6 +206,7 @@ PETSC_INTERN PetscErrorCode CSWFProject(CSWillmoreFlow F, Vec x, PetscBool *ok, 
 PETSC_INTERN PetscErrorCode CSWFRestore(CSWillmoreFlow F, PetscInt *kspits);
 /* guards.c */
 PETSC_INTERN PetscErrorCode CSWFMeasureQuality(CSWillmoreFlow F);
+PETSC_INTERN PetscErrorCode CSWFTrackPath(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFCheckResolution(CSWillmoreFlow F, CSWillmoreFlowConvergedReason *reason);
 PETSC_INTERN PetscErrorCode CSWFCheckFolds(CSWillmoreFlow F, PetscBool *folded);
 PETSC_INTERN PetscErrorCode CSWFCheckStepGeometry(CSWillmoreFlow F, PetscBool *accept);
