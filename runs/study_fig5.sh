@@ -6,7 +6,8 @@
 # Outputs in runs/results/fig5/<run>.{json,csv,log}, the table runs/results/fig5.md (scripts/plots.py table) with,
 # from the per-iteration history, the smallest EL residual of the run and its iteration (el_min, it_el_min: how
 # near a critical point the path passed) and the largest conformal violation of any iteration (vmax_history).
-# Knobs: RUNS="name:mesh:extra ..." (words of extra joined by +; default below), TIMEOUT=900 (per run, seconds).
+# Knobs: RUNS="name:mesh:extra ..." (words of extra joined by +; default below), ONLY="name ..." (run only these of
+# RUNS; the table lists every run of RUNS with a summary in the output directory), TIMEOUT=900 (per run, seconds).
 # The trianglefield runs on knot1 and the elephant are given a time budget (-flow_max_seconds), not an iteration
 # count: they take seconds per iteration under load.
 set -u
@@ -16,7 +17,7 @@ BIN=$PWD/bin/confsurf; PY=$(bash scripts/find-python.sh 2>/dev/null || echo /usr
 out=runs/results/fig5; mkdir -p "$out"
 RUNS=${RUNS:-"eight_cgd:eight_cgal:-flow_max_it+150 \
 eight_cgd_noguard:eight_cgal:-flow_max_it+300+-flow_max_area_ratio+0 \
-eight_tf:eight_cgal:-flow_type+trianglefield+-flow_max_it+150 \
+eight_tf:eight_cgal:-flow_type+trianglefield+-flow_max_it+300+-flow_max_seconds+420 \
 knot1_cgd:knot1_cgal:-flow_max_it+150 \
 knot1_cgd_noguard:knot1_cgal:-flow_max_it+80+-flow_max_area_ratio+0 \
 knot1_tf:knot1_cgal:-flow_type+trianglefield+-flow_max_it+300+-flow_max_seconds+240 \
@@ -25,10 +26,12 @@ elephant_tf:elephant_cgal:-flow_type+trianglefield+-flow_max_it+300+-flow_max_se
 runs=()
 for r in $RUNS; do
   IFS=: read -r name mesh extra <<< "$r"
+  [ -f "$out/$name.json" ] && runs+=("$name=$out/$name.json")
+  if [ -n "${ONLY:-}" ] && [[ " $ONLY " != *" $name "* ]]; then continue; fi
   extra=${extra//+/ }  # "+" separates the words of extra
   timeout "$TIMEOUT" "$BIN" -task flow -mesh meshes/$mesh.obj $extra \
     -summary "$out/$name.json" -history_csv "$out/$name.csv" > "$out/$name.log" 2>&1 || echo "$name: exit $?"
-  "$PY" - "$out/$name.json" "$out/$name.csv" <<'PY'
+  [ -f "$out/$name.json" ] && "$PY" - "$out/$name.json" "$out/$name.csv" <<'PY'
 import csv, json, sys
 d = json.load(open(sys.argv[1]))
 rows = list(csv.DictReader(open(sys.argv[2])))
@@ -38,7 +41,7 @@ d["el_min"], d["it_el_min"] = float(rows[k]["el_residual"]), int(rows[k]["it"])
 json.dump(d, open(sys.argv[1], "w"), indent=1)
 PY
   echo "$name: $(grep -E 'converged after' "$out/$name.log" | tail -1 | cut -c1-200)"
-  runs+=("$name=$out/$name.json")
+  [ -f "$out/$name.json" ] && [[ " ${runs[*]} " != *" $name=$out/$name.json "* ]] && runs+=("$name=$out/$name.json")
 done
 {
   echo "Fig. 5 study, $(date -u +%Y-%m-%d\ %H:%M) UTC, commit $(git rev-parse --short HEAD), one rank (shared machine: seconds are upper bounds)"
