@@ -6,11 +6,11 @@
 #     against an independent record, the CSV), and the residual at the stop is above el_min: the path passed
 #     nearest a critical point at iteration 33 (EL 23 from 267) and moved away from it (EL 38 at the stop, 42).
 # (b) The final line says so with the numbers of the summary.
-# (c) A run that converges (torus of revolution R = 3, 24 x 12, converges in 14 iterations) prints no path line.
+# (c) A run that converges (torus of revolution R = 3, 16 x 8, converges in 18 iterations) prints no path line.
 # nprocs: 1 2
 source tests/lib.sh
 timeout 300 $MPIEXEC "$CS_BIN" -task flow -mesh meshes/eight_cgal.obj -flow_max_it 150 -summary "$TMP/a.json" -history_csv "$TMP/a.csv" > "$TMP/a.log" 2>&1 || { tail "$TMP/a.log"; exit 1; }
-timeout 300 $MPIEXEC "$CS_BIN" -task flow -gen torus -gen_torus_R 3 -gen_tube_r 1 -gen_n 24 -gen_m 12 -flow_max_it 100 -summary "$TMP/c.json" > "$TMP/c.log" 2>&1 || { tail "$TMP/c.log"; exit 1; }
+timeout 300 $MPIEXEC "$CS_BIN" -task flow -gen torus -gen_torus_R 3 -gen_tube_r 1 -gen_n 16 -gen_m 8 -flow_max_it 100 -summary "$TMP/c.json" > "$TMP/c.log" 2>&1 || { tail "$TMP/c.log"; exit 1; }
 python3 - "$TMP" <<'PY'
 import csv, json, re, sys
 d = sys.argv[1]
