@@ -18,6 +18,7 @@ out=runs/results/fig5; mkdir -p "$out"
 RUNS=${RUNS:-"eight_cgd:eight_cgal:-flow_max_it+150 \
 eight_cgd_noguard:eight_cgal:-flow_max_it+300+-flow_max_area_ratio+0 \
 eight_tf:eight_cgal:-flow_type+trianglefield+-flow_max_it+300+-flow_max_seconds+420 \
+eight_tf_relaxed:eight_cgal:-flow_type+trianglefield+-flow_integrability_start+20+-flow_max_it+300+-flow_max_seconds+300 \
 knot1_cgd:knot1_cgal:-flow_max_it+150 \
 knot1_cgd_noguard:knot1_cgal:-flow_max_it+80+-flow_max_area_ratio+0 \
 knot1_tf:knot1_cgal:-flow_type+trianglefield+-flow_max_it+300+-flow_max_seconds+240 \
