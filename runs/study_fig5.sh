@@ -8,7 +8,10 @@
 # near a critical point the path passed) and the largest conformal violation of any iteration (vmax_history).
 # Knobs: RUNS="name:mesh:extra ..." (words of extra joined by +; default below), ONLY="name ..." (run only these of
 # RUNS; the table lists every run of RUNS with a summary in the output directory), TIMEOUT=900 (per run, seconds).
-# The trianglefield runs on knot1 and the elephant are given a time budget (-flow_max_seconds), not an iteration
+# Among the runs: knot1_cgd_t05 is the same CGD at a quarter of the step (is the path the flow's own?),
+# elephant_cgd_restore the elephant with -flow_restore_above 5e-3 (its ceiling cycle, docs/real_meshes.md 0b),
+# eight_tf_relaxed Algorithm 2 with integrability relaxed for 20 iterations (Fig. 8's schedule).
+# The trianglefield runs are given a time budget (-flow_max_seconds), not an iteration
 # count: they take seconds per iteration under load.
 set -u
 cd "$(dirname "$0")/.."
@@ -21,8 +24,10 @@ eight_tf:eight_cgal:-flow_type+trianglefield+-flow_max_it+300+-flow_max_seconds+
 eight_tf_relaxed:eight_cgal:-flow_type+trianglefield+-flow_integrability_start+20+-flow_max_it+300+-flow_max_seconds+300 \
 knot1_cgd:knot1_cgal:-flow_max_it+150 \
 knot1_cgd_noguard:knot1_cgal:-flow_max_it+80+-flow_max_area_ratio+0 \
+knot1_cgd_t05:knot1_cgal:-flow_max_it+150+-flow_t+0.5+-flow_t_max+0.5 \
 knot1_tf:knot1_cgal:-flow_type+trianglefield+-flow_max_it+300+-flow_max_seconds+240 \
 elephant_cgd:elephant_cgal:-flow_max_it+150 \
+elephant_cgd_restore:elephant_cgal:-flow_max_it+150+-flow_restore_above+5e-3 \
 elephant_tf:elephant_cgal:-flow_type+trianglefield+-flow_max_it+300+-flow_max_seconds+240"}
 runs=()
 for r in $RUNS; do
