@@ -72,6 +72,8 @@ typedef struct {
   PetscReal        violation_min;       /* the smallest of any iterate */
   PetscInt         violation_max_it, violation_min_it; /* their iterations */
   PetscBool        violation_grew;      /* the last state's violation is above ctol and 10x violation_min */
+  PetscReal        el_first, el_min, energy_el_min; /* the EL residual of the first state, the smallest of the run and W there */
+  PetscInt         it_el_min;           /* ... at this iteration (how near a critical point the path passed) */
   CSWillmoreFlowDegeneration degeneration; /* set when the resolution guard stopped the flow */
   PetscReal        integrability_violation; /* trianglefield: max of |d1 omega|, face closure, |<<Y_i|omega>>| (-1: other kinds) */
   PetscReal        spin_energy;         /* trianglefield: E_tau(psi(omega)) (App. C.3), unweighted */

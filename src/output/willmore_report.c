@@ -32,6 +32,9 @@ static PetscErrorCode SummaryKeys(CSWillmoreFlow flow, CSOutput *out, const CSWi
   PetscCall(CSJSONAddReal(out->json, "conformal_violation", i->conformal_violation));
   PetscCall(CSJSONAddReal(out->json, "constraint_violation", i->constraint_violation));
   PetscCall(CSJSONAddReal(out->json, "el_residual", i->el_residual));
+  PetscCall(CSJSONAddReal(out->json, "el_min", i->el_min)); /* the smallest EL residual of the run, at it_el_min */
+  PetscCall(CSJSONAddInt(out->json, "it_el_min", i->it_el_min));
+  PetscCall(CSJSONAddReal(out->json, "energy_el_min", i->energy_el_min));
   PetscCall(CSJSONAddInt(out->json, "rejections", i->rejections));
   PetscCall(CSJSONAddInt(out->json, "ksp_iterations", i->ksp_its_total));
   PetscCall(CSJSONAddInt(out->json, "pc_setups", i->pc_setups));         /* preconditioner builds (factorisations) */
@@ -45,6 +48,18 @@ static PetscErrorCode SummaryKeys(CSWillmoreFlow flow, CSOutput *out, const CSWi
   PetscFunctionReturn(0);
 }
 
+/* A run that did not converge: how near a critical point its path came (the smallest EL residual, soliman2021
+   Sec. 6.1.2's stopping measure) and whether it moved away from it while the energy kept falling
+   (docs/real_meshes.md 0b: knot1_cgal reaches EL 2.48 at iteration 10, 13.8 at the guard's stop at 29). */
+static PetscErrorCode PathLine(CSMesh mesh, const CSWillmoreFlowInfo *i)
+{
+  PetscFunctionBeginUser;
+  if (!(i->el_min < PETSC_MAX_REAL) || i->it == 0) PetscFunctionReturn(0);
+  PetscCall(PetscPrintf(mesh->comm, "flow path: EL residual %.3e at the start, smallest %.3e at iteration %" PetscInt_FMT " (W %.10g), %.3e at the stop (W %.10g)", (double)i->el_first, (double)i->el_min, i->it_el_min, (double)i->energy_el_min, (double)i->el_residual, (double)i->energy));
+  if (i->it_el_min < i->it) PetscCall(PetscPrintf(mesh->comm, ": the path came nearest a critical point %" PetscInt_FMT " iterations before the stop and moved away from it, the residual growing %.3g-fold while W changed by %+.4g\n", i->it - i->it_el_min, (double)(i->el_residual / i->el_min), (double)(i->energy - i->energy_el_min)));
+  else PetscCall(PetscPrintf(mesh->comm, ": the residual is smallest at the stop\n"));
+  PetscFunctionReturn(0);
+}
 
 /* -o of a triangle-field flow (-flow_type trianglefield) writes the Poisson reconstruction of omega, an immersion of
    omega only when omega is integrable: above -flow_immersion_tol (default 1e-6) of integrability violation the
@@ -82,6 +97,7 @@ PetscErrorCode CSWillmoreFlowReport(CSWillmoreFlow flow, CSOutput *out)
   PetscCall(CSWillmoreFlowGetInitial(flow, &x0));
   PetscCall(PetscPrintf(mesh->comm, "flow %s: %s after %" PetscInt_FMT " iterations (%s; %" PetscInt_FMT " rejected steps, %" PetscInt_FMT " KSP iterations, %" PetscInt_FMT " edges with guarded I_Q weight), %.3f s; conformal violation %.2e, constraint violation %.2e (largest of the run %.2e), EL residual %.2e\n", type, CSWillmoreFlowReasonConverged(reason) ? "converged" : "NOT converged", i.it, CSWillmoreFlowStopReasons[reason], i.rejections, i.ksp_its_total, i.nguard, i.seconds, (double)i.conformal_violation, (double)i.constraint_violation, (double)i.violation_max, (double)i.el_residual));
   if (i.violation_grew) PetscCall(PetscPrintf(mesh->comm, "flow %s: the constraint violation GREW during the run: %.2e at the end against %.2e at iteration %" PetscInt_FMT " (largest %.2e at iteration %" PetscInt_FMT "); the result does not satisfy the constraints (conformal class, global rows) to -%sctol (summary key violation_grew)\n", type, (double)PetscMax(i.conformal_violation, i.constraint_violation), (double)i.violation_min, i.violation_min_it, (double)i.violation_max, i.violation_max_it, prefix ? prefix : ""));
+  if (!CSWillmoreFlowReasonConverged(reason)) PetscCall(PathLine(mesh, &i));
   PetscCall(SummaryKeys(flow, out, &i));
   PetscCall(CSOutputAddMeshFacts(out, mesh, x, x0));
   PetscCall(CheckImmersion(flow, out, mesh, &i));

@@ -261,6 +261,10 @@ PetscErrorCode CSWillmoreFlowGetInfo(CSWillmoreFlow F, CSWillmoreFlowInfo *info)
   info->violation_min_it     = F->viol_min_it;
   /* grew: the end's violation above -flow_ctol and 10x the smallest of the run (issue 21: reported, never silent) */
   info->violation_grew       = (PetscBool)(PetscMax(F->conf, F->glob) > F->ctol && PetscMax(F->conf, F->glob) > 10 * PetscMax(F->viol_min, 0));
+  info->el_first             = F->el_first;
+  info->el_min               = F->el_min;
+  info->energy_el_min        = F->E_el_min;
+  info->it_el_min            = F->it_el_min;
   info->q_max                = F->qmax;
   info->degeneration         = F->degeneration;
   info->seconds              = now - F->t0;

@@ -31,6 +31,7 @@ static PetscErrorCode Evaluate(CSWillmoreFlow F)
     PetscCall(CSWFMeasureQuality(F));
   }
   TrackViolation(F);
+  PetscCall(CSWFTrackPath(F));
   PetscFunctionReturn(0);
 }
 

@@ -183,6 +183,9 @@ struct _p_CSWillmoreFlow {
   PetscReal             viol_max; /* the largest max(conf, glob) of any evaluated state (before a projection at the stop) */
   PetscReal             viol_min; /* the smallest max(conf, glob) of any evaluated state (-1: none yet) */
   PetscInt              viol_min_it, viol_max_it; /* the iterations of viol_min, viol_max */
+  PetscBool             path_set; /* path.c: the EL residual along the run (since the set-up or the resume) */
+  PetscReal             el_first, el_min, E_el_min;
+  PetscInt              it_el_min;
 };
 
 /* evaluate.c */
@@ -209,6 +212,7 @@ PETSC_INTERN PetscErrorCode CSWFRestore(CSWillmoreFlow F, PetscInt *kspits);
 /* guards.c */
 PETSC_INTERN PetscErrorCode CSWFMeasureQuality(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFMeasureQualityOf(CSWillmoreFlow F, Vec x0, Vec x);
+PETSC_INTERN PetscErrorCode CSWFTrackPath(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFCheckResolution(CSWillmoreFlow F, CSWillmoreFlowConvergedReason *reason);
 PETSC_INTERN PetscErrorCode CSWFCheckFolds(CSWillmoreFlow F, PetscBool *folded);
 PETSC_INTERN PetscErrorCode CSWFCheckStepGeometry(CSWillmoreFlow F, PetscBool *accept);
