@@ -17,27 +17,12 @@ done
 python3 - "$TMP" <<'PY'
 import json, math, sys
 d = sys.argv[1]
-def load(p):
-  V, F = [], []
-  for l in open(p):
-    s = l.split()
-    if s and s[0] == 'v': V.append([float(x) for x in s[1:4]])
-    elif s and s[0] == 'f': F.append([int(x.split('/')[0]) - 1 for x in s[1:4]])
-  return V, F
-def vertex_areas(V, F):  # a third of each face's area to each corner (standard library only)
-  A = [0.0] * len(V)
-  for f in F:
-    p, q, r = V[f[0]], V[f[1]], V[f[2]]
-    u = [q[i] - p[i] for i in range(3)]; v = [r[i] - p[i] for i in range(3)]
-    c = (u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0])
-    a = 0.5 * math.sqrt(sum(x * x for x in c))
-    for k in f: A[k] += a / 3
-  return A
+sys.path.insert(0, 'tests/cases')
+from obj_areas import load, area_spread
 bad = 0
 for m, wmax, wmin, spread_min in (('bunny_lowres_npm', 1.06, 0, 1e8), ('cow_cgal', None, 10, 1e12)):
   V0, F = load('meshes/%s.obj' % m); V1, F1 = load('%s/%s.obj' % (d, m))
-  r = [a / b for a, b in zip(vertex_areas(V1, F), vertex_areas(V0, F))]
-  spread = max(r) / min(r)
+  spread = area_spread(V0, V1, F)
   W = json.load(open('%s/%s.json' % (d, m)))['willmore'] / (4 * math.pi)
   checks = [("%s: vertex-area spread of the conformal map > %g" % (m, spread_min), spread > spread_min, "%.3g" % spread)]
   if wmax: checks.append(("%s: W within %g x 4 pi (near the round sphere)" % (m, wmax), W < wmax, "%.4f" % W))
