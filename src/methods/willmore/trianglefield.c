@@ -160,6 +160,7 @@ static PetscErrorCode SetFromOptionsTF(CSWillmoreFlow F)
   PetscCall(PetscOptionsReal("-integrability_weight", "Multiplier metric of the integrability rows (d1 omega, face closure, <<Y_i|omega>>) relative to their size; small = stiff", NULL, d->wint, &d->wint, NULL));
   PetscOptionsEnd();
   PetscCall(CSTFScheduleSetFromOptions(F, d));
+  PetscCall(CSTFContinuationSetFromOptions(F, d));
   PetscCheck(d->wint > 0 && !PetscIsInfOrNanReal(d->wint), F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sintegrability_weight %g: must be > 0", F->prefix, (double)d->wint);
   PetscCheck(d->wspin >= 0 && !PetscIsInfOrNanReal(d->wspin), F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sspin_weight %g: must be >= 0", F->prefix, (double)d->wspin);
   PetscFunctionReturn(0);
@@ -307,6 +308,7 @@ static PetscErrorCode SetUpTriangleField(CSWillmoreFlow F)
   if (m->lt) PetscCall(CSTriangleFieldLogLengthsFromEdges(m, m->lt, d->dmH1, d->lambda)); /* -gen lattice: the lattice's class */
   else PetscCall(CSTriangleFieldLogLengths(m, d->dmH3, F->x0, d->dmH1, d->lambda));
   PetscCall(MatMult(d->C, d->lambda, d->c0));
+  if (m->ct) PetscCall(CSTriangleFieldHalfedgesFromEdges(m, m->ct, d->dmH1, d->c0)); /* -mesh_cross_ratios (the spinor charts keep df's lengths) */
   PetscCall(SetUpSpinors(F, d));
   PetscCall(SetUpScaling(F, d));
   PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "%ssaddle_", F->prefix));
@@ -392,5 +394,9 @@ PetscErrorCode CSWillmoreFlowCreate_TriangleField(CSWillmoreFlow F)
   d->seed              = 1;
   d->amp               = 0.5;
   d->wrelax            = 1e4;
+  d->wdecay            = 1;
+  d->wspin_min         = 1e-3;
+  d->stage_rtol        = 1e-3;
+  d->stage_ctol        = 1e-8;
   PetscFunctionReturn(0);
 }

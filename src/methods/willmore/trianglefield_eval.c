@@ -67,9 +67,8 @@ static PetscErrorCode Violations(CSWillmoreFlow F)
 
 /* Everything the stopping test, the monitors and the step need at x = omega: W~ and its gradient (App. D.1), the
    rows, the residual r = g + X^T mu + sum_j nu_j row_j, the violations, the triangle field's stars and area. */
-PetscErrorCode CSTFEvaluate(CSWillmoreFlow F)
+static PetscErrorCode EvaluateAt(CSWillmoreFlow F, CSTriangleField *d)
 {
-  CSTriangleField *d = (CSTriangleField *)F->data;
   PetscScalar      A;
   PetscFunctionBeginUser;
   PetscCall(CSEnergyGradient(F->energy, F->x, &F->E, F->g));
@@ -85,6 +84,18 @@ PetscErrorCode CSTFEvaluate(CSWillmoreFlow F)
   F->V      = 0; /* not tracked: a triangle field encloses no volume until it is integrated (docs/triangle_fields.md) */
   F->spread = 0;
   F->qmax   = 0;
+  PetscFunctionReturn(0);
+}
+
+/* The evaluation at x, then the spin-weight continuation (trianglefield_continuation.c). */
+PetscErrorCode CSTFEvaluate(CSWillmoreFlow F)
+{
+  CSTriangleField *d = (CSTriangleField *)F->data;
+  PetscBool        next;
+  PetscFunctionBeginUser;
+  PetscCall(EvaluateAt(F, d));
+  PetscCall(CSTFContinuationAdvance(F, d, &next)); /* a new spin weight: the energy, gradient and residual change */
+  if (next) PetscCall(EvaluateAt(F, d));
   PetscFunctionReturn(0);
 }
 

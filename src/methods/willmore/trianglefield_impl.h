@@ -35,6 +35,9 @@ typedef struct {
   CSSpinorSpace sp;        /* charts of the target metric, spin connection of the input (App. C) */
   Vec       psi, psit;     /* the face spinors of the accepted omega (signs followed along the flow), a work copy */
   PetscReal wspin;         /* -flow_spin_weight: the energy is W~ + wspin E_tau(psi(omega)) (App. C.3) */
+  PetscReal wdecay, wspin_min;      /* continuation in wspin (trianglefield_continuation.c) */
+  PetscReal stage_rtol, stage_ctol; /* a stage ends at el < stage_rtol, rows < stage_ctol */
+  PetscInt  stage_maxit, stage_it0, nstages;
 } CSTriangleField;
 
 PETSC_INTERN PetscErrorCode CSTFConstraints(CSWillmoreFlow F, Vec x, Vec c, PetscReal cx[], PetscBool wantJ);
@@ -48,4 +51,7 @@ PETSC_INTERN PetscInt       CSTFAppBRows(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSTFScheduleSetFromOptions(CSWillmoreFlow F, CSTriangleField *d);
 PETSC_INTERN PetscReal      CSTFIntegrabilityWeight(CSWillmoreFlow F, CSTriangleField *d);
 PETSC_INTERN void           CSTFScheduleApply(CSWillmoreFlow F, CSTriangleField *d);
+/* trianglefield_continuation.c: w <- w * decay each time a stage converges, then 0 (App. C.3) */
+PETSC_INTERN PetscErrorCode CSTFContinuationSetFromOptions(CSWillmoreFlow F, CSTriangleField *d);
+PETSC_INTERN PetscErrorCode CSTFContinuationAdvance(CSWillmoreFlow F, CSTriangleField *d, PetscBool *next);
 #endif
