@@ -45,6 +45,7 @@ struct _p_CSMesh {
 
   Vec x;  /* positions, global vector of dmV3 */
   Vec lt; /* NULL, or the input's intrinsic edge lengths (CSMeshData len, dmE1): the target class of the flows */
+  Vec ct; /* NULL, or the input's target log length cross ratios c0 (CSMeshData cr, dmE1; -mesh_cross_ratios) */
 
   /* Natural-order fields (rank 0 holds the whole field in file order) for I/O of vertex/face/edge fields. */
   CSMeshNatural natV3, natV1, natF1, natE1;

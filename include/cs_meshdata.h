@@ -11,7 +11,27 @@ typedef struct {
   char       name[PETSC_MAX_PATH_LEN]; /* file name or generator description, used in messages */
   PetscReal *len;                     /* NULL, or 3*nf: an intrinsic metric, len[3f+a] = length of the edge opposite
                                          corner a of face f (-gen lattice: the flat lattice; the flows' target class) */
+  PetscReal *cr;                      /* NULL, or 3*nf: log length cross ratios c0 (soliman2021 Eq. 3/14), cr[3f+a] =
+                                         c0 of the edge opposite corner a of face f, in f's orientation (the flows'
+                                         target class, -mesh_cross_ratios); both faces of an edge hold the same value */
 } CSMeshData;
+
+/* The edges of serial triangle data as groups of half-edges (meshdata_edges.c): half-edge h = 3f + c runs from
+   f[h] to f[CSHalfedgeNext(h)]; he[off[v]..off[v+1]) are the half-edges whose smaller vertex is v, sorted by the
+   larger one (key), so the half-edges of one edge are adjacent (2 on an interior edge, 1 on the boundary). */
+typedef struct {
+  PetscInt  nv, nh;
+  PetscInt *he, *key, *off;
+} CSMeshDataEdges;
+
+static inline PetscInt CSHalfedgeNext(PetscInt h)
+{
+  return h % 3 == 2 ? h - 2 : h + 1;
+}
+static inline PetscInt CSHalfedgePrev(PetscInt h)
+{
+  return h % 3 == 0 ? h + 2 : h - 1;
+}
 
 /* Facts found by validation (Euler characteristic chi = V - E + F = 2*components - 2*genus - boundary_loops). */
 typedef struct {
@@ -47,6 +67,16 @@ PETSC_EXTERN PetscErrorCode CSMeshDataMorin(PetscInt n, PetscInt m, PetscReal ep
    flows' conformal rows then target (-mesh_lengths FILE). One-line errors: wrong count, not a triangle, an edge
    given two lengths. Rank 0 (meshdata_lengths.c). */
 PETSC_EXTERN PetscErrorCode CSMeshDataReadLengths(const char option[], const char path[], CSMeshData *md);
+/* md->cr from a file of lines "i j c0", one per interior edge, vertices 1-based as in OBJ face lines (the mesh's
+   vertex order), c0 the log length cross ratio of the edge (soliman2021 Eq. 3, the C of cross_ratio.c) in the
+   file's face orientation. One-line errors naming the file and line: a count other than the interior edges, a pair
+   that is not an edge or is a boundary edge, a duplicate, a non-number; on a closed mesh c0 is projected onto
+   im C = ker A^T (rank |E| - |V|) and refused if the removed part exceeds tol (meshdata_cross_ratios.c). Rank 0. */
+PETSC_EXTERN PetscErrorCode CSMeshDataReadCrossRatios(const char option[], const char path[], PetscReal tol, CSMeshData *md);
+PETSC_EXTERN PetscErrorCode CSMeshDataEdgesCreate(const CSMeshData *md, CSMeshDataEdges *E);
+PETSC_EXTERN PetscErrorCode CSMeshDataEdgesDestroy(CSMeshDataEdges *E);
+PETSC_EXTERN void           CSMeshDataEdgesFind(const CSMeshDataEdges *E, PetscInt a, PetscInt b, PetscInt *s, PetscInt *k);
+PETSC_EXTERN PetscInt       CSMeshDataEdgesGroupEnd(const CSMeshDataEdges *E, const CSMeshData *md, PetscInt s);
 PETSC_EXTERN PetscErrorCode CSMeshDataFlatTorus(PetscReal tau_re, PetscReal tau_im, PetscInt n, PetscInt m, CSMeshData *md);
 PETSC_EXTERN PetscErrorCode CSMeshDataCylinder(PetscReal radius, PetscReal height, PetscInt n, PetscInt m, CSMeshData *md);
 PETSC_EXTERN PetscErrorCode CSMeshDataDisk(PetscReal radius, PetscInt rings, CSMeshData *md);

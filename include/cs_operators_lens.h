@@ -54,6 +54,9 @@ PETSC_EXTERN PetscErrorCode CSTriangleFieldFromPositions(CSMesh mesh, Vec x, DM 
 PETSC_EXTERN PetscErrorCode CSTriangleFieldLogLengths(CSMesh mesh, DM dmH3, Vec omega, DM dmH1, Vec lambda);
 /* lambda (dmH1) = log l_e on both halfedges of every edge, for intrinsic edge lengths l (dmE1, e.g. mesh->lt) */
 PETSC_EXTERN PetscErrorCode CSTriangleFieldLogLengthsFromEdges(CSMesh mesh, Vec l, DM dmH1, Vec lambda);
+/* ch = an edge field c (dmE1, e.g. mesh->ct of -mesh_cross_ratios) on both halfedges of each edge (dmH1): on exact
+   fields C~ lambda(df) = C lambda(f) on both halfedges of an edge, so this is the halfedge target of a class c0 */
+PETSC_EXTERN PetscErrorCode CSTriangleFieldHalfedgesFromEdges(CSMesh mesh, Vec c, DM dmH1, Vec ch);
 /* The triangle-field Willmore energy (soliman2021 App. D.1) W~(omega) = 1/4 <d*omega, d*omega>
    = 1/4 sum_i |sum_ij w_ij omega_ij|^2 / A_i with the cotans and areas of the triangle field's own triangles;
    W~(df) = W(f). grad (may be NULL; W may be NULL): the partial derivatives with respect to the stored halfedge

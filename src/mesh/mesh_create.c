@@ -216,19 +216,20 @@ static PetscErrorCode PositionsFromCoordinates(CSMesh m)
   PetscFunctionReturn(0);
 }
 
-/* m->lt from rank 0's md->len (3 per face, opposite each corner): each component as a natural face field, then
-   every local face writes its three edges (both faces of an edge carry the same length). */
-static PetscErrorCode TargetLengthsFromData(CSMesh m, const CSMeshData *md)
+/* *out (dmE1) from rank 0's per-face-corner array v (3 per face, the edge opposite each corner; md->len, md->cr):
+   each component as a natural face field, then every local face writes its three edges (both faces of an edge
+   carry the same value). Nothing if v is NULL on rank 0. */
+static PetscErrorCode EdgeFieldFromData(CSMesh m, const CSMeshData *md, const PetscReal *v, const char name[], Vec *out)
 {
   PetscMPIInt rank;
   PetscInt    has;
   Vec         gF, lF, lE;
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(m->comm, &rank));
-  has = (!rank && md->len) ? 1 : 0;
+  has = (!rank && v) ? 1 : 0;
   PetscCallMPI(MPI_Bcast(&has, 1, MPIU_INT, 0, m->comm));
   if (!has) PetscFunctionReturn(0);
-  PetscCall(DMCreateGlobalVector(m->dmE1, &m->lt));
+  PetscCall(DMCreateGlobalVector(m->dmE1, out));
   PetscCall(DMGetGlobalVector(m->dmF1, &gF));
   PetscCall(DMGetLocalVector(m->dmF1, &lF));
   PetscCall(DMGetLocalVector(m->dmE1, &lE));
@@ -237,7 +238,7 @@ static PetscErrorCode TargetLengthsFromData(CSMesh m, const CSMeshData *md)
     const PetscScalar *f;
     PetscCall(VecGetArray(m->natF1.vec, &n));
     if (!rank)
-      for (PetscInt i = 0; i < md->nf; i++) n[i] = md->len[3 * i + a];
+      for (PetscInt i = 0; i < md->nf; i++) n[i] = v[3 * i + a];
     PetscCall(VecRestoreArray(m->natF1.vec, &n));
     PetscCall(CSMeshScatter(&m->natF1, m->natF1.vec, gF));
     PetscCall(DMGlobalToLocal(m->dmF1, gF, INSERT_VALUES, lF));
@@ -247,11 +248,11 @@ static PetscErrorCode TargetLengthsFromData(CSMesh m, const CSMeshData *md)
     PetscCall(VecRestoreArray(lE, &e));
     PetscCall(VecRestoreArrayRead(lF, &f));
   }
-  PetscCall(DMLocalToGlobal(m->dmE1, lE, INSERT_VALUES, m->lt));
+  PetscCall(DMLocalToGlobal(m->dmE1, lE, INSERT_VALUES, *out));
   PetscCall(DMRestoreLocalVector(m->dmE1, &lE));
   PetscCall(DMRestoreLocalVector(m->dmF1, &lF));
   PetscCall(DMRestoreGlobalVector(m->dmF1, &gF));
-  PetscCall(PetscObjectSetName((PetscObject)m->lt, "target_lengths"));
+  PetscCall(PetscObjectSetName((PetscObject)*out, name));
   PetscFunctionReturn(0);
 }
 
@@ -318,7 +319,8 @@ PetscErrorCode CSMeshCreateFromData(MPI_Comm comm, CSMeshData *md, const CSTopol
   PetscCall(CreateNatural(m, m->dmV1, 0, 1, m->vertNatural, m->Nv, &m->natV1));
   PetscCall(CreateNatural(m, m->dmF1, 2, 1, m->faceNatural, m->Nf, &m->natF1));
   PetscCall(CreateNatural(m, m->dmE1, 1, 1, m->edgeNatural, m->Ne, &m->natE1));
-  PetscCall(TargetLengthsFromData(m, md));
+  PetscCall(EdgeFieldFromData(m, md, md->len, "target_lengths", &m->lt));
+  PetscCall(EdgeFieldFromData(m, md, md->cr, "target_cross_ratios", &m->ct));
 
   /* rank 0 keeps the connectivity for output; the coordinates now live in the distributed vector */
   m->serial = *md;
@@ -356,6 +358,12 @@ static PetscErrorCode OrientOutward(CSMeshData *md, const CSTopology *topo, Pets
       PetscReal l        = md->len[3 * f + 1];
       md->len[3 * f + 1] = md->len[3 * f + 2];
       md->len[3 * f + 2] = l;
+    }
+    if (md->cr) { /* the same swap, and c0 changes sign with the orientation (the faces ijk and jil trade places) */
+      PetscReal c       = md->cr[3 * f + 1];
+      md->cr[3 * f + 1] = -md->cr[3 * f + 2];
+      md->cr[3 * f + 2] = -c;
+      md->cr[3 * f]     = -md->cr[3 * f];
     }
   }
   PetscFunctionReturn(0);
@@ -399,6 +407,7 @@ PetscErrorCode CSMeshDestroy(CSMesh *mesh)
   PetscCall(CSMeshAdjacencyDestroy(&m->adj));
   PetscCall(VecDestroy(&m->x));
   PetscCall(VecDestroy(&m->lt));
+  PetscCall(VecDestroy(&m->ct));
   PetscCall(NaturalDestroy(&m->natV3));
   PetscCall(NaturalDestroy(&m->natV1));
   PetscCall(NaturalDestroy(&m->natF1));

@@ -81,6 +81,7 @@ PetscErrorCode CSMeshDataDestroy(CSMeshData *md)
   PetscCall(PetscFree(md->x));
   PetscCall(PetscFree(md->f));
   PetscCall(PetscFree(md->len));
+  PetscCall(PetscFree(md->cr));
   md->nv      = 0;
   md->nf      = 0;
   md->name[0] = 0;
@@ -101,6 +102,10 @@ PetscErrorCode CSMeshDataDuplicate(const CSMeshData *in, CSMeshData *out)
   if (in->len) {
     PetscCall(PetscMalloc1(3 * in->nf, &out->len));
     PetscCall(PetscArraycpy(out->len, in->len, 3 * in->nf));
+  }
+  if (in->cr) {
+    PetscCall(PetscMalloc1(3 * in->nf, &out->cr));
+    PetscCall(PetscArraycpy(out->cr, in->cr, 3 * in->nf));
   }
   PetscFunctionReturn(0);
 }

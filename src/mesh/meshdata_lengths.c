@@ -5,46 +5,30 @@
 #include "cs_meshdata.h"
 #include "cs_util.h"
 
-typedef struct {
-  PetscInt  a, b; /* vertices, a < b */
-  PetscReal l;
-  PetscInt  face;
-} EdgeLength;
-
-static int CompareEdges(const void *p, const void *q)
-{
-  const EdgeLength *x = (const EdgeLength *)p, *y = (const EdgeLength *)q;
-  if (x->a != y->a) return x->a < y->a ? -1 : 1;
-  if (x->b != y->b) return x->b < y->b ? -1 : 1;
-  return 0;
-}
-
 /* the two faces of every edge must give it the same length (1e-10 relative), and each face's lengths must be a
    triangle (strict triangle inequalities) */
 static PetscErrorCode CheckLengths(const char option[], const char path[], const CSMeshData *md, const PetscReal *len)
 {
-  EdgeLength *e;
+  CSMeshDataEdges E;
   PetscFunctionBeginUser;
   for (PetscInt f = 0; f < md->nf; f++) {
     const PetscReal *l = len + 3 * f;
     PetscCheck(l[0] > 0 && l[1] > 0 && l[2] > 0 && l[0] < l[1] + l[2] && l[1] < l[2] + l[0] && l[2] < l[0] + l[1], PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "%s %s: face %" PetscInt_FMT " has lengths %g %g %g, not a triangle (positive, strict triangle inequalities)", option, path, f, (double)l[0], (double)l[1], (double)l[2]);
   }
-  PetscCall(PetscMalloc1(3 * md->nf, &e));
-  for (PetscInt f = 0; f < md->nf; f++)
-    for (int k = 0; k < 3; k++) {
-      PetscInt u = md->f[3 * f + (k + 1) % 3], v = md->f[3 * f + (k + 2) % 3];
-      e[3 * f + k] = (EdgeLength){PetscMin(u, v), PetscMax(u, v), len[3 * f + k], f};
-    }
-  qsort(e, 3 * md->nf, sizeof(EdgeLength), CompareEdges);
-  for (PetscInt i = 1; i < 3 * md->nf; i++) {
-    if (CompareEdges(&e[i - 1], &e[i])) continue;
-    if (PetscAbsReal(e[i].l - e[i - 1].l) > 1e-10 * PetscMax(e[i].l, e[i - 1].l)) {
-      EdgeLength x = e[i - 1], y = e[i];
-      PetscCall(PetscFree(e));
-      SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "%s %s: the edge (%" PetscInt_FMT ", %" PetscInt_FMT ") has length %.15g in face %" PetscInt_FMT " but %.15g in face %" PetscInt_FMT " (one length per edge)", option, path, x.a, x.b, x.l, x.face, y.l, y.face);
+  PetscCall(CSMeshDataEdgesCreate(md, &E));
+  for (PetscInt s = 0, e; s < E.nh; s = e) {
+    e = CSMeshDataEdgesGroupEnd(&E, md, s);
+    for (PetscInt i = s + 1; i < e; i++) { /* half-edge h = 3f + c is the edge opposite corner c + 2 of face f */
+      PetscInt  h0 = E.he[s], h1 = E.he[i];
+      PetscReal l0 = len[3 * (h0 / 3) + (h0 % 3 + 2) % 3], l1 = len[3 * (h1 / 3) + (h1 % 3 + 2) % 3];
+      if (PetscAbsReal(l1 - l0) > 1e-10 * PetscMax(l0, l1)) {
+        PetscInt a = PetscMin(md->f[h0], md->f[CSHalfedgeNext(h0)]), b = E.key[s];
+        PetscCall(CSMeshDataEdgesDestroy(&E));
+        SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "%s %s: the edge (%" PetscInt_FMT ", %" PetscInt_FMT ") has length %.15g in face %" PetscInt_FMT " but %.15g in face %" PetscInt_FMT " (one length per edge)", option, path, a, b, (double)l0, h0 / 3, (double)l1, h1 / 3);
+      }
     }
   }
-  PetscCall(PetscFree(e));
+  PetscCall(CSMeshDataEdgesDestroy(&E));
   PetscFunctionReturn(0);
 }
 

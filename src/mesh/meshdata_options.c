@@ -27,6 +27,8 @@ typedef struct {
   PetscInt  refine;      /* -mesh_refine: 1-to-4 splits after validation (meshdata_refine.c) */
   PetscBool refine_loop; /* -mesh_refine_type loop (default) or midpoint */
   char      lengths[PETSC_MAX_PATH_LEN]; /* -mesh_lengths FILE: an intrinsic metric (the target conformal class) */
+  char      crossratios[PETSC_MAX_PATH_LEN]; /* -mesh_cross_ratios FILE: the target class as cross ratios */
+  PetscReal crtol;                            /* -mesh_cross_ratios_tol */
 } MeshSource;
 static const char *const RefineNames[] = {"midpoint", "loop"};
 
@@ -51,6 +53,7 @@ static PetscErrorCode MeshSourceLoad(const MeshSource *src, CSMeshData *md, CSTo
   }
   ierr = CSMeshDataValidate(md, topo);
   if (!ierr && src->lengths[0]) ierr = CSMeshDataReadLengths("-mesh_lengths", src->lengths, md);
+  if (!ierr && src->crossratios[0]) ierr = CSMeshDataReadCrossRatios("-mesh_cross_ratios", src->crossratios, src->crtol, md);
   if (!ierr && src->refine) {
     ierr = CSMeshDataRefine(md, src->refine, src->refine_loop);
     if (!ierr) ierr = CSMeshDataValidate(md, topo);
@@ -75,6 +78,7 @@ PetscErrorCode CSMeshDataFromOptions(MPI_Comm comm, const char prefix[], CSMeshD
   PetscCall(PetscMemzero(topo, sizeof(*topo)));
   PetscCall(PetscMemzero(&src, sizeof(src)));
   src.level   = 3;
+  src.crtol   = 1e-8;
   src.radius  = 1;
   src.project = PETSC_TRUE;
   src.R       = PetscSqrtReal(2.0); /* with r = 1: the Clifford torus' conformal class (square) */
@@ -110,6 +114,8 @@ PetscErrorCode CSMeshDataFromOptions(MPI_Comm comm, const char prefix[], CSMeshD
   PetscCall(PetscOptionsReal("-gen_morin_perturb", "Morin surface: size of the symmetry-breaking perturbation", "CSMeshDataMorin", src.morin_eps, &src.morin_eps, NULL));
   PetscCall(PetscOptionsInt("-gen_rings", "Disk: number of rings", "CSMeshDataDisk", src.rings, &src.rings, NULL));
   PetscCall(PetscOptionsString("-mesh_lengths", "File of 3 |F| edge lengths (per face, opposite corners 0, 1, 2): the conformal class the flows' conformal rows target", "CSMeshDataReadLengths", src.lengths, src.lengths, sizeof(src.lengths), NULL));
+  PetscCall(PetscOptionsString("-mesh_cross_ratios", "File of lines 'i j c0' (1-based vertices as in OBJ), the log length cross ratio of every interior edge: the conformal class the flows' conformal rows target", "CSMeshDataReadCrossRatios", src.crossratios, src.crossratios, sizeof(src.crossratios), NULL));
+  PetscCall(PetscOptionsReal("-mesh_cross_ratios_tol", "-mesh_cross_ratios: largest part of the cross ratios outside im C (max norm) that is projected away rather than refused", "CSMeshDataReadCrossRatios", src.crtol, &src.crtol, NULL));
   PetscCall(PetscOptionsInt("-mesh_refine", "Regular 1-to-4 refinements of the input (file or generator); the refined mesh's conformal class is a flow's constraint", "CSMeshDataRefine", src.refine, &src.refine, NULL));
   PetscCall(PetscOptionsEList("-mesh_refine_type", "Positions of the refined vertices: midpoint (shape kept) or loop (Loop subdivision)", "CSMeshDataRefine", RefineNames, 2, RefineNames[rtype], &rtype, NULL));
   PetscOptionsEnd();
@@ -118,6 +124,9 @@ PetscErrorCode CSMeshDataFromOptions(MPI_Comm comm, const char prefix[], CSMeshD
   PetscCheck(!src.refine || !(gen == GEN_SPIKY && src.spike_round), comm, PETSC_ERR_ARG_INCOMP, "-%smesh_refine with -%sgen_spike_round_class: refine with -%sgen_level instead (the lengths are not refined)", pre, pre, pre);
   PetscCheck(!src.refine || gen != GEN_LATTICE, comm, PETSC_ERR_ARG_INCOMP, "-%smesh_refine with -%sgen lattice: refine with -%sgen_n, -%sgen_m instead (the lattice's lengths are not refined)", pre, pre, pre, pre);
   PetscCheck(!src.refine || !src.lengths[0], comm, PETSC_ERR_ARG_INCOMP, "-%smesh_refine with -%smesh_lengths: the lengths are given for the unrefined faces", pre, pre);
+  PetscCheck(!src.refine || !src.crossratios[0], comm, PETSC_ERR_ARG_INCOMP, "-%smesh_refine with -%smesh_cross_ratios: the cross ratios are given for the unrefined edges", pre, pre);
+  PetscCheck(!src.lengths[0] || !src.crossratios[0], comm, PETSC_ERR_ARG_INCOMP, "-%smesh_lengths with -%smesh_cross_ratios: give the target class once", pre, pre);
+  PetscCheck(src.crtol > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%smesh_cross_ratios_tol %g: must be > 0", pre, (double)src.crtol);
   src.refine_loop = rtype == 1 ? PETSC_TRUE : PETSC_FALSE;
   PetscCheck(src.file != genset, comm, PETSC_ERR_ARG_WRONG, "give exactly one of -%smesh FILE and -%sgen icosphere|torus|flattorus|cylinder|disk|lattice|spiky|morin (%s)", pre, pre, src.file ? "both were given" : "neither was given");
   src.gen = (GenType)gen;

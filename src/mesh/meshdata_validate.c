@@ -8,9 +8,7 @@
 #include <stdio.h>
 
 typedef struct {
-  PetscInt *he;   /* 3*nf half-edges (h = 3*face + corner, from f[h] to f[next(h)]), grouped by edge */
-  PetscInt *key;  /* 3*nf larger vertex of he[i] */
-  PetscInt *off;  /* nv+1 bucket offsets by the smaller vertex */
+  CSMeshDataEdges E; /* half-edges grouped by edge (meshdata_edges.c) */
   PetscInt *twin; /* 3*nf opposite half-edge, -1 on the boundary */
   PetscInt *vout; /* 3*nf half-edges grouped by their start vertex */
   PetscInt *voff; /* nv+1 */
@@ -21,9 +19,7 @@ typedef struct {
 static PetscErrorCode WorkFree(Work *w)
 {
   PetscFunctionBeginUser;
-  PetscCall(PetscFree(w->he));
-  PetscCall(PetscFree(w->key));
-  PetscCall(PetscFree(w->off));
+  PetscCall(CSMeshDataEdgesDestroy(&w->E));
   PetscCall(PetscFree(w->twin));
   PetscCall(PetscFree(w->vout));
   PetscCall(PetscFree(w->voff));
@@ -40,14 +36,8 @@ static void Fail(Work *w, const char fmt[], ...)
   va_end(ap);
 }
 
-static inline PetscInt HeNext(PetscInt h)
-{
-  return h % 3 == 2 ? h - 2 : h + 1;
-}
-static inline PetscInt HePrev(PetscInt h)
-{
-  return h % 3 == 0 ? h + 2 : h - 1;
-}
+#define HeNext CSHalfedgeNext
+#define HePrev CSHalfedgePrev
 
 #define FACEFMT "face %" PetscInt_FMT " (vertices %" PetscInt_FMT " %" PetscInt_FMT " %" PetscInt_FMT ")"
 #define FACEARG(md, i) (i), (md)->f[3 * (i)], (md)->f[3 * (i) + 1], (md)->f[3 * (i) + 2]
@@ -99,30 +89,18 @@ static void CheckFaces(const CSMeshData *md, Work *w)
   }
 }
 
-/* Groups the half-edges by undirected edge: bucket by smaller vertex, sort each bucket by the larger one. */
+/* Groups the half-edges by undirected edge (CSMeshDataEdgesCreate), and the out-going half-edges per vertex. */
 static PetscErrorCode BuildEdges(const CSMeshData *md, Work *w)
 {
   PetscInt nh = 3 * md->nf, *cnt;
 
   PetscFunctionBeginUser;
-  PetscCall(PetscMalloc1(nh, &w->he));
-  PetscCall(PetscMalloc1(nh, &w->key));
-  PetscCall(PetscCalloc1(md->nv + 1, &w->off));
+  PetscCall(CSMeshDataEdgesCreate(md, &w->E));
   PetscCall(PetscMalloc1(nh, &w->twin));
   PetscCall(PetscMalloc1(nh, &w->vout));
   PetscCall(PetscCalloc1(md->nv + 1, &w->voff));
   PetscCall(PetscMalloc1(PetscMax(md->nv, nh) + 1, &w->aux));
   cnt = w->aux;
-  for (PetscInt h = 0; h < nh; h++) w->off[PetscMin(md->f[h], md->f[HeNext(h)]) + 1]++;
-  for (PetscInt v = 0; v < md->nv; v++) w->off[v + 1] += w->off[v];
-  for (PetscInt v = 0; v < md->nv; v++) cnt[v] = w->off[v];
-  for (PetscInt h = 0; h < nh; h++) {
-    PetscInt a = md->f[h], b = md->f[HeNext(h)], s = cnt[PetscMin(a, b)]++;
-    w->he[s]  = h;
-    w->key[s] = PetscMax(a, b);
-  }
-  for (PetscInt v = 0; v < md->nv; v++)
-    if (w->off[v + 1] - w->off[v] > 1) PetscCall(PetscSortIntWithArray(w->off[v + 1] - w->off[v], w->key + w->off[v], w->he + w->off[v]));
   /* out-going half-edges per vertex, for the fans */
   for (PetscInt h = 0; h < nh; h++) w->voff[md->f[h] + 1]++;
   for (PetscInt v = 0; v < md->nv; v++) w->voff[v + 1] += w->voff[v];
@@ -138,35 +116,35 @@ static void CheckEdges(const CSMeshData *md, Work *w, PetscInt *nedges, PetscInt
   *nedges = *nbnd = 0;
   for (int pass = 0; pass < 3 && !w->msg[0]; pass++) {
     for (PetscInt v = 0; v < md->nv && !w->msg[0]; v++) {
-      for (PetscInt s = w->off[v], e; s < w->off[v + 1] && !w->msg[0]; s = e) {
+      for (PetscInt s = w->E.off[v], e; s < w->E.off[v + 1] && !w->msg[0]; s = e) {
         PetscInt k;
-        for (e = s + 1; e < w->off[v + 1] && w->key[e] == w->key[s]; e++) {}
+        for (e = s + 1; e < w->E.off[v + 1] && w->E.key[e] == w->E.key[s]; e++) {}
         k = e - s;
         if (pass == 0) {
           /* faces sharing this edge are the same triangle iff their third vertices agree; an edge with very many
              faces is non-manifold anyway, so the quadratic scan is capped */
           for (PetscInt i = s; i < e && i < s + 16 && !w->msg[0]; i++)
             for (PetscInt j = i + 1; j < e && j < s + 16; j++)
-              if (md->f[HePrev(w->he[i])] == md->f[HePrev(w->he[j])]) {
-                PetscInt fi = w->he[i] / 3, fj = w->he[j] / 3;
-                Fail(w, "%s: " FACEFMT " and " FACEFMT ": duplicate faces (the same vertex set%s)", md->name, FACEARG(md, fi), FACEARG(md, fj), md->f[w->he[i]] == md->f[w->he[j]] ? "" : ", opposite orientation");
+              if (md->f[HePrev(w->E.he[i])] == md->f[HePrev(w->E.he[j])]) {
+                PetscInt fi = w->E.he[i] / 3, fj = w->E.he[j] / 3;
+                Fail(w, "%s: " FACEFMT " and " FACEFMT ": duplicate faces (the same vertex set%s)", md->name, FACEARG(md, fi), FACEARG(md, fj), md->f[w->E.he[i]] == md->f[w->E.he[j]] ? "" : ", opposite orientation");
                 break;
               }
         } else if (pass == 1) {
           if (k > 2) {
             char     list[256] = "";
             size_t   n         = 0;
-            PetscInt a = md->f[w->he[s]], b = md->f[HeNext(w->he[s])];
-            for (PetscInt i = s; i < e && i < s + 8 && n < sizeof(list); i++) n += (size_t)snprintf(list + n, sizeof(list) - n, "%s%" PetscInt_FMT, i > s ? ", " : "", w->he[i] / 3);
+            PetscInt a = md->f[w->E.he[s]], b = md->f[HeNext(w->E.he[s])];
+            for (PetscInt i = s; i < e && i < s + 8 && n < sizeof(list); i++) n += (size_t)snprintf(list + n, sizeof(list) - n, "%s%" PetscInt_FMT, i > s ? ", " : "", w->E.he[i] / 3);
             Fail(w, "%s: non-manifold edge (%" PetscInt_FMT ", %" PetscInt_FMT ") shared by %" PetscInt_FMT " faces: %s%s", md->name, PetscMin(a, b), PetscMax(a, b), k, list, k > 8 ? ", ..." : "");
           }
         } else {
           (*nedges)++;
           if (k == 1) {
-            w->twin[w->he[s]] = -1;
+            w->twin[w->E.he[s]] = -1;
             (*nbnd)++;
           } else {
-            PetscInt h0 = w->he[s], h1 = w->he[s + 1];
+            PetscInt h0 = w->E.he[s], h1 = w->E.he[s + 1];
             if (md->f[h0] == md->f[h1]) {
               Fail(w, "%s: " FACEFMT " and " FACEFMT ": inconsistent orientation (both traverse the edge %" PetscInt_FMT " -> %" PetscInt_FMT " in the same direction)", md->name, FACEARG(md, h0 / 3), FACEARG(md, h1 / 3), md->f[h0], md->f[HeNext(h0)]);
             }
@@ -198,7 +176,7 @@ static void CheckFans(const CSMeshData *md, Work *w)
    components of the face graph (union-find over interior edges). */
 static void CountLoopsAndComponents(const CSMeshData *md, Work *w, PetscInt *loops, PetscInt *comps)
 {
-  PetscInt nh = 3 * md->nf, *bout = w->aux, *par = w->key; /* key is no longer needed */
+  PetscInt nh = 3 * md->nf, *bout = w->aux, *par = w->E.key; /* key is no longer needed */
 
   *loops = *comps = 0;
   for (PetscInt v = 0; v < md->nv; v++) bout[v] = -1;

@@ -45,7 +45,8 @@ PetscErrorCode CSTriangleFieldLogLengths(CSMesh m, DM dmH3, Vec omega, DM dmH1, 
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CSTriangleFieldLogLengthsFromEdges(CSMesh m, Vec l, DM dmH1, Vec lambda)
+/* h_{2e} = h_{2e+1} = phi(e_e): an edge field on both halfedges of each edge. */
+static PetscErrorCode HalfedgesFromEdges(CSMesh m, Vec l, DM dmH1, PetscBool takelog, Vec lambda)
 {
   Vec                lE, lH;
   const PetscScalar *e;
@@ -56,12 +57,26 @@ PetscErrorCode CSTriangleFieldLogLengthsFromEdges(CSMesh m, Vec l, DM dmH1, Vec 
   PetscCall(DMGlobalToLocal(m->dmE1, l, INSERT_VALUES, lE));
   PetscCall(VecGetArrayRead(lE, &e));
   PetscCall(VecGetArray(lH, &h));
-  for (PetscInt i = 0; i < m->ne; i++) h[2 * i] = h[2 * i + 1] = PetscLogReal(PetscRealPart(e[i]));
+  for (PetscInt i = 0; i < m->ne; i++) h[2 * i] = h[2 * i + 1] = takelog ? PetscLogReal(PetscRealPart(e[i])) : e[i];
   PetscCall(VecRestoreArray(lH, &h));
   PetscCall(VecRestoreArrayRead(lE, &e));
   PetscCall(DMLocalToGlobal(dmH1, lH, INSERT_VALUES, lambda));
   PetscCall(DMRestoreLocalVector(dmH1, &lH));
   PetscCall(DMRestoreLocalVector(m->dmE1, &lE));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSTriangleFieldLogLengthsFromEdges(CSMesh m, Vec l, DM dmH1, Vec lambda)
+{
+  PetscFunctionBeginUser;
+  PetscCall(HalfedgesFromEdges(m, l, dmH1, PETSC_TRUE, lambda));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSTriangleFieldHalfedgesFromEdges(CSMesh m, Vec c, DM dmH1, Vec ch)
+{
+  PetscFunctionBeginUser;
+  PetscCall(HalfedgesFromEdges(m, c, dmH1, PETSC_FALSE, ch));
   PetscFunctionReturn(0);
 }
 

@@ -40,6 +40,7 @@ PetscErrorCode CSWFSetUpConstraints(CSWillmoreFlow F)
     if (F->target[0]) PetscCall(CSMeshLoadCompatiblePositions(m, opt, F->target, &xt));
     PetscCall(CSConformalConstraintCreate(m, xt, (PetscBool)(m->topo.boundary_loops > 0), F->fixed, &F->cc));
     if (!F->target[0] && m->lt) PetscCall(CSConformalConstraintSetTargetLengths(&F->cc, m->lt));
+    if (!F->target[0] && m->ct) PetscCall(VecCopy(m->ct, F->cc.c0)); /* -mesh_cross_ratios: c0 itself */
     if (F->target[0]) PetscCall(VecDestroy(&xt));
   }
   PetscCall(CSGeometryAreaVolume(m, F->x0, &A, &V));

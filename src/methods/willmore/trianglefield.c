@@ -172,10 +172,13 @@ static PetscErrorCode SetFromOptionsTF(CSWillmoreFlow F)
   PetscCall(PetscOptionsReal("-integrability_weight", "Multiplier metric of the integrability rows (d1 omega, face closure, <<Y_i|omega>>) relative to their size; small = stiff", NULL, d->wint, &d->wint, NULL));
   PetscOptionsEnd();
   PetscCall(CSTFScheduleSetFromOptions(F, d));
+  PetscCall(CSTFContinuationSetFromOptions(F, d));
   PetscCheck(d->wint > 0 && !PetscIsInfOrNanReal(d->wint), F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sintegrability_weight %g: must be > 0", F->prefix, (double)d->wint);
   PetscCheck(d->mshift >= 0 && !PetscIsInfOrNanReal(d->mshift), F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sspinor_metric_shift %g: must be >= 0", F->prefix, (double)d->mshift);
   PetscCheck(d->wgauge >= 0 && !PetscIsInfOrNanReal(d->wgauge), F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sscale_gauge_weight %g: must be >= 0", F->prefix, (double)d->wgauge);
   PetscCheck(d->wspin >= 0 && !PetscIsInfOrNanReal(d->wspin), F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sspin_weight %g: must be >= 0", F->prefix, (double)d->wspin);
+  /* the spinor variables evaluate through their own path, which has no stages (rather refused than ignored) */
+  PetscCheck(!d->spinor || d->wdecay == 1, F->comm, PETSC_ERR_SUP, "-%sspin_weight_decay %g: the spin-weight continuation is built for the omega variables, not -%svariables spinor", F->prefix, (double)d->wdecay, F->prefix);
   PetscFunctionReturn(0);
 }
 
@@ -353,6 +356,7 @@ static PetscErrorCode SetUpTriangleField(CSWillmoreFlow F)
   if (m->lt) PetscCall(CSTriangleFieldLogLengthsFromEdges(m, m->lt, d->dmH1, d->lambda)); /* -gen lattice: the lattice's class */
   else PetscCall(CSTriangleFieldLogLengths(m, d->dmH3, F->x0, d->dmH1, d->lambda));
   PetscCall(MatMult(d->C, d->lambda, d->c0));
+  if (m->ct) PetscCall(CSTriangleFieldHalfedgesFromEdges(m, m->ct, d->dmH1, d->c0)); /* -mesh_cross_ratios (the spinor charts keep df's lengths) */
   PetscCall(SetUpSpinors(F, d));
   PetscCall(SetUpScaling(F, d));
   PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "%ssaddle_", F->prefix));
@@ -495,5 +499,9 @@ PetscErrorCode CSWillmoreFlowCreate_TriangleField(CSWillmoreFlow F)
   d->amp               = 0.5;
   d->wrelax            = 1e4;
   d->wgauge            = 0;
+  d->wdecay            = 1;
+  d->wspin_min         = 1e-3;
+  d->stage_rtol        = 1e-3;
+  d->stage_ctol        = 1e-8;
   PetscFunctionReturn(0);
 }

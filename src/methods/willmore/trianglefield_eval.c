@@ -117,9 +117,8 @@ static PetscErrorCode EvaluateSpinor(CSWillmoreFlow F, CSTriangleField *d)
 
 /* Everything the stopping test, the monitors and the step need at x = omega: W~ and its gradient (App. D.1), the
    rows, the residual r = g + X^T mu + sum_j nu_j row_j, the violations, the triangle field's stars and area. */
-PetscErrorCode CSTFEvaluate(CSWillmoreFlow F)
+static PetscErrorCode EvaluateAt(CSWillmoreFlow F, CSTriangleField *d)
 {
-  CSTriangleField *d = (CSTriangleField *)F->data;
   PetscScalar      A;
   PetscFunctionBeginUser;
   if (d->spinor) {
@@ -141,6 +140,18 @@ PetscErrorCode CSTFEvaluate(CSWillmoreFlow F)
      history, the summary and the resolution guard (issue 21: the bunny's squeeze was invisible here) */
   PetscCall(CSTriangleFieldReconstruct(F->mesh, d->dmH1, d->dmH3, F->x, d->xpos0, d->xpos));
   PetscCall(CSWFMeasureQualityOf(F, d->xpos0, d->xpos));
+  PetscFunctionReturn(0);
+}
+
+/* The evaluation at x, then the spin-weight continuation (trianglefield_continuation.c). */
+PetscErrorCode CSTFEvaluate(CSWillmoreFlow F)
+{
+  CSTriangleField *d = (CSTriangleField *)F->data;
+  PetscBool        next;
+  PetscFunctionBeginUser;
+  PetscCall(EvaluateAt(F, d));
+  PetscCall(CSTFContinuationAdvance(F, d, &next)); /* a new spin weight: the energy, gradient and residual change */
+  if (next) PetscCall(EvaluateAt(F, d));
   PetscFunctionReturn(0);
 }
 

@@ -48,6 +48,9 @@ typedef struct {
   PetscReal mshift;        /* -flow_spinor_metric_shift: + mshift a I on the pulled-back metric (0: none) */
   PetscReal ubar0;         /* the scale gauge: mean(u) of the start */
   Vec      *rowsOm;        /* the <<Y_i|.>> rows on triangle fields (F->rows holds J^T of them) */
+  PetscReal wdecay, wspin_min;      /* continuation in wspin (trianglefield_continuation.c) */
+  PetscReal stage_rtol, stage_ctol; /* a stage ends at el < stage_rtol, rows < stage_ctol */
+  PetscInt  stage_maxit, stage_it0, nstages;
 } CSTriangleField;
 PETSC_INTERN const char *const CSTriangleFieldVariables[];
 
@@ -72,4 +75,7 @@ PETSC_INTERN PetscErrorCode CSTFSpinorConstraints(CSWillmoreFlow F, Vec x, Vec c
 PETSC_INTERN PetscErrorCode CSTFSpinorMetric(CSWillmoreFlow F, CSTriangleField *d);
 PETSC_INTERN PetscErrorCode CSTFSpinorNormalize(CSWillmoreFlow F, CSTriangleField *d, Vec x);
 PETSC_INTERN PetscErrorCode CSTFSpinorDestroy(CSTriangleField *d);
+/* trianglefield_continuation.c: w <- w * decay each time a stage converges, then 0 (App. C.3) */
+PETSC_INTERN PetscErrorCode CSTFContinuationSetFromOptions(CSWillmoreFlow F, CSTriangleField *d);
+PETSC_INTERN PetscErrorCode CSTFContinuationAdvance(CSWillmoreFlow F, CSTriangleField *d, PetscBool *next);
 #endif
