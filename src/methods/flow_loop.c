@@ -42,7 +42,8 @@ static PetscErrorCode Judge(CSFlowLoop *L, void *flow, PetscBool timed)
   PetscMPIInt    over;
   PetscFunctionBeginUser;
   PetscCall(L->ops.judge(flow, &L->reason));
-  if (!L->reason && L->it >= L->max_it) L->reason = L->max_it_reason;
+  /* rejected steps count too, so that a flow that keeps rejecting (its judge saying go on) still stops */
+  if (!L->reason && (L->it >= L->max_it || L->rejections >= L->max_it)) L->reason = L->max_it_reason;
   if (L->reason || !timed || L->max_seconds <= 0) PetscFunctionReturn(0);
   PetscCall(PetscTime(&now));
   over = (PetscMPIInt)(now - L->t0 >= L->max_seconds);

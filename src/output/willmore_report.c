@@ -56,7 +56,8 @@ static PetscErrorCode PathLine(CSMesh mesh, const CSWillmoreFlowInfo *i)
   PetscFunctionBeginUser;
   if (!(i->el_min < PETSC_MAX_REAL) || i->it == 0) PetscFunctionReturn(0);
   PetscCall(PetscPrintf(mesh->comm, "flow path: EL residual %.3e at the start, smallest %.3e at iteration %" PetscInt_FMT " (W %.10g), %.3e at the stop (W %.10g)", (double)i->el_first, (double)i->el_min, i->it_el_min, (double)i->energy_el_min, (double)i->el_residual, (double)i->energy));
-  if (i->it_el_min < i->it) PetscCall(PetscPrintf(mesh->comm, ": the path came nearest a critical point %" PetscInt_FMT " iterations before the stop and moved away from it, the residual growing %.3g-fold while W changed by %+.4g\n", i->it - i->it_el_min, (double)(i->el_residual / i->el_min), (double)(i->energy - i->energy_el_min)));
+  if (i->it_el_min < i->it && i->el_residual > 1.25 * i->el_min) PetscCall(PetscPrintf(mesh->comm, ": the path came nearest a critical point %" PetscInt_FMT " iterations before the stop and moved away from it, the residual growing %.3g-fold while W changed by %+.4g\n", i->it - i->it_el_min, (double)(i->el_residual / i->el_min), (double)(i->energy - i->energy_el_min)));
+  else if (i->it_el_min < i->it) PetscCall(PetscPrintf(mesh->comm, ": at the stop within 25 %% of its smallest\n"));
   else PetscCall(PetscPrintf(mesh->comm, ": the residual is smallest at the stop\n"));
   PetscFunctionReturn(0);
 }

@@ -14,6 +14,8 @@ if [ "$NP" = 1 ]; then
   "$CS_BIN" -task info $G -o "$TMP/in.obj" > /dev/null 2>&1 || { echo "BAD: input"; exit 1; }
   timeout 120 "$CS_BIN" -task flow -flow_type trianglefield $G -flow_max_it 40 -summary "$TMP/a.json" -o "$TMP/a.obj" > "$TMP/a.log" 2>&1 || { tail "$TMP/a.log"; exit 1; }
 fi
+# (c) the spinor variables measure their surface too (they reported area_spread = q_max = 0 before the review)
+timeout 60 $MPIEXEC "$CS_BIN" -task flow -flow_type trianglefield -flow_variables spinor -gen lattice -gen_tau 0,1 -gen_n 4 -gen_m 4 -flow_max_it 5 -summary "$TMP/c.json" > "$TMP/c.log" 2>&1 || { tail "$TMP/c.log"; exit 1; }
 timeout 120 $MPIEXEC "$CS_BIN" -task flow -flow_type trianglefield $G -flow_max_it 40 -flow_max_area_ratio 3 -summary "$TMP/b.json" > "$TMP/b.log" 2>&1 || { tail "$TMP/b.log"; exit 1; }
 python3 - "$TMP" <<'PY'
 import json, math, sys
@@ -31,7 +33,9 @@ if sa:
   ("(a) default: converged", sa['converged'] in (True, 1, 'true'), (sa['stop_reason'], sa['iterations'])),
   ("(a) area_spread of the summary = the written mesh's vertex-area spread (> 1)", spread > 1 and abs(sa['area_spread'] - spread) < 1e-6 * spread, (sa['area_spread'], spread)),
   ("(a) q_max measured (> 1)", sa['q_max'] > 1, sa['q_max'])]
+sc = json.load(open(d + '/c.json'))
 checks += [
+  ("(c) spinor variables: area_spread and q_max measured (> 1)", sc['area_spread'] > 1 and sc['q_max'] > 1, (sc['area_spread'], sc['q_max'])),
   ("(b) -flow_max_area_ratio 3: mesh_degenerate, area_spread > 3, the guard's line", sb['stop_reason'] == 'mesh_degenerate' and sb['area_spread'] > 3 and 'mesh resolution collapse' in open(d + '/b.log').read(), (sb['stop_reason'], sb['area_spread'])),
 ]
 bad = 0

@@ -22,6 +22,12 @@ EXPECT="-flow_factor_reuse_its -1" expect_fail F -gen icosphere -gen_level 1 -fl
 EXPECT="-flow_soc_max_it -1" expect_fail F -gen icosphere -gen_level 1 -flow_soc_max_it -1
 EXPECT="-flow_restore_above -0.5" expect_fail F -gen icosphere -gen_level 1 -flow_restore_above -0.5
 EXPECT="-flow_fin_q 0.5" expect_fail F -gen icosphere -gen_level 1 -flow_fin_q 0.5
+# options that only some flows take: refused by name where they would be ignored (review of 2026-12-02)
+EXPECT="-flow_multiplier_ls_every 1: only for -flow_type cgd" expect_fail F -gen icosphere -gen_level 1 -flow_type pgd -flow_multiplier_ls_every 1
+EXPECT="-flow_multiplier_ls_every 1: only for -flow_type cgd" expect_fail F -gen lattice -gen_tau 0,1 -gen_n 4 -gen_m 4 -flow_type trianglefield -flow_multiplier_ls_every 1
+EXPECT="-flow_metric h1 with -flow_energy fairing" expect_fail F -gen icosphere -gen_level 1 -flow_energy fairing -flow_metric h1
+EXPECT="-flow_metric h1: -flow_type trianglefield has its own metric" expect_fail F -gen lattice -gen_tau 0,1 -gen_n 4 -gen_m 4 -flow_type trianglefield -flow_metric h1
+EXPECT="-flow_spin_weight_decay 0.1: .*not -flow_variables spinor" expect_fail F -gen lattice -gen_tau 0,1 -gen_n 4 -gen_m 4 -flow_type trianglefield -flow_variables spinor -flow_spin_weight_decay 0.1
 # numeric options that used to make do-nothing runs exiting 0 (issue 18, item 10): nan, inf, out of range
 for o in "-flow_rtol nan" "-flow_iq_wmin -1" "-flow_max_it -1" "-flow_max_rejections 0" "-flow_t_mu -5" "-flow_t inf" "-flow_vmax nan"; do
   EXPECT="^confsurf: error: $o: must" expect_fail F -gen icosphere -gen_level 1 $o

@@ -147,6 +147,7 @@ PetscErrorCode CSWFSetUpScaling(CSWillmoreFlow F)
      eps ((w + 1/eps) *0 + L *0^{-1} L), is a Newton step on the fidelity and the W metric on the rest (with the
      current mass *0(f) for *0(f0)). */
   if (!strcmp(F->energy_name, "fairing")) {
+    PetscCheck(F->metric_type != CS_FLOW_METRIC_H1, F->comm, PETSC_ERR_SUP, "-%smetric h1 with -%senergy fairing: not built (the fidelity's Newton weight below is for the H^2 metric's mass term)", F->prefix, F->prefix);
     F->metric.scale = F->eps;
     F->metric.mass_weight += 1.0 / F->eps;
   }
@@ -188,6 +189,8 @@ PetscErrorCode CSWillmoreFlowSetUp(CSWillmoreFlow F)
   PetscFunctionBeginUser;
   if (F->setupcalled) PetscFunctionReturn(0);
   PetscCall(PetscTime(&F->t0));
+  /* rather refused than ignored: the least-squares multipliers are CGD's dual step on the conformal rows */
+  PetscCheck(!F->mu_ls_every || (F->ops.dual == CSWFMultiplierLS && F->conformal), F->comm, PETSC_ERR_SUP, "-%smultiplier_ls_every %" PetscInt_FMT ": only for -%stype cgd with the conformal constraint", F->prefix, F->mu_ls_every, F->prefix);
   if (F->ops.setup_problem) { /* a kind with its own variables (trianglefield) */
     PetscCall((*F->ops.setup_problem)(F));
     F->setupcalled = PETSC_TRUE;

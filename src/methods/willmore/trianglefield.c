@@ -191,7 +191,7 @@ static PetscErrorCode CheckOptions(CSWillmoreFlow F)
   PetscCall(PetscStrcmp(F->energy_name, "willmore", &willmore));
   PetscCheck(willmore, F->comm, PETSC_ERR_SUP, "-%senergy %s: -%stype trianglefield minimises the Willmore energy W~ of App. D.1 only", p, F->energy_name, p);
   PetscCheck(!F->area_set && !F->mobius && !F->rotation && !F->target[0], F->comm, PETSC_ERR_SUP, "-%stype trianglefield: the area, Moebius and rotation constraints and -%starget_mesh are not built for triangle fields (App. B: volume and points only)", p, p);
-  PetscCheck(F->metric_type == CS_FLOW_METRIC_H2, F->comm, PETSC_ERR_SUP, "-%smetric l2: -%stype trianglefield uses the I_H1 metric (Eq. 32) only", p, p);
+  PetscCheck(F->metric_type == CS_FLOW_METRIC_H2, F->comm, PETSC_ERR_SUP, "-%smetric %s: -%stype trianglefield has its own metric, the I_H1 of triangle fields (Eq. 32), which the default -%smetric h2 selects", p, CSFlowMetricTypes[F->metric_type], p, p);
   PetscFunctionReturn(0);
 }
 
@@ -499,6 +499,7 @@ PetscErrorCode CSWillmoreFlowCreate_TriangleField(CSWillmoreFlow F)
   d->amp               = 0.5;
   d->wrelax            = 1e4;
   d->wgauge            = 0;
+  d->mshift            = 0;
   d->wdecay            = 1;
   d->wspin_min         = 1e-3;
   d->stage_rtol        = 1e-3;

@@ -109,9 +109,10 @@ static PetscErrorCode EvaluateSpinor(CSWillmoreFlow F, CSTriangleField *d)
   PetscCall(CSTFSpinorOmega(d, F->x, d->omt)); /* d->pg = psi of x */
   PetscCall(CSSpinorPinchEdges(d->sp, d->pg, &F->pinch, NULL));
   PetscCall(CSSpinorDirichlet(d->sp, d->pg, &F->espin, NULL));
-  F->V      = 0;
-  F->spread = 0;
-  F->qmax   = 0;
+  F->V = 0;
+  /* the surface of this state against the input, as for the omega variables (area spread, q_max, the guard) */
+  PetscCall(CSTriangleFieldReconstruct(F->mesh, d->dmH1, d->dmH3, d->omega, d->xpos0, d->xpos));
+  PetscCall(CSWFMeasureQualityOf(F, d->xpos0, d->xpos));
   PetscFunctionReturn(0);
 }
 

@@ -5,8 +5,9 @@
    its gradient J^T grad W~ + w grad E_tau with J = dS_c (assembled, 3H x (V + 4F)). The constraint rows are the
    lens integrability d1 omega (Eq. 31) and the periods <<Y_i|omega>> (Eq. 13), linearised through J, and the sphere
    rows (|psi_f|^2 - 1)/2 = 0. The metric is the pull-back J^T I_H1 J of the triangle fields' metric (Eq. 32) plus
-   a_f psi_f psi_f^T on each face (J^T I_H1 J vanishes on (du, dpsi) = (2, -psi), the trade of a uniform scale
-   between u and |psi|; the radial term, a_f = the mean of J^T I_H1 J's psi diagonal, makes it definite), and the
+   a psi_f psi_f^T on each face (J^T I_H1 J vanishes on (du, dpsi) = (2, -psi), the trade of a uniform scale
+   between u and |psi|; the radial term, with one a = the mean over all faces of J^T I_H1 J's psi diagonal, makes it
+   definite), and the
    sphere rows make the step tangent to (S^3)^F to first order; each accepted state is renormalised to |psi_f| = 1
    exactly (docs/triangle_fields.md, "The spinor flow"). */
 #include "trianglefield_impl.h"
