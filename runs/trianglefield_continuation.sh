@@ -18,6 +18,11 @@
 #   B: flow: spin stage 1 converged at iteration 100 (w = 1.): W~ + w E_tau = 44.55047125, E_tau = 15.1368, el_residual 9.850e-03, violation 1.954e-09, pinch edges 0; w -> 0.
 #      flow trianglefield: NOT converged after 1230 iterations (max_it; ...), 2300.247 s; conformal violation 1.57e-12, constraint violation 1.78e-15, EL residual 1.82e-06
 #      summary: energy (W) 27.880191418, pinch_edges 0
+#   B rerun to the end on the quieter machine (2026-12-02, lead, serial, 224 s):
+#      flow: spin stage 1 converged at iteration 100 (w = 1.): ..., pinch edges 0; w -> 0.
+#      flow trianglefield: converged after 1286 iterations (converged; 0 rejected steps, 183087 KSP iterations, ...),
+#      224.235 s; conformal violation 5.70e-12, constraint violation 8.88e-16, EL residual 9.97e-07
+#      summary: energy (W) 27.880191418 (> 2 pi^2 = 19.739), pinch_edges 0, q_max 7.04
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out=runs/results; mkdir -p "$out"
