@@ -169,10 +169,12 @@ static PetscErrorCode SetFromOptionsTF(CSWillmoreFlow F)
   PetscCall(PetscOptionsInt("-seed", "Seed of -flow_init random", NULL, d->seed, &d->seed, NULL));
   PetscCall(PetscOptionsReal("-init_amplitude", "-flow_init random: each halfedge vector gets a uniform random vector in [-a, a]^3 times the mean edge length; random_spinor: each face rotated by up to a pi", NULL, d->amp, &d->amp, NULL));
   PetscCall(PetscOptionsReal("-spin_weight", "Weight of the spin Dirichlet energy E_tau(psi(omega)) added to W~ (soliman2021 App. C.3); 0: none", NULL, d->wspin, &d->wspin, NULL));
+  PetscCall(PetscOptionsReal("-restore_near_ceiling", "Project an accepted omega back onto its rows (Gauss-Newton, I_H1 metric) when its violation exceeds this times -flow_vmax (0: only -flow_restore_above / -flow_restore_stalled)", NULL, d->restore_near, &d->restore_near, NULL));
   PetscCall(PetscOptionsReal("-integrability_weight", "Multiplier metric of the integrability rows (d1 omega, face closure, <<Y_i|omega>>) relative to their size; small = stiff", NULL, d->wint, &d->wint, NULL));
   PetscOptionsEnd();
   PetscCall(CSTFScheduleSetFromOptions(F, d));
   PetscCall(CSTFContinuationSetFromOptions(F, d));
+  PetscCheck(d->restore_near >= 0 && !PetscIsInfOrNanReal(d->restore_near), F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%srestore_near_ceiling %g: must be >= 0", F->prefix, (double)d->restore_near);
   PetscCheck(d->wint > 0 && !PetscIsInfOrNanReal(d->wint), F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sintegrability_weight %g: must be > 0", F->prefix, (double)d->wint);
   PetscCheck(d->mshift >= 0 && !PetscIsInfOrNanReal(d->mshift), F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sspinor_metric_shift %g: must be >= 0", F->prefix, (double)d->mshift);
   PetscCheck(d->wgauge >= 0 && !PetscIsInfOrNanReal(d->wgauge), F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sscale_gauge_weight %g: must be >= 0", F->prefix, (double)d->wgauge);
@@ -412,12 +414,13 @@ static PetscErrorCode SetUpTriangleFieldSpinor(CSWillmoreFlow F, CSTriangleField
   PetscFunctionReturn(0);
 }
 
-/* x = xt done: the multipliers mu += dmu, nu += dnu (no restoration by projection: CSWFProject works on positions);
-   the spinors follow omega (signs nearest to the previous ones). */
+/* x = xt done: the restoration onto the rows near the violation ceiling (trianglefield_restore.c), the multipliers
+   mu += dmu, nu += dnu; the spinors follow omega (signs nearest to the previous ones). */
 static PetscErrorCode Accept(CSWillmoreFlow F)
 {
   CSTriangleField *d = (CSTriangleField *)F->data;
   PetscFunctionBeginUser;
+  PetscCall(CSTFRestore(F));
   if (d->spinor) { /* the renormalisation onto (S^3)^F (the step is tangent to first order) */
     PetscCall(CSTFSpinorNormalize(F, d, F->x));
     PetscCall(CSTFSpinorOmega(d, F->x, d->omega));
@@ -494,6 +497,7 @@ PetscErrorCode CSWillmoreFlowCreate_TriangleField(CSWillmoreFlow F)
   F->ops.positions     = Positions;
   F->ops.setup         = SetFromOptionsTF;
   d->wint              = 1e-4;
+  d->restore_near      = 0.5;
   d->init              = CS_TF_INIT_DF;
   d->seed              = 1;
   d->amp               = 0.5;

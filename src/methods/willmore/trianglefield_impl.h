@@ -31,6 +31,7 @@ typedef struct {
   PetscInt  istart;        /* -flow_integrability_start (trianglefield_schedule.c) */
   PetscReal wrelax;        /* -flow_integrability_relaxed_weight */
   PetscReal vmax0;         /* -flow_vmax, lifted while the rows are relaxed */
+  PetscReal restore_near;  /* -flow_restore_near_ceiling: restore omega when v > this * vmax (trianglefield_restore.c) */
   PetscBool noconf;        /* -flow_conformal false: no C~ rows (nH = 0), X = Klin */
   CSSpinorSpace sp;        /* charts of the target metric, spin connection of the input (App. C) */
   Vec       psi, psit;     /* the face spinors of the accepted omega (signs followed along the flow), a work copy */
@@ -75,6 +76,8 @@ PETSC_INTERN PetscErrorCode CSTFSpinorConstraints(CSWillmoreFlow F, Vec x, Vec c
 PETSC_INTERN PetscErrorCode CSTFSpinorMetric(CSWillmoreFlow F, CSTriangleField *d);
 PETSC_INTERN PetscErrorCode CSTFSpinorNormalize(CSWillmoreFlow F, CSTriangleField *d, Vec x);
 PETSC_INTERN PetscErrorCode CSTFSpinorDestroy(CSTriangleField *d);
+/* trianglefield_restore.c: Gauss-Newton restoration of an accepted omega onto the rows (issue 15) */
+PETSC_INTERN PetscErrorCode CSTFRestore(CSWillmoreFlow F);
 /* trianglefield_continuation.c: w <- w * decay each time a stage converges, then 0 (App. C.3) */
 PETSC_INTERN PetscErrorCode CSTFContinuationSetFromOptions(CSWillmoreFlow F, CSTriangleField *d);
 PETSC_INTERN PetscErrorCode CSTFContinuationAdvance(CSWillmoreFlow F, CSTriangleField *d, PetscBool *next);
