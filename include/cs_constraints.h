@@ -75,6 +75,9 @@ PETSC_EXTERN PetscErrorCode CSConstraintCreatePointsFromFile(CSMesh mesh, const 
    delta_v - delta_v0, the source/sink form of B.1); fewer than 2 points is refused. P is referenced. */
 PETSC_EXTERN PetscErrorCode CSConstraintCreateTriangleFieldVolume(CSMesh mesh, CSTriangleFieldPoisson P, PetscReal target, CSGlobalConstraint *g);
 PETSC_EXTERN PetscErrorCode CSConstraintCreateTriangleFieldPoints(CSMesh mesh, CSTriangleFieldPoisson P, const char option[], const char path[], CSGlobalConstraint *g);
+/* The Moebius balancing (CSConstraintCreateMobiusBalance on the input positions x0) of R omega: 3 rows fixing the
+   Moebius gauge of the triangle-field flow (-flow_constraint_mobius with -flow_type trianglefield). */
+PETSC_EXTERN PetscErrorCode CSConstraintCreateTriangleFieldMobius(CSMesh mesh, CSTriangleFieldPoisson P, Vec x0, CSGlobalConstraint *g);
 
 /* Moebius balancing (gauge of the Moebius orbit left free by the conformal constraint, along which the
    discrete Willmore energy is not invariant): the 3 rows sum_i A_i(f) (f0_i - c0) = 0, normalised by

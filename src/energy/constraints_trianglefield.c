@@ -1,6 +1,7 @@
 /* Global constraints on triangle fields (soliman2021 App. B): a translation-invariant position constraint c(f)
    evaluated at the frozen-metric Poisson reconstruction f = R omega (include/cs_operators_lens.h), its rows pulled
-   back by R^T (Eq. 22). The volume (B.2) and relative point positions (B.1). */
+   back by R^T (Eq. 22). The volume (B.2), relative point positions (B.1) and the Moebius balancing (the vertex
+   flow's gauge rows, constraints_global.c, extended the same way). */
 #include "cs_constraints.h"
 
 typedef struct {
@@ -83,5 +84,18 @@ PetscErrorCode CSConstraintCreateTriangleFieldPoints(CSMesh m, CSTriangleFieldPo
     SETERRQ(m->comm, PETSC_ERR_ARG_WRONG, "%s %s: one point; a triangle field fixes positions only up to translation, so give at least 2 points (the first anchors the others)", option, path);
   }
   PetscCall(CreateExtension(m, P, pos, PETSC_TRUE, g));
+  PetscFunctionReturn(0);
+}
+
+/* The Moebius balancing m(R omega) = 0 (the vertex flow's rows, CSConstraintCreateMobiusBalance, on the input x0):
+   m only sees the vertex areas, so it is translation invariant and m(R df) = m(f) for every f; rows R^T grad m.
+   The discrete W~ (App. D.1) is not Moebius invariant and falls along the Moebius orbit (docs/triangle_fields.md,
+   Fig. 16); the three rows fix the boosts as they do for cgd. */
+PetscErrorCode CSConstraintCreateTriangleFieldMobius(CSMesh m, CSTriangleFieldPoisson P, Vec x0, CSGlobalConstraint *g)
+{
+  CSGlobalConstraint pos;
+  PetscFunctionBeginUser;
+  PetscCall(CSConstraintCreateMobiusBalance(m, x0, &pos));
+  PetscCall(CreateExtension(m, P, pos, PETSC_FALSE, g));
   PetscFunctionReturn(0);
 }

@@ -7,6 +7,8 @@
    - the point rows are the source/sink forms of B.1: co-closed (d0^T *1(x0)-weighted divergence of the row is
      delta_v - delta_v0 up to the grounding) is implied by the next check: <row, df> = f_v - f_v0 for every f, tested
      with a random f.
+   - the Moebius balancing M~(omega) = m(R omega) (the vertex flow's rows on the input): M~(df) = m(f) to 1e-12 and
+     its rows against central differences <= 1e-6 at df and at the non-integrable field;
    Option -points FILE: the points file (lines 'vertex x y z'; written by tests/cases/trianglefield_appb.sh).
    Exit status = number of failures. */
 #include "cs_constraints.h"
@@ -70,7 +72,7 @@ static PetscErrorCode CheckMesh(CSMesh m, const char name[], const char points[]
   DM                     dmH1, dmH3;
   Vec                    omega, w, x;
   CSTriangleFieldPoisson P;
-  CSGlobalConstraint     g[2], gp[2];
+  CSGlobalConstraint     g[3], gp[3];
   PetscRandom            rnd;
   PetscReal              A, V, nrm, d = 0, worst = 0;
   char                   what[200];
@@ -85,6 +87,8 @@ static PetscErrorCode CheckMesh(CSMesh m, const char name[], const char points[]
   PetscCall(CSConstraintCreateVolume(m, 0.9 * PetscAbsReal(V), &gp[0]));
   PetscCall(CSConstraintCreateTriangleFieldPoints(m, P, "-points", points, &g[1]));
   PetscCall(CSConstraintCreatePointsFromFile(m, "-points", points, &gp[1]));
+  PetscCall(CSConstraintCreateTriangleFieldMobius(m, P, m->x, &g[2]));
+  PetscCall(CSConstraintCreateMobiusBalance(m, m->x, &gp[2]));
   PetscCall(CSTriangleFieldPoissonDestroy(&P)); /* referenced by the constraints */
   PetscCall(CSTestRandom(m->comm, -1, 1, 23, &rnd));
   /* extensions at df, and at df of a random other f (same mesh): R d f = f - f_0 for every f */
@@ -96,9 +100,10 @@ static PetscErrorCode CheckMesh(CSMesh m, const char name[], const char points[]
       PetscCall(VecAYPX(x, 10.0, m->x));
     } else PetscCall(VecCopy(m->x, x));
     PetscCall(CSTriangleFieldFromPositions(m, x, dmH3, w));
-    for (int j = 0; j < 2; j++) {
+    for (int j = 0; j < 3; j++) {
+      const char *cn = j == 0 ? "V" : (j == 1 ? "P" : "M");
       PetscCall(ExtensionCheck(g[j], gp[j], x, w, (PetscBool)(j == 1), &d));
-      PetscCall(PetscSNPrintf(what, sizeof(what), "%s: %s~(df) = %s(f) (%s f)", name, j ? "P" : "V", j ? "P" : "V", k ? "a random" : "the input's"));
+      PetscCall(PetscSNPrintf(what, sizeof(what), "%s: %s~(df) = %s(f) (%s f)", name, cn, cn, k ? "a random" : "the input's"));
       PetscCall(CSTestCheck(m->comm, (PetscBool)(d < 1e-12), what, d, 1e-12));
     }
   }
@@ -113,13 +118,13 @@ static PetscErrorCode CheckMesh(CSMesh m, const char name[], const char points[]
       PetscCall(VecAXPY(w, 0.02 * nrm, r));
       PetscCall(VecDestroy(&r));
     }
-    for (int j = 0; j < 2; j++) {
+    for (int j = 0; j < 3; j++) {
       PetscCall(FDCheck(g[j], w, rnd, &worst));
-      PetscCall(PetscSNPrintf(what, sizeof(what), "%s: rows of %s~ vs central differences (%s)", name, j ? "P (B.1)" : "V (B.2)", k ? "non-integrable field" : "df"));
+      PetscCall(PetscSNPrintf(what, sizeof(what), "%s: rows of %s~ vs central differences (%s)", name, j == 0 ? "V (B.2)" : (j == 1 ? "P (B.1)" : "M (Moebius balancing)"), k ? "non-integrable field" : "df"));
       PetscCall(CSTestCheck(m->comm, (PetscBool)(worst < 1e-6), what, worst, 1e-6));
     }
   }
-  for (int j = 0; j < 2; j++) {
+  for (int j = 0; j < 3; j++) {
     PetscCall(CSGlobalConstraintDestroy(&g[j]));
     PetscCall(CSGlobalConstraintDestroy(&gp[j]));
   }

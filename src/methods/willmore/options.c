@@ -82,7 +82,7 @@ static PetscErrorCode ProblemOptions(CSWillmoreFlow F, PetscFunctionList energie
   PetscCall(OptionalTarget("-constraint_area", "Total area constraint [target value, default the initial area]", &F->area_set, &F->area_target, &F->area_given, PetscOptionsObject));
   PetscCall(OptionalTarget("-constraint_volume", "Enclosed volume constraint [target value, default the initial volume]", &F->vol_set, &F->vol_target, &F->vol_given, PetscOptionsObject));
   PetscCall(PetscOptionsString("-constraint_points", "File of point constraints: lines 'vertex_index x y z' (0-based)", NULL, F->points, F->points, sizeof(F->points), NULL));
-  PetscCall(PetscOptionsBool("-constraint_mobius", "Moebius balancing: fix the three Moebius boosts that the conformal constraint leaves free (closed surfaces; needs the conformal constraint)", NULL, F->mobius, &F->mobius, NULL));
+  PetscCall(PetscOptionsBool("-constraint_mobius", "Moebius balancing: fix the three Moebius boosts that the conformal constraint leaves free (closed surfaces; needs the conformal constraint; trianglefield: on the Poisson reconstruction, omega variables)", NULL, F->mobius, &F->mobius, NULL));
   PetscCall(PetscOptionsBool("-constraint_rotation", "Rotation gauge of the domain: fix the three rotations of the Moebius group that the balancing leaves free (closed genus-0 surfaces; with -constraint_mobius; docs/vesicle.md)", NULL, F->rotation, &F->rotation, NULL));
   PetscCall(PetscOptionsEnum("-boundary", "Boundary vertices fixed, free (C0 only), or fixed with fixed boundary-face normals (App. D)", NULL, CSFlowBoundaryTypes, (PetscEnum)F->boundary, (PetscEnum *)&F->boundary, &F->boundary_set));
   PetscFunctionReturn(0);

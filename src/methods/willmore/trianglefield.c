@@ -192,7 +192,7 @@ static PetscErrorCode CheckOptions(CSWillmoreFlow F)
   PetscFunctionBeginUser;
   PetscCall(PetscStrcmp(F->energy_name, "willmore", &willmore));
   PetscCheck(willmore, F->comm, PETSC_ERR_SUP, "-%senergy %s: -%stype trianglefield minimises the Willmore energy W~ of App. D.1 only", p, F->energy_name, p);
-  PetscCheck(!F->area_set && !F->mobius && !F->rotation && !F->target[0], F->comm, PETSC_ERR_SUP, "-%stype trianglefield: the area, Moebius and rotation constraints and -%starget_mesh are not built for triangle fields (App. B: volume and points only)", p, p);
+  PetscCheck(!F->area_set && !F->rotation && !F->target[0], F->comm, PETSC_ERR_SUP, "-%stype trianglefield: the area and rotation constraints and -%starget_mesh are not built for triangle fields (App. B: volume, points and the Moebius balancing only)", p, p);
   PetscCheck(F->metric_type == CS_FLOW_METRIC_H2, F->comm, PETSC_ERR_SUP, "-%smetric %s: -%stype trianglefield has its own metric, the I_H1 of triangle fields (Eq. 32), which the default -%smetric h2 selects", p, CSFlowMetricTypes[F->metric_type], p, p);
   PetscFunctionReturn(0);
 }
@@ -396,7 +396,7 @@ static PetscErrorCode SetUpTriangleFieldSpinor(CSWillmoreFlow F, CSTriangleField
   PetscCall(VecCopy(F->x, F->x0));
   PetscCall(CreateEnergy(F, d));
   PetscCall(CSTFAppBSetUp(F, d));
-  PetscCheck(CSTFAppBRows(F) == 0, F->comm, PETSC_ERR_SUP, "-%svariables spinor: the App. B constraints (volume, points) are built for -%svariables omega only", F->prefix, F->prefix);
+  PetscCheck(CSTFAppBRows(F) == 0, F->comm, PETSC_ERR_SUP, "-%svariables spinor: the App. B constraints (volume, points, Moebius) are built for -%svariables omega only", F->prefix, F->prefix);
   PetscCall(SetUpHarmonicRows(F, d));
   if (d->wgauge > 0) { /* the gauge row: d mean(u) */
     PetscScalar *r;

@@ -1,5 +1,5 @@
-/* The global constraints of the triangle-field flow (soliman2021 App. B): -flow_constraint_volume (B.2) and
-   -flow_constraint_points (B.1) as extensions through the frozen-metric Poisson reconstruction
+/* The global constraints of the triangle-field flow (soliman2021 App. B): -flow_constraint_volume (B.2),
+   -flow_constraint_points (B.1) and -flow_constraint_mobius (the balancing gauge) as extensions through the frozen-metric Poisson reconstruction
    (src/energy/constraints_trianglefield.c). Their rows follow the 3 * 2g period rows <<Y_i|omega>> in F->rows,
    are evaluated by CSTFConstraints and weighted like the vertex flow's global rows (|row|^2, CSWFGlobalWeights). */
 #include "trianglefield_impl.h"
@@ -12,7 +12,7 @@ PetscErrorCode CSTFAppBSetUp(CSWillmoreFlow F, CSTriangleField *d)
   char                   opt[96];
   PetscErrorCode         ierr = 0;
   PetscFunctionBeginUser;
-  if (!F->vol_set && !F->points[0]) PetscFunctionReturn(0);
+  if (!F->vol_set && !F->points[0] && !F->mobius) PetscFunctionReturn(0);
   PetscCall(CSTriangleFieldPoissonCreate(m, d->dmH1, d->dmH3, d->xpos0, &P));
   PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%sconstraint_points", F->prefix));
   if (F->vol_set) {
@@ -23,6 +23,10 @@ PetscErrorCode CSTFAppBSetUp(CSWillmoreFlow F, CSTriangleField *d)
   }
   if (!ierr && F->points[0]) {
     ierr = CSConstraintCreateTriangleFieldPoints(m, P, opt, F->points, &F->gc[F->ng]);
+    if (!ierr) F->ng++;
+  }
+  if (!ierr && F->mobius) {
+    ierr = CSConstraintCreateTriangleFieldMobius(m, P, d->xpos0, &F->gc[F->ng]);
     if (!ierr) F->ng++;
   }
   PetscCall(CSTriangleFieldPoissonDestroy(&P)); /* the constraints hold references; on an error nothing leaks */
