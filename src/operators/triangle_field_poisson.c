@@ -32,21 +32,28 @@ PetscErrorCode CSTriangleFieldPoissonOperator(CSMesh m, DM dmH1, Vec star1, Mat 
   PetscFunctionReturn(0);
 }
 
-/* component c of a dmH3 (dmV3) global vector to / from a dmH1 (dmV1) one: the same points own both, 3 dofs each */
+/* component c of a dmH3 (dmV3) global vector to / from a dmH1 (dmV1) one: the same points own both, 3 dofs each;
+   the source is only read (its state unchanged: the kept reconstruction recognises an unchanged omega by it) */
 PetscErrorCode CSTriangleFieldComponent(Vec v3, PetscInt c, Vec v1, PetscBool gather)
 {
-  PetscInt     n;
-  PetscScalar *a3, *a1;
+  PetscInt           n;
+  PetscScalar       *a;
+  const PetscScalar *b;
   PetscFunctionBeginUser;
   PetscCall(VecGetLocalSize(v1, &n));
-  PetscCall(VecGetArray(v3, &a3));
-  PetscCall(VecGetArray(v1, &a1));
-  for (PetscInt i = 0; i < n; i++) {
-    if (gather) a1[i] = a3[3 * i + c];
-    else a3[3 * i + c] = a1[i];
+  if (gather) {
+    PetscCall(VecGetArrayRead(v3, &b));
+    PetscCall(VecGetArray(v1, &a));
+    for (PetscInt i = 0; i < n; i++) a[i] = b[3 * i + c];
+    PetscCall(VecRestoreArray(v1, &a));
+    PetscCall(VecRestoreArrayRead(v3, &b));
+  } else {
+    PetscCall(VecGetArrayRead(v1, &b));
+    PetscCall(VecGetArray(v3, &a));
+    for (PetscInt i = 0; i < n; i++) a[3 * i + c] = b[i];
+    PetscCall(VecRestoreArray(v3, &a));
+    PetscCall(VecRestoreArrayRead(v1, &b));
   }
-  PetscCall(VecRestoreArray(v1, &a1));
-  PetscCall(VecRestoreArray(v3, &a3));
   PetscFunctionReturn(0);
 }
 
@@ -101,10 +108,13 @@ PetscErrorCode CSTriangleFieldReconstructionSetUp(CSTriangleFieldReconstruction 
 {
   PetscObjectId    id;
   PetscObjectState st;
+  PetscBool        changed;
   PetscFunctionBeginUser;
   PetscCall(PetscObjectGetId((PetscObject)omega, &id));
   PetscCall(PetscObjectStateGet((PetscObject)omega, &st));
-  if (R->omega_id == id && R->omega_state == st) PetscFunctionReturn(0);
+  changed = (PetscBool)(R->omega_id != id || R->omega_state != st);
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &changed, 1, MPIU_BOOL, MPI_LOR, R->m->comm)); /* every rank sets up, or none */
+  if (!changed) PetscFunctionReturn(0);
   if (!R->star1) {
     PetscCall(DMCreateGlobalVector(R->dmH1, &R->star1));
     PetscCall(DMCreateGlobalVector(R->m->dmV1, &R->star0));
