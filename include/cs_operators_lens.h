@@ -72,6 +72,15 @@ PETSC_EXTERN PetscErrorCode CSOperatorLensFaceClosure(CSMesh mesh, DM dmH, Mat *
    translation) for omega = df. The translation puts f's vertex centroid at that of xref (dmV3). KSP prefix
    -trianglefield_poisson_ (default a direct Cholesky). */
 PETSC_EXTERN PetscErrorCode CSTriangleFieldReconstruct(CSMesh mesh, DM dmH1, DM dmH3, Vec omega, Vec xref, Vec x);
+/* The same reconstruction kept alive across calls (the flow measures its surface at every evaluation): the KSP, d0,
+   L, B and the work vectors are made at the first set-up; a new (or changed) omega refills L and B in place (same
+   nonzero pattern: one numeric factorisation, the symbolic one kept), an unchanged omega (same vector, same state)
+   reuses everything. Solve sets up at omega itself; its answer is CSTriangleFieldReconstruct's. */
+typedef struct _p_CSTriangleFieldReconstruction *CSTriangleFieldReconstruction;
+PETSC_EXTERN PetscErrorCode CSTriangleFieldReconstructionCreate(CSMesh mesh, DM dmH1, DM dmH3, CSTriangleFieldReconstruction *R);
+PETSC_EXTERN PetscErrorCode CSTriangleFieldReconstructionSetUp(CSTriangleFieldReconstruction R, Vec omega);
+PETSC_EXTERN PetscErrorCode CSTriangleFieldReconstructionSolve(CSTriangleFieldReconstruction R, Vec omega, Vec xref, Vec x);
+PETSC_EXTERN PetscErrorCode CSTriangleFieldReconstructionDestroy(CSTriangleFieldReconstruction *R);
 /* The halfedge vectors opposite corner a (0, 1, 2) of every local face: a new vector of 3 entries per face (the
    viewer's face vector layout), the face's own triangle of the field, not glued to its neighbours. */
 PETSC_EXTERN PetscErrorCode CSTriangleFieldFaceVectors(CSMesh mesh, DM dmH3, Vec omega, PetscInt a, Vec *w);

@@ -339,6 +339,7 @@ static PetscErrorCode SetUpTriangleField(CSWillmoreFlow F)
   PetscCall(VecDuplicate(m->x, &d->xpos0));
   PetscCall(VecCopy(m->x, d->xpos0));
   PetscCall(VecDuplicate(m->x, &d->xpos));
+  PetscCall(CSTriangleFieldReconstructionCreate(m, d->dmH1, d->dmH3, &d->recon));
   PetscCall(SetUpResolutionMeasures(F, d));
   d->flow = F;
   if (d->spinor) {
@@ -440,7 +441,7 @@ static PetscErrorCode Positions(CSWillmoreFlow F, PetscBool initial, Vec *x)
   PetscFunctionBeginUser;
   if (initial) *x = d->xpos0;
   else {
-    PetscCall(CSTriangleFieldReconstruct(F->mesh, d->dmH1, d->dmH3, d->spinor ? d->omega : F->x, d->xpos0, d->xpos));
+    PetscCall(CSTriangleFieldReconstructionSolve(d->recon, d->spinor ? d->omega : F->x, d->xpos0, d->xpos));
     *x = d->xpos;
   }
   PetscFunctionReturn(0);
@@ -466,6 +467,7 @@ static PetscErrorCode Destroy(CSWillmoreFlow F)
   PetscCall(VecDestroy(&d->clin));
   PetscCall(VecDestroy(&d->xpos0));
   PetscCall(VecDestroy(&d->xpos));
+  PetscCall(CSTriangleFieldReconstructionDestroy(&d->recon));
   PetscCall(VecDestroy(&d->psi));
   PetscCall(VecDestroy(&d->psit));
   PetscCall(VecDestroy(&d->lamt));

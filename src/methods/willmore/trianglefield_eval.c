@@ -111,7 +111,7 @@ static PetscErrorCode EvaluateSpinor(CSWillmoreFlow F, CSTriangleField *d)
   PetscCall(CSSpinorDirichlet(d->sp, d->pg, &F->espin, NULL));
   F->V = 0;
   /* the surface of this state against the input, as for the omega variables (area spread, q_max, the guard) */
-  PetscCall(CSTriangleFieldReconstruct(F->mesh, d->dmH1, d->dmH3, d->omega, d->xpos0, d->xpos));
+  PetscCall(CSTriangleFieldReconstructionSolve(d->recon, d->omega, d->xpos0, d->xpos));
   PetscCall(CSWFMeasureQualityOf(F, d->xpos0, d->xpos));
   PetscFunctionReturn(0);
 }
@@ -139,7 +139,7 @@ static PetscErrorCode EvaluateAt(CSWillmoreFlow F, CSTriangleField *d)
   F->V      = 0; /* not tracked: a triangle field encloses no volume until it is integrated (docs/triangle_fields.md) */
   /* the surface of this state (the Poisson reconstruction) against the input: vertex-area spread and q_max for the
      history, the summary and the resolution guard (issue 21: the bunny's squeeze was invisible here) */
-  PetscCall(CSTriangleFieldReconstruct(F->mesh, d->dmH1, d->dmH3, F->x, d->xpos0, d->xpos));
+  PetscCall(CSTriangleFieldReconstructionSolve(d->recon, F->x, d->xpos0, d->xpos));
   PetscCall(CSWFMeasureQualityOf(F, d->xpos0, d->xpos));
   PetscFunctionReturn(0);
 }

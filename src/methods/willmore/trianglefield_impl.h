@@ -24,6 +24,7 @@ typedef struct {
   Vec       clin;          /* Klin omega */
   PetscInt  nH, nL;        /* local rows: conformal (owned halfedges), linear (3 (owned edges + faces)) */
   Vec       xpos0, xpos;   /* positions of the input, and the reconstruction of the current omega (dmV3) */
+  CSTriangleFieldReconstruction recon; /* the Poisson solver of xpos, kept across evaluations */
   PetscReal sc;            /* area / 4 pi of the input (size scaling of the metric and of t_mu) */
   PetscInt  nforms;        /* harmonic forms (2g): 3 nforms rows <<Y_i|omega>> */
   PetscReal wint;          /* -flow_integrability_weight: multiplier metric of the integrability rows */
