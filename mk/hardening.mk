@@ -30,7 +30,7 @@ build/san/tests/%: tests/unit/%.c build/san/libconfsurf.a
 # libFuzzer: clang (Debian's clang package) through Open MPI's wrapper; the readers and util/ instrumented
 FUZZ_CC    := OMPI_CC=clang mpicc
 FUZZ_FLAGS := -g -O1 -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined
-FUZZ_SRC   := $(wildcard src/util/*.c) $(addprefix src/mesh/,meshdata_reader.c meshdata_obj.c meshdata_off.c meshdata_ply.c meshdata_validate.c meshdata_io.c)
+FUZZ_SRC   := $(wildcard src/util/*.c) $(addprefix src/mesh/,meshdata_reader.c meshdata_obj.c meshdata_off.c meshdata_ply.c meshdata_validate.c meshdata_edges.c meshdata_io.c)
 FUZZ_OBJ   := $(FUZZ_SRC:%.c=build/fuzz/obj/%.o)
 FUZZERS    := build/fuzz/fuzz_obj build/fuzz/fuzz_off build/fuzz/fuzz_ply build/fuzz/fuzz_values
 
