@@ -23,7 +23,6 @@
      (docs/scaling.md). The options -<prefix>fieldsplit_1_pc_bddc_* override.
    Every choice is a default set in code before the sub-solvers' SetFromOptions: -<prefix>fieldsplit_{0,1}_*
    options still override it. */
-#include <petsc/private/pcbddcimpl.h> /* PCBDDC's deluxe scaling and adaptive threshold have no setters in 3.18 */
 #include "cs_linalg.h"
 
 const char *const CSSchurSolveTypes[] = {"direct", "primal", "multiplier", "bddc", "CSSchurSolveType", "CS_SCHUR_", NULL};
@@ -37,6 +36,22 @@ static PetscErrorCode SetCGH2(KSP ksp, PetscReal rtol)
   PetscCall(KSPSetTolerances(ksp, rtol, PETSC_DEFAULT, PETSC_DEFAULT, 10000));
   PetscCall(KSPGetPC(ksp, &pc));
   PetscCall(PCSetType(pc, "csh2"));
+  PetscFunctionReturn(0);
+}
+
+/* A default for one of PCBDDC's options, which have no setters in 3.18 (deluxe scaling, adaptive threshold): written
+   into the options database under the PC's prefix unless the user gave it, so that -<prefix>pc_bddc_* still wins and
+   no private PETSc struct is touched */
+static PetscErrorCode SetBDDCDefault(PC bddc, const char *option, const char *value)
+{
+  const char *prefix;
+  char        name[256];
+  PetscBool   set;
+  PetscFunctionBeginUser;
+  PetscCall(PCGetOptionsPrefix(bddc, &prefix));
+  PetscCall(PetscSNPrintf(name, sizeof(name), "-%s%s", prefix ? prefix : "", option));
+  PetscCall(PetscOptionsHasName(NULL, NULL, name, &set));
+  if (!set) PetscCall(PetscOptionsSetValue(NULL, name, value));
   PetscFunctionReturn(0);
 }
 
@@ -92,12 +107,8 @@ PetscErrorCode CSSchurIterativeSetSubSolvers(PC pc, CSSchurSolveType type, Petsc
     PetscCall(KSPSetTolerances(sub[1], schur_rtol, PETSC_DEFAULT, PETSC_DEFAULT, 10000));
     PetscCall(KSPGetPC(sub[1], &bddc));
     PetscCall(PCSetType(bddc, PCBDDC));
-    { /* defaults before SetFromOptions, which reads the options with these as defaults */
-      PC_BDDC *b               = (PC_BDDC *)bddc->data;
-      b->use_deluxe_scaling    = PETSC_TRUE;
-      b->adaptive_threshold[0] = 2.0;
-      b->adaptive_threshold[1] = 2.0;
-    }
+    PetscCall(SetBDDCDefault(bddc, "pc_bddc_use_deluxe_scaling", "true"));
+    PetscCall(SetBDDCDefault(bddc, "pc_bddc_adaptive_threshold", "2.0"));
   } else {
     /* the inner H solve sits inside every application of S_mu: it must be much tighter than the outer one */
     PetscCall(SetCGH2(sub[0], 1e-3 * schur_rtol));
