@@ -1,7 +1,7 @@
 # Issue 15, App. C: random starts of the triangle-field flow are the same on any number of ranks, and the spinor
 # diagnostics of the summary. On the 8 x 8 square lattice (tau = i): -flow_init random_spinor (omega = S(l0, psi)
 # with the input's face spinors rotated at random, conformal rows met exactly at the start) and -flow_init random
-# (df + noise), a few iterations serially and on the test's ranks: the energies agree to 1e-9 and the pinch-edge
+# (df + noise) and -flow_init smooth (d(f + u), u random plane waves), a few iterations serially and on the test's ranks: the energies agree to 1e-9 and the pinch-edge
 # counts are equal; the start of random_spinor meets the conformal rows (|c|inf of iteration 0 < 1e-10).
 # -flow_viewer_iterations writes exactly the listed iterations (and the final state). Bad input: a negative
 # -flow_spin_weight, a negative listed iteration.
@@ -34,6 +34,7 @@ PY
 }
 run spinor -flow_init random_spinor -flow_init_amplitude 0.3 -flow_spin_weight 0.01 -flow_max_it 3 -viewer_dir "$TMP/v" -flow_viewer_iterations 1,2
 run df_noise -flow_init random -flow_init_amplitude 0.1 -flow_max_it 1
+run smooth -flow_init smooth -flow_init_amplitude 3 -flow_max_it 1
 c0=$(awk '$1 == "0" && $2 == "E" { for (i = 1; i <= NF; i++) if ($i == "|c|inf") print $(i + 1) }' "$TMP/sn_spinor.log")
 python3 -c "import sys; c = float('$c0'); print(('ok  ' if c < 1e-10 else 'BAD ') + 'random_spinor start meets the conformal rows: |c|inf = %g' % c); sys.exit(c >= 1e-10)"
 steps=$(grep -c "<DataSet" "$TMP/v/series.pvd")

@@ -13,10 +13,32 @@ PetscErrorCode CSWFAcceptCGD(CSWillmoreFlow F)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CSWFGrowCGD(CSWillmoreFlow F)
+/* -t_mu_final T: once an iterate's EL residual is below -t_mu_final_el, t_mu = T for the rest of the run. Why: CGD
+   restores a direction of the rows with singular value s by ~ t t_mu s^2 / lambda_H per step (the Schur complement
+   H/t + t_mu X^T I_Q^-1 X); at an isothermic surface (the Clifford torus of soliman2021 Fig. 16) one class direction
+   has s ~ 1e-4, so with the default t_mu ~ 1e3 t the class stalls at ~1e-8 while EL -> 0. A large t_mu from the start
+   seeds the unstable mode of a large change of class (options/flow_class_change.opts; a random start far from the
+   class diverges), hence only near the end (docs/triangle_fields.md, "The class floor"). */
+static PetscErrorCode FinalDualStep(CSWillmoreFlow F, PetscBool *on)
 {
   PetscFunctionBeginUser;
-  if (F->tmu_grow > 0) {
+  if (F->tmu_final > 0 && !F->tmu_final_on && F->el < F->tmu_final_el) {
+    F->tmu_final_on = PETSC_TRUE;
+    PetscCall(PetscPrintf(F->comm, "     iteration %" PetscInt_FMT ": EL residual %.3e below -%st_mu_final_el %g: the dual step t_mu is %g from here on (-%st_mu_final)\n", F->it, (double)F->el, F->prefix, (double)F->tmu_final_el, (double)F->tmu_final, F->prefix));
+  }
+  *on = F->tmu_final_on;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSWFGrowCGD(CSWillmoreFlow F)
+{
+  PetscBool fixed = PETSC_FALSE;
+  PetscFunctionBeginUser;
+  PetscCall(FinalDualStep(F, &fixed));
+  if (fixed) {
+    if (F->t * F->grow <= F->tmax) F->t *= F->grow;
+    F->tmu = F->tmu_final;
+  } else if (F->tmu_grow > 0) {
     /* a dual step ramped on its own (-flow_t_mu_grow): a large t_mu during the transient of a class change
        seeds an unstable mode (options/flow_class_change.opts) */
     if (F->t * F->grow <= F->tmax) F->t *= F->grow;
@@ -35,7 +57,7 @@ PetscErrorCode CSWFShrinkCGD(CSWillmoreFlow F)
 {
   PetscFunctionBeginUser;
   F->t *= 0.5;
-  if (F->tmu_grow == 0) F->tmu = PetscMin(F->tmu, F->tmu_ratio_max * F->t);
+  if (F->tmu_grow == 0 && !F->tmu_final_on) F->tmu = PetscMin(F->tmu, F->tmu_ratio_max * F->t);
   PetscFunctionReturn(0);
 }
 

@@ -58,6 +58,8 @@ static void SetDefaults(CSWillmoreFlow F)
 {
   F->t               = 1.0;
   F->tmu             = 0; /* 0: 1e3 t */
+  F->tmu_final       = 0; /* off */
+  F->tmu_final_el    = 1e-3;
   F->tmax            = 2.0;
   F->grow            = 2.0;
   F->rtol            = 1e-6;

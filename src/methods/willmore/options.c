@@ -32,6 +32,8 @@ static PetscErrorCode StepOptions(CSWillmoreFlow F, PetscOptionItems *PetscOptio
   PetscCall(PetscOptionsReal("-t_max", "Largest primal step", NULL, F->tmax, &F->tmax, NULL));
   PetscCall(PetscOptionsReal("-t_mu_grow", "Grow t_mu by this factor after each accepted step, independently of t, up to t_mu_max (0: t_mu follows t)", NULL, F->tmu_grow, &F->tmu_grow, NULL));
   PetscCall(PetscOptionsReal("-t_mu_max", "Largest t_mu (default: 1e3 t_max with t_mu_grow, else none; in the units of t_mu)", NULL, F->tmu_max, &F->tmu_max, NULL));
+  PetscCall(PetscOptionsReal("-t_mu_final", "CGD: once an iterate's EL residual is below -t_mu_final_el, the dual step t_mu is this, fixed (0: off; in the units of t_mu; docs/triangle_fields.md, \"The class floor\")", NULL, F->tmu_final, &F->tmu_final, NULL));
+  PetscCall(PetscOptionsReal("-t_mu_final_el", "CGD: the EL residual below which -t_mu_final takes over", NULL, F->tmu_final_el, &F->tmu_final_el, NULL));
   PetscCall(PetscOptionsReal("-t_grow", "Factor on t after an accepted step", NULL, F->grow, &F->grow, NULL));
   PetscCall(PetscOptionsBool("-step_control", "Accept a step only if the merit function decreases (else halve t)", NULL, F->step_control, &F->step_control, NULL));
   PetscCall(PetscOptionsInt("-max_rejections", "Consecutive rejected steps before giving up", NULL, F->max_rej, &F->max_rej, NULL));
@@ -98,6 +100,8 @@ static PetscErrorCode CheckValues(CSWillmoreFlow F)
     {"t_grow", F->grow, F->grow >= 1, "must be >= 1"},
     {"t_mu_grow", F->tmu_grow, F->tmu_grow == 0 || F->tmu_grow >= 1, "use 0 (t_mu follows t) or a factor >= 1"},
     {"t_mu_max", F->tmu_max, F->tmu_max >= 0, "must be >= 0 (0: the default)"},
+    {"t_mu_final", F->tmu_final, F->tmu_final >= 0, "use 0 (off) or a positive dual step"},
+    {"t_mu_final_el", F->tmu_final_el, F->tmu_final_el > 0, "must be > 0"},
     {"merit_rho", F->rho, F->rho >= 0, "must be >= 0"},
     {"vmax", F->vmax, F->vmax > 0, "must be > 0"},
     {"restore_above", F->vrestore, F->vrestore >= 0, "use 0 (off) or a positive violation"},

@@ -155,6 +155,7 @@ PetscErrorCode CSWFSetUpScaling(CSWillmoreFlow F)
      raises t_mu / t twofold for good, up to 1e3 times its initial value, see the step control) */
   if (F->tmu_max <= 0) F->tmu_max = F->tmu_grow > 0 ? 1e3 * F->tmax : PETSC_MAX_REAL;
   F->tmu /= sc;
+  F->tmu_final /= sc;
   if (F->tmu_max < PETSC_MAX_REAL) F->tmu_max /= sc;
   F->tmu_ratio_max = 1e3 * F->tmu / F->t;
   /* merit weight relative to the size of the energy (W ~ 4 pi and a fairing energy eps W differ by orders) */

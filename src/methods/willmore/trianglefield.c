@@ -111,7 +111,7 @@ static PetscErrorCode SetUpSpinors(CSWillmoreFlow F, CSTriangleField *d)
 }
 
 const char *const CSTriangleFieldVariables[] = {"omega", "spinor", NULL};
-const char *const CSTriangleFieldInits[] = {"df", "random", "random_spinor", "CSTriangleFieldInit", "CS_TF_INIT_", NULL};
+const char *const CSTriangleFieldInits[] = {"df", "random", "random_spinor", "smooth", "CSTriangleFieldInit", "CS_TF_INIT_", NULL};
 
 /* A uniform number in [-1, 1) from (seed, natural edge, side, component): the same field on any number of ranks. */
 static PetscReal HashUniform(PetscInt seed, PetscInt e, PetscInt s, PetscInt c)
@@ -158,7 +158,7 @@ static PetscErrorCode SetFromOptionsTF(CSWillmoreFlow F)
   CSTriangleField *d = (CSTriangleField *)F->data;
   PetscFunctionBeginUser;
   PetscOptionsBegin(F->comm, F->prefix, "Triangle-field flow (soliman2021 Algorithm 2)", NULL);
-  PetscCall(PetscOptionsEnum("-init", "Initial triangle field: df of the input, df plus a random field, or S(l0, psi) with randomly rotated face spinors (App. C.2)", NULL, CSTriangleFieldInits, (PetscEnum)d->init, (PetscEnum *)&d->init, NULL));
+  PetscCall(PetscOptionsEnum("-init", "Initial triangle field: df of the input, df plus a random field, S(l0, psi) with randomly rotated face spinors (App. C.2), or d(f + u) for a smooth random displacement u (plane waves)", NULL, CSTriangleFieldInits, (PetscEnum)d->init, (PetscEnum *)&d->init, NULL));
   {
     PetscInt v = d->spinor;
     PetscCall(PetscOptionsEList("-variables", "Variables of the flow: the triangle field omega, or (u, psi) with omega = S_c(u, psi) (soliman2021 App. C.2)", NULL, CSTriangleFieldVariables, 2, CSTriangleFieldVariables[v], &v, NULL));
@@ -167,7 +167,8 @@ static PetscErrorCode SetFromOptionsTF(CSWillmoreFlow F)
   PetscCall(PetscOptionsReal("-scale_gauge_weight", "-flow_variables spinor: multiplier metric of the scale gauge row mean(u) = const, relative to its |row|^2; 0: no gauge row", NULL, d->wgauge, &d->wgauge, NULL));
   PetscCall(PetscOptionsReal("-spinor_metric_shift", "-flow_variables spinor: add this times the mean psi diagonal of J^T I_H1 J to the whole metric (0: none)", NULL, d->mshift, &d->mshift, NULL));
   PetscCall(PetscOptionsInt("-seed", "Seed of -flow_init random", NULL, d->seed, &d->seed, NULL));
-  PetscCall(PetscOptionsReal("-init_amplitude", "-flow_init random: each halfedge vector gets a uniform random vector in [-a, a]^3 times the mean edge length; random_spinor: each face rotated by up to a pi", NULL, d->amp, &d->amp, NULL));
+  PetscCall(PetscOptionsReal("-init_amplitude", "-flow_init random: each halfedge vector gets a uniform random vector in [-a, a]^3 times the mean edge length; random_spinor: each face rotated by up to a pi; smooth: the largest vertex displacement is a times the mean edge length", NULL, d->amp, &d->amp, NULL));
+  PetscCall(PetscOptionsInt("-init_modes", "-flow_init smooth: number of random plane waves (wavelength the input's bounding-box diagonal) in the displacement", NULL, d->modes, &d->modes, NULL));
   PetscCall(PetscOptionsReal("-spin_weight", "Weight of the spin Dirichlet energy E_tau(psi(omega)) added to W~ (soliman2021 App. C.3); 0: none", NULL, d->wspin, &d->wspin, NULL));
   PetscCall(PetscOptionsReal("-restore_near_ceiling", "Project an accepted omega back onto its rows (Gauss-Newton, I_H1 metric) when its violation exceeds this times -flow_vmax (0: only -flow_restore_above / -flow_restore_stalled)", NULL, d->restore_near, &d->restore_near, NULL));
   PetscCall(PetscOptionsReal("-integrability_weight", "Multiplier metric of the integrability rows (d1 omega, face closure, <<Y_i|omega>>) relative to their size; small = stiff", NULL, d->wint, &d->wint, NULL));
@@ -179,6 +180,8 @@ static PetscErrorCode SetFromOptionsTF(CSWillmoreFlow F)
   PetscCheck(d->mshift >= 0 && !PetscIsInfOrNanReal(d->mshift), F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sspinor_metric_shift %g: must be >= 0", F->prefix, (double)d->mshift);
   PetscCheck(d->wgauge >= 0 && !PetscIsInfOrNanReal(d->wgauge), F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sscale_gauge_weight %g: must be >= 0", F->prefix, (double)d->wgauge);
   PetscCheck(d->wspin >= 0 && !PetscIsInfOrNanReal(d->wspin), F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sspin_weight %g: must be >= 0", F->prefix, (double)d->wspin);
+  PetscCheck(d->modes > 0, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sinit_modes %" PetscInt_FMT ": must be > 0", F->prefix, d->modes);
+  PetscCheck(!d->spinor || d->init != CS_TF_INIT_SMOOTH, F->comm, PETSC_ERR_SUP, "-%sinit smooth: built for the omega variables, not -%svariables spinor (use df, random or random_spinor)", F->prefix, F->prefix);
   /* the spinor variables evaluate through their own path, which has no stages (rather refused than ignored) */
   PetscCheck(!d->spinor || d->wdecay == 1, F->comm, PETSC_ERR_SUP, "-%sspin_weight_decay %g: the spin-weight continuation is built for the omega variables, not -%svariables spinor", F->prefix, (double)d->wdecay, F->prefix);
   PetscFunctionReturn(0);
@@ -289,6 +292,7 @@ static PetscErrorCode SetUpScaling(CSWillmoreFlow F, CSTriangleField *d)
   d->sc = A / (4 * PETSC_PI);
   if (F->tmu_max <= 0) F->tmu_max = F->tmu_grow > 0 ? 1e3 * F->tmax : PETSC_MAX_REAL;
   F->tmu /= d->sc;
+  F->tmu_final /= d->sc;
   if (F->tmu_max < PETSC_MAX_REAL) F->tmu_max /= d->sc;
   F->tmu_ratio_max = 1e3 * F->tmu / F->t;
   PetscCall(CSEnergyValue(F->energy, F->x0, &E0));
@@ -351,6 +355,7 @@ static PetscErrorCode SetUpTriangleField(CSWillmoreFlow F)
   PetscCall(VecDuplicate(F->x, &F->x0));
   PetscCall(VecCopy(F->x, F->x0)); /* c0 is the input's class: C~ lambda(df) */
   if (d->init == CS_TF_INIT_RANDOM) PetscCall(RandomizeField(F, d));
+  if (d->init == CS_TF_INIT_SMOOTH) PetscCall(CSTFInitSmooth(F, d, HashUniform));
   PetscCall(CreateEnergy(F, d));
   PetscCall(SetUpOperators(F, d));
   PetscCall(CSTFAppBSetUp(F, d));
@@ -503,6 +508,7 @@ PetscErrorCode CSWillmoreFlowCreate_TriangleField(CSWillmoreFlow F)
   d->init              = CS_TF_INIT_DF;
   d->seed              = 1;
   d->amp               = 0.5;
+  d->modes             = 8;
   d->wrelax            = 1e4;
   d->wgauge            = 0;
   d->mshift            = 0;

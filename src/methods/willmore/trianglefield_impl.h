@@ -6,11 +6,12 @@
 #include "cs_operators_spinor.h"
 #include "cs_linalg.h"
 
-typedef enum { CS_TF_INIT_DF, CS_TF_INIT_RANDOM, CS_TF_INIT_RANDOM_SPINOR } CSTriangleFieldInit;
+typedef enum { CS_TF_INIT_DF, CS_TF_INIT_RANDOM, CS_TF_INIT_RANDOM_SPINOR, CS_TF_INIT_SMOOTH } CSTriangleFieldInit;
 PETSC_INTERN const char *const CSTriangleFieldInits[];
 
 typedef struct {
-  CSTriangleFieldInit init; /* -flow_init df | random */
+  CSTriangleFieldInit init; /* -flow_init df | random | random_spinor | smooth */
+  PetscInt  modes;         /* -flow_init_modes: plane waves of -flow_init smooth */
   PetscInt  seed;          /* -flow_seed */
   PetscReal amp;           /* -flow_init_amplitude */
   DM        dmH1, dmH3;    /* halfedge scalars, halfedge vectors (the variables omega) */
@@ -77,6 +78,8 @@ PETSC_INTERN PetscErrorCode CSTFSpinorConstraints(CSWillmoreFlow F, Vec x, Vec c
 PETSC_INTERN PetscErrorCode CSTFSpinorMetric(CSWillmoreFlow F, CSTriangleField *d);
 PETSC_INTERN PetscErrorCode CSTFSpinorNormalize(CSWillmoreFlow F, CSTriangleField *d, Vec x);
 PETSC_INTERN PetscErrorCode CSTFSpinorDestroy(CSTriangleField *d);
+/* trianglefield_init.c: -flow_init smooth, d(f + u) for a smooth random displacement u (Fig. 16) */
+PETSC_INTERN PetscErrorCode CSTFInitSmooth(CSWillmoreFlow F, CSTriangleField *d, PetscReal (*hash)(PetscInt, PetscInt, PetscInt, PetscInt));
 /* trianglefield_restore.c: Gauss-Newton restoration of an accepted omega onto the rows (issue 15) */
 PETSC_INTERN PetscErrorCode CSTFRestore(CSWillmoreFlow F);
 /* trianglefield_continuation.c: w <- w * decay each time a stage converges, then 0 (App. C.3) */

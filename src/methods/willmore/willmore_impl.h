@@ -153,6 +153,8 @@ struct _p_CSWillmoreFlow {
   PetscReal             proj_tmu;
   PetscReal             tmu_grow, tmu_max; /* own schedule of the dual step (0: t_mu follows t) */
   PetscReal             tmu_ratio_max;     /* following t: t_mu <= this * t (1e3 times the initial t_mu / t) */
+  PetscReal             tmu_final, tmu_final_el; /* -t_mu_final: a fixed dual step once el < tmu_final_el (cgd.c) */
+  PetscBool             tmu_final_on;
   PetscInt              mu_ls_every, mu_ls_count; /* CGD: least-squares multiplier estimate every mu_ls_every its (cgd_multiplier_ls.c), estimates made */
   PetscReal             mu_ls_tmu;         /* t_mu (with t = 1) of its projection and least-squares solve */
   PetscReal             alm_rho, alm_grow, alm_rho_max; /* ALM penalty (relative to |E(input)|), its growth, ceiling */
