@@ -37,6 +37,9 @@ run df_noise -flow_init random -flow_init_amplitude 0.1 -flow_max_it 1
 run smooth -flow_init smooth -flow_init_amplitude 3 -flow_max_it 1
 c0=$(awk '$1 == "0" && $2 == "E" { for (i = 1; i <= NF; i++) if ($i == "|c|inf") print $(i + 1) }' "$TMP/sn_spinor.log")
 python3 -c "import sys; c = float('$c0'); print(('ok  ' if c < 1e-10 else 'BAD ') + 'random_spinor start meets the conformal rows: |c|inf = %g' % c); sys.exit(c >= 1e-10)"
+e_df=$(OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 timeout 60 "$CS_BIN" $L -flow_max_it 0 2>&1 | awk '$1 == "0" && $2 == "E" { print $3 }')
+e_sm=$(awk '$1 == "0" && $2 == "E" { print $3 }' "$TMP/s1_smooth.log")
+python3 -c "import sys; a, b = float('$e_df'), float('$e_sm'); ok = abs(a - b) > 1e-3 * a; print(('ok  ' if ok else 'BAD ') + 'the smooth start differs from df: W %.10g vs %.10g' % (b, a)); sys.exit(not ok)"
 steps=$(grep -c "<DataSet" "$TMP/v/series.pvd")
 [ "$steps" = 3 ] && echo "ok   -flow_viewer_iterations 1,2 with 3 iterations: 3 steps written" || { echo "BAD: $steps steps in series.pvd (want 3)"; exit 1; }
 EXPECT="spin_weight" expect_fail $MPIEXEC "$CS_BIN" $L -flow_spin_weight -1

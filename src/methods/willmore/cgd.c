@@ -22,9 +22,9 @@ PetscErrorCode CSWFAcceptCGD(CSWillmoreFlow F)
 static PetscErrorCode FinalDualStep(CSWillmoreFlow F, PetscBool *on)
 {
   PetscFunctionBeginUser;
-  if (F->tmu_final > 0 && !F->tmu_final_on && F->el < F->tmu_final_el) {
+  if (F->tmu_final > 0 && !F->tmu_final_on && F->it >= F->tmu_final_from && F->el < F->tmu_final_el) {
     F->tmu_final_on = PETSC_TRUE;
-    PetscCall(PetscPrintf(F->comm, "     iteration %" PetscInt_FMT ": EL residual %.3e below -%st_mu_final_el %g: the dual step t_mu is %g from here on (-%st_mu_final)\n", F->it, (double)F->el, F->prefix, (double)F->tmu_final_el, (double)F->tmu_final, F->prefix));
+    PetscCall(PetscPrintf(F->comm, "     iteration %" PetscInt_FMT ": EL residual %.3e below -%st_mu_final_el %g: the dual step t_mu is fixed from here on (-%st_mu_final; %g after the size scaling)\n", F->it, (double)F->el, F->prefix, (double)F->tmu_final_el, F->prefix, (double)PetscMax(F->tmu, F->tmu_final)));
   }
   *on = F->tmu_final_on;
   PetscFunctionReturn(0);
@@ -37,7 +37,7 @@ PetscErrorCode CSWFGrowCGD(CSWillmoreFlow F)
   PetscCall(FinalDualStep(F, &fixed));
   if (fixed) {
     if (F->t * F->grow <= F->tmax) F->t *= F->grow;
-    F->tmu = F->tmu_final;
+    F->tmu = PetscMax(F->tmu, F->tmu_final); /* a ramp (-t_mu_grow) already above it is kept */
   } else if (F->tmu_grow > 0) {
     /* a dual step ramped on its own (-flow_t_mu_grow): a large t_mu during the transient of a class change
        seeds an unstable mode (options/flow_class_change.opts) */

@@ -138,6 +138,7 @@ static PetscErrorCode CheckOptions(CSWillmoreFlow F)
   if (F->tmu == 0) F->tmu = 1e3 * F->t;
   PetscCheck(!F->target[0] || F->conformal, F->comm, PETSC_ERR_ARG_INCOMP, "-%starget_mesh %s needs the conformal constraint (cgd, or pgd with -%sconformal)", p, F->target, p);
   PetscCheck(!F->boundary_set || F->boundary != CS_FLOW_BOUNDARY_NORMALS || F->conformal, F->comm, PETSC_ERR_ARG_INCOMP, "-%sboundary normals needs the conformal constraint (cgd or pgd)", p);
+  PetscCheck(F->tmu_final == 0 || (F->ops.trial == CSWFTrialCGD && (F->conformal || F->k || F->ops.setup_problem)), F->comm, PETSC_ERR_SUP, "-%st_mu_final: a dual step of CGD's rows, for -%stype cgd or trianglefield (or gd with constraints), not -%stype %s%s", p, p, p, F->type, F->ops.trial == CSWFTrialCGD ? " without constraint rows" : "");
   if (F->ops.setup) PetscCall((*F->ops.setup)(F));
   PetscFunctionReturn(0);
 }

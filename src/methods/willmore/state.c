@@ -46,6 +46,7 @@ PetscErrorCode CSWillmoreFlowSetState(CSWillmoreFlow F, PetscInt it, const Petsc
   PetscCheck(ck[0] == (PetscReal)F->ops.id, F->comm, PETSC_ERR_ARG_INCOMP, "-resume: the checkpoint was written by another flow type (this run is %s)", F->type);
   F->t            = ck[1];
   F->tmu          = ck[2];
+  F->tmu_final_on = (PetscBool)(F->tmu_final > 0 && F->tmu >= F->tmu_final); /* the -t_mu_final switch had fired */
   F->rejections   = (PetscInt)ck[3];
   F->kspits_total = (PetscInt)ck[4];
   F->kspits       = (PetscInt)ck[5];

@@ -166,7 +166,7 @@ static PetscErrorCode SetFromOptionsTF(CSWillmoreFlow F)
   }
   PetscCall(PetscOptionsReal("-scale_gauge_weight", "-flow_variables spinor: multiplier metric of the scale gauge row mean(u) = const, relative to its |row|^2; 0: no gauge row", NULL, d->wgauge, &d->wgauge, NULL));
   PetscCall(PetscOptionsReal("-spinor_metric_shift", "-flow_variables spinor: add this times the mean psi diagonal of J^T I_H1 J to the whole metric (0: none)", NULL, d->mshift, &d->mshift, NULL));
-  PetscCall(PetscOptionsInt("-seed", "Seed of -flow_init random", NULL, d->seed, &d->seed, NULL));
+  PetscCall(PetscOptionsInt("-seed", "Seed of -flow_init random, random_spinor and smooth", NULL, d->seed, &d->seed, NULL));
   PetscCall(PetscOptionsReal("-init_amplitude", "-flow_init random: each halfedge vector gets a uniform random vector in [-a, a]^3 times the mean edge length; random_spinor: each face rotated by up to a pi; smooth: the largest vertex displacement is a times the mean edge length", NULL, d->amp, &d->amp, NULL));
   PetscCall(PetscOptionsInt("-init_modes", "-flow_init smooth: number of random plane waves (wavelength the input's bounding-box diagonal) in the displacement", NULL, d->modes, &d->modes, NULL));
   PetscCall(PetscOptionsReal("-spin_weight", "Weight of the spin Dirichlet energy E_tau(psi(omega)) added to W~ (soliman2021 App. C.3); 0: none", NULL, d->wspin, &d->wspin, NULL));
@@ -335,6 +335,9 @@ static PetscErrorCode SetUpTriangleField(CSWillmoreFlow F)
   PetscFunctionBeginUser;
   PetscCheck(m->topo.boundary_loops == 0, F->comm, PETSC_ERR_SUP, "-%stype trianglefield: the mesh %s has %" PetscInt_FMT " boundary loop(s); triangle-field flows are built for closed surfaces", F->prefix, m->name, m->topo.boundary_loops);
   PetscCall(CheckOptions(F));
+  /* -flow_t_mu_final (cgd.c): armed once the rows are enforced; a continuation's stages end at small EL residuals */
+  F->tmu_final_from = d->istart;
+  PetscCheck(F->tmu_final == 0 || d->wdecay == 1, F->comm, PETSC_ERR_SUP, "-%st_mu_final with -%sspin_weight_decay %g: the switch would fire at the end of the first stage of the continuation; use one or the other", F->prefix, F->prefix, (double)d->wdecay);
   d->noconf    = (PetscBool)!F->conformal; /* unconstrained W~ (Fig. 8): integrability rows only */
   F->conformal = PETSC_TRUE;               /* the multiplier block holds the integrability rows either way */
   PetscCall(SetUpResolutionGuard(F));

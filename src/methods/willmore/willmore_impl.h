@@ -155,6 +155,7 @@ struct _p_CSWillmoreFlow {
   PetscReal             tmu_ratio_max;     /* following t: t_mu <= this * t (1e3 times the initial t_mu / t) */
   PetscReal             tmu_final, tmu_final_el; /* -t_mu_final: a fixed dual step once el < tmu_final_el (cgd.c) */
   PetscBool             tmu_final_on;
+  PetscInt              tmu_final_from;    /* the switch is armed from this iteration on (a kind's relaxed phase before) */
   PetscInt              mu_ls_every, mu_ls_count; /* CGD: least-squares multiplier estimate every mu_ls_every its (cgd_multiplier_ls.c), estimates made */
   PetscReal             mu_ls_tmu;         /* t_mu (with t = 1) of its projection and least-squares solve */
   PetscReal             alm_rho, alm_grow, alm_rho_max; /* ALM penalty (relative to |E(input)|), its growth, ceiling */
