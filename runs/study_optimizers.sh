@@ -10,6 +10,9 @@
 #        not ranked: it solves another problem)
 #   cgdv: cgd with the violation ceiling lifted (-flow_vmax 1): a step is accepted on descent of its merit function
 #        alone, the same rule as PGD's (descent of W) and the paper's "explicit forward steps" (soliman2021 Sec. 6)
+#   cgdf: cgd with the dual step large and fixed (-flow_t_mu 1e5 -flow_t_mu_grow 1 -flow_t_mu_max 1e5): a class
+#        direction of singular value s is restored by ~ t t_mu s^2 per step; with the default t_mu (1e3 t) the
+#        torus's first steps hit the violation ceiling (6 rejections in 30), with this none (docs/studies.md)
 # The ranking under each table (issue 21) compares like with like: only the runs that hold the conformal class at
 # the end (conformal_violation < HOLD, default 1e-5: ALM and GD do not), by W.
 # Outputs in runs/results/optimizers/: per run <shape>_<method>_<metric>_{its,time}.{csv,json,obj,log}; the table
@@ -29,12 +32,13 @@ launch=(); [ "$NP" -gt 1 ] && launch=(mpirun -n "$NP")
 declare -A SHAPE=(
   [sphere]="-gen icosphere -gen_level 3 -gen_deform_bump 0.2 -gen_deform_stretch 1.5,1,0.8"
   [torus]="-gen torus -gen_torus_R 3 -gen_tube_r 1 -gen_n 32 -gen_m 16 -gen_deform_bump 0.1")
-METHODS="cgd cgdv pgd alm gd"; METRICS="h2 l2"
+METHODS="cgd cgdf cgdv pgd alm gd"; METRICS="h2 l2"
 opts() { # method metric
   case $1 in
     alm) echo "-flow_type alm -flow_alm_metric plain -flow_alm_rho $ALM_RHO -flow_alm_rho_grow 1" ;;
     gd) echo "-flow_type gd" ;;
     cgdv) echo "-flow_type cgd -flow_vmax 1" ;;
+    cgdf) echo "-flow_type cgd -flow_t_mu 1e5 -flow_t_mu_grow 1 -flow_t_mu_max 1e5" ;;
     *) echo "-flow_type $1" ;;
   esac
   echo "-flow_metric $2"

@@ -7,6 +7,7 @@
    (or the lattice's): the flow's conformal rows take it there. Why not -flow_init random: an i.i.d. field on every
    halfedge is far from integrable and ends in pinch edges (docs/triangle_fields.md, "Random starts that reach it?"). */
 #include "trianglefield_impl.h"
+#include "cs_geometry.h"
 
 /* Bounding-box diagonal D of the positions x (global Vec of dmV3). */
 static PetscErrorCode BoxDiagonal(Vec x, PetscReal *D)
@@ -19,25 +20,6 @@ static PetscErrorCode BoxDiagonal(Vec x, PetscReal *D)
     s += PetscSqr(hi - lo);
   }
   *D = PetscSqrtReal(s);
-  PetscFunctionReturn(0);
-}
-
-/* Mean length of the edges of the field omega (side 0 of every owned edge). */
-static PetscErrorCode MeanEdgeLength(CSMesh m, DM dmH3, Vec omega, PetscReal *lbar)
-{
-  Vec                ol;
-  const PetscScalar *o;
-  PetscReal          lsum = 0;
-  PetscFunctionBeginUser;
-  PetscCall(DMGetLocalVector(dmH3, &ol));
-  PetscCall(DMGlobalToLocal(dmH3, omega, INSERT_VALUES, ol));
-  PetscCall(VecGetArrayRead(ol, &o));
-  for (PetscInt e = 0; e < m->ne; e++)
-    if (m->edgeOwned[e]) lsum += PetscSqrtReal(PetscSqr(PetscRealPart(o[6 * e])) + PetscSqr(PetscRealPart(o[6 * e + 1])) + PetscSqr(PetscRealPart(o[6 * e + 2])));
-  PetscCall(VecRestoreArrayRead(ol, &o));
-  PetscCall(DMRestoreLocalVector(dmH3, &ol));
-  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &lsum, 1, MPIU_REAL, MPIU_SUM, m->comm));
-  *lbar = lsum / m->Ne;
   PetscFunctionReturn(0);
 }
 
@@ -83,7 +65,7 @@ PetscErrorCode CSTFInitSmooth(CSWillmoreFlow F, CSTriangleField *d, PetscReal (*
   PetscReal D = 0, lbar = 0, umax = 0;
   PetscFunctionBeginUser;
   PetscCall(BoxDiagonal(d->xpos0, &D));
-  PetscCall(MeanEdgeLength(F->mesh, d->dmH3, F->x0, &lbar));
+  PetscCall(CSGeometryMeanEdgeLength(F->mesh, d->xpos0, &lbar));
   PetscCall(VecDuplicate(d->xpos0, &u));
   PetscCall(PlaneWaves(d, hash, d->xpos0, D, u, &umax));
   PetscCheck(umax > 0, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sinit smooth: the random displacement vanishes at every vertex (seed %" PetscInt_FMT "); use another -%sseed", F->prefix, d->seed, F->prefix);
