@@ -23,15 +23,31 @@ static PetscErrorCode BoxDiagonal(Vec x, PetscReal *D)
   PetscFunctionReturn(0);
 }
 
+#define CS_MODE 8 /* the numbers of one plane wave */
+
+/* The random numbers of mode j, hashed once: the wave vector k_j (0-2), the amplitude r_j (3-5), the phase theta_j
+   (6) and |k_j| (7; 1 for a zero k_j). */
+static void Mode(CSTriangleField *d, PetscReal (*hash)(PetscInt, PetscInt, PetscInt, PetscInt), PetscInt j, PetscReal m[CS_MODE])
+{
+  PetscReal nk = 0;
+  for (int c = 0; c < 6; c++) m[c] = hash(d->seed, j, 4, c);
+  for (int c = 0; c < 3; c++) nk += m[c] * m[c];
+  m[6] = PETSC_PI * hash(d->seed, j, 4, 6);
+  m[7] = nk > 0 ? PetscSqrtReal(nk) : 1;
+}
+
 /* u(p) at the owned positions of x into u (same layout); *umax = max_v |u(p_v)| over all ranks. */
 static PetscErrorCode PlaneWaves(CSTriangleField *d, PetscReal (*hash)(PetscInt, PetscInt, PetscInt, PetscInt), Vec x, PetscReal D, Vec u, PetscReal *umax)
 {
   const PetscScalar *p;
   PetscScalar       *w;
+  PetscReal         *m;
   PetscInt           n;
   MPI_Comm           comm;
   PetscFunctionBeginUser;
   PetscCall(PetscObjectGetComm((PetscObject)x, &comm));
+  PetscCall(PetscMalloc1(CS_MODE * d->modes, &m));
+  for (PetscInt j = 0; j < d->modes; j++) Mode(d, hash, j, m + CS_MODE * j);
   PetscCall(VecGetLocalSize(x, &n));
   PetscCall(VecGetArrayRead(x, &p));
   PetscCall(VecGetArray(u, &w));
@@ -39,21 +55,17 @@ static PetscErrorCode PlaneWaves(CSTriangleField *d, PetscReal (*hash)(PetscInt,
   for (PetscInt v = 0; v < n / 3; v++) {
     PetscReal s[3] = {0, 0, 0};
     for (PetscInt j = 0; j < d->modes; j++) {
-      PetscReal k[3], nk = 0, ph = PETSC_PI * hash(d->seed, j, 4, 6), arg;
-      for (int c = 0; c < 3; c++) {
-        k[c] = hash(d->seed, j, 4, c);
-        nk += k[c] * k[c];
-      }
-      nk  = nk > 0 ? PetscSqrtReal(nk) : 1;
-      arg = ph;
-      for (int c = 0; c < 3; c++) arg += 2 * PETSC_PI * k[c] / nk * PetscRealPart(p[3 * v + c]) / D;
-      for (int c = 0; c < 3; c++) s[c] += hash(d->seed, j, 4, 3 + c) * PetscSinReal(arg);
+      const PetscReal *mj  = m + CS_MODE * j;
+      PetscReal        arg = mj[6];
+      for (int c = 0; c < 3; c++) arg += 2 * PETSC_PI * mj[c] / mj[7] * PetscRealPart(p[3 * v + c]) / D;
+      for (int c = 0; c < 3; c++) s[c] += mj[3 + c] * PetscSinReal(arg);
     }
     for (int c = 0; c < 3; c++) w[3 * v + c] = s[c];
     *umax = PetscMax(*umax, PetscSqrtReal(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]));
   }
   PetscCall(VecRestoreArray(u, &w));
   PetscCall(VecRestoreArrayRead(x, &p));
+  PetscCall(PetscFree(m));
   PetscCall(MPIU_Allreduce(MPI_IN_PLACE, umax, 1, MPIU_REAL, MPIU_MAX, comm));
   PetscFunctionReturn(0);
 }
