@@ -128,20 +128,23 @@ PetscErrorCode CSWillmoreFlowMonitorViewerSet(CSWillmoreFlow flow, CSOutput *out
   CSMesh      mesh;
   const char *prefix;
   PetscBool   listed = PETSC_FALSE;
+  PetscInt    its[32], nits = 32;
   PetscFunctionBeginUser;
   *wv = NULL;
   if (!out->has_viewer) PetscFunctionReturn(0);
   PetscCall(CSWillmoreFlowGetMesh(flow, &mesh));
+  PetscCall(CSWillmoreFlowGetOptionsPrefix(flow, &prefix));
+  PetscOptionsBegin(mesh->comm, prefix, "ParaView series of the Willmore flow", "CSWillmoreFlowMonitorViewerSet");
+  PetscCall(PetscOptionsIntArray("-viewer_iterations", "Also write these iterations i1,i2,... (with -viewer_dir)", "CSWillmoreFlowMonitorViewerSet", its, &nits, &listed));
+  PetscOptionsEnd();
+  if (!listed) nits = 0;
+  /* checked before the context exists, so a refused list leaks nothing */
+  for (PetscInt k = 0; k < nits; k++) PetscCheck(its[k] >= 0, mesh->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sviewer_iterations: iteration %" PetscInt_FMT " must be >= 0", prefix, its[k]);
   PetscCall(PetscNew(wv));
   (*wv)->every = every;
   (*wv)->last  = -1;
-  (*wv)->nits  = 32;
-  PetscCall(CSWillmoreFlowGetOptionsPrefix(flow, &prefix));
-  PetscOptionsBegin(mesh->comm, prefix, "ParaView series of the Willmore flow", "CSWillmoreFlowMonitorViewerSet");
-  PetscCall(PetscOptionsIntArray("-viewer_iterations", "Also write these iterations i1,i2,... (with -viewer_dir)", "CSWillmoreFlowMonitorViewerSet", (*wv)->its, &(*wv)->nits, &listed));
-  PetscOptionsEnd();
-  if (!listed) (*wv)->nits = 0;
-  for (PetscInt k = 0; k < (*wv)->nits; k++) PetscCheck((*wv)->its[k] >= 0, mesh->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sviewer_iterations: iteration %" PetscInt_FMT " must be >= 0", prefix, (*wv)->its[k]);
+  (*wv)->nits  = nits;
+  PetscCall(PetscArraycpy((*wv)->its, its, nits));
   PetscCall(CSViewerCreate(mesh, out->viewer_dir, &(*wv)->v));
   /* the context belongs to the caller (CSWillmoreFlowViewerFinish writes the final state with it) */
   if (every > 0 || (*wv)->nits) PetscCall(CSWillmoreFlowMonitorSet(flow, MonitorViewer, *wv, NULL));
