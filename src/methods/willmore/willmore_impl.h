@@ -44,6 +44,8 @@ typedef struct {
   PetscReal   tmu;
   Mat         X;
   PetscBool   have_pc;
+  PetscBool   reuse_borders; /* -<prefix>reuse_borders: keep W = K^{-1} B for the later solves with the same operators */
+  PetscBool   w_valid;    /* W holds K^{-1} B for the operators set last */
   CSSchurSolveType schur; /* -<prefix>schur_solver: direct (default) or an iterative Schur solve (docs/scaling.md) */
   PetscReal   schur_rtol; /* -<prefix>schur_rtol of the iterative Schur solve */
   CSMetric   *metric;     /* the flow's (borrowed): its terms build the unassembled S for bddc */
