@@ -76,6 +76,7 @@ typedef struct {
   PetscInt         it_el_min;           /* ... at this iteration (how near a critical point the path passed) */
   CSWillmoreFlowDegeneration degeneration; /* set when the resolution guard stopped the flow */
   PetscReal        integrability_violation; /* trianglefield: max of |d1 omega|, face closure, |<<Y_i|omega>>| (-1: other kinds) */
+  PetscReal        immersion_tol;       /* trianglefield: -o writes the reconstruction only at integrability_violation <= this */
   PetscReal        spin_energy;         /* trianglefield: E_tau(psi(omega)) (App. C.3), unweighted */
   PetscInt         pinch_edges;         /* trianglefield: edges with |psi_jil - tau_ij psi_ijk| >= sqrt 2 (App. C.1; -1: other kinds) */
   PetscInt         k;                   /* global constraint values */

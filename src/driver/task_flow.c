@@ -6,6 +6,23 @@
 #include "cs_output_willmore.h"
 #include "cs_methods_bs.h"
 
+/* After an error: -o only for a state that is a finite immersion (a triangle field's reconstruction is one only when
+   the field is integrable, willmore_report.c CheckImmersion); the summary is written either way. */
+static PetscErrorCode KeepOnlyAnImmersion(CSMesh mesh, CSOutput *out, Vec x, const CSWillmoreFlowInfo *info)
+{
+  PetscReal big;
+  PetscBool finite, immersion;
+  PetscFunctionBeginUser;
+  if (!out->has_out) PetscFunctionReturn(0);
+  PetscCall(VecNorm(x, NORM_INFINITY, &big));
+  finite    = (PetscBool)!PetscIsInfOrNanReal(big);
+  immersion = (PetscBool)(info->integrability_violation < 0 || info->integrability_violation <= info->immersion_tol);
+  if (finite && immersion) PetscFunctionReturn(0);
+  PetscCall(PetscPrintf(mesh->comm, "flow: -o %s is not written: the last state %s\n", out->out, finite ? "is a triangle field that is not integrable (-flow_immersion_tol)" : "is not finite"));
+  out->has_out = PETSC_FALSE;
+  PetscFunctionReturn(0);
+}
+
 /* the solve; after an error the last accepted state is written (CSOutputSaveAfterError), then the error raised */
 static PetscErrorCode SolveOrSave(CSWillmoreFlow flow, CSWillmoreViewer *wv, CSOutput *out)
 {
@@ -21,6 +38,7 @@ static PetscErrorCode SolveOrSave(CSWillmoreFlow flow, CSWillmoreViewer *wv, CSO
   PetscCall(CSWillmoreFlowGetSolution(flow, &x));
   PetscCall(CSWillmoreFlowGetMesh(flow, &mesh));
   PetscCall(CSWillmoreFlowViewerFinish(flow, wv));
+  PetscCall(KeepOnlyAnImmersion(mesh, out, x, &info));
   PetscCall(CSOutputSaveAfterError(out, mesh, x, info.it, ierr, msg, sizeof(msg)));
   SETERRQ(mesh->comm, ierr, "%s", msg);
 }

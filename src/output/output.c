@@ -278,7 +278,7 @@ PetscErrorCode CSOutputSaveAfterError(CSOutput *o, CSMesh mesh, Vec x, PetscInt 
   PetscFunctionBeginUser;
   PetscCall(PetscErrorMessage(ierr, &text, &specific));
   PetscCall(PetscStrncpy(msg, specific ? specific : (text ? text : "unknown error"), len));
-  PetscCall(PetscPrintf(mesh->comm, "flow: failed after iteration %" PetscInt_FMT ": %s\nflow: the last accepted state goes to -o and -summary\n", it, msg));
+  PetscCall(PetscPrintf(mesh->comm, "flow: failed after iteration %" PetscInt_FMT ": %s\nflow: the last accepted state goes to %s\n", it, msg, o->has_out ? "-o and -summary" : "-summary"));
   PetscCall(CSJSONAddInt(o->json, "iterations", it));
   PetscCall(CSJSONAddBool(o->json, "converged", PETSC_FALSE));
   PetscCall(CSJSONAddString(o->json, "stop_reason", "error"));

@@ -68,12 +68,11 @@ static PetscErrorCode PathLine(CSMesh mesh, const CSWillmoreFlowInfo *i)
    required). */
 static PetscErrorCode CheckImmersion(CSWillmoreFlow flow, CSOutput *out, CSMesh mesh, const CSWillmoreFlowInfo *i)
 {
-  PetscReal   tol = 1e-6;
-  const char *prefix;
+  const PetscReal tol = i->immersion_tol;
+  const char     *prefix;
   PetscFunctionBeginUser;
   if (!out->has_out || i->integrability_violation < 0) PetscFunctionReturn(0);
   PetscCall(CSWillmoreFlowGetOptionsPrefix(flow, &prefix));
-  PetscCall(PetscOptionsGetReal(NULL, prefix, "-immersion_tol", &tol, NULL));
   if (i->integrability_violation <= tol) PetscFunctionReturn(0);
   PetscCall(CSOutputAddRunFacts(out, mesh->comm));
   PetscCall(CSOutputWriteSummary(out, mesh->comm));
@@ -96,7 +95,7 @@ PetscErrorCode CSWillmoreFlowReport(CSWillmoreFlow flow, CSOutput *out)
   PetscCall(CSWillmoreFlowGetMesh(flow, &mesh));
   PetscCall(CSWillmoreFlowGetSolution(flow, &x));
   PetscCall(CSWillmoreFlowGetInitial(flow, &x0));
-  PetscCall(PetscPrintf(mesh->comm, "flow %s: %s after %" PetscInt_FMT " iterations (%s; %" PetscInt_FMT " rejected steps, %" PetscInt_FMT " KSP iterations, %" PetscInt_FMT " edges with guarded I_Q weight), %.3f s; conformal violation %.2e, constraint violation %.2e (largest of the run %.2e), EL residual %.2e\n", type, CSWillmoreFlowReasonConverged(reason) ? "converged" : "NOT converged", i.it, CSWillmoreFlowStopReasons[reason], i.rejections, i.ksp_its_total, i.nguard, i.seconds, (double)i.conformal_violation, (double)i.constraint_violation, (double)i.violation_max, (double)i.el_residual));
+  PetscCall(PetscPrintf(mesh->comm, "flow %s: %s after %" PetscInt_FMT " iterations (%s; %" PetscInt_FMT " rejected steps, %" PetscInt_FMT " KSP iterations, %" PetscInt_FMT " edges with guarded I_Q weight), %.3f s; conformal violation %.2e, constraint violation %.2e (largest violation of the run %.2e), EL residual %.2e\n", type, CSWillmoreFlowReasonConverged(reason) ? "converged" : "NOT converged", i.it, CSWillmoreFlowStopReasons[reason], i.rejections, i.ksp_its_total, i.nguard, i.seconds, (double)i.conformal_violation, (double)i.constraint_violation, (double)i.violation_max, (double)i.el_residual));
   if (i.violation_grew) PetscCall(PetscPrintf(mesh->comm, "flow %s: the constraint violation GREW during the run: %.2e at the end against %.2e at iteration %" PetscInt_FMT " (largest %.2e at iteration %" PetscInt_FMT "); the result does not satisfy the constraints (conformal class, global rows) to -%sctol (summary key violation_grew)\n", type, (double)PetscMax(i.conformal_violation, i.constraint_violation), (double)i.violation_min, i.violation_min_it, (double)i.violation_max, i.violation_max_it, prefix ? prefix : ""));
   if (!CSWillmoreFlowReasonConverged(reason)) PetscCall(PathLine(mesh, &i));
   PetscCall(SummaryKeys(flow, out, &i));

@@ -33,7 +33,7 @@ check_close "$(json willmore "$TMP/i1.json")" "$(json willmore "$TMP/i3.json")" 
 if [ "$NP" = 1 ]; then
 timeout 200 $MPIEXEC "$CS_BIN" -task flow -mesh $M -mesh_refine 1 -flow_max_it 150 -summary "$TMP/f.json" -history_csv "$TMP/f.csv" > "$TMP/f.log" 2>&1 || { tail -3 "$TMP/f.log"; exit 1; }
 [ "$(json stop_reason "$TMP/f.json")" = mesh_degenerate ] && [ "$(json converged "$TMP/f.json")" = False ] || { echo "FAIL: refined eight_cgal: $(json stop_reason "$TMP/f.json")"; tail -3 "$TMP/f.log"; exit 1; }
-grep -qE "flow cgd: NOT converged after .*; conformal violation [0-9.e+-]+, constraint violation [0-9.e+-]+ \(largest of the run [0-9.e+-]+\), EL residual [0-9.e+-]+" "$TMP/f.log" || { echo "FAIL: the final line does not state the violation"; tail -2 "$TMP/f.log"; exit 1; }
+grep -qE "flow cgd: NOT converged after .*; conformal violation [0-9.e+-]+, constraint violation [0-9.e+-]+ \(largest violation of the run [0-9.e+-]+\), EL residual [0-9.e+-]+" "$TMP/f.log" || { echo "FAIL: the final line does not state the violation"; tail -2 "$TMP/f.log"; exit 1; }
 python3 - "$TMP/f.csv" "$(json energy_initial "$TMP/f.json")" "$(json willmore "$TMP/f.json")" "$(json violation_max "$TMP/f.json")" <<'PY' || exit 1
 import csv, sys
 rows = list(csv.DictReader(open(sys.argv[1])))

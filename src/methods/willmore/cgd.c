@@ -13,7 +13,7 @@ PetscErrorCode CSWFAcceptCGD(CSWillmoreFlow F)
   PetscFunctionReturn(0);
 }
 
-/* -t_mu_final T: once an iterate's EL residual is below -t_mu_final_el, t_mu = T for the rest of the run. Why: CGD
+/* -t_mu_final T: once an iterate's EL residual is below -t_mu_final_el, t_mu = max(t_mu, T) for the rest of the run. Why: CGD
    restores a direction of the rows with singular value s by ~ t t_mu s^2 / lambda_H per step (the Schur complement
    H/t + t_mu X^T I_Q^-1 X); at an isothermic surface (the Clifford torus of soliman2021 Fig. 16) one class direction
    has s ~ 1e-4, so with the default t_mu ~ 1e3 t the class stalls at ~1e-8 while EL -> 0. A large t_mu from the start
@@ -30,23 +30,27 @@ static PetscErrorCode FinalDualStep(CSWillmoreFlow F, PetscBool *on)
   PetscFunctionReturn(0);
 }
 
+/* The factor by which t grows after an accepted step: -t_grow, capped so that t ends at -t_max (not short of it
+   when t_max is not t times a power of t_grow) */
+PetscReal CSWFGrowthFactor(CSWillmoreFlow F)
+{
+  if (F->t * F->grow <= F->tmax) return F->grow;
+  return F->t < F->tmax ? F->tmax / F->t : 1.0;
+}
+
 PetscErrorCode CSWFGrowCGD(CSWillmoreFlow F)
 {
   PetscBool fixed = PETSC_FALSE;
+  PetscReal r     = CSWFGrowthFactor(F);
   PetscFunctionBeginUser;
   PetscCall(FinalDualStep(F, &fixed));
-  if (fixed) {
-    if (F->t * F->grow <= F->tmax) F->t *= F->grow;
-    F->tmu = PetscMax(F->tmu, F->tmu_final); /* a ramp (-t_mu_grow) already above it is kept */
-  } else if (F->tmu_grow > 0) {
+  if (r > 1) F->t = r == F->grow ? F->t * F->grow : F->tmax;
+  if (fixed) F->tmu = PetscMax(F->tmu, F->tmu_final); /* t_mu = max(t_mu, T): a ramp (-t_mu_grow) already above T is kept */
+  else if (F->tmu_grow > 0) {
     /* a dual step ramped on its own (-flow_t_mu_grow): a large t_mu during the transient of a class change
        seeds an unstable mode (options/flow_class_change.opts) */
-    if (F->t * F->grow <= F->tmax) F->t *= F->grow;
     F->tmu = PetscMin(F->tmu * F->tmu_grow, F->tmu_max);
-  } else if (F->t * F->grow <= F->tmax) {
-    F->t *= F->grow;
-    F->tmu = PetscMin(PetscMin(F->tmu * F->grow, F->tmu_max), F->tmu_ratio_max * F->t);
-  }
+  } else if (r > 1 || F->grow == 1) F->tmu = PetscMin(PetscMin(F->tmu * r, F->tmu_max), F->tmu_ratio_max * F->t);
   PetscFunctionReturn(0);
 }
 

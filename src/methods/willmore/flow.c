@@ -91,6 +91,7 @@ static void SetDefaults(CSWillmoreFlow F)
   F->boundary        = CS_FLOW_BOUNDARY_DIRICHLET;
   F->saddle_mat      = CS_SADDLE_MAT_NEST;
   F->integ           = -1;
+  F->immersion_tol   = 1e-6;
   F->pinch           = -1;
   F->viol_min        = -1; /* none evaluated yet */
 }
@@ -271,6 +272,7 @@ PetscErrorCode CSWillmoreFlowGetInfo(CSWillmoreFlow F, CSWillmoreFlowInfo *info)
   info->degeneration         = F->degeneration;
   info->seconds              = now - F->t0;
   info->integrability_violation = F->integ;
+  info->immersion_tol           = F->immersion_tol;
   info->pinch_edges          = F->pinch;
   info->spin_energy          = F->espin;
   info->k                    = F->k;

@@ -32,7 +32,7 @@ static PetscErrorCode StepOptions(CSWillmoreFlow F, PetscOptionItems *PetscOptio
   PetscCall(PetscOptionsReal("-t_max", "Largest primal step", NULL, F->tmax, &F->tmax, NULL));
   PetscCall(PetscOptionsReal("-t_mu_grow", "Grow t_mu by this factor after each accepted step, independently of t, up to t_mu_max (0: t_mu follows t)", NULL, F->tmu_grow, &F->tmu_grow, NULL));
   PetscCall(PetscOptionsReal("-t_mu_max", "Largest t_mu (default: 1e3 t_max with t_mu_grow, else none; in the units of t_mu)", NULL, F->tmu_max, &F->tmu_max, NULL));
-  PetscCall(PetscOptionsReal("-t_mu_final", "CGD: once an iterate's EL residual is below -t_mu_final_el, the dual step t_mu is this, fixed (0: off; in the units of t_mu; docs/triangle_fields.md, \"The class floor\")", NULL, F->tmu_final, &F->tmu_final, NULL));
+  PetscCall(PetscOptionsReal("-t_mu_final", "CGD: once an iterate's EL residual is below -t_mu_final_el, the dual step t_mu is max(t_mu, this), fixed (0: off; in the units of t_mu; docs/triangle_fields.md, \"The class floor\")", NULL, F->tmu_final, &F->tmu_final, NULL));
   PetscCall(PetscOptionsReal("-t_mu_final_el", "CGD: the EL residual below which -t_mu_final takes over", NULL, F->tmu_final_el, &F->tmu_final_el, NULL));
   PetscCall(PetscOptionsReal("-t_grow", "Factor on t after an accepted step", NULL, F->grow, &F->grow, NULL));
   PetscCall(PetscOptionsBool("-step_control", "Accept a step only if the merit function decreases (else halve t)", NULL, F->step_control, &F->step_control, NULL));
@@ -42,7 +42,7 @@ static PetscErrorCode StepOptions(CSWillmoreFlow F, PetscOptionItems *PetscOptio
   if (!F->max_step_set) F->max_step = F->ops.max_step;
   if (!F->fold_guard_set) F->fold_guard = F->ops.fold_guard;
   PetscCall(PetscOptionsReal("-max_step", "Reject a trial step that moves a vertex by more than this times the mean edge length, or turns a face over (0: off; default 0.5 for gd, 2 for newton, 0 otherwise)", NULL, F->max_step, &F->max_step, &F->max_step_set));
-  PetscCall(PetscOptionsBool("-fold_guard", "Stop at the last good state when the enclosed volume changes sign or a face turns over against the input (default on for gd and newton)", NULL, F->fold_guard, &F->fold_guard, &F->fold_guard_set));
+  PetscCall(PetscOptionsBool("-fold_guard", "Stop at the last good state when the enclosed volume changes sign against the input, a face turns over within one iteration, or an edge folds into a crease (default on for gd and newton)", NULL, F->fold_guard, &F->fold_guard, &F->fold_guard_set));
   PetscCall(PetscOptionsReal("-merit_rho", "Weight of the quadratic constraint penalty in the merit function, relative to |E(input)|", NULL, F->rho, &F->rho, NULL));
   PetscCall(PetscOptionsReal("-vmax", "Step control: reject steps whose constraint violation exceeds max(v, this), v that of the current state", NULL, F->vmax, &F->vmax, NULL));
   PetscCall(PetscOptionsReal("-restore_above", "CGD/GD, trianglefield: project an accepted state whose constraint violation exceeds this back onto the constraints (0: never)", NULL, F->vrestore, &F->vrestore, NULL));
@@ -111,6 +111,7 @@ static PetscErrorCode CheckValues(CSWillmoreFlow F)
     {"rtol", F->rtol, F->rtol >= 0, "must be >= 0"},
     {"ctol", F->ctol, F->ctol >= 0, "must be >= 0"},
     {"pgd_t_mu", F->proj_tmu, F->proj_tmu > 0, "must be > 0"},
+    {"pgd_projection_max_it", (PetscReal)F->proj_max_it, F->proj_max_it >= 1, "must be >= 1"},
     {"fairing_epsilon", F->eps, F->eps > 0, "must be > 0"},
     {"max_seconds", F->max_seconds, F->max_seconds >= 0, "use 0 (no limit) or a positive number of seconds"},
     {"max_it", (PetscReal)F->max_it, F->max_it >= 0, "must be >= 0"},
@@ -139,6 +140,8 @@ static PetscErrorCode CheckOptions(CSWillmoreFlow F)
   PetscCheck(!F->target[0] || F->conformal, F->comm, PETSC_ERR_ARG_INCOMP, "-%starget_mesh %s needs the conformal constraint (cgd, or pgd with -%sconformal)", p, F->target, p);
   PetscCheck(!F->boundary_set || F->boundary != CS_FLOW_BOUNDARY_NORMALS || F->conformal, F->comm, PETSC_ERR_ARG_INCOMP, "-%sboundary normals needs the conformal constraint (cgd or pgd)", p);
   PetscCheck(F->tmu_final == 0 || (F->ops.trial == CSWFTrialCGD && (F->conformal || F->k || F->ops.setup_problem)), F->comm, PETSC_ERR_SUP, "-%st_mu_final: a dual step of CGD's rows, for -%stype cgd or trianglefield (or gd with constraints), not -%stype %s%s", p, p, p, F->type, F->ops.trial == CSWFTrialCGD ? " without constraint rows" : "");
+  /* the step-geometry check and the fold guard measure vertex positions; a triangle field's variables are not */
+  PetscCheck(!F->ops.setup_problem || (F->max_step == 0 && !F->fold_guard), F->comm, PETSC_ERR_SUP, "-%smax_step and -%sfold_guard work on vertex positions, not on -%stype %s (its reconstruction is guarded by -%smax_area_ratio)", p, p, p, F->type, p);
   if (F->ops.setup) PetscCall((*F->ops.setup)(F));
   PetscFunctionReturn(0);
 }

@@ -31,8 +31,9 @@ static PetscErrorCode AcceptPGD(CSWillmoreFlow F)
 /* t grows by -flow_t_grow up to -flow_t_max after an accepted step, halves after a rejected one (PGD, ALM) */
 PetscErrorCode CSWFGrowPrimal(CSWillmoreFlow F)
 {
+  PetscReal r = CSWFGrowthFactor(F);
   PetscFunctionBeginUser;
-  if (F->t * F->grow <= F->tmax) F->t *= F->grow;
+  if (r > 1) F->t = r == F->grow ? F->t * F->grow : F->tmax;
   PetscFunctionReturn(0);
 }
 

@@ -163,6 +163,7 @@ PetscErrorCode CSWillmoreFlowStep(CSWillmoreFlow F, CSWillmoreFlowConvergedReaso
     if (F->ops.dual) PetscCall((*F->ops.dual)(F));
     PetscCall(StepWithRejections(F, &accepted));
     if (!accepted && !F->reason) F->reason = CS_WILLMORE_FLOW_DIVERGED_REJECTIONS;
+    if (F->reason) F->kspits_total += F->kspits; /* the rejected trials of a last, failed iteration count too */
   }
   if (!F->reason) {
     PetscCall(VecCopy(F->xt, F->x));

@@ -167,6 +167,7 @@ static PetscErrorCode SetFromOptionsTF(CSWillmoreFlow F)
   PetscCall(PetscOptionsReal("-scale_gauge_weight", "-flow_variables spinor: multiplier metric of the scale gauge row mean(u) = const, relative to its |row|^2; 0: no gauge row", NULL, d->wgauge, &d->wgauge, NULL));
   PetscCall(PetscOptionsReal("-spinor_metric_shift", "-flow_variables spinor: add this times the mean psi diagonal of J^T I_H1 J to the whole metric (0: none)", NULL, d->mshift, &d->mshift, NULL));
   PetscCall(PetscOptionsInt("-seed", "Seed of -flow_init random, random_spinor and smooth", NULL, d->seed, &d->seed, NULL));
+  PetscCall(PetscOptionsReal("-immersion_tol", "-o writes the Poisson reconstruction of omega only when its integrability violation is at most this (else it is no immersion of omega)", NULL, F->immersion_tol, &F->immersion_tol, NULL));
   PetscCall(PetscOptionsReal("-init_amplitude", "-flow_init random: each halfedge vector gets a uniform random vector in [-a, a]^3 times the mean edge length; random_spinor: each face rotated by up to a pi; smooth: the largest vertex displacement is a times the mean edge length", NULL, d->amp, &d->amp, NULL));
   PetscCall(PetscOptionsInt("-init_modes", "-flow_init smooth: number of random plane waves (wavelength the input's bounding-box diagonal) in the displacement", NULL, d->modes, &d->modes, NULL));
   PetscCall(PetscOptionsReal("-spin_weight", "Weight of the spin Dirichlet energy E_tau(psi(omega)) added to W~ (soliman2021 App. C.3); 0: none", NULL, d->wspin, &d->wspin, NULL));
@@ -180,7 +181,10 @@ static PetscErrorCode SetFromOptionsTF(CSWillmoreFlow F)
   PetscCheck(d->mshift >= 0 && !PetscIsInfOrNanReal(d->mshift), F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sspinor_metric_shift %g: must be >= 0", F->prefix, (double)d->mshift);
   PetscCheck(d->wgauge >= 0 && !PetscIsInfOrNanReal(d->wgauge), F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sscale_gauge_weight %g: must be >= 0", F->prefix, (double)d->wgauge);
   PetscCheck(d->wspin >= 0 && !PetscIsInfOrNanReal(d->wspin), F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sspin_weight %g: must be >= 0", F->prefix, (double)d->wspin);
-  PetscCheck(d->modes > 0, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sinit_modes %" PetscInt_FMT ": must be > 0", F->prefix, d->modes);
+  /* the waves cost modes x vertices at the start; 1e4 is far more than a smooth displacement needs */
+  PetscCheck(d->modes > 0 && d->modes <= 10000, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sinit_modes %" PetscInt_FMT ": must lie in [1, 10000]", F->prefix, d->modes);
+  PetscCheck(F->immersion_tol >= 0 && !PetscIsInfOrNanReal(F->immersion_tol), F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%simmersion_tol %g: must be a finite number >= 0", F->prefix, (double)F->immersion_tol);
+  PetscCheck(d->amp >= 0 && !PetscIsInfOrNanReal(d->amp), F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sinit_amplitude %g: must be a finite number >= 0", F->prefix, (double)d->amp);
   PetscCheck(!d->spinor || d->init != CS_TF_INIT_SMOOTH, F->comm, PETSC_ERR_SUP, "-%sinit smooth: built for the omega variables, not -%svariables spinor (use df, random or random_spinor)", F->prefix, F->prefix);
   /* the spinor variables evaluate through their own path, which has no stages (rather refused than ignored) */
   PetscCheck(!d->spinor || d->wdecay == 1, F->comm, PETSC_ERR_SUP, "-%sspin_weight_decay %g: the spin-weight continuation is built for the omega variables, not -%svariables spinor", F->prefix, (double)d->wdecay, F->prefix);

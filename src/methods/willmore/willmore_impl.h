@@ -183,6 +183,7 @@ struct _p_CSWillmoreFlow {
   PetscLogDouble        t0;
   PetscReal             E, el, conf, glob, A, V, area_ratio, spread, qmax; /* at x, from the last evaluation */
   PetscReal             integ; /* integrability violation of a triangle field (-1: not a triangle-field kind) */
+  PetscReal             immersion_tol; /* -flow_immersion_tol: the largest integ at which -o writes the reconstruction */
   PetscReal             espin; /* E_tau(psi(omega)) of a triangle field (App. C.3), whatever its weight */
   PetscInt              pinch; /* edges failing the spinor pinch test (soliman2021 App. C.1; -1: not a triangle-field kind) */
   PetscReal             viol_max; /* the largest max(conf, glob) of any evaluated state (before a projection at the stop) */
@@ -245,6 +246,7 @@ PETSC_INTERN PetscErrorCode CSWFMultiplierLS(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFMultiplierLSRestore(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFAcceptCGD(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFGrowCGD(CSWillmoreFlow F);
+PETSC_INTERN PetscReal      CSWFGrowthFactor(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFShrinkCGD(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFGrowPrimal(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFShrinkPrimal(CSWillmoreFlow F);
