@@ -34,3 +34,18 @@ for o in "-flow_rtol nan" "-flow_iq_wmin -1" "-flow_max_it -1" "-flow_max_reject
 done
 EXPECT="-bs_dt inf: must be > 0" expect_fail F -flow_type bs -gen icosphere -gen_level 2 -bs_dt inf
 EXPECT="-flow_constraint_mobius.*-flow_conformal" expect_fail F -gen icosphere -gen_level 1 -flow_type gd -flow_constraint_mobius
+# review of 2026-12-05: options that measured the wrong thing or were accepted out of range
+EXPECT="-flow_max_step and -flow_fold_guard work on vertex positions, not on -flow_type trianglefield" expect_fail F -gen lattice -gen_tau 0,1 -gen_n 4 -gen_m 4 -flow_type trianglefield -flow_fold_guard
+EXPECT="-flow_max_step and -flow_fold_guard work on vertex positions" expect_fail F -gen lattice -gen_tau 0,1 -gen_n 4 -gen_m 4 -flow_type trianglefield -flow_max_step 0.5
+EXPECT="-flow_pgd_projection_max_it 0: must be >= 1" expect_fail F -gen icosphere -gen_level 1 -flow_type pgd -flow_pgd_projection_max_it 0
+for o in "-flow_init_amplitude nan" "-flow_init_amplitude -1" "-flow_immersion_tol -1"; do
+  EXPECT="$o.*: must be a finite number >= 0" expect_fail F -gen lattice -gen_tau 0,1 -gen_n 4 -gen_m 4 -flow_type trianglefield $o
+done
+EXPECT="-flow_init_modes 20000: must lie in \[1, 10000\]" expect_fail F -gen lattice -gen_tau 0,1 -gen_n 4 -gen_m 4 -flow_type trianglefield -flow_init smooth -flow_init_modes 20000
+# a failed triangle-field run whose last state is not finite: the summary is written, -o is not (a NaN mesh before)
+EXPECT="not a number" expect_fail F -gen lattice -gen_tau 0,1 -gen_n 4 -gen_m 4 -flow_type trianglefield -flow_init random -flow_init_amplitude 1e300 -o "$TMP/nan.obj" -summary "$TMP/nan.json"
+[ ! -e "$TMP/nan.obj" ] || { echo "FAIL: -o was written for a non-finite state"; exit 1; }
+[ "$(json stop_reason "$TMP/nan.json")" = error ] || { echo "FAIL: the summary of the failed run"; exit 1; }
+# t grows up to -flow_t_max, also when t_max is not t times a power of 2 (it stopped at 2 before)
+F -gen icosphere -gen_level 1 -flow_t_max 3 -flow_max_it 3 -summary "$TMP/tmax.json" > "$TMP/tmax.log" 2>&1 || { tail -3 "$TMP/tmax.log"; exit 1; }
+[ "$(json t_final "$TMP/tmax.json")" = 3 ] || { echo "FAIL: t_final $(json t_final "$TMP/tmax.json"), expected 3 (-flow_t_max 3)"; exit 1; }
