@@ -143,7 +143,8 @@ PetscErrorCode CSWillmoreFlowStep(CSWillmoreFlow F, CSWillmoreFlowConvergedReaso
   if (!F->reason && F->E == F->E && F->el == F->el) PetscCall(CSWFCheckResolution(F, &F->reason));
   if (F->reason == CS_WILLMORE_FLOW_DIVERGED_MESH_DEGENERATE) PetscCall(ProjectAtStop(F));
   for (PetscInt i = 0; i < F->nmonitor; i++) PetscCall((*F->monitor[i].fn)(F, F->it, F->monitor[i].ctx));
-  PetscCheck(F->E == F->E && F->el == F->el, F->comm, PETSC_ERR_FP, "flow: the energy or the residual is not a number at iteration %" PetscInt_FMT " (degenerate triangles?); try a smaller -%st", F->it, F->prefix);
+  /* at the first state no step was taken yet: a smaller t cannot help, the start itself is degenerate */
+  PetscCheck(F->E == F->E && F->el == F->el, F->comm, PETSC_ERR_FP, "flow: the energy or the residual is not a number at iteration %" PetscInt_FMT " (degenerate triangles?); %s%s%s", F->it, F->it == 0 && !F->resumed ? "the start state is degenerate: check the input mesh (or the initial field, -" : "try a smaller -", F->prefix, F->it == 0 && !F->resumed ? "init*)" : "t");
   if (!F->reason && F->el < F->rtol && PetscMax(F->conf, F->glob) < F->ctol) F->reason = CS_WILLMORE_FLOW_CONVERGED_RTOL;
   if (!F->reason && F->energy_target_set && F->E <= F->energy_target) {
     PetscCall(PetscPrintf(F->comm, "flow: the energy %.10g reached -%senergy_target %.10g at iteration %" PetscInt_FMT "\n", (double)F->E, F->prefix, (double)F->energy_target, F->it));
