@@ -65,7 +65,8 @@ PETSC_EXTERN PetscErrorCode CSMatKronIdentity(Mat A, PetscInt bs, MatReuse reuse
    factored) is set when pc has none yet. */
 PETSC_EXTERN PetscErrorCode CSMumpsDefaultOrdering(PC pc, Mat A);
 /* S = diag(d) + sum_k A_k^T diag(w_k) A_k (d, w_k >= 0; A_k MPIAIJ with d's column layout, w_k with A_k's row layout)
-   as an unassembled MATIS for PCBDDC: rank p holds diag(d) on its owned dofs and the terms of A_k's owned rows
-   (src/linalg/mat_is_squares.c). MAT_REUSE_MATRIX replaces the local matrix of *S (same pattern). */
+   as an unassembled MATIS for PCBDDC: rank p holds d / (the number of ranks holding the dof) on every dof it holds,
+   and the terms of A_k's owned rows (src/linalg/mat_is_squares.c). MAT_REUSE_MATRIX replaces the local matrix of *S;
+   the caller must keep the pattern of the A_k (the local-to-global map is not compared). */
 PETSC_EXTERN PetscErrorCode CSMatISFromSquares(Vec d, PetscInt n, Mat A[], Vec w[], MatReuse reuse, Mat *S);
 #endif

@@ -34,6 +34,8 @@ PETSC_EXTERN PetscErrorCode CSOperatorMass(CSMesh mesh, Vec x, Vec mass);
    (k >= 1) or (1 + s) M (k = 0), a new SPD matrix, for (id + s A^k) w = v as B w = M v; L any AIJ Laplacian
    (positive semi-definite), mass its diagonal mass vector. */
 PETSC_EXTERN PetscErrorCode CSOperatorSpectralFilter(Mat L, Vec mass, PetscReal s, PetscInt k, Mat *B);
+PETSC_EXTERN PetscErrorCode CSOperatorSpectralFilterResidual(Mat B, Vec b, Vec w, PetscReal *rel);
+#define CS_FILTER_RTOL 1e-4 /* largest relative residual of a filter solve kept: the filtered direction to ~1e-4 (CSOperatorSpectralFilterResidual) */
 
 #include "cs_linalg.h" /* CSMatAddFixedPattern (src/linalg/mat_add_fixed.c) */
 

@@ -38,7 +38,8 @@ static void Reset(CSCholmod f)
 }
 
 /* Column pointers from per-column counts, and cnt turned into fill positions. The symbolic analysis belongs
-   to one pattern: if the column counts differ from the kept matrix's, everything is rebuilt. */
+   to one pattern: if the column counts differ from the kept matrix's, everything is rebuilt (equal counts with
+   other row indices are caught by BuildQuaternion, which then drops the analysis). */
 static PetscErrorCode AllocateLower(CSCholmod f, PetscInt ncol, PetscInt *cnt)
 {
   int *colp;
@@ -68,8 +69,9 @@ static PetscErrorCode AllocateLower(CSCholmod f, PetscInt ncol, PetscInt *cnt)
    holds (q0, -q1, -q2, -q3). */
 static PetscErrorCode BuildQuaternion(CSCholmod f, Mat K, PetscReal sigma)
 {
-  PetscInt n4, nb, *cnt;
-  int     *rowi;
+  PetscInt  n4, nb, *cnt;
+  int      *rowi;
+  PetscBool moved = PETSC_FALSE; /* a row index differs from the kept pattern's (the same column counts) */
   double  *val;
   PetscFunctionBeginUser;
   PetscCall(MatGetSize(K, &n4, NULL));
@@ -115,6 +117,7 @@ static PetscErrorCode BuildQuaternion(CSCholmod f, Mat K, PetscReal sigma)
             PetscInt col = 2 * j + c, pos;
             if (j == i && c > r) continue;
             pos              = cnt[col]++;
+            if (f->L && rowi[pos] != (int)(2 * i + r)) moved = PETSC_TRUE; /* (only a kept pattern is compared) */
             rowi[pos]        = (int)(2 * i + r);
             val[2 * pos]     = B[r][c][0];
             val[2 * pos + 1] = B[r][c][1];
@@ -123,6 +126,7 @@ static PetscErrorCode BuildQuaternion(CSCholmod f, Mat K, PetscReal sigma)
     }
     PetscCall(MatRestoreRow(K, 4 * i, &nc, &cols, &v));
   }
+  if (moved && f->L) cholmod_free_factor(&f->L, &f->common); /* the analysis was of another pattern: Factor redoes it */
   PetscCall(PetscFree(cnt));
   PetscFunctionReturn(0);
 }

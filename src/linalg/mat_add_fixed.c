@@ -4,7 +4,7 @@
 #include "cs_linalg.h"
 
 struct _p_CSMatAddMap {
-  Mat              Y, X;          /* not referenced: identity check only */
+  PetscObjectId    yid, xid;      /* the matrices' ids (not their addresses, which a new matrix may reuse) */
   PetscObjectState ystate, xstate; /* nonzero states at creation */
   PetscInt         nblk;          /* 1 (Seq) or 2 (MPI: diagonal and off-diagonal blocks) */
   PetscInt         nz[2];
@@ -72,6 +72,7 @@ PetscErrorCode CSMatAddFixedPattern(Mat Y, PetscScalar a, Mat X, CSMatAddMap *ma
   const PetscInt  *yg[2], *xg[2];
   PetscInt         ny, nx;
   PetscObjectState ys, xs;
+  PetscObjectId    yid, xid;
   CSMatAddMap      m = *map;
   PetscFunctionBeginUser;
   PetscCall(GetBlocks(Y, &ny, yb, yg));
@@ -79,12 +80,14 @@ PetscErrorCode CSMatAddFixedPattern(Mat Y, PetscScalar a, Mat X, CSMatAddMap *ma
   PetscCheck(nx == ny, PetscObjectComm((PetscObject)Y), PETSC_ERR_ARG_INCOMP, "CSMatAddFixedPattern: matrices of different types");
   PetscCall(MatGetNonzeroState(Y, &ys));
   PetscCall(MatGetNonzeroState(X, &xs));
-  if (m && (m->Y != Y || m->X != X || m->ystate != ys || m->xstate != xs)) PetscCall(CSMatAddMapDestroy(map)); /* a new pattern */
+  PetscCall(PetscObjectGetId((PetscObject)Y, &yid));
+  PetscCall(PetscObjectGetId((PetscObject)X, &xid));
+  if (m && (m->yid != yid || m->xid != xid || m->ystate != ys || m->xstate != xs)) PetscCall(CSMatAddMapDestroy(map)); /* a new pattern */
   m = *map;
   if (!m) {
     PetscCall(PetscNew(&m));
-    m->Y      = Y;
-    m->X      = X;
+    m->yid    = yid;
+    m->xid    = xid;
     m->ystate = ys;
     m->xstate = xs;
     m->nblk   = ny;

@@ -72,6 +72,8 @@ PetscErrorCode CSHarmonicBasisSetOptionsPrefix(CSHarmonicBasis hb, const char pr
 PetscErrorCode CSHarmonicBasisSetSeed(CSHarmonicBasis hb, PetscInt seed)
 {
   PetscFunctionBeginUser;
+  /* the random closed forms are drawn once, in the first set-up (SetUpTopology) */
+  PetscCheck(!hb->d0 || seed == hb->seed, hb->hdr.comm, PETSC_ERR_ORDER, "CSHarmonicBasisSetSeed: the seed is fixed at the first CSHarmonicBasisSetUp");
   hb->seed  = seed;
   hb->setup = PETSC_FALSE;
   PetscFunctionReturn(0);
@@ -79,6 +81,7 @@ PetscErrorCode CSHarmonicBasisSetSeed(CSHarmonicBasis hb, PetscInt seed)
 
 PetscErrorCode CSHarmonicBasisSetFromOptions(CSHarmonicBasis hb)
 {
+  PetscInt seed0 = hb->seed;
   PetscFunctionBeginUser;
   PetscOptionsBegin(hb->hdr.comm, hb->hdr.prefix, "Harmonic 1-form basis (crane2013 App. C.1)", NULL);
   PetscCall(PetscOptionsInt("-seed", "Seed of the random 1-forms whose harmonic parts span the basis", NULL, hb->seed, &hb->seed, NULL));
@@ -89,6 +92,7 @@ PetscErrorCode CSHarmonicBasisSetFromOptions(CSHarmonicBasis hb)
     };
     PetscCall(CSCheckOptionValues(hb->hdr.comm, hb->hdr.prefix, 1, checks));
   }
+  PetscCheck(!hb->d0 || hb->seed == seed0, hb->hdr.comm, PETSC_ERR_ORDER, "-%sseed: the seed is fixed at the first set-up of the harmonic basis", hb->hdr.prefix ? hb->hdr.prefix : "");
   hb->from_options = PETSC_TRUE;
   hb->setup        = PETSC_FALSE;
   PetscFunctionReturn(0);
@@ -137,6 +141,18 @@ static PetscErrorCode CreateDirectKSP(CSHarmonicBasis hb, Mat A, const char suff
   PetscFunctionReturn(0);
 }
 
+/* a failed factorisation under preonly returns Inf without an error; it would surface later as "dependent forms" */
+static PetscErrorCode CheckSolve(KSP ksp)
+{
+  KSPConvergedReason r;
+  const char        *prefix;
+  PetscFunctionBeginUser;
+  PetscCall(KSPGetConvergedReason(ksp, &r));
+  PetscCall(KSPGetOptionsPrefix(ksp, &prefix));
+  PetscCheck(r >= 0, PetscObjectComm((PetscObject)ksp), PETSC_ERR_NOT_CONVERGED, "harmonic basis: the solve -%sksp_type ... failed: %s", prefix ? prefix : "", KSPConvergedReasons[r]);
+  PetscFunctionReturn(0);
+}
+
 /* alpha <- alpha - d1^T Lf^{-1} d1 alpha (step IIa) */
 static PetscErrorCode RemoveCoexact(CSHarmonicBasis hb, Vec alpha)
 {
@@ -146,6 +162,7 @@ static PetscErrorCode RemoveCoexact(CSHarmonicBasis hb, Vec alpha)
   PetscCall(MatMult(hb->d1, alpha, hb->wF));
   PetscCall(GroundRHS(hb->wF));
   PetscCall(KSPSolve(hb->kf, hb->wF, y));
+  PetscCall(CheckSolve(hb->kf));
   PetscCall(MatMultTranspose(hb->d1, y, hb->wE));
   PetscCall(VecAXPY(alpha, -1.0, hb->wE));
   PetscCall(VecDestroy(&y));
@@ -162,6 +179,7 @@ static PetscErrorCode RemoveExact(CSHarmonicBasis hb, Vec alpha)
   PetscCall(MatMultTranspose(hb->d0, hb->wE, hb->wV));
   PetscCall(GroundRHS(hb->wV));
   PetscCall(KSPSolve(hb->kv, hb->wV, u));
+  PetscCall(CheckSolve(hb->kv));
   PetscCall(MatMult(hb->d0, u, hb->wE));
   PetscCall(VecAXPY(alpha, -1.0, hb->wE));
   PetscCall(VecDestroy(&u));

@@ -144,6 +144,11 @@ PetscErrorCode CSTriangleFieldReconstructionSolve(CSTriangleFieldReconstruction 
     PetscCall(VecAssemblyBegin(R->b));
     PetscCall(VecAssemblyEnd(R->b));
     PetscCall(KSPSolve(R->ksp, R->b, R->f));
+    {
+      KSPConvergedReason kr; /* a failed factorisation under preonly gives Inf positions without an error */
+      PetscCall(KSPGetConvergedReason(R->ksp, &kr));
+      PetscCheck(kr >= 0, R->m->comm, PETSC_ERR_NOT_CONVERGED, "triangle field: the Poisson reconstruction (-trianglefield_poisson_ksp_type ...) failed: %s", KSPConvergedReasons[kr]);
+    }
     PetscCall(CSTriangleFieldComponent(xref, c, R->b, PETSC_TRUE));
     PetscCall(VecSum(R->b, &sr));
     PetscCall(VecSum(R->f, &sf));

@@ -16,3 +16,7 @@ EXPECT="-flow_boundary_frame 1.*V = .-N is not allowed" expect_fail run -gen dis
 EXPECT="-flow_boundary fixed: mesh .* has no boundary" expect_fail run -gen icosphere -gen_level 1 -flow_boundary fixed
 EXPECT="-flow_target_mesh" expect_fail run -gen disk -gen_rings 4 -flow_boundary fixed -flow_target_mesh meshes/bunny_lowres_npm.obj
 EXPECT="checkpoint" expect_fail run -gen icosphere -gen_level 1 -checkpoint "$TMP/c.bin"
+# review of 2026-12-05: a frame of fewer or more than three numbers (1 was read as 1,0,1), balancing with a boundary
+EXPECT="-flow_boundary_frame: give exactly three numbers cN,cT,cB \(1 given\)" expect_fail run -gen disk -flow_boundary vector -flow_boundary_frame 1
+EXPECT="-flow_boundary_frame: give exactly three numbers cN,cT,cB \(more given\)" expect_fail run -gen disk -flow_boundary vector -flow_boundary_frame 1,0,0,5
+EXPECT="-flow_mobius with -flow_boundary vector" expect_fail run -gen disk -flow_boundary vector -flow_mobius

@@ -68,3 +68,6 @@ EXPECT="exactly one of -curve"            expect_fail run
 EXPECT="-o .*curve.*obj or text"          expect_fail run $G -o "$TMP/x.ply"
 EXPECT="unknown or unused option -curve_taux" expect_fail $MPIEXEC "$CS_BIN" -task curveflow $G -curve_taux 1
 EXPECT="not supported"                    expect_fail run $G -checkpoint "$TMP/c.bin"
+# an ill-conditioned filter (review of 2026-12-05): k = 3 on a 2000-vertex star left a relative residual of 15 (serially; on
+# 2 ranks CG stopped) and the flow went on with garbage; now it stops with a line naming the options, on every rank
+EXPECT="spectral filter solve failed.*-curve_filter_k" expect_fail run -gen_curve star -gen_curve_n 2000 -curve_filter -curve_filter_k 3 -curve_max_it 3

@@ -57,7 +57,7 @@ static PetscErrorCode Operators(CSConformalFlow F)
   PetscCall(MatDestroy(&F->Dface));
   PetscCall(VecDestroy(&F->MF));
   PetscCall(CSDiracCreateFaceOperators(F->mesh, F->spin->dm, F->x, CS_RHO_NONE, NULL, &F->Dface, NULL, NULL, &F->MF));
-  PetscCall(CSGeometryVertexAreas(F->mesh, F->x, F->work)); /* the spin's mass (F->area may be the mixed area) */
+  PetscCall(CSGeometryVertexAreas(F->mesh, F->x, F->work)); /* the spin's mass: barycentric areas (so is F->area, in both -curvature modes) */
   PetscCall(VecSum(F->work, &A));
   s   = F->spin->target * 4 * PETSC_PI / A;
   PetscCall(VecGetLocalSize(F->work, &n));
@@ -298,6 +298,7 @@ PetscErrorCode CSConformalFlowClosingError(CSConformalFlow F, PetscReal *err)
   PetscCall(VecDuplicate(star1, &t));
   for (int d = 0; d < 3; d++) PetscCall(VecDuplicate(star1, &beta[d]));
   PetscCall(CSOperatorHodgeStar1(F->mesh, F->x, star1));
+  PetscCall(VecAbs(star1)); /* the denominator a norm also with non-Delaunay edges (negative cotan weights) */
   PetscCall(TransformedEdges(F, beta));
   for (int d = 0; d < 3; d++) {
     PetscScalar bb;

@@ -123,9 +123,14 @@ PetscErrorCode CSConformalFlowSetFromOptions(CSConformalFlow F)
   PetscCall(PetscOptionsReal("-curvature_factor", "c in rho' = -c H: 2 is the gradient of |mu|^2 (Eq. 1, stable for tau < 1); 1 is the paper's (D + tau H) lambda = gamma lambda", NULL, F->hfactor, &F->hfactor, NULL));
   PetscCall(PetscOptionsBool("-keep_area", "Scale every new surface to the input's area", NULL, F->keep_area, &F->keep_area, NULL));
   {
-    PetscInt nf = 3;
+    PetscInt  nf = 4; /* room for one more than three, to tell a longer list */
+    PetscReal fr[4] = {F->frame[0], F->frame[1], F->frame[2], 0};
+    PetscBool fset;
     PetscCall(PetscOptionsEnum("-boundary", "Boundary condition (Sec. 6.3): none (closed meshes), vector (6.3.1: prescribed directions V~ for V in span{N, T, B}), fixed (6.3.2: prescribed positions)", NULL, CSConformalBoundaries, (PetscEnum)F->bmode, (PetscEnum *)&F->bmode, NULL));
-    PetscCall(PetscOptionsRealArray("-boundary_frame", "-boundary vector: V = cN N + cT T + cB B (cN,cT,cB; not +-N)", NULL, F->frame, &nf, NULL));
+    PetscCall(PetscOptionsRealArray("-boundary_frame", "-boundary vector: V = cN N + cT T + cB B (cN,cT,cB; not +-N)", NULL, fr, &nf, &fset));
+    /* a shorter list would be completed silently with the defaults' tail (1 read as 1,0,1), a longer one cut */
+    PetscCheck(!fset || nf == 3, F->hdr.comm, PETSC_ERR_ARG_WRONG, "-%sboundary_frame: give exactly three numbers cN,cT,cB (%s given)", F->hdr.prefix, nf > 3 ? "more" : (nf == 2 ? "2" : (nf == 1 ? "1" : "0")));
+    for (int c = 0; c < 3; c++) F->frame[c] = fr[c];
     PetscCall(PetscOptionsString("-target_mesh", "-boundary vector|fixed: the targets (V~ of this mesh, or its boundary positions; same connectivity)", NULL, F->target, F->target, sizeof(F->target), NULL));
   }
   PetscCall(PetscOptionsEnum("-curvature", "Table 1 I: H = (L f).N/(2A) with the barycentric area and area-weighted normal, or with the mixed Voronoi area and the 1-ring sphere-fit normal (exactly constant on inscribed spheres)", NULL, CSConformalCurvatures, (PetscEnum)F->curvature, (PetscEnum *)&F->curvature, NULL));
@@ -169,6 +174,7 @@ static PetscErrorCode SetUpFlow(void *ctx)
   CSMesh          m = F->mesh;
   PetscReal       vol;
   PetscFunctionBeginUser;
+  PetscCall(CheckOptions(F)); /* again: the API setters (SetTimeStep, SetFilter, ...) bypass SetFromOptions */
   PetscCall(CheckMesh(F));
   PetscCall(VecDuplicate(m->x, &F->x));
   PetscCall(VecCopy(m->x, F->x));

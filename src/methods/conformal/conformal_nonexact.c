@@ -33,7 +33,8 @@ PetscErrorCode CSConformalFlowNonExactResidual(CSConformalFlow F, Vec xnew, Pets
     PetscCall(VecGetArrayRead(sl, &sa));
     for (PetscInt e = 0; e < m->ne; e++) {
       PetscInt  i = m->edgeVert[2 * e], j = m->edgeVert[2 * e + 1];
-      PetscReal li[4], lj[4], ed[3], et[3], dn[3], w = PetscRealPart(sa[e]);
+      /* |w|: the cotan weight is negative on a non-Delaunay edge, and sum w |r|^2 is then no norm (review 2026-12-05) */
+      PetscReal li[4], lj[4], ed[3], et[3], dn[3], w = PetscAbsReal(PetscRealPart(sa[e]));
       if (!m->edgeOwned[e]) continue;
       for (int q = 0; q < 4; q++) {
         li[q] = PetscRealPart(l[4 * i + q]);
@@ -55,7 +56,7 @@ PetscErrorCode CSConformalFlowNonExactResidual(CSConformalFlow F, Vec xnew, Pets
   PetscCall(CSMeshRestoreLocalPositions(m, xnew, &nl, &pn));
   PetscCall(CSMeshRestoreLocalPositions(m, F->x, &xl, &p));
   PetscCall(MPIU_Allreduce(loc, glob, 2, MPIU_REAL, MPIU_SUM, m->comm));
-  *eta = glob[0] > 0 ? PetscSqrtReal(PetscAbsReal(glob[1]) / glob[0]) : 0;
+  *eta = glob[0] > 0 ? PetscSqrtReal(glob[1] / glob[0]) : 0;
   PetscCall(VecDestroy(&st));
   PetscFunctionReturn(0);
 }

@@ -56,7 +56,9 @@ static PetscErrorCode AssembleLaplacian(CSCurveFlow F, PetscBool ground, Mat *L)
    Measured at 2k vertices on 2 ranks (loaded machine): 0.42 ms per step, against 9-18 ms with MUMPS
    (-<prefix>poisson_ksp_type preonly -<prefix>poisson_pc_type cholesky
    -<prefix>poisson_pc_factor_mat_solver_type mumps) and 3.3 ms with SuperLU_dist, whose solves gather on the
-   host. Defaults set on the KSP before KSPSetFromOptions, so -<prefix>poisson_ksp_type etc. replace them. */
+   host. Defaults set on the KSP before KSPSetFromOptions, so -<prefix>poisson_ksp_type etc. replace them. The
+   filter's KSP is made here too, but its matrix M + s L (M^-1 L)^(k-1) has a wider band: for k >= 2 the 2P + 1 bound
+   does not hold and CG may need more, or fail on an ill-conditioned filter (curve_direction.c Filter checks it). */
 static PetscErrorCode CreateDirectKSP(CSCurveFlow F, Mat A, const char suffix[], KSP *ksp)
 {
   PC          pc;
