@@ -287,6 +287,7 @@ static PetscErrorCode ConfigureKSP(CSSaddle *s, Vec iq, PetscReal tmu, Mat X)
   if (s->edges && !s->monolithic) PetscCall(PetscObjectTypeCompare((PetscObject)pc, PCFIELDSPLIT, &fs));
   if (fs) PetscCall(ConfigureFieldSplit(s, pc, chosen, iq, tmu, X));
   s->have_pc = PETSC_TRUE;
+  if (!s->setups && s->wait > 0) s->wait--; /* a resumed run's first step is fresh like those it waited for */
   s->setups++; /* 1 at the first call; more after a new solver (failed factorisation) */
   s->reusing = PETSC_FALSE;
   PetscCall(KSPSetReusePreconditioner(s->ksp, PETSC_FALSE));

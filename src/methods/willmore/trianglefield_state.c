@@ -188,9 +188,8 @@ static PetscErrorCode SetState(CSWillmoreFlow F, const PetscReal ck[])
   d->stage_it0      = (PetscInt)ck[3];
   d->nstages        = (PetscInt)ck[4];
   F->saddle.last_its = (PetscInt)ck[5];
+  F->saddle.wait     = (PetscInt)ck[6]; /* the first step's fresh factorisation counts as one (saddle.c) */
   F->saddle.backoff  = (PetscInt)ck[7];
-  /* the first step factors afresh, as the uninterrupted run does while it waits (which counts that step) */
-  F->saddle.wait = PetscMax((PetscInt)ck[6] - 1, 0);
   PetscCall(Pack(F, d, PETSC_TRUE));
   PetscFunctionReturn(0);
 }
