@@ -120,10 +120,10 @@ PetscErrorCode CSWillmoreFlowResume(CSWillmoreFlow flow, CSOutput *out)
   }
   PetscCall(CSWillmoreFlowGetStateSize(flow, &nreal));
   PetscCall(PetscMalloc1(nreal, &ck));
-  PetscCall(CSWillmoreFlowGetState(flow, ck, &v)); /* x0 (input, conformal target, q_mean) stays the input */
-  ierr = CSOutputResume(out, mesh, x0, &it, nreal, ck, &v, &resumed);
+  ierr = CSWillmoreFlowGetState(flow, ck, &v); /* x0 (input, conformal target, q_mean) stays the input */
+  if (!ierr) ierr = CSOutputResume(out, mesh, x0, &it, nreal, ck, &v, &resumed);
   if (!ierr && resumed) ierr = CSWillmoreFlowSetState(flow, it, ck);
-  PetscCall(PetscFree(ck)); /* on the error path too (a damaged checkpoint) */
+  PetscCall(PetscFree(ck)); /* on the error paths too (a refused option, a damaged checkpoint) */
   PetscCall(ierr);
   PetscFunctionReturn(0);
 }
