@@ -101,12 +101,24 @@ PETSC_EXTERN PetscErrorCode CSMeshCreateFieldDM(DM dm, PetscInt depth, PetscInt 
    (3*Nv, Nv, Nf or Ne long) and empty elsewhere; the gathered one is field->vec, owned by the mesh. */
 PETSC_EXTERN PetscErrorCode CSMeshGather(CSMeshNatural *field, Vec g, Vec *nat);
 PETSC_EXTERN PetscErrorCode CSMeshScatter(CSMeshNatural *field, Vec nat, Vec g);
+/* The natural field of a DM with bs dofs on every point of the given depth (0 vertices, 1 edges, 2 faces), e.g. a
+   clone of CSMeshCreateFieldDM; destroy with CSMeshNaturalDestroy (the mesh's own are destroyed with the mesh). */
+PETSC_EXTERN PetscErrorCode CSMeshNaturalCreate(CSMesh mesh, DM dmX, PetscInt depth, PetscInt bs, CSMeshNatural *field);
+PETSC_EXTERN PetscErrorCode CSMeshNaturalDestroy(CSMeshNatural *field);
 
-/* Checkpoints for long runs: iteration number, a few scalars, the positions and (optionally) one per-edge
-   field (e.g. Lagrange multipliers), all in natural order, so a run resumes on any number of ranks.
-   PETSc binary format; written atomically (temporary file, then rename) so a killed run keeps the last one. */
-PETSC_EXTERN PetscErrorCode CSCheckpointWrite(CSMesh mesh, const char path[], PetscInt it, PetscInt nreal, const PetscReal reals[], Vec x, Vec edgeField);
-PETSC_EXTERN PetscErrorCode CSCheckpointRead(CSMesh mesh, const char path[], PetscInt *it, PetscInt nreal, PetscReal reals[], Vec x, Vec edgeField);
+/* The fields of a checkpoint, each NULL or a global vector: the positions (dmV3), a per-edge and a per-face field
+   with k values per point in the global layout of CSMeshCreateFieldDM(mesh->dm, 1 or 2, k) (k = size / Ne or Nf;
+   k = 1: dmE1, dmF1), e.g. the edge multipliers of the conformal flows, or a triangle field's halfedge data. */
+typedef struct {
+  Vec x, edge, face;
+} CSCheckpointFields;
+
+/* Checkpoints for long runs: iteration number, a few scalars and the fields, all in natural order, so a run
+   resumes on any number of ranks (src/mesh/checkpoint.c: a text header, float64 payload, checksum); written
+   atomically (temporary file, then rename) so a killed run keeps the last one. Read refuses a file whose sizes
+   (mesh, scalars, values per vertex / edge / face) differ from the mesh's and v's, naming the file. */
+PETSC_EXTERN PetscErrorCode CSCheckpointWrite(CSMesh mesh, const char path[], PetscInt it, PetscInt nreal, const PetscReal reals[], const CSCheckpointFields *v);
+PETSC_EXTERN PetscErrorCode CSCheckpointRead(CSMesh mesh, const char path[], PetscInt *it, PetscInt nreal, PetscReal reals[], const CSCheckpointFields *v);
 
 /* A second set of positions with the same connectivity (a -reference or -target_mesh file), read on rank 0,
    checked face by face against the mesh (clear error naming the option and the first differing face), and

@@ -125,12 +125,17 @@ typedef PetscErrorCode (*CSWillmoreFlowMonitorFn)(CSWillmoreFlow flow, PetscInt 
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowMonitorSet(CSWillmoreFlow flow, CSWillmoreFlowMonitorFn fn, void *ctx, PetscErrorCode (*destroy)(void **));
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowMonitorCancel(CSWillmoreFlow flow);
 
-/* Checkpoint state (after SetUp): the loop scalars and the vectors a checkpoint stores (x, and mu or NULL
-   without the conformal constraint; borrowed, may be overwritten before Solve to resume), and the inverse.
-   CSWillmoreFlowSetState checks that the scalars were written by the same flow type. */
+/* Checkpoint state (after SetUp): the loop scalars and the fields a checkpoint stores (borrowed; may be
+   overwritten before Solve to resume), and the inverse. Vertex flows: the positions x and the edge multipliers mu
+   (NULL without the conformal constraint); -flow_type trianglefield: no positions, per edge its two halfedges'
+   omega and multipliers, per face its closure multipliers and spinor (trianglefield_state.c). reals NULL: the
+   fields only. CSWillmoreFlowSetState checks that the scalars were written by the same flow type and unpacks. */
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetStateSize(CSWillmoreFlow flow, PetscInt *nreal);
-PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetState(CSWillmoreFlow flow, PetscReal reals[], Vec *x, Vec *mu);
+PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetState(CSWillmoreFlow flow, PetscReal reals[], CSCheckpointFields *v);
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowSetState(CSWillmoreFlow flow, PetscInt it, const PetscReal reals[]);
+/* The start the checkpoints fingerprint (borrowed): the input positions, or the start omega of -flow_type
+   trianglefield (fixed by the input and -flow_init_*, -flow_seed). */
+PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetStart(CSWillmoreFlow flow, Vec *x);
 
 /* Flow kinds: a strategy per file in src/methods/willmore/ (cgd.c, pgd.c, gd.c), registered by name. */
 typedef struct _CSWillmoreFlowOps *CSWillmoreFlowOps;

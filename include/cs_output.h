@@ -40,14 +40,14 @@ PETSC_EXTERN PetscErrorCode CSOutputWriteSummary(CSOutput *o, MPI_Comm comm);
 PETSC_EXTERN PetscErrorCode CSOutputDestroy(CSOutput *o);
 
 /* Checkpoints of iterative tasks (CSCheckpointWrite/Read: natural order, any number of ranks). The task's loop
-   state is it, nreal scalars, the positions x and optionally one per-edge field (global dmE1 Vec or NULL); x0
-   (the input positions, or NULL) is fingerprinted so that a resume with another input is refused.
-   CSOutputResume: with -resume, overwrites it, reals, x, edgeField and sets *resumed; else a no-op.
+   state is it, nreal scalars and the fields v (positions, per-edge and per-face fields, cs_mesh.h); x0 (the input
+   positions, or another vector fixed by the input, or NULL) is fingerprinted so that a resume with another input
+   is refused. CSOutputResume: with -resume, overwrites it, reals, the vectors of v and sets *resumed; else a no-op.
    CSOutputCheckpoint: with -checkpoint, writes when force or it is a multiple of -checkpoint_every.
    CSOutputHistoryCreate: -history_csv (NULL without it); after a resume, the rows of the interrupted run with
    first column below next are kept, so the file continues as one run. */
-PETSC_EXTERN PetscErrorCode CSOutputResume(CSOutput *o, CSMesh mesh, Vec x0, PetscInt *it, PetscInt nreal, PetscReal reals[], Vec x, Vec edgeField, PetscBool *resumed);
-PETSC_EXTERN PetscErrorCode CSOutputCheckpoint(CSOutput *o, CSMesh mesh, Vec x0, PetscInt it, PetscBool force, PetscInt nreal, const PetscReal reals[], Vec x, Vec edgeField);
+PETSC_EXTERN PetscErrorCode CSOutputResume(CSOutput *o, CSMesh mesh, Vec x0, PetscInt *it, PetscInt nreal, PetscReal reals[], const CSCheckpointFields *v, PetscBool *resumed);
+PETSC_EXTERN PetscErrorCode CSOutputCheckpoint(CSOutput *o, CSMesh mesh, Vec x0, PetscInt it, PetscBool force, PetscInt nreal, const PetscReal reals[], const CSCheckpointFields *v);
 PETSC_EXTERN PetscErrorCode CSOutputHistoryCreate(CSOutput *o, MPI_Comm comm, const char header[], PetscInt next, CSHistory *h);
 
 /* after a solver error ierr: the last accepted state x (iteration it) to -o and -summary; ierr's message in msg */

@@ -1,31 +1,84 @@
 /* Checkpoint/resume in natural order (independent of the number of ranks). The file (issue 18, item 9) is a text
-   header of named fields, then the payload as little-endian float64 (the scalars, the positions 3 Nv, the edge
-   field Ne):
-     confsurf-checkpoint 2
+   header of named fields, then the payload as little-endian float64 (the scalars, then the fields in natural order:
+   the positions, vertex_dofs = 3 per vertex, the edge field, edge_dofs per edge, the face field, face_dofs per face):
+     confsurf-checkpoint 3
      iteration 12
      scalars 5
      vertices 642
      edges 1920
-     edge_field 1
+     faces 1280
+     vertex_dofs 3
+     edge_dofs 1
+     face_dofs 0
      payload_bytes 61288
      checksum_fnv1a64 0123456789abcdef
      end_header
-   Rank 0 writes it atomically (CSFile: unique temporary name, fsync, rename over a regular file only) and reads it
-   whole; the header is checked against the mesh, the payload against its length and checksum, the values for
-   range (a finite state, an iteration in [0, 1e9]), so a damaged file is refused naming the file and the field. */
+   (version 3: the faces and the values per point; version 2 had the positions always and at most one value per
+   edge, which cannot hold a triangle field.) Rank 0 writes it atomically (CSFile: unique temporary name, fsync,
+   rename over a regular file only) and reads it whole; the header is checked against the mesh and the caller's
+   fields, the payload against its length and checksum, the values for range (a finite state, an iteration in
+   [0, 1e9]), so a damaged file or one of another method is refused naming the file and the field. */
 #include "cs_mesh.h"
 #include "cs_util.h"
 #include <inttypes.h>
 #include <stdio.h>
 #include <stdlib.h>
 
-#define CS_CHECKPOINT_VERSION 2
+#define CS_CHECKPOINT_VERSION 3
 #define CS_CHECKPOINT_MAX_IT  1000000000
 
 typedef struct {
-  long long version, it, nreal, nv, ne, has_edge, bytes;
+  long long version, it, nreal, nv, ne, nf, dof[3], bytes;
   uint64_t  sum;
 } Header;
+
+/* The fields of a checkpoint by depth (0 positions, 1 edges, 2 faces): values per point, points, the natural
+   scatter (the mesh's own for 3 per vertex and 1 per edge or face, else a temporary one on a field DM). */
+typedef struct {
+  Vec            vec[3];
+  PetscInt       dof[3], npt[3];
+  CSMeshNatural *nat[3];
+  CSMeshNatural  own[3];
+  DM             dm[3];
+} Fields;
+
+static PetscErrorCode FieldsCreate(CSMesh m, const CSCheckpointFields *v, Fields *f)
+{
+  CSMeshNatural *mine[3] = {&m->natV3, &m->natE1, &m->natF1};
+  PetscFunctionBeginUser;
+  PetscCall(PetscMemzero(f, sizeof(*f)));
+  f->vec[0] = v->x;
+  f->vec[1] = v->edge;
+  f->vec[2] = v->face;
+  f->npt[0] = m->Nv;
+  f->npt[1] = m->Ne;
+  f->npt[2] = m->Nf;
+  for (PetscInt d = 0; d < 3; d++) {
+    PetscInt n;
+    if (!f->vec[d]) continue;
+    PetscCall(VecGetSize(f->vec[d], &n));
+    PetscCheck(f->npt[d] > 0 && n % f->npt[d] == 0 && (d || n == 3 * f->npt[d]), m->comm, PETSC_ERR_ARG_SIZ, "checkpoint field of depth %" PetscInt_FMT ": %" PetscInt_FMT " values for %" PetscInt_FMT " points", d, n, f->npt[d]);
+    f->dof[d] = n / f->npt[d];
+    if (f->dof[d] == (d ? 1 : 3)) f->nat[d] = mine[d];
+    else {
+      PetscCall(CSMeshCreateFieldDM(m->dm, d, f->dof[d], "checkpoint", &f->dm[d]));
+      PetscCall(CSMeshNaturalCreate(m, f->dm[d], d, f->dof[d], &f->own[d]));
+      f->nat[d] = &f->own[d];
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode FieldsDestroy(Fields *f)
+{
+  PetscFunctionBeginUser;
+  for (PetscInt d = 0; d < 3; d++) {
+    if (!f->dm[d]) continue;
+    PetscCall(CSMeshNaturalDestroy(&f->own[d]));
+    PetscCall(DMDestroy(&f->dm[d]));
+  }
+  PetscFunctionReturn(0);
+}
 
 /* FNV-1a, 64 bits: a cheap checksum that notices any changed, lost or swapped byte with high probability */
 static uint64_t Checksum(const unsigned char *p, size_t n)
@@ -35,47 +88,53 @@ static uint64_t Checksum(const unsigned char *p, size_t n)
   return h;
 }
 
-/* rank 0: the payload [reals, positions, edge field] as doubles; n doubles */
-static PetscErrorCode Payload(PetscInt nreal, const PetscReal reals[], Vec natx, Vec nate, double **pay, size_t *n)
+/* rank 0: the payload [reals, positions, edge field, face field] (natural vectors) as doubles; n doubles */
+static PetscErrorCode Payload(PetscInt nreal, const PetscReal reals[], const Fields *f, double **pay, size_t *n)
 {
-  const PetscScalar *a;
-  PetscInt           nx, ne = 0;
+  size_t k = (size_t)nreal;
   PetscFunctionBeginUser;
-  PetscCall(VecGetSize(natx, &nx));
-  if (nate) PetscCall(VecGetSize(nate, &ne));
-  *n = (size_t)(nreal + nx + ne);
+  *n = k;
+  for (PetscInt d = 0; d < 3; d++) *n += (size_t)(f->dof[d] * f->npt[d]);
   PetscCall(PetscMalloc1(*n, pay));
   for (PetscInt i = 0; i < nreal; i++) (*pay)[i] = (double)reals[i];
-  PetscCall(VecGetArrayRead(natx, &a));
-  for (PetscInt i = 0; i < nx; i++) (*pay)[nreal + i] = (double)PetscRealPart(a[i]);
-  PetscCall(VecRestoreArrayRead(natx, &a));
-  if (nate) {
-    PetscCall(VecGetArrayRead(nate, &a));
-    for (PetscInt i = 0; i < ne; i++) (*pay)[nreal + nx + i] = (double)PetscRealPart(a[i]);
-    PetscCall(VecRestoreArrayRead(nate, &a));
+  for (PetscInt d = 0; d < 3; d++) {
+    const PetscScalar *a;
+    if (!f->nat[d]) continue;
+    PetscCall(VecGetArrayRead(f->nat[d]->vec, &a));
+    for (PetscInt i = 0; i < f->dof[d] * f->npt[d]; i++) (*pay)[k++] = (double)PetscRealPart(a[i]);
+    PetscCall(VecRestoreArrayRead(f->nat[d]->vec, &a));
   }
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CSCheckpointWrite(CSMesh m, const char path[], PetscInt it, PetscInt nreal, const PetscReal reals[], Vec x, Vec edgeField)
+/* rank 0: the header and the payload into the open file */
+static void WriteFile(FILE *fp, CSMesh m, PetscInt it, PetscInt nreal, const Fields *f, const double *pay, size_t n)
+{
+  fprintf(fp, "confsurf-checkpoint %d\niteration %" PetscInt_FMT "\nscalars %" PetscInt_FMT "\nvertices %" PetscInt_FMT "\nedges %" PetscInt_FMT "\nfaces %" PetscInt_FMT "\n", CS_CHECKPOINT_VERSION, it, nreal, m->Nv, m->Ne, m->Nf);
+  fprintf(fp, "vertex_dofs %" PetscInt_FMT "\nedge_dofs %" PetscInt_FMT "\nface_dofs %" PetscInt_FMT "\n", f->dof[0], f->dof[1], f->dof[2]);
+  fprintf(fp, "payload_bytes %zu\nchecksum_fnv1a64 %016" PRIx64 "\nend_header\n", n * sizeof(double), Checksum((const unsigned char *)pay, n * sizeof(double)));
+  (void)fwrite(pay, sizeof(double), n, fp); /* a short write sets the stream's error, reported by the close */
+}
+
+PetscErrorCode CSCheckpointWrite(CSMesh m, const char path[], PetscInt it, PetscInt nreal, const PetscReal reals[], const CSCheckpointFields *v)
 {
   PetscMPIInt rank;
-  Vec         natx, nate = NULL;
+  Fields      fl;
   CSFile      f;
   double     *pay = NULL;
   size_t      n   = 0;
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(m->comm, &rank));
-  PetscCall(CSMeshGather(&m->natV3, x, &natx));
-  if (edgeField) PetscCall(CSMeshGather(&m->natE1, edgeField, &nate));
-  PetscCall(CSFileOpen(m->comm, (PetscBool)!rank, "-checkpoint", path, PETSC_TRUE, &f));
-  if (!rank) PetscCall(Payload(nreal, reals, natx, nate, &pay, &n));
-  if (f.fp) {
-    fprintf(f.fp, "confsurf-checkpoint %d\niteration %" PetscInt_FMT "\nscalars %" PetscInt_FMT "\nvertices %" PetscInt_FMT "\nedges %" PetscInt_FMT "\nedge_field %d\n", CS_CHECKPOINT_VERSION, it, nreal, m->Nv, m->Ne, edgeField ? 1 : 0);
-    fprintf(f.fp, "payload_bytes %zu\nchecksum_fnv1a64 %016" PRIx64 "\nend_header\n", n * sizeof(double), Checksum((const unsigned char *)pay, n * sizeof(double)));
-    (void)fwrite(pay, sizeof(double), n, f.fp); /* a short write sets the stream's error, reported by the close */
+  PetscCall(FieldsCreate(m, v, &fl));
+  for (PetscInt d = 0; d < 3; d++) {
+    Vec nat;
+    if (fl.nat[d]) PetscCall(CSMeshGather(fl.nat[d], fl.vec[d], &nat));
   }
+  PetscCall(CSFileOpen(m->comm, (PetscBool)!rank, "-checkpoint", path, PETSC_TRUE, &f));
+  if (!rank) PetscCall(Payload(nreal, reals, &fl, &pay, &n));
+  if (f.fp) WriteFile(f.fp, m, it, nreal, &fl, pay, n);
   PetscCall(PetscFree(pay));
+  PetscCall(FieldsDestroy(&fl));
   PetscCall(CSFileClose(m->comm, &f));
   PetscFunctionReturn(0);
 }
@@ -90,22 +149,28 @@ static PetscErrorCode ParseHeader(const char name[], const char *buf, size_t len
     if (!memcmp(buf + i, "end_header\n", 11)) e = buf + i + 11;
   PetscCheck(len >= 20 && !memcmp(buf, "confsurf-checkpoint ", 20), PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "-resume %s: not a confsurf checkpoint (or one of an older version)", name);
   PetscCheck(e, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "-resume %s: truncated header (no end_header line)", name);
-  k = sscanf(buf, "confsurf-checkpoint %lld iteration %lld scalars %lld vertices %lld edges %lld edge_field %lld payload_bytes %lld checksum_fnv1a64 %" SCNx64, &h->version, &h->it, &h->nreal, &h->nv, &h->ne, &h->has_edge, &h->bytes, &h->sum);
+  k = sscanf(buf, "confsurf-checkpoint %lld iteration %lld scalars %lld vertices %lld edges %lld faces %lld vertex_dofs %lld edge_dofs %lld face_dofs %lld payload_bytes %lld checksum_fnv1a64 %" SCNx64, &h->version, &h->it, &h->nreal, &h->nv, &h->ne, &h->nf, &h->dof[0], &h->dof[1], &h->dof[2], &h->bytes, &h->sum);
   PetscCheck(k < 1 || h->version == CS_CHECKPOINT_VERSION, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "-resume %s: version %lld, this program reads version %d", name, h->version, CS_CHECKPOINT_VERSION);
-  PetscCheck(k == 8, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "-resume %s: damaged header (field %d of 8 missing or not a number)", name, k + 1);
+  PetscCheck(k == 11, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "-resume %s: damaged header (field %d of 11 missing or not a number)", name, k + 1);
   *data = (size_t)(e - buf);
   PetscFunctionReturn(0);
 }
 
-/* the header against the mesh and the caller, the payload against its length, checksum and range */
-static PetscErrorCode CheckContents(CSMesh m, const char name[], const Header *h, PetscInt nreal, PetscBool edge, const double *pay, size_t avail)
+/* the header against the mesh and the caller's fields (sizes; the values are checked by CheckPayload) */
+static PetscErrorCode CheckHeader(CSMesh m, const char name[], const Header *h, PetscInt nreal, const Fields *f)
 {
-  long long n = h->nreal + 3 * h->nv + (h->has_edge ? h->ne : 0);
   PetscFunctionBeginUser;
   PetscCheck(h->it >= 0 && h->it <= CS_CHECKPOINT_MAX_IT, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "-resume %s: iteration %lld out of range [0, %d]", name, h->it, CS_CHECKPOINT_MAX_IT);
-  PetscCheck(h->nv == m->Nv && h->ne == m->Ne, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "-resume %s: written for %lld vertices and %lld edges, the mesh has %" PetscInt_FMT " and %" PetscInt_FMT, name, h->nv, h->ne, m->Nv, m->Ne);
+  PetscCheck(h->nv == m->Nv && h->ne == m->Ne && h->nf == m->Nf, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "-resume %s: written for %lld vertices, %lld edges and %lld faces, the mesh has %" PetscInt_FMT ", %" PetscInt_FMT " and %" PetscInt_FMT, name, h->nv, h->ne, h->nf, m->Nv, m->Ne, m->Nf);
+  PetscCheck(h->dof[0] == f->dof[0] && h->dof[1] == f->dof[1] && h->dof[2] == f->dof[2], PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "-resume %s: stores %lld values per vertex, %lld per edge and %lld per face, this run %" PetscInt_FMT ", %" PetscInt_FMT " and %" PetscInt_FMT " (written by another method or flow type?)", name, h->dof[0], h->dof[1], h->dof[2], f->dof[0], f->dof[1], f->dof[2]);
   PetscCheck(h->nreal == nreal, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "-resume %s: %lld scalars stored, %" PetscInt_FMT " expected (written by another method?)", name, h->nreal, nreal);
-  PetscCheck(h->has_edge == (edge ? 1 : 0), PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "-resume %s: the edge field is %s", name, h->has_edge ? "present but not expected" : "missing");
+  PetscFunctionReturn(0);
+}
+
+/* the payload against its length, checksum and range; n doubles expected */
+static PetscErrorCode CheckPayload(const char name[], const Header *h, long long n, const double *pay, size_t avail)
+{
+  PetscFunctionBeginUser;
   PetscCheck(h->bytes == n * (long long)sizeof(double), PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "-resume %s: payload_bytes %lld, the fields need %lld", name, h->bytes, n * (long long)sizeof(double));
   PetscCheck((size_t)h->bytes <= avail, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "-resume %s: truncated: %zu of %lld payload bytes", name, avail, h->bytes);
   PetscCheck(Checksum((const unsigned char *)pay, (size_t)h->bytes) == h->sum, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "-resume %s: checksum mismatch: the payload is damaged", name);
@@ -113,35 +178,45 @@ static PetscErrorCode CheckContents(CSMesh m, const char name[], const Header *h
   PetscFunctionReturn(0);
 }
 
+/* rank 0: the checked payload into the reals and the natural vectors */
+static PetscErrorCode Unpack(PetscInt nreal, PetscReal reals[], const Fields *f, const double *pay)
+{
+  size_t k = (size_t)nreal;
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < nreal; i++) reals[i] = (PetscReal)pay[i];
+  for (PetscInt d = 0; d < 3; d++) {
+    PetscScalar *a;
+    if (!f->nat[d]) continue;
+    PetscCall(VecGetArray(f->nat[d]->vec, &a));
+    for (PetscInt i = 0; i < f->dof[d] * f->npt[d]; i++) a[i] = pay[k++];
+    PetscCall(VecRestoreArray(f->nat[d]->vec, &a));
+  }
+  PetscFunctionReturn(0);
+}
+
 /* rank 0: the file into the natural vectors and reals; the iteration into *it */
-static PetscErrorCode ReadRoot(CSMesh m, const char path[], PetscInt *it, PetscInt nreal, PetscReal reals[], PetscBool edge)
+static PetscErrorCode ReadRoot(CSMesh m, const char path[], PetscInt *it, PetscInt nreal, PetscReal reals[], const Fields *f)
 {
   char           name[PETSC_MAX_PATH_LEN], *buf;
   size_t         len, data = 0;
   Header         h;
   double        *pay = NULL;
+  long long      n   = nreal;
   PetscErrorCode ierr;
   PetscFunctionBeginUser;
+  for (PetscInt d = 0; d < 3; d++) n += (long long)(f->dof[d] * f->npt[d]);
   PetscCall(CSPathSanitize(path, name, sizeof(name)));
   PetscCall(CSFileLoad("-resume", path, &buf, &len));
   CSCaptureError(ierr, ParseHeader(name, buf, len, &h, &data));
+  if (!ierr) CSCaptureError(ierr, CheckHeader(m, name, &h, nreal, f));
   if (!ierr) { /* aligned copy of the payload */
     CSCaptureError(ierr, PetscMalloc1((len - data) / sizeof(double) + 1, &pay));
     if (!ierr) memcpy(pay, buf + data, len - data);
   }
-  if (!ierr) CSCaptureError(ierr, CheckContents(m, name, &h, nreal, edge, pay, len - data));
+  if (!ierr) CSCaptureError(ierr, CheckPayload(name, &h, n, pay, len - data));
   PetscCall(PetscFree(buf));
   if (!ierr) {
-    PetscScalar *a;
-    for (PetscInt i = 0; i < nreal; i++) reals[i] = (PetscReal)pay[i];
-    PetscCall(VecGetArray(m->natV3.vec, &a));
-    for (PetscInt i = 0; i < 3 * m->Nv; i++) a[i] = pay[nreal + i];
-    PetscCall(VecRestoreArray(m->natV3.vec, &a));
-    if (edge) {
-      PetscCall(VecGetArray(m->natE1.vec, &a));
-      for (PetscInt i = 0; i < m->Ne; i++) a[i] = pay[nreal + 3 * m->Nv + i];
-      PetscCall(VecRestoreArray(m->natE1.vec, &a));
-    }
+    PetscCall(Unpack(nreal, reals, f, pay));
     *it = (PetscInt)h.it;
   }
   PetscCall(PetscFree(pay));
@@ -149,13 +224,26 @@ static PetscErrorCode ReadRoot(CSMesh m, const char path[], PetscInt *it, PetscI
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CSCheckpointRead(CSMesh m, const char path[], PetscInt *it, PetscInt nreal, PetscReal reals[], Vec x, Vec edgeField)
+/* rank 0 reads; a refused file is refused on every rank (CSRootCall) */
+static PetscErrorCode ReadFields(CSMesh m, const char path[], PetscInt *it, PetscInt nreal, PetscReal reals[], const Fields *f)
 {
   PetscFunctionBeginUser;
-  CSRootCall(m->comm, ReadRoot(m, path, it, nreal, reals, edgeField ? PETSC_TRUE : PETSC_FALSE));
+  CSRootCall(m->comm, ReadRoot(m, path, it, nreal, reals, f));
   PetscCallMPI(MPI_Bcast(it, 1, MPIU_INT, 0, m->comm));
   if (nreal) PetscCallMPI(MPI_Bcast(reals, (PetscMPIInt)nreal, MPIU_REAL, 0, m->comm));
-  PetscCall(CSMeshScatter(&m->natV3, m->natV3.vec, x));
-  if (edgeField) PetscCall(CSMeshScatter(&m->natE1, m->natE1.vec, edgeField));
+  for (PetscInt d = 0; d < 3; d++)
+    if (f->nat[d]) PetscCall(CSMeshScatter(f->nat[d], f->nat[d]->vec, f->vec[d]));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSCheckpointRead(CSMesh m, const char path[], PetscInt *it, PetscInt nreal, PetscReal reals[], const CSCheckpointFields *v)
+{
+  Fields         f;
+  PetscErrorCode ierr;
+  PetscFunctionBeginUser;
+  PetscCall(FieldsCreate(m, v, &f));
+  ierr = ReadFields(m, path, it, nreal, reals, &f);
+  PetscCall(FieldsDestroy(&f)); /* on the error path too */
+  PetscCall(ierr);
   PetscFunctionReturn(0);
 }

@@ -156,13 +156,15 @@ static PetscErrorCode BuildOwnershipAndBoundary(CSMesh m)
 }
 
 /* Scatter between a natural vector (everything on rank 0, file order) and a global vector of dmX. */
-static PetscErrorCode CreateNatural(CSMesh m, DM dmX, PetscInt depth, PetscInt bs, const PetscInt natural[], PetscInt N, CSMeshNatural *field)
+PetscErrorCode CSMeshNaturalCreate(CSMesh m, DM dmX, PetscInt depth, PetscInt bs, CSMeshNatural *field)
 {
-  PetscSection gs;
-  PetscMPIInt  rank;
-  PetscInt     sS, sE, n = 0, *from, *to;
-  IS           isFrom, isTo;
-  Vec          g;
+  const PetscInt *natural = depth == 0 ? m->vertNatural : (depth == 1 ? m->edgeNatural : m->faceNatural);
+  PetscInt        N       = depth == 0 ? m->Nv : (depth == 1 ? m->Ne : m->Nf);
+  PetscSection    gs;
+  PetscMPIInt     rank;
+  PetscInt        sS, sE, n = 0, *from, *to;
+  IS              isFrom, isTo;
+  Vec             g;
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(m->comm, &rank));
   PetscCall(VecCreateMPI(m->comm, rank ? 0 : bs * N, bs * N, &field->vec));
@@ -315,10 +317,10 @@ PetscErrorCode CSMeshCreateFromData(MPI_Comm comm, CSMeshData *md, const CSTopol
   counts[0] = m->Nv;
   counts[1] = m->Nf;
   PetscCheck(counts[0] == m->topo.vertices && counts[1] == m->topo.faces, comm, PETSC_ERR_PLIB, "distributed mesh has %" PetscInt_FMT " vertices and %" PetscInt_FMT " faces, the input %" PetscInt_FMT " and %" PetscInt_FMT, counts[0], counts[1], m->topo.vertices, m->topo.faces);
-  PetscCall(CreateNatural(m, m->dmV3, 0, 3, m->vertNatural, m->Nv, &m->natV3));
-  PetscCall(CreateNatural(m, m->dmV1, 0, 1, m->vertNatural, m->Nv, &m->natV1));
-  PetscCall(CreateNatural(m, m->dmF1, 2, 1, m->faceNatural, m->Nf, &m->natF1));
-  PetscCall(CreateNatural(m, m->dmE1, 1, 1, m->edgeNatural, m->Ne, &m->natE1));
+  PetscCall(CSMeshNaturalCreate(m, m->dmV3, 0, 3, &m->natV3));
+  PetscCall(CSMeshNaturalCreate(m, m->dmV1, 0, 1, &m->natV1));
+  PetscCall(CSMeshNaturalCreate(m, m->dmF1, 2, 1, &m->natF1));
+  PetscCall(CSMeshNaturalCreate(m, m->dmE1, 1, 1, &m->natE1));
   PetscCall(EdgeFieldFromData(m, md, md->len, "target_lengths", &m->lt));
   PetscCall(EdgeFieldFromData(m, md, md->cr, "target_cross_ratios", &m->ct));
 
@@ -391,7 +393,7 @@ PetscErrorCode CSMeshCreateFromOptions(MPI_Comm comm, const char prefix[], CSMes
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode NaturalDestroy(CSMeshNatural *field)
+PetscErrorCode CSMeshNaturalDestroy(CSMeshNatural *field)
 {
   PetscFunctionBeginUser;
   PetscCall(VecScatterDestroy(&field->sc));
@@ -408,10 +410,10 @@ PetscErrorCode CSMeshDestroy(CSMesh *mesh)
   PetscCall(VecDestroy(&m->x));
   PetscCall(VecDestroy(&m->lt));
   PetscCall(VecDestroy(&m->ct));
-  PetscCall(NaturalDestroy(&m->natV3));
-  PetscCall(NaturalDestroy(&m->natV1));
-  PetscCall(NaturalDestroy(&m->natF1));
-  PetscCall(NaturalDestroy(&m->natE1));
+  PetscCall(CSMeshNaturalDestroy(&m->natV3));
+  PetscCall(CSMeshNaturalDestroy(&m->natV1));
+  PetscCall(CSMeshNaturalDestroy(&m->natF1));
+  PetscCall(CSMeshNaturalDestroy(&m->natE1));
   PetscCall(PetscFree(m->edgeNatural));
   PetscCall(PetscFree3(m->faceVert, m->faceEdge, m->edgeVert));
   PetscCall(PetscFree4(m->vertOwned, m->edgeOwned, m->vertBoundary, m->edgeBoundary));

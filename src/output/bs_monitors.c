@@ -151,7 +151,10 @@ static PetscErrorCode MonitorCheckpoint(CSBSFlow flow, const CSBSMonitorInfo *in
   PetscCall(CSBSFlowGetSolution(flow, &x));
   PetscCall(CSBSFlowGetInitialSolution(flow, &x0));
   PetscCall(CSBSFlowGetCheckpointState(flow, r));
-  PetscCall(CSOutputCheckpoint(out, mesh, x0, info->it, end, CS_BS_CHECKPOINT_NREAL, r, x, NULL));
+  {
+    CSCheckpointFields v = {x, NULL, NULL};
+    PetscCall(CSOutputCheckpoint(out, mesh, x0, info->it, end, CS_BS_CHECKPOINT_NREAL, r, &v));
+  }
   PetscFunctionReturn(0);
 }
 
@@ -182,7 +185,10 @@ PetscErrorCode CSBSFlowResume(CSBSFlow flow, CSOutput *out)
   if (!semi) PetscFunctionReturn(0);
   PetscCall(CSBSFlowGetSolution(flow, &x));
   PetscCall(CSBSFlowGetInitialSolution(flow, &x0));
-  PetscCall(CSOutputResume(out, mesh, x0, &it, CS_BS_CHECKPOINT_NREAL, r, x, NULL, &resumed));
+  {
+    CSCheckpointFields v = {x, NULL, NULL};
+    PetscCall(CSOutputResume(out, mesh, x0, &it, CS_BS_CHECKPOINT_NREAL, r, &v, &resumed));
+  }
   if (resumed) PetscCall(CSBSFlowSetCheckpointState(flow, it, r));
   PetscFunctionReturn(0);
 }

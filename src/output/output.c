@@ -174,7 +174,7 @@ static PetscErrorCode Fingerprint(Vec x0, PetscReal fp[2])
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CSOutputResume(CSOutput *o, CSMesh mesh, Vec x0, PetscInt *it, PetscInt nreal, PetscReal reals[], Vec x, Vec edgeField, PetscBool *resumed)
+PetscErrorCode CSOutputResume(CSOutput *o, CSMesh mesh, Vec x0, PetscInt *it, PetscInt nreal, PetscReal reals[], const CSCheckpointFields *v, PetscBool *resumed)
 {
   PetscReal     *buf, fp[2];
   PetscBool      same = PETSC_TRUE;
@@ -185,7 +185,7 @@ PetscErrorCode CSOutputResume(CSOutput *o, CSMesh mesh, Vec x0, PetscInt *it, Pe
   if (!o->has_resume) PetscFunctionReturn(0);
   /* the fingerprint of the input goes first: [fp0, fp1, task scalars] */
   PetscCall(PetscMalloc1(nreal + 2, &buf));
-  ierr = CSCheckpointRead(mesh, o->resume, it, nreal + 2, buf, x, edgeField);
+  ierr = CSCheckpointRead(mesh, o->resume, it, nreal + 2, buf, v);
   if (ierr) PetscCall(PetscFree(buf)); /* no leak on the error path */
   PetscCall(ierr);
   PetscCall(Fingerprint(x0, fp));
@@ -199,7 +199,7 @@ PetscErrorCode CSOutputResume(CSOutput *o, CSMesh mesh, Vec x0, PetscInt *it, Pe
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CSOutputCheckpoint(CSOutput *o, CSMesh mesh, Vec x0, PetscInt it, PetscBool force, PetscInt nreal, const PetscReal reals[], Vec x, Vec edgeField)
+PetscErrorCode CSOutputCheckpoint(CSOutput *o, CSMesh mesh, Vec x0, PetscInt it, PetscBool force, PetscInt nreal, const PetscReal reals[], const CSCheckpointFields *v)
 {
   PetscReal *buf;
   PetscFunctionBeginUser;
@@ -208,7 +208,7 @@ PetscErrorCode CSOutputCheckpoint(CSOutput *o, CSMesh mesh, Vec x0, PetscInt it,
   PetscCall(PetscMalloc1(nreal + 2, &buf));
   PetscCall(Fingerprint(x0, buf));
   PetscCall(PetscArraycpy(buf + 2, reals, nreal));
-  PetscCall(CSCheckpointWrite(mesh, o->checkpoint, it, nreal + 2, buf, x, edgeField));
+  PetscCall(CSCheckpointWrite(mesh, o->checkpoint, it, nreal + 2, buf, v));
   PetscCall(PetscFree(buf));
   PetscCall(PetscPrintf(mesh->comm, "wrote checkpoint %s at iteration %" PetscInt_FMT "\n", o->checkpoint, it));
   PetscFunctionReturn(0);

@@ -54,15 +54,16 @@ typedef struct {
 /* -checkpoint FILE -checkpoint_every N: the state after it accepted steps, every N. */
 static PetscErrorCode WriteCheckpoint(CSWillmoreFlow flow, CSOutput *out, PetscInt it, PetscBool force, PetscReal ck[])
 {
-  PetscInt nreal;
-  Vec      x, mu, x0;
-  CSMesh   mesh;
+  PetscInt           nreal;
+  Vec                x0;
+  CSMesh             mesh;
+  CSCheckpointFields v;
   PetscFunctionBeginUser;
   PetscCall(CSWillmoreFlowGetMesh(flow, &mesh));
-  PetscCall(CSWillmoreFlowGetInitial(flow, &x0));
+  PetscCall(CSWillmoreFlowGetStart(flow, &x0));
   PetscCall(CSWillmoreFlowGetStateSize(flow, &nreal));
-  PetscCall(CSWillmoreFlowGetState(flow, ck, &x, &mu));
-  PetscCall(CSOutputCheckpoint(out, mesh, x0, it, force, nreal, ck, x, mu));
+  PetscCall(CSWillmoreFlowGetState(flow, ck, &v));
+  PetscCall(CSOutputCheckpoint(out, mesh, x0, it, force, nreal, ck, &v));
   PetscFunctionReturn(0);
 }
 
@@ -103,26 +104,26 @@ PetscErrorCode CSWillmoreFlowMonitorCheckpointSet(CSWillmoreFlow flow, CSOutput 
 
 PetscErrorCode CSWillmoreFlowResume(CSWillmoreFlow flow, CSOutput *out)
 {
-  PetscInt       nreal, it = 0;
-  PetscReal     *ck;
-  Vec            x, mu, x0;
-  CSMesh         mesh;
-  PetscBool      resumed;
-  PetscErrorCode ierr;
+  PetscInt           nreal, it = 0;
+  PetscReal         *ck;
+  Vec                x0;
+  CSMesh             mesh;
+  PetscBool          resumed;
+  CSCheckpointFields v = {NULL, NULL, NULL};
+  PetscErrorCode     ierr;
   PetscFunctionBeginUser;
   PetscCall(CSWillmoreFlowGetMesh(flow, &mesh));
-  PetscCall(CSWillmoreFlowGetInitial(flow, &x0));
-  PetscCall(CSWillmoreFlowGetSolution(flow, &x));
+  PetscCall(CSWillmoreFlowGetStart(flow, &x0));
   if (!out->has_checkpoint && !out->has_resume) { /* marks the options as supported; reads nothing */
-    PetscCall(CSOutputResume(out, mesh, x0, &it, 0, NULL, x, NULL, &resumed));
+    PetscCall(CSOutputResume(out, mesh, x0, &it, 0, NULL, &v, &resumed));
     PetscFunctionReturn(0);
   }
   PetscCall(CSWillmoreFlowGetStateSize(flow, &nreal));
   PetscCall(PetscMalloc1(nreal, &ck));
-  PetscCall(CSWillmoreFlowGetState(flow, ck, &x, &mu)); /* x0 (input, conformal target, q_mean) stays the input */
-  ierr = CSOutputResume(out, mesh, x0, &it, nreal, ck, x, mu, &resumed);
+  ierr = CSWillmoreFlowGetState(flow, ck, &v); /* x0 (input, conformal target, q_mean) stays the input */
+  if (!ierr) ierr = CSOutputResume(out, mesh, x0, &it, nreal, ck, &v, &resumed);
   if (!ierr && resumed) ierr = CSWillmoreFlowSetState(flow, it, ck);
-  PetscCall(PetscFree(ck)); /* on the error path too (a damaged checkpoint) */
+  PetscCall(PetscFree(ck)); /* on the error paths too (a refused option, a damaged checkpoint) */
   PetscCall(ierr);
   PetscFunctionReturn(0);
 }

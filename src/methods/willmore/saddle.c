@@ -204,6 +204,8 @@ static PetscErrorCode EdgeOperator(CSSaddle *s, PetscBool first, Vec iq, PetscRe
 }
 
 /* The k bordering rows B_j (in the layout of b) and G = diag(g_j) / t_mu. */
+static PetscErrorCode CopyParts(CSSaddle *s, Vec w, Vec E, Vec V, PetscBool in);
+
 static PetscErrorCode BorderRows(CSSaddle *s, Vec rows[], const PetscReal g[], PetscReal tmu)
 {
   PetscFunctionBeginUser;
@@ -213,6 +215,7 @@ static PetscErrorCode BorderRows(CSSaddle *s, Vec rows[], const PetscReal g[], P
     if (!s->W[j]) {
       PetscCall(VecDuplicate(s->b, &s->W[j]));
       PetscCall(VecSet(s->W[j], 0)); /* later steps start from the previous step's W_j */
+      if (s->WV && s->WV[j]) PetscCall(CopyParts(s, s->W[j], s->WE[j], s->WV[j], PETSC_TRUE)); /* a resumed run's */
     }
     PetscCall(VecSet(s->B[j], 0));
     if (s->edges) {
@@ -298,6 +301,7 @@ static PetscErrorCode ConfigureKSP(CSSaddle *s, Vec iq, PetscReal tmu, Mat X)
   if (s->edges && !s->monolithic) PetscCall(PetscObjectTypeCompare((PetscObject)pc, PCFIELDSPLIT, &fs));
   if (fs) PetscCall(ConfigureFieldSplit(s, pc, chosen, iq, tmu, X));
   s->have_pc = PETSC_TRUE;
+  if (!s->setups && s->wait > 0) s->wait--; /* a resumed run's first step is fresh like those it waited for */
   s->setups++; /* 1 at the first call; more after a new solver (failed factorisation) */
   s->reusing = PETSC_FALSE;
   PetscCall(KSPSetReusePreconditioner(s->ksp, PETSC_FALSE));
@@ -525,9 +529,47 @@ PetscErrorCode CSSaddleDestroy(CSSaddle *s)
   for (PetscInt j = 0; j < s->k; j++) {
     if (s->B) PetscCall(VecDestroy(&s->B[j]));
     if (s->W) PetscCall(VecDestroy(&s->W[j]));
+    if (s->WE) PetscCall(VecDestroy(&s->WE[j]));
+    if (s->WV) PetscCall(VecDestroy(&s->WV[j]));
   }
   PetscCall(PetscFree(s->B));
   PetscCall(PetscFree(s->W));
+  PetscCall(PetscFree2(s->WE, s->WV));
   PetscCall(PetscFree(s->G));
+  PetscFunctionReturn(0);
+}
+
+/* Checkpoints: the initial guess W_j of bordering solve j (the last solution), as its parts E (NULL without the edge
+   block) and V; zero before the first step. */
+PetscErrorCode CSSaddleGetGuess(CSSaddle *s, PetscInt j, Vec E, Vec V)
+{
+  PetscFunctionBeginUser;
+  if (s->W[j]) {
+    PetscCall(CopyParts(s, s->W[j], E, V, PETSC_FALSE));
+    PetscFunctionReturn(0);
+  }
+  if (s->WV && s->WV[j]) { /* resumed, no step since */
+    if (E) PetscCall(VecCopy(s->WE[j], E));
+    PetscCall(VecCopy(s->WV[j], V));
+    PetscFunctionReturn(0);
+  }
+  if (E) PetscCall(VecSet(E, 0));
+  PetscCall(VecSet(V, 0));
+  PetscFunctionReturn(0);
+}
+
+/* The inverse at a resume: into W_j, or kept until the first step creates it (BorderRows). */
+PetscErrorCode CSSaddleSetGuess(CSSaddle *s, PetscInt j, Vec E, Vec V)
+{
+  PetscFunctionBeginUser;
+  if (s->W[j]) {
+    PetscCall(CopyParts(s, s->W[j], E, V, PETSC_TRUE));
+    PetscFunctionReturn(0);
+  }
+  if (!s->WV) PetscCall(PetscCalloc2(s->k, &s->WE, s->k, &s->WV));
+  if (E && !s->WE[j]) PetscCall(VecDuplicate(E, &s->WE[j]));
+  if (!s->WV[j]) PetscCall(VecDuplicate(V, &s->WV[j]));
+  if (E) PetscCall(VecCopy(E, s->WE[j]));
+  PetscCall(VecCopy(V, s->WV[j]));
   PetscFunctionReturn(0);
 }

@@ -1,7 +1,7 @@
-/* The loop state a checkpoint keeps besides the positions and mu (the edge field): [flow kind, t, t_mu,
-   rejections, KSP its in total, KSP its of the last step, edges with guarded I_Q weight, seconds,
-   nu_1..nu_k]. The rest (g, c, X, metric, residual) is recomputed from x at the top of the loop, so a resumed
-   run continues exactly like the uninterrupted one. */
+/* The loop state a checkpoint keeps besides its fields (the positions and mu, the edge field; a triangle field's
+   own, trianglefield_state.c): [flow kind, t, t_mu, rejections, KSP its in total, KSP its of the last step, edges
+   with guarded I_Q weight, seconds, nu_1..nu_k, the kind's own scalars]. The rest (g, c, X, metric, residual) is
+   recomputed from x at the top of the loop, so a resumed run continues exactly like the uninterrupted one. */
 #include "willmore_impl.h"
 
 #define FLOW_CK_NREAL 8
@@ -10,18 +10,34 @@ PetscErrorCode CSWillmoreFlowGetStateSize(CSWillmoreFlow F, PetscInt *nreal)
 {
   PetscFunctionBeginUser;
   PetscCheck(F->setupcalled, F->comm, PETSC_ERR_ORDER, "CSWillmoreFlowGetStateSize before CSWillmoreFlowSetUp");
-  *nreal = FLOW_CK_NREAL + F->k;
+  *nreal = FLOW_CK_NREAL + F->k + F->ops.state_nreal;
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CSWillmoreFlowGetState(CSWillmoreFlow F, PetscReal ck[], Vec *x, Vec *mu)
+/* the options whose state is not stored, refused by name */
+static PetscErrorCode CheckStorable(CSWillmoreFlow F)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(!F->ops.setup_problem || F->ops.get_state, F->comm, PETSC_ERR_SUP, "-checkpoint/-resume with -%stype %s: its variables are not stored in checkpoints", F->prefix, F->type);
+  PetscCheck(!F->normals, F->comm, PETSC_ERR_SUP, "-checkpoint/-resume with -%sboundary normals: the multipliers of the normal constraint are not stored in checkpoints", F->prefix);
+  PetscCheck(!F->ops.penalty, F->comm, PETSC_ERR_SUP, "-checkpoint/-resume with -%stype alm: the penalty schedule is not stored in checkpoints", F->prefix);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSWillmoreFlowGetStart(CSWillmoreFlow F, Vec *x)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(F->setupcalled, F->comm, PETSC_ERR_ORDER, "CSWillmoreFlowGetStart before CSWillmoreFlowSetUp");
+  *x = F->xstart ? F->xstart : F->x0;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSWillmoreFlowGetState(CSWillmoreFlow F, PetscReal ck[], CSCheckpointFields *v)
 {
   PetscLogDouble now;
   PetscFunctionBeginUser;
   PetscCheck(F->setupcalled, F->comm, PETSC_ERR_ORDER, "CSWillmoreFlowGetState before CSWillmoreFlowSetUp");
-  PetscCheck(!F->ops.setup_problem, F->comm, PETSC_ERR_SUP, "-checkpoint/-resume with -%stype %s: checkpoints store positions, not triangle fields", F->prefix, F->type);
-  PetscCheck(!F->normals, F->comm, PETSC_ERR_SUP, "-checkpoint/-resume with -%sboundary normals: the multipliers of the normal constraint are not stored in checkpoints", F->prefix);
-  PetscCheck(!F->ops.penalty, F->comm, PETSC_ERR_SUP, "-checkpoint/-resume with -%stype alm: the penalty schedule is not stored in checkpoints", F->prefix);
+  PetscCall(CheckStorable(F));
   PetscCall(PetscTime(&now));
   if (ck) {
     ck[0] = (PetscReal)F->ops.id;
@@ -34,12 +50,17 @@ PetscErrorCode CSWillmoreFlowGetState(CSWillmoreFlow F, PetscReal ck[], Vec *x, 
     ck[7] = (PetscReal)(now - F->t0);
     for (PetscInt j = 0; j < F->k; j++) ck[FLOW_CK_NREAL + j] = F->nu[j];
   }
-  if (x) *x = F->x;
-  if (mu) *mu = F->conformal ? F->mu : NULL;
+  if (F->ops.get_state) { /* a kind with its own variables packs them (and its scalars after the flow's) */
+    PetscCall((*F->ops.get_state)(F, ck ? ck + FLOW_CK_NREAL + F->k : NULL, v));
+    PetscFunctionReturn(0);
+  }
+  v->x    = F->x;
+  v->edge = F->conformal ? F->mu : NULL;
+  v->face = NULL;
   PetscFunctionReturn(0);
 }
 
-/* After the vectors of GetState were overwritten by a checkpoint of iteration it. */
+/* After the fields of GetState and ck were overwritten by a checkpoint of iteration it. */
 PetscErrorCode CSWillmoreFlowSetState(CSWillmoreFlow F, PetscInt it, const PetscReal ck[])
 {
   PetscFunctionBeginUser;
@@ -55,5 +76,6 @@ PetscErrorCode CSWillmoreFlowSetState(CSWillmoreFlow F, PetscInt it, const Petsc
   for (PetscInt j = 0; j < F->k; j++) F->nu[j] = ck[FLOW_CK_NREAL + j];
   F->it      = it;
   F->resumed = PETSC_TRUE;
+  if (F->ops.set_state) PetscCall((*F->ops.set_state)(F, ck + FLOW_CK_NREAL + F->k)); /* may override the above */
   PetscFunctionReturn(0);
 }

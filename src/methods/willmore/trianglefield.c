@@ -355,6 +355,7 @@ static PetscErrorCode SetUpTriangleField(CSWillmoreFlow F)
   d->flow = F;
   if (d->spinor) {
     PetscCall(SetUpTriangleFieldSpinor(F, d));
+    PetscCall(CSTFStateSetUp(F, d)); /* refuses -checkpoint/-resume by name */
     PetscFunctionReturn(0);
   }
   PetscCall(DMCreateGlobalVector(d->dmH3, &F->x));
@@ -374,6 +375,7 @@ static PetscErrorCode SetUpTriangleField(CSWillmoreFlow F)
   if (m->ct) PetscCall(CSTriangleFieldHalfedgesFromEdges(m, m->ct, d->dmH1, d->c0)); /* -mesh_cross_ratios (the spinor charts keep df's lengths) */
   PetscCall(SetUpSpinors(F, d));
   PetscCall(SetUpScaling(F, d));
+  PetscCall(CSTFStateSetUp(F, d));
   PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "%ssaddle_", F->prefix));
   PetscCall(CSSaddleCreate(m, prefix, PETSC_TRUE, PETSC_TRUE, (PetscBool)(F->saddle_mat == CS_SADDLE_MAT_AIJ), F->reuse_its, F->k, &F->saddle));
   PetscFunctionReturn(0);
@@ -486,6 +488,7 @@ static PetscErrorCode Destroy(CSWillmoreFlow F)
   PetscCall(VecDestroy(&d->gspin));
   PetscCall(CSTFSpinorDestroy(d));
   PetscCall(CSSpinorSpaceDestroy(&d->sp));
+  PetscCall(CSTFStateDestroy(d));
   PetscCall(PetscFree(F->data));
   PetscFunctionReturn(0);
 }

@@ -54,6 +54,9 @@ typedef struct {
   PetscReal wdecay, wspin_min;      /* continuation in wspin (trianglefield_continuation.c) */
   PetscReal stage_rtol, stage_ctol; /* a stage ends at el < stage_rtol, rows < stage_ctol */
   PetscInt  stage_maxit, stage_it0, nstages;
+  DM        dmCkE, dmCkF;  /* checkpoints (trianglefield_state.c): the packed per-edge and per-face fields */
+  Vec       ckE, ckF;
+  Vec       start;         /* the start omega: fingerprinted by checkpoints (another -flow_init is refused) */
 } CSTriangleField;
 PETSC_INTERN const char *const CSTriangleFieldVariables[];
 
@@ -82,6 +85,9 @@ PETSC_INTERN PetscErrorCode CSTFSpinorDestroy(CSTriangleField *d);
 PETSC_INTERN PetscErrorCode CSTFInitSmooth(CSWillmoreFlow F, CSTriangleField *d, PetscReal (*hash)(PetscInt, PetscInt, PetscInt, PetscInt));
 /* trianglefield_restore.c: Gauss-Newton restoration of an accepted omega onto the rows (issue 15) */
 PETSC_INTERN PetscErrorCode CSTFRestore(CSWillmoreFlow F);
+/* trianglefield_state.c: checkpoints (the hooks of state.c), at the end of the set-up */
+PETSC_INTERN PetscErrorCode CSTFStateSetUp(CSWillmoreFlow F, CSTriangleField *d);
+PETSC_INTERN PetscErrorCode CSTFStateDestroy(CSTriangleField *d);
 /* trianglefield_continuation.c: w <- w * decay each time a stage converges, then 0 (App. C.3) */
 PETSC_INTERN PetscErrorCode CSTFContinuationSetFromOptions(CSWillmoreFlow F, CSTriangleField *d);
 PETSC_INTERN PetscErrorCode CSTFContinuationAdvance(CSWillmoreFlow F, CSTriangleField *d, PetscBool *next);

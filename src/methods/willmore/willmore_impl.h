@@ -30,6 +30,7 @@ typedef struct {
   IS          fixed;      /* Dirichlet dofs of H (identity rows/cols), may be NULL */
   PetscInt    k;
   Vec        *B, *W;      /* k rows, k solutions (each an (E+3V) or 3V vector) */
+  Vec        *WE, *WV;    /* a resumed run's W (parts), until the first step creates W (CSSaddleSetGuess) */
   PetscReal  *G;
   PetscInt    reuse_its;  /* keep the preconditioner while the last solve took <= this many its */
   PetscBool   reuse_set;  /* reuse_its given by the user (-flow_factor_reuse_its), not the default */
@@ -62,6 +63,9 @@ PETSC_INTERN PetscErrorCode CSSaddleSetOperators(CSSaddle *s, Mat H, PetscReal t
    that did not converge is not an error: the flow decides (a rejected step). */
 PETSC_INTERN PetscErrorCode CSSaddleSolve(CSSaddle *s, Vec rE, Vec rV, const PetscReal rX[], Vec zE, Vec zV, PetscReal zX[], PetscInt *its, KSPConvergedReason *reason);
 PETSC_INTERN PetscErrorCode CSSaddleDestroy(CSSaddle *s);
+/* checkpoints: the bordering solves' initial guesses W_j (the last solutions), by parts (E NULL without the edge block) */
+PETSC_INTERN PetscErrorCode CSSaddleGetGuess(CSSaddle *s, PetscInt j, Vec E, Vec V);
+PETSC_INTERN PetscErrorCode CSSaddleSetGuess(CSSaddle *s, PetscInt j, Vec E, Vec V);
 
 /* ---- the flow kind: a strategy struct (cgd.c, pgd.c, gd.c) ---- */
 struct _CSWillmoreFlowOps {
@@ -91,6 +95,12 @@ struct _CSWillmoreFlowOps {
   PetscErrorCode (*operators)(CSWillmoreFlow);
   PetscErrorCode (*constraints)(CSWillmoreFlow, Vec x, Vec c, PetscReal cx[], PetscBool wantJ);
   PetscErrorCode (*positions)(CSWillmoreFlow, PetscBool initial, Vec *x);
+  /* Checkpoints of such a kind (state.c; NULL: refused): state_nreal scalars of its own after the flow's, the
+     fields packed in natural-order-ready form (get_state; ck NULL: the fields only) and their inverse after a
+     resume overwrote the fields and the scalars (set_state). */
+  PetscInt state_nreal;
+  PetscErrorCode (*get_state)(CSWillmoreFlow, PetscReal ck[], CSCheckpointFields *v);
+  PetscErrorCode (*set_state)(CSWillmoreFlow, const PetscReal ck[]);
 };
 
 typedef struct {
@@ -138,6 +148,7 @@ struct _p_CSWillmoreFlow {
   CSMetric              metric;
   CSSaddle              saddle;
   Vec                   x, x0, g, r, c, mu, dmu, df, iq, xt, ct, tmp;
+  Vec                   xstart; /* NULL (x0), or the kind's start variables: fingerprinted by checkpoints (borrowed) */
   Vec                  *rows;
   PetscReal            *cx, *cxt, *nu, *dnu, *dnu2, *gw, *nun;
   PetscReal             t, tmu, tmax, grow, rtol, ctol, wmin, rho, vmax, vrestore;
