@@ -55,6 +55,16 @@ run $MPIEXEC "$CS_BIN" $C -flow_max_it 5 -checkpoint "$TMP/cgd.ck" -checkpoint_e
 run $OTHER "$CS_BIN" $C -flow_max_it 10 -resume "$TMP/cgd.ck" -o "$TMP/cgd-res.obj" -summary "$TMP/cgd-res.json" -history_csv "$TMP/cgd-split.csv"
 compare cgd
 
+# -flow_t_mu_final whose switch has not fired although t_mu passed T (EL never below -flow_t_mu_final_el): the resumed
+# run must not freeze t_mu (review of 2026-12-05: inferred from t_mu >= T, E at 5 was 14.3938555 against 14.3945581).
+# Same ranks and no kept factorisation (not stored in checkpoints): t grows to 64, which amplifies solver-tolerance
+# differences (1.4e-10) past the 1e-10 of compare
+T="$C -flow_t 0.01 -flow_t_max 64 -flow_t_mu_final 1e-6 -flow_t_mu_final_el 1e-30 -flow_factor_reuse_its 0"
+run $MPIEXEC "$CS_BIN" $T -flow_max_it 6 -o "$TMP/tmf-full.obj" -summary "$TMP/tmf-full.json" -history_csv "$TMP/tmf-full.csv"
+run $MPIEXEC "$CS_BIN" $T -flow_max_it 3 -checkpoint "$TMP/tmf.ck" -history_csv "$TMP/tmf-split.csv"
+run $MPIEXEC "$CS_BIN" $T -flow_max_it 6 -resume "$TMP/tmf.ck" -o "$TMP/tmf-res.obj" -summary "$TMP/tmf-res.json" -history_csv "$TMP/tmf-split.csv"
+compare tmf
+
 # bad -resume: clear errors on every rank count
 EXPECT="-resume .*missing.ck: cannot open for reading \(No such file" expect_fail $MPIEXEC "$CS_BIN" $C -resume "$TMP/missing.ck"
 EXPECT="written for 162 vertices" expect_fail $MPIEXEC "$CS_BIN" -task flow -flow_type cgd -gen icosphere -gen_level 3 -resume "$TMP/cgd.ck"

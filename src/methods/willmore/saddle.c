@@ -562,6 +562,7 @@ PetscErrorCode CSSaddleGetGuess(CSSaddle *s, PetscInt j, Vec E, Vec V)
 PetscErrorCode CSSaddleSetGuess(CSSaddle *s, PetscInt j, Vec E, Vec V)
 {
   PetscFunctionBeginUser;
+  s->w_valid = PETSC_FALSE; /* W_j is a guess again: the next solve with these operators must solve for it */
   if (s->W[j]) {
     PetscCall(CopyParts(s, s->W[j], E, V, PETSC_TRUE));
     PetscFunctionReturn(0);

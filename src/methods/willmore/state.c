@@ -1,10 +1,10 @@
 /* The loop state a checkpoint keeps besides its fields (the positions and mu, the edge field; a triangle field's
    own, trianglefield_state.c): [flow kind, t, t_mu, rejections, KSP its in total, KSP its of the last step, edges
-   with guarded I_Q weight, seconds, nu_1..nu_k, the kind's own scalars]. The rest (g, c, X, metric, residual) is
+   with guarded I_Q weight, seconds, whether the -t_mu_final switch fired, nu_1..nu_k, the kind's own scalars]. The rest (g, c, X, metric, residual) is
    recomputed from x at the top of the loop, so a resumed run continues exactly like the uninterrupted one. */
 #include "willmore_impl.h"
 
-#define FLOW_CK_NREAL 8
+#define FLOW_CK_NREAL 9
 
 PetscErrorCode CSWillmoreFlowGetStateSize(CSWillmoreFlow F, PetscInt *nreal)
 {
@@ -48,6 +48,7 @@ PetscErrorCode CSWillmoreFlowGetState(CSWillmoreFlow F, PetscReal ck[], CSCheckp
     ck[5] = (PetscReal)F->kspits;
     ck[6] = (PetscReal)F->nguard;
     ck[7] = (PetscReal)(now - F->t0);
+    ck[8] = (PetscReal)F->tmu_final_on; /* stored: t_mu >= T does not tell (t_mu may pass T before EL falls) */
     for (PetscInt j = 0; j < F->k; j++) ck[FLOW_CK_NREAL + j] = F->nu[j];
   }
   if (F->ops.get_state) { /* a kind with its own variables packs them (and its scalars after the flow's) */
@@ -67,7 +68,7 @@ PetscErrorCode CSWillmoreFlowSetState(CSWillmoreFlow F, PetscInt it, const Petsc
   PetscCheck(ck[0] == (PetscReal)F->ops.id, F->comm, PETSC_ERR_ARG_INCOMP, "-resume: the checkpoint was written by another flow type (this run is %s)", F->type);
   F->t            = ck[1];
   F->tmu          = ck[2];
-  F->tmu_final_on = (PetscBool)(F->tmu_final > 0 && F->tmu >= F->tmu_final); /* the -t_mu_final switch had fired */
+  F->tmu_final_on = (PetscBool)(ck[8] != 0); /* the -t_mu_final switch had fired */
   F->rejections   = (PetscInt)ck[3];
   F->kspits_total = (PetscInt)ck[4];
   F->kspits       = (PetscInt)ck[5];
