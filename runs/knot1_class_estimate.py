@@ -10,30 +10,21 @@ with circular profile, R/r = sqrt(1 + b^2)) is a constrained Willmore surface wi
 
 Usage: runs/knot1_class_estimate.py [mesh.obj ...]   (default: meshes/knot1_cgal.obj)"""
 import math
+import os
 import sys
 
 import numpy as np
 
-
-def read_obj(path):
-    v, f = [], []
-    with open(path) as fp:
-        for line in fp:
-            s = line.split()
-            if not s:
-                continue
-            if s[0] == 'v':
-                v.append([float(a) for a in s[1:4]])
-            elif s[0] == 'f':
-                f.append([int(a.split('/')[0]) - 1 for a in s[1:4]])
-    return np.array(v), np.array(f)
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'scripts'))
+import objio  # noqa: E402  (scripts/objio.py, the project's OBJ reader)
 
 
 def main(paths):
     print('| mesh | area A | volume V | tube radius r = 2V/A | length l = A/(2 pi r) | Im tau = l/(2 pi r) | W of the homogeneous torus pi^2 (b + 1/b) |')
     print('|---|---|---|---|---|---|---|')
     for path in paths:
-        x, f = read_obj(path)
+        v, t = objio.read_obj(path, triangles_only=True)
+        x, f = np.array(v), np.array(t)
         a, b, c = x[f[:, 0]], x[f[:, 1]], x[f[:, 2]]
         area = 0.5 * np.linalg.norm(np.cross(b - a, c - a), axis=1).sum()
         vol = np.einsum('ij,ij->i', a, np.cross(b, c)).sum() / 6.0
