@@ -36,6 +36,8 @@ EXPECT="-bs_dt inf: must be > 0" expect_fail F -flow_type bs -gen icosphere -gen
 EXPECT="-flow_constraint_mobius.*-flow_conformal" expect_fail F -gen icosphere -gen_level 1 -flow_type gd -flow_constraint_mobius
 # review of 2026-12-05: options that measured the wrong thing or were accepted out of range
 EXPECT="-flow_max_step and -flow_fold_guard work on vertex positions, not on -flow_type trianglefield" expect_fail F -gen lattice -gen_tau 0,1 -gen_n 4 -gen_m 4 -flow_type trianglefield -flow_fold_guard
+# the rest serially (the same collective checks as above; a 2-rank process start costs ~1-2 s: make test's budget)
+[ "$NP" = 1 ] || exit 0
 EXPECT="-flow_max_step and -flow_fold_guard work on vertex positions" expect_fail F -gen lattice -gen_tau 0,1 -gen_n 4 -gen_m 4 -flow_type trianglefield -flow_max_step 0.5
 EXPECT="-flow_pgd_projection_max_it 0: must be >= 1" expect_fail F -gen icosphere -gen_level 1 -flow_type pgd -flow_pgd_projection_max_it 0
 for o in "-flow_init_amplitude nan" "-flow_init_amplitude -1" "-flow_immersion_tol -1"; do
