@@ -44,7 +44,7 @@ PetscErrorCode CSWFGrowCGD(CSWillmoreFlow F)
   PetscReal r     = CSWFGrowthFactor(F);
   PetscFunctionBeginUser;
   PetscCall(FinalDualStep(F, &fixed));
-  if (r > 1) F->t = r == F->grow ? F->t * F->grow : F->tmax;
+  if (r > 1) F->t = F->t * F->grow <= F->tmax ? F->t * F->grow : F->tmax; /* (tmax / t may round to grow) */
   if (fixed) F->tmu = PetscMax(F->tmu, F->tmu_final); /* t_mu = max(t_mu, T): a ramp (-t_mu_grow) already above T is kept */
   else if (F->tmu_grow > 0) {
     /* a dual step ramped on its own (-flow_t_mu_grow): a large t_mu during the transient of a class change

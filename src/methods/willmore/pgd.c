@@ -33,7 +33,7 @@ PetscErrorCode CSWFGrowPrimal(CSWillmoreFlow F)
 {
   PetscReal r = CSWFGrowthFactor(F);
   PetscFunctionBeginUser;
-  if (r > 1) F->t = r == F->grow ? F->t * F->grow : F->tmax;
+  if (r > 1) F->t = F->t * F->grow <= F->tmax ? F->t * F->grow : F->tmax; /* (tmax / t may round to grow) */
   PetscFunctionReturn(0);
 }
 
