@@ -82,6 +82,12 @@ typedef struct {
   PetscInt         k;                   /* global constraint values */
   const PetscReal *constraint_values;
 } CSWillmoreFlowInfo;
+/* whether the state of info is an immersion -o may write: positions (vertex kinds), or a triangle field integrable to
+   -flow_immersion_tol (its Poisson reconstruction is an immersion of it only then) */
+static inline PetscBool CSWillmoreFlowInfoIsImmersion(const CSWillmoreFlowInfo *i)
+{
+  return (PetscBool)(i->integrability_violation < 0 || i->integrability_violation <= i->immersion_tol);
+}
 
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowCreate(CSMesh mesh, CSWillmoreFlow *flow);
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowSetType(CSWillmoreFlow flow, CSWillmoreFlowType type);

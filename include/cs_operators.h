@@ -1,7 +1,7 @@
 /* Discrete operators as PETSc matrices on the distributed mesh. */
 #ifndef CS_OPERATORS_H
 #define CS_OPERATORS_H
-#include <petscmat.h>
+#include <petscksp.h> /* petscmat.h, and KSP for CSOperatorSpectralFilterCheck */
 #include "cs_geometry.h"
 
 /* A vertex-by-vertex matrix with bs dofs per vertex of dm (mesh->dmV1, dmV3 or another vertex DM), with the
@@ -34,7 +34,9 @@ PETSC_EXTERN PetscErrorCode CSOperatorMass(CSMesh mesh, Vec x, Vec mass);
    (k >= 1) or (1 + s) M (k = 0), a new SPD matrix, for (id + s A^k) w = v as B w = M v; L any AIJ Laplacian
    (positive semi-definite), mass its diagonal mass vector. */
 PETSC_EXTERN PetscErrorCode CSOperatorSpectralFilter(Mat L, Vec mass, PetscReal s, PetscInt k, Mat *B);
-PETSC_EXTERN PetscErrorCode CSOperatorSpectralFilterResidual(Mat B, Vec b, Vec w, PetscReal *rel);
+/* after the filter solve B w = b by ksp: refuse a failed solve or a relative residual above CS_FILTER_RTOL, naming
+   -<prefix>filter_k and -<prefix>filter_sigma (who: the flow, for the message) */
+PETSC_EXTERN PetscErrorCode CSOperatorSpectralFilterCheck(KSP ksp, Vec b, Vec w, const char who[], const char prefix[]);
 #define CS_FILTER_RTOL 1e-2 /* largest relative residual of a filter solve kept: w is the exact filter of a direction within 1 % of v */
 
 #include "cs_linalg.h" /* CSMatAddFixedPattern (src/linalg/mat_add_fixed.c) */

@@ -16,7 +16,7 @@ static PetscErrorCode KeepOnlyAnImmersion(CSMesh mesh, CSOutput *out, Vec x, con
   if (!out->has_out) PetscFunctionReturn(0);
   PetscCall(VecNorm(x, NORM_INFINITY, &big));
   finite    = (PetscBool)!PetscIsInfOrNanReal(big);
-  immersion = (PetscBool)(info->integrability_violation < 0 || info->integrability_violation <= info->immersion_tol);
+  immersion = CSWillmoreFlowInfoIsImmersion(info);
   if (finite && immersion) PetscFunctionReturn(0);
   PetscCall(PetscPrintf(mesh->comm, "flow: -o %s is not written: the last state %s\n", out->out, finite ? "is a triangle field that is not integrable (-flow_immersion_tol)" : "is not finite"));
   out->has_out = PETSC_FALSE;

@@ -71,9 +71,8 @@ static PetscErrorCode CheckImmersion(CSWillmoreFlow flow, CSOutput *out, CSMesh 
   const PetscReal tol = i->immersion_tol;
   const char     *prefix;
   PetscFunctionBeginUser;
-  if (!out->has_out || i->integrability_violation < 0) PetscFunctionReturn(0);
+  if (!out->has_out || CSWillmoreFlowInfoIsImmersion(i)) PetscFunctionReturn(0);
   PetscCall(CSWillmoreFlowGetOptionsPrefix(flow, &prefix));
-  if (i->integrability_violation <= tol) PetscFunctionReturn(0);
   PetscCall(CSOutputAddRunFacts(out, mesh->comm));
   PetscCall(CSOutputWriteSummary(out, mesh->comm));
   SETERRQ(mesh->comm, PETSC_ERR_NOT_CONVERGED, "-o %s: the triangle field is not integrable (integrability violation %.2e > -%simmersion_tol %.1e), so its Poisson reconstruction is not an immersion of it; the mesh was not written (run the flow to convergence)", out->out, (double)i->integrability_violation, prefix ? prefix : "", (double)tol);

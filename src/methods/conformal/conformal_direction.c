@@ -175,8 +175,7 @@ static PetscErrorCode Residuals(CSConformalFlow F)
 
 PetscErrorCode CSConformalFlowApplyFilter(CSConformalFlow F, Vec v)
 {
-  KSPConvergedReason kr;
-  PetscReal          A, vol, s, rel;
+  PetscReal A, vol, s;
   PetscFunctionBeginUser;
   PetscCheck(F->loop.setupcalled && F->sigma > 0, F->hdr.comm, PETSC_ERR_ORDER, "CSConformalFlowApplyFilter: needs SetUp and -%sfilter_sigma > 0", F->hdr.prefix);
   PetscCall(CSGeometryAreaVolume(F->mesh, F->x, &A, &vol));
@@ -204,10 +203,7 @@ PetscErrorCode CSConformalFlowApplyFilter(CSConformalFlow F, Vec v)
   PetscCall(KSPSetOperators(F->kspf, F->B, F->B));
   PetscCall(VecPointwiseMult(F->work, F->area, v)); /* B w = M v */
   PetscCall(KSPSolve(F->kspf, F->work, F->rho));
-  PetscCall(KSPGetConvergedReason(F->kspf, &kr));
-  PetscCheck(kr >= 0, F->hdr.comm, PETSC_ERR_NOT_CONVERGED, "conformal flow: the filter solve (-%sfilter_ksp_type ...) failed: %s", F->hdr.prefix, KSPConvergedReasons[kr]);
-  PetscCall(CSOperatorSpectralFilterResidual(F->B, F->work, F->rho, &rel));
-  PetscCheck(rel <= CS_FILTER_RTOL, F->hdr.comm, PETSC_ERR_NOT_CONVERGED, "conformal flow: the filter solve is inaccurate (relative residual %.1e): B = M + s L (M^-1 L)^(k-1) is too ill-conditioned on this mesh; use a smaller -%sfilter_k or -%sfilter_sigma", (double)rel, F->hdr.prefix, F->hdr.prefix);
+  PetscCall(CSOperatorSpectralFilterCheck(F->kspf, F->work, F->rho, "conformal flow", F->hdr.prefix));
   PetscCall(VecAXPY(v, -1, F->rho));
   PetscFunctionReturn(0);
 }

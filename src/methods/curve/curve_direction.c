@@ -63,16 +63,10 @@ static PetscErrorCode Distortion(CSCurveFlow F)
 /* Sec. 4: v <- v - (id + sigma A^k)^{-1} v with A = M^{-1} L, i.e. (M + sigma L (M^{-1} L)^{k-1}) w = M v */
 static PetscErrorCode Filter(CSCurveFlow F)
 {
-  KSPConvergedReason kr;
-  PetscReal          rel;
-  Mat                B;
   PetscFunctionBeginUser;
   PetscCall(VecPointwiseMult(F->rhs[0], F->d, F->v));
   PetscCall(KSPSolve(F->kspf, F->rhs[0], F->del[0]));
-  PetscCall(KSPGetConvergedReason(F->kspf, &kr));
-  PetscCall(KSPGetOperators(F->kspf, &B, NULL));
-  PetscCall(CSOperatorSpectralFilterResidual(B, F->rhs[0], F->del[0], &rel));
-  PetscCheck(kr >= 0 && rel <= CS_FILTER_RTOL, F->hdr.comm, PETSC_ERR_NOT_CONVERGED, "curve flow: the spectral filter solve failed (%s, relative residual %.1e): its matrix's condition ~ sigma (N/pi)^(2k) is too large for N = %" PetscInt_FMT "; use a smaller -%sfilter_k or -%sfilter_sigma", KSPConvergedReasons[kr], (double)rel, F->curve->N, F->hdr.prefix, F->hdr.prefix);
+  PetscCall(CSOperatorSpectralFilterCheck(F->kspf, F->rhs[0], F->del[0], "curve flow", F->hdr.prefix));
   PetscCall(VecAXPY(F->v, -1, F->del[0]));
   PetscFunctionReturn(0);
 }

@@ -30,21 +30,27 @@ static PetscErrorCode FinalDualStep(CSWillmoreFlow F, PetscBool *on)
   PetscFunctionReturn(0);
 }
 
-/* The factor by which t grows after an accepted step: -t_grow, capped so that t ends at -t_max (not short of it
-   when t_max is not t times a power of t_grow) */
-PetscReal CSWFGrowthFactor(CSWillmoreFlow F)
+/* t after an accepted step: times -t_grow, capped at -t_max (reached also when t_max is not t times a power of
+   t_grow); returns the factor it grew by (1 at t_max), which t_mu follows */
+PetscReal CSWFGrowStep(CSWillmoreFlow F)
 {
-  if (F->t * F->grow <= F->tmax) return F->grow;
-  return F->t < F->tmax ? F->tmax / F->t : 1.0;
+  PetscReal r;
+  if (F->t * F->grow <= F->tmax) {
+    F->t *= F->grow;
+    return F->grow;
+  }
+  r    = F->t < F->tmax ? F->tmax / F->t : 1.0;
+  F->t = F->tmax; /* t_max itself, not t * r, which may round past it */
+  return r;
 }
 
 PetscErrorCode CSWFGrowCGD(CSWillmoreFlow F)
 {
   PetscBool fixed = PETSC_FALSE;
-  PetscReal r     = CSWFGrowthFactor(F);
+  PetscReal r;
   PetscFunctionBeginUser;
   PetscCall(FinalDualStep(F, &fixed));
-  if (r > 1) F->t = F->t * F->grow <= F->tmax ? F->t * F->grow : F->tmax; /* (tmax / t may round to grow) */
+  r = CSWFGrowStep(F);
   if (fixed) F->tmu = PetscMax(F->tmu, F->tmu_final); /* t_mu = max(t_mu, T): a ramp (-t_mu_grow) already above T is kept */
   else if (F->tmu_grow > 0) {
     /* a dual step ramped on its own (-flow_t_mu_grow): a large t_mu during the transient of a class change

@@ -31,9 +31,8 @@ static PetscErrorCode AcceptPGD(CSWillmoreFlow F)
 /* t grows by -flow_t_grow up to -flow_t_max after an accepted step, halves after a rejected one (PGD, ALM) */
 PetscErrorCode CSWFGrowPrimal(CSWillmoreFlow F)
 {
-  PetscReal r = CSWFGrowthFactor(F);
   PetscFunctionBeginUser;
-  if (r > 1) F->t = F->t * F->grow <= F->tmax ? F->t * F->grow : F->tmax; /* (tmax / t may round to grow) */
+  (void)CSWFGrowStep(F);
   PetscFunctionReturn(0);
 }
 

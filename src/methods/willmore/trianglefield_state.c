@@ -6,7 +6,7 @@
      per edge  [V or omega of its two halfedges (3 + 3), E or mu of their conformal rows (1 + 1, not with
                -flow_conformal false), of its lens row d1 omega (3)],
      per face  [its spinor psi (4: the signs followed along the flow), then per slot E or mu of its closure row (3)];
-   and the scalars [t_mu_final switch, restoration failed, spin weight, stage start, stages, the saddle's last Krylov
+   and the scalars [restoration failed, spin weight, stage start, stages, the saddle's last Krylov
    its, wait, backoff (the schedule of kept factorisations)]. The checkpoint's fingerprint is that of the start omega
    (CSWillmoreFlowGetStart), so a resume from another -flow_init, -flow_seed, ... is refused like another input. The two halfedges
    of an edge are ordered by the natural numbers of their vertices (first the one from the lower to the higher), so
@@ -16,7 +16,7 @@
    factors afresh. Not for -flow_variables spinor (other variables). */
 #include "trianglefield_impl.h"
 
-#define TF_CK_NREAL 8
+#define TF_CK_NREAL 7 /* after the flow's own (state.c: t, t_mu, the -t_mu_final switch, ...) */
 
 /* the local array index of the first dof of point p in the global vectors of dm (owned points only) */
 typedef struct {
@@ -166,14 +166,13 @@ static PetscErrorCode GetState(CSWillmoreFlow F, PetscReal ck[], CSCheckpointFie
   v->edge = d->ckE;
   v->face = d->ckF;
   if (!ck) PetscFunctionReturn(0);
-  ck[0] = (PetscReal)F->tmu_final_on;
-  ck[1] = (PetscReal)F->restore_failed;
-  ck[2] = d->wspin;
-  ck[3] = (PetscReal)d->stage_it0;
-  ck[4] = (PetscReal)d->nstages;
-  ck[5] = (PetscReal)F->saddle.last_its;
-  ck[6] = (PetscReal)F->saddle.wait;
-  ck[7] = (PetscReal)F->saddle.backoff;
+  ck[0] = (PetscReal)F->restore_failed;
+  ck[1] = d->wspin;
+  ck[2] = (PetscReal)d->stage_it0;
+  ck[3] = (PetscReal)d->nstages;
+  ck[4] = (PetscReal)F->saddle.last_its;
+  ck[5] = (PetscReal)F->saddle.wait;
+  ck[6] = (PetscReal)F->saddle.backoff;
   PetscFunctionReturn(0);
 }
 
@@ -182,14 +181,13 @@ static PetscErrorCode SetState(CSWillmoreFlow F, const PetscReal ck[])
 {
   CSTriangleField *d = (CSTriangleField *)F->data;
   PetscFunctionBeginUser;
-  F->tmu_final_on   = (PetscBool)(ck[0] != 0);
-  F->restore_failed = (PetscBool)(ck[1] != 0);
-  d->wspin          = ck[2];
-  d->stage_it0      = (PetscInt)ck[3];
-  d->nstages        = (PetscInt)ck[4];
-  F->saddle.last_its = (PetscInt)ck[5];
-  F->saddle.wait     = (PetscInt)ck[6]; /* the first step's fresh factorisation counts as one (saddle.c) */
-  F->saddle.backoff  = (PetscInt)ck[7];
+  F->restore_failed  = (PetscBool)(ck[0] != 0);
+  d->wspin           = ck[1];
+  d->stage_it0       = (PetscInt)ck[2];
+  d->nstages         = (PetscInt)ck[3];
+  F->saddle.last_its = (PetscInt)ck[4];
+  F->saddle.wait     = (PetscInt)ck[5]; /* the first step's fresh factorisation counts as one (saddle.c) */
+  F->saddle.backoff  = (PetscInt)ck[6];
   PetscCall(Pack(F, d, PETSC_TRUE));
   PetscFunctionReturn(0);
 }

@@ -257,7 +257,7 @@ PETSC_INTERN PetscErrorCode CSWFMultiplierLS(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFMultiplierLSRestore(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFAcceptCGD(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFGrowCGD(CSWillmoreFlow F);
-PETSC_INTERN PetscReal      CSWFGrowthFactor(CSWillmoreFlow F);
+PETSC_INTERN PetscReal      CSWFGrowStep(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFShrinkCGD(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFGrowPrimal(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFShrinkPrimal(CSWillmoreFlow F);
