@@ -170,6 +170,7 @@ PetscErrorCode CSMeshDataFromOptions(MPI_Comm comm, const char prefix[], CSMeshD
   PetscCheck(src.crtol > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%smesh_cross_ratios_tol %g: must be > 0", pre, (double)src.crtol);
   src.refine_loop = rtype == 1 ? PETSC_TRUE : PETSC_FALSE;
   PetscCall(RemeshOptions(comm, prefix, &src));
+  PetscCheck(!(src.remesh_faces || src.remesh_h > 0) || (!src.lengths[0] && !src.crossratios[0]), comm, PETSC_ERR_ARG_INCOMP, "-%smesh_remesh with -%smesh_lengths or -%smesh_cross_ratios: the target class is given for the input's own edges", pre, pre, pre);
   PetscCheck(src.file != genset, comm, PETSC_ERR_ARG_WRONG, "give exactly one of -%smesh FILE and -%sgen icosphere|torus|flattorus|cylinder|disk|lattice|spiky|morin (%s)", pre, pre, src.file ? "both were given" : "neither was given");
   src.gen = (GenType)gen;
   CSRootCall(comm, MeshSourceLoad(&src, md, topo));

@@ -54,6 +54,7 @@ EXPECT="-mesh_remesh 2000 with -mesh_remesh_edge_length 0.1: give one" expect_fa
 if [ "$NP" = 1 ]; then
   EXPECT="-mesh_remesh_edge_length 1e-06: gives about .* faces" expect_fail info -mesh meshes/cow_cgal.obj -mesh_remesh_edge_length 1e-6 || exit 1
   EXPECT="-mesh_remesh of .*target class" expect_fail info -gen lattice -mesh_remesh 100 || exit 1
+  EXPECT="-mesh_remesh with -mesh_lengths" expect_fail info -gen icosphere -mesh_remesh 100 -mesh_lengths "$TMP/none.txt" || exit 1
 fi
 EXPECT="-o_input .*\.stl: the input mesh is written as" expect_fail info -gen icosphere -o_input "$TMP/x.stl" || exit 1
 # (d) the remeshed double torus moves
