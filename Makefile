@@ -30,9 +30,26 @@ LDLIBS   := $(shell pkg-config --libs slepc petsc) -lcholmod -llapack -lblas -lz
 
 LIB_SRC  := $(sort $(wildcard src/*/*.c src/*/*/*.c))
 LIB_SRC  := $(filter-out src/driver/%,$(LIB_SRC))
+
+# CGAL (header-only, with GMP/MPFR) for -mesh_remesh: its .pc if it ships one, else the header probe. Without it
+# the build still succeeds and -mesh_remesh refuses with a line naming `make deps` (src/mesh/meshdata_remesh.c).
+CXX      := $(or $(shell pkg-config --variable=cxxcompiler petsc),mpicxx)
+CXXFLAGS ?= -O2 -g
+CXXFLAGS += -std=c++17 -Wall -Wextra -Wno-unused-parameter $(WERROR) -MMD -MP
+HAVE_CGAL := $(shell (pkg-config --exists CGAL 2>/dev/null || test -f /usr/include/CGAL/version.h) && echo yes)
+ifeq ($(HAVE_CGAL),yes)
+CXX_SRC  := src/mesh/meshdata_remesh_cgal.cc
+CPPFLAGS_CGAL := -DCS_HAVE_CGAL $(shell pkg-config --cflags CGAL 2>/dev/null)
+LDLIBS_CGAL   := -lgmp -lmpfr -lstdc++
+endif
+# meshdata_remesh.o is compiled again when CGAL appears or goes (build/cgal.flag changes only then)
+$(shell mkdir -p build && (echo "$(HAVE_CGAL)" | cmp -s - build/cgal.flag || echo "$(HAVE_CGAL)" > build/cgal.flag))
+build/obj/src/mesh/meshdata_remesh.o build/san/obj/src/mesh/meshdata_remesh.o: build/cgal.flag
+build/obj/src/mesh/meshdata_remesh.o build/san/obj/src/mesh/meshdata_remesh.o: CPPFLAGS += $(CPPFLAGS_CGAL)
 DRV_SRC  := $(wildcard src/driver/*.c)
 TEST_SRC := $(wildcard tests/unit/*.c)
-LIB_OBJ  := $(LIB_SRC:%.c=build/obj/%.o)
+LDLIBS   += $(LDLIBS_CGAL)
+LIB_OBJ  := $(LIB_SRC:%.c=build/obj/%.o) $(CXX_SRC:%.cc=build/obj/%.o)
 DRV_OBJ  := $(DRV_SRC:%.c=build/obj/%.o)
 TESTS    := $(TEST_SRC:tests/unit/%.c=build/tests/%)
 BENCH_SRC:= $(wildcard runs/*.c)
@@ -47,6 +64,10 @@ build/obj/src/linalg/quaternion_cholesky.o: CFLAGS += -O3
 build/obj/%.o: %.c
 	@mkdir -p $(dir $@)
 	$(CC) $(CPPFLAGS) $(CFLAGS) -c $< -o $@
+
+build/obj/%.o: %.cc
+	@mkdir -p $(dir $@)
+	$(CXX) $(CPPFLAGS_CGAL) $(CXXFLAGS) -c $< -o $@
 
 $(LIB): $(LIB_OBJ)
 	@rm -f $@

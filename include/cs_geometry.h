@@ -125,6 +125,25 @@ PETSC_EXTERN PetscErrorCode CSMeshRestoreLocalPositions(CSMesh mesh, Vec x, Vec 
 typedef void (*CSFaceAdd)(CSMesh mesh, const PetscReal *p, const CSFaceIter *F, PetscScalar *a);
 PETSC_EXTERN PetscErrorCode CSGeometryFaceSum(CSMesh mesh, Vec x, DM dm, CSFaceAdd add, Vec g);
 
+/* Triangle quality (src/geometry/triangle_quality.c, issue 35): the smallest corner angle (degrees), the share of
+   obtuse faces, the share of non-Delaunay interior edges (opposite angles summing above pi: cotan weight below
+   -1e-12), the longest over the shortest edge of the mesh, and the largest longest/shortest edge ratio of a face.
+   Collective; the same on any number of ranks. */
+typedef struct {
+  PetscReal min_angle_deg, obtuse_share, nondelaunay_share, edge_ratio, face_edge_ratio;
+  PetscInt  interior_edges;
+} CSTriangleQuality;
+PETSC_EXTERN PetscErrorCode CSGeometryTriangleQuality(CSMesh mesh, Vec x, CSTriangleQuality *q);
+/* Before a flow: one warning line naming -mesh_remesh when the min angle is below CS_STALL_MIN_ANGLE, or both the
+   non-Delaunay share is above CS_STALL_NONDELAUNAY and the obtuse share above CS_STALL_OBTUSE. The stalling meshes
+   of issue 35 had 0.08-2.8 deg, 42-55 % obtuse, 9-17 % non-Delaunay; their remeshes that moved ~30 deg (15-35 here)
+   and <= 0.2 % non-Delaunay. Obtuse alone does not predict a stall: -gen torus is 50 % obtuse, 0 % non-Delaunay,
+   and flows (docs/remeshing.md). Collective. */
+#define CS_STALL_MIN_ANGLE   3.0
+#define CS_STALL_OBTUSE      0.30
+#define CS_STALL_NONDELAUNAY 0.05
+PETSC_EXTERN PetscErrorCode CSTriangleQualityWarnStall(CSMesh mesh, Vec x);
+
 /* Sum of the corner angles at each vertex (a dmV1 vector; K_i = 2 pi - sum at interior vertices). */
 PETSC_EXTERN PetscErrorCode CSGeometryAngleSums(CSMesh mesh, Vec x, Vec s);
 /* Barycentric vertex dual areas A_i = sum of one third of the incident face areas (the diagonal *0). */

@@ -88,9 +88,20 @@ PETSC_EXTERN PetscErrorCode CSMeshDataRefine(CSMeshData *md, PetscInt levels, Pe
    faces 4i..4i+3 (the corners, then the middle). */
 PETSC_EXTERN PetscErrorCode CSMeshDataSplitOnce(CSMeshData *md, PetscBool loop);
 
+/* Isotropic remeshing in place (CGAL Polygon_mesh_processing::isotropic_remeshing, src/mesh/meshdata_remesh.c) to
+   `faces` faces (> 0: target edge length h = sqrt(4 A / (sqrt(3) faces)), equilateral faces tiling the area A) or
+   else to the target edge length h, with `iterations` CGAL iterations; a boundary is kept (its edges split to at
+   most h and protected). Refuses a result whose components, boundary loops or genus differ from topo's, warns when
+   it intersects itself; topo is replaced by the result's. md->name gets "(remeshed 6012f)". Rank 0. A build
+   without CGAL refuses with a one-line error naming `make deps`. */
+#define CS_REMESH_MIN_FACES 20
+#define CS_REMESH_MAX_FACES 1e7 /* CGAL's halfedge structure and AABB tree: ~1 kB a face (10 GB) */
+PETSC_EXTERN PetscErrorCode CSMeshDataRemesh(CSMeshData *md, CSTopology *topo, PetscInt faces, PetscReal h, PetscInt iterations);
+
 /* Builds md from the options database: -mesh FILE, or -gen icosphere|torus|flattorus|lattice|cylinder|disk with
    -gen_tau RE,IM (lattice), -gen_level, -gen_radius, -gen_torus_R, -gen_tube_r (PETSc option names ignore case), -gen_n, -gen_m, -gen_tau_re, -gen_tau_im, -gen_height, -gen_rings,
-   -mesh_refine n and -mesh_refine_type loop|midpoint (after validation),
+   -mesh_remesh N | -mesh_remesh_edge_length h with -mesh_remesh_iterations k (after validation), then
+   -mesh_refine n and -mesh_refine_type loop|midpoint (so a remeshed mesh can be refined),
    then validates it (topo filled on rank 0). Collective on comm: options are read on every rank, the data is
    loaded on rank 0 only (other ranks get an empty md); an error on rank 0 is raised on every rank (no hang). */
 PETSC_EXTERN PetscErrorCode CSMeshDataFromOptions(MPI_Comm comm, const char prefix[], CSMeshData *md, CSTopology *topo);

@@ -30,6 +30,9 @@ PETSC_EXTERN PetscErrorCode CSOutputViewerEvery(MPI_Comm comm, const char prefix
 /* The keys every task reports: counts, topology, area, volume, willmore, (q_mean, q_max against
    -reference or the given xref); CSOutputFinish then writes -o and -summary (adding seconds). */
 PETSC_EXTERN PetscErrorCode CSOutputAddMeshFacts(CSOutput *o, CSMesh mesh, Vec x, Vec xref);
+/* Keys quality_min_angle_deg, quality_obtuse_share, quality_nondelaunay_share (fractions), quality_edge_ratio,
+   quality_face_edge_ratio_max (CSGeometryTriangleQuality) and their printed line (-task info). */
+PETSC_EXTERN PetscErrorCode CSOutputAddTriangleQuality(CSOutput *o, CSMesh mesh, Vec x);
 /* Key willmore_bs: the circle-angle energy of bobenko-schroeder2005 with -bs_boundary fixed and beta_eps 1e-6
    (reported by -task info; the BS flow reports its own energy under the same key). */
 PETSC_EXTERN PetscErrorCode CSOutputAddWillmoreBS(CSOutput *o, CSMesh mesh, Vec x);

@@ -4,7 +4,7 @@
 # build/fuzz/ (fuzz/run.sh runs them on the committed corpus).
 
 SAN_FLAGS   := -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
-SAN_LIB_OBJ := $(LIB_SRC:%.c=build/san/obj/%.o)
+SAN_LIB_OBJ := $(LIB_SRC:%.c=build/san/obj/%.o) $(CXX_SRC:%.cc=build/san/obj/%.o)
 SAN_DRV_OBJ := $(DRV_SRC:%.c=build/san/obj/%.o)
 SAN_TESTS   := $(TEST_SRC:tests/unit/%.c=build/san/tests/%)
 
@@ -14,6 +14,10 @@ build/san/obj/src/linalg/quaternion_cholesky.o: CFLAGS += -O3
 build/san/obj/%.o: %.c
 	@mkdir -p $(dir $@)
 	$(CC) $(CPPFLAGS) $(CFLAGS) $(SAN_FLAGS) -c $< -o $@
+
+build/san/obj/%.o: %.cc
+	@mkdir -p $(dir $@)
+	$(CXX) $(CPPFLAGS_CGAL) $(CXXFLAGS) $(SAN_FLAGS) -c $< -o $@
 
 build/san/libconfsurf.a: $(SAN_LIB_OBJ)
 	@rm -f $@

@@ -5,6 +5,7 @@
 #include "cs_driver.h"
 #include "cs_output_willmore.h"
 #include "cs_methods_bs.h"
+#include "cs_geometry.h"
 
 /* After an error: -o only for a state that is a finite immersion (a triangle field's reconstruction is one only when
    the field is integrable, willmore_report.c CheckImmersion); the summary is written either way. */
@@ -87,6 +88,7 @@ static PetscErrorCode CSFlowWillmore(MPI_Comm comm, CSOutput *out)
   PetscFunctionBeginUser;
   PetscCall(CSMeshCreateFromOptions(comm, NULL, &mesh));
   ierr = CSMeshQualityCheck(mesh, mesh->x);
+  if (!ierr) ierr = CSTriangleQualityWarnStall(mesh, mesh->x); /* issue 35: slivers stall the flow at its start */
   if (!ierr) ierr = CSFlowWillmoreRun(mesh, out);
   if (ierr) PetscCall(CSMeshDestroy(&mesh)); /* no leak on the error path */
   PetscCall(ierr);

@@ -45,6 +45,7 @@ PetscErrorCode CSTaskInfo(MPI_Comm comm)
   if (ierr) PetscCall(CSOutputDestroy(&out)); /* no leak on the error path */
   PetscCall(ierr);
   ierr = CSOutputAddMeshFacts(&out, mesh, mesh->x, NULL);
+  if (!ierr) ierr = CSOutputAddTriangleQuality(&out, mesh, mesh->x);
   if (!ierr) ierr = CSOutputAddWillmoreBS(&out, mesh, mesh->x);
   if (!ierr && out.has_viewer) ierr = WriteInfoFields(mesh, out.viewer_dir);
   if (!ierr) ierr = CSOutputFinish(&out, mesh, mesh->x);

@@ -371,25 +371,49 @@ static PetscErrorCode OrientOutward(CSMeshData *md, const CSTopology *topo, Pets
   PetscFunctionReturn(0);
 }
 
+/* -o_input: the format by its extension, and the file writable, before any work (the checks of -o) */
+static PetscErrorCode CheckInputOutput(MPI_Comm comm, const char path[])
+{
+  char        ext[16];
+  CSFile      f;
+  PetscMPIInt rank;
+  PetscFunctionBeginUser;
+  PetscCall(CSPathExtension(path, ext, sizeof(ext)));
+  PetscCheck(!strcmp(ext, "obj") || !strcmp(ext, "off") || !strcmp(ext, "ply"), comm, PETSC_ERR_ARG_WRONG, "-o_input %s: the input mesh is written as .obj, .off or .ply", path);
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCall(CSFileOpen(comm, (PetscBool)!rank, "-o_input", path, PETSC_TRUE, &f));
+  PetscCall(CSFileDiscard(&f));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode CSMeshCreateFromOptions(MPI_Comm comm, const char prefix[], CSMesh *mesh)
 {
   CSMeshData  md;
   CSTopology  topo;
-  PetscBool   keep = PETSC_FALSE;
+  PetscBool   keep = PETSC_FALSE, write_input = PETSC_FALSE;
   PetscMPIInt rank;
+  char        input_out[PETSC_MAX_PATH_LEN] = "";
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   PetscCall(PetscMemzero(&md, sizeof(md)));
   PetscCall(PetscMemzero(&topo, sizeof(topo)));
   PetscOptionsBegin(comm, prefix, "Mesh orientation", NULL);
   PetscCall(PetscOptionsBool("-mesh_keep_orientation", "Keep an inward-oriented closed mesh as it is", NULL, keep, &keep, NULL));
+  PetscCall(PetscOptionsString("-o_input", "Write the input mesh as the task sees it (after -mesh_remesh, -mesh_refine, -mesh_deform_*) to this .obj/.off/.ply", NULL, input_out, input_out, sizeof(input_out), &write_input));
   PetscOptionsEnd();
+  if (write_input) PetscCall(CheckInputOutput(comm, input_out));
   PetscCall(PetscLogEventBegin(CS_EVENT_MeshRead, 0, 0, 0, 0));
   PetscCall(CSMeshDataFromOptions(comm, prefix, &md, &topo));
   if (!rank) PetscCall(OrientOutward(&md, &topo, keep));
   PetscCall(PetscLogEventEnd(CS_EVENT_MeshRead, 0, 0, 0, 0));
   PetscCall(CSMeshCreateFromData(comm, &md, &topo, mesh));
   PetscCall(CSMeshDeformFromOptions(*mesh, prefix));
+  if (write_input) {
+    PetscErrorCode ierr = CSMeshWrite(*mesh, (*mesh)->x, input_out);
+    if (ierr) PetscCall(CSMeshDestroy(mesh)); /* no leak on the error path */
+    PetscCall(ierr);
+    PetscCall(PetscPrintf(comm, "wrote input mesh %s\n", input_out));
+  }
   PetscFunctionReturn(0);
 }
 

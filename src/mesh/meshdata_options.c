@@ -26,6 +26,8 @@ typedef struct {
   PetscBool project;
   PetscInt  refine;      /* -mesh_refine: 1-to-4 splits after validation (meshdata_refine.c) */
   PetscBool refine_loop; /* -mesh_refine_type loop (default) or midpoint */
+  PetscInt  remesh_faces, remesh_iterations; /* -mesh_remesh N (0: off), -mesh_remesh_iterations (meshdata_remesh.c) */
+  PetscReal remesh_h;                        /* -mesh_remesh_edge_length (0: off) */
   char      lengths[PETSC_MAX_PATH_LEN]; /* -mesh_lengths FILE: an intrinsic metric (the target conformal class) */
   char      crossratios[PETSC_MAX_PATH_LEN]; /* -mesh_cross_ratios FILE: the target class as cross ratios */
   PetscReal crtol;                            /* -mesh_cross_ratios_tol */
@@ -52,6 +54,7 @@ static PetscErrorCode MeshSourceLoad(const MeshSource *src, CSMeshData *md, CSTo
     }
   }
   ierr = CSMeshDataValidate(md, topo);
+  if (!ierr && (src->remesh_faces || src->remesh_h > 0)) ierr = CSMeshDataRemesh(md, topo, src->remesh_faces, src->remesh_h, src->remesh_iterations);
   if (!ierr && src->lengths[0]) ierr = CSMeshDataReadLengths("-mesh_lengths", src->lengths, md);
   if (!ierr && src->crossratios[0]) ierr = CSMeshDataReadCrossRatios("-mesh_cross_ratios", src->crossratios, src->crtol, md);
   if (!ierr && src->refine) {
@@ -62,6 +65,44 @@ static PetscErrorCode MeshSourceLoad(const MeshSource *src, CSMeshData *md, CSTo
     PetscCall(CSMeshDataDestroy(md));
     return ierr;
   }
+  PetscFunctionReturn(0);
+}
+
+/* A numeric option read as text, so that every bad value ('abc', nan, 1e300, 2.5 for a count) is refused with one
+   line naming the option (PETSc's integer parser names only the string). Empty text: *v untouched. */
+static PetscErrorCode ParseOption(MPI_Comm comm, const char pre[], const char name[], const char text[], PetscBool integer, PetscReal lo, PetscReal hi, const char want[], PetscReal *v)
+{
+  char  *end;
+  double d;
+  PetscFunctionBeginUser;
+  if (!text[0]) PetscFunctionReturn(0);
+  d = strtod(text, &end);
+  PetscCheck(end != text && !*end && PetscIsNormalReal((PetscReal)d) && (!integer || d == PetscFloorReal(d)) && d >= lo && d <= hi, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%s%s %s: %s", pre, name, text, want);
+  *v = (PetscReal)d;
+  PetscFunctionReturn(0);
+}
+
+/* -mesh_remesh N | -mesh_remesh_edge_length h, -mesh_remesh_iterations k: read and checked on every rank */
+static PetscErrorCode RemeshOptions(MPI_Comm comm, const char prefix[], MeshSource *src)
+{
+  char        tn[64] = "", th[64] = "", tk[64] = "";
+  const char *pre = prefix ? prefix : "";
+  PetscReal   n = 0, h = 0, k = 5; /* 5 iterations: see docs/remeshing.md (min angle on cow/triceratops by k) */
+  char        want[128];
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(comm, prefix, "Isotropic remeshing (CGAL) of the input", NULL);
+  PetscCall(PetscOptionsString("-mesh_remesh", "Remesh the input isotropically to about N faces (CGAL isotropic_remeshing, before -mesh_refine; docs/remeshing.md)", "CSMeshDataRemesh", tn, tn, sizeof(tn), NULL));
+  PetscCall(PetscOptionsString("-mesh_remesh_edge_length", "Remesh the input isotropically to this target edge length (instead of -mesh_remesh N)", "CSMeshDataRemesh", th, th, sizeof(th), NULL));
+  PetscCall(PetscOptionsString("-mesh_remesh_iterations", "Iterations of the isotropic remeshing (split, collapse, flip, relax, project), default 5", "CSMeshDataRemesh", tk, tk, sizeof(tk), NULL));
+  PetscOptionsEnd();
+  PetscCall(PetscSNPrintf(want, sizeof(want), "want an integer face count in [%d, %.0e]", CS_REMESH_MIN_FACES, (double)CS_REMESH_MAX_FACES));
+  PetscCall(ParseOption(comm, pre, "mesh_remesh", tn, PETSC_TRUE, CS_REMESH_MIN_FACES, CS_REMESH_MAX_FACES, want, &n));
+  PetscCall(ParseOption(comm, pre, "mesh_remesh_edge_length", th, PETSC_FALSE, 0, PETSC_MAX_REAL, "want a finite length > 0", &h));
+  PetscCall(ParseOption(comm, pre, "mesh_remesh_iterations", tk, PETSC_TRUE, 1, 100, "want an integer in [1, 100]", &k));
+  PetscCheck(!(tn[0] && th[0]), comm, PETSC_ERR_ARG_INCOMP, "-%smesh_remesh %s with -%smesh_remesh_edge_length %s: give one of them", pre, tn, pre, th);
+  src->remesh_faces      = (PetscInt)n;
+  src->remesh_h          = h;
+  src->remesh_iterations = (PetscInt)k;
   PetscFunctionReturn(0);
 }
 
@@ -128,6 +169,8 @@ PetscErrorCode CSMeshDataFromOptions(MPI_Comm comm, const char prefix[], CSMeshD
   PetscCheck(!src.lengths[0] || !src.crossratios[0], comm, PETSC_ERR_ARG_INCOMP, "-%smesh_lengths with -%smesh_cross_ratios: give the target class once", pre, pre);
   PetscCheck(src.crtol > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%smesh_cross_ratios_tol %g: must be > 0", pre, (double)src.crtol);
   src.refine_loop = rtype == 1 ? PETSC_TRUE : PETSC_FALSE;
+  PetscCall(RemeshOptions(comm, prefix, &src));
+  PetscCheck(!(src.remesh_faces || src.remesh_h > 0) || (!src.lengths[0] && !src.crossratios[0]), comm, PETSC_ERR_ARG_INCOMP, "-%smesh_remesh with -%smesh_lengths or -%smesh_cross_ratios: the target class is given for the input's own edges", pre, pre, pre);
   PetscCheck(src.file != genset, comm, PETSC_ERR_ARG_WRONG, "give exactly one of -%smesh FILE and -%sgen icosphere|torus|flattorus|cylinder|disk|lattice|spiky|morin (%s)", pre, pre, src.file ? "both were given" : "neither was given");
   src.gen = (GenType)gen;
   CSRootCall(comm, MeshSourceLoad(&src, md, topo));

@@ -106,6 +106,20 @@ PetscErrorCode CSOutputAddMeshFacts(CSOutput *o, CSMesh mesh, Vec x, Vec xref)
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode CSOutputAddTriangleQuality(CSOutput *o, CSMesh mesh, Vec x)
+{
+  CSTriangleQuality q;
+  PetscFunctionBeginUser;
+  PetscCall(CSGeometryTriangleQuality(mesh, x, &q));
+  PetscCall(CSJSONAddReal(o->json, "quality_min_angle_deg", q.min_angle_deg));
+  PetscCall(CSJSONAddReal(o->json, "quality_obtuse_share", q.obtuse_share));
+  PetscCall(CSJSONAddReal(o->json, "quality_nondelaunay_share", q.nondelaunay_share));
+  PetscCall(CSJSONAddReal(o->json, "quality_edge_ratio", q.edge_ratio));
+  PetscCall(CSJSONAddReal(o->json, "quality_face_edge_ratio_max", q.face_edge_ratio));
+  PetscCall(PetscPrintf(mesh->comm, "triangle quality: min angle %.4g deg, obtuse faces %.2f %%, non-Delaunay edges %.2f %% of %" PetscInt_FMT " interior, edge length max/min %.4g (worst face %.4g)\n", (double)q.min_angle_deg, (double)(100 * q.obtuse_share), (double)(100 * q.nondelaunay_share), q.interior_edges, (double)q.edge_ratio, (double)q.face_edge_ratio));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode CSOutputAddWillmoreBS(CSOutput *o, CSMesh mesh, Vec x)
 {
   CSEnergy  bs;

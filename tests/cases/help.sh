@@ -19,6 +19,6 @@ check "-task flow" "-flow_rtol -flow_type -flow_viewer_every -flow_constraint_ar
 grep -qE -- "-flow_rtol <1e-06 : 1e-06>" "$TMP/t.txt" || { echo "BAD: -flow_rtol default not shown"; exit 1; }
 check "-task flow -flow_type bs" "-bs_max_it -bs_scheme -o" "^  -(spin_|flow_rtol)|_ksp_|_pc_"
 check "-task spin" "-spin_solver -spin_boundary -o" "^  -(flow_|bs_)|_ksp_|_eps_|_st_"
-check "-task info" "-mesh -gen -o" "^  -(flow_|bs_|spin_)"
+check "-task info" "-mesh -gen -o -mesh_remesh -mesh_remesh_edge_length -mesh_remesh_iterations -o_input" "^  -(flow_|bs_|spin_)"
 EXPECT="-flow_rtoll" expect_fail "$CS_BIN" -task flow -gen icosphere -gen_level 1 -flow_max_it 1 -flow_rtoll 1
 check "-task curveflow" "-curve_tau -curve -gen_curve -o" "^  -(flow_|bs_|spin_|gen_level)|_ksp_|_pc_"
