@@ -10,7 +10,7 @@ PetscErrorCode CSWFStopOptions(CSWillmoreFlow F, PetscOptionItems *PetscOptionsO
 {
   PetscBool set;
   PetscFunctionBeginUser;
-  PetscCall(PetscOptionsEnum("-el_norm", "What -rtol tests: the scale-free residual el_residual_scaled = el_residual sqrt(A) / max(|E|, 1e-3 |E_input|) (scaled), or el_residual itself (absolute)", NULL, CSFlowELNormTypes, (PetscEnum)F->el_norm, (PetscEnum *)&F->el_norm, NULL));
+  PetscCall(PetscOptionsEnum("-el_norm", "What -rtol tests: the scale-free residual el_residual_scaled = el_residual sqrt(A) / max(|E|, 1e-3 |E_input|) (scaled), or el_residual itself (absolute)", NULL, CSFlowELNormTypes, (PetscEnum)F->el_norm, (PetscEnum *)&F->el_norm, &F->el_norm_set));
   PetscCall(PetscOptionsInt("-stationary_window", "Stop as converged (stop_reason stationary) when over this many accepted steps W changed by at most -stationary_rtol (relative) and the vertices moved by at most -stationary_xtol mean edge lengths in total, with the violation below -ctol (0: off)", NULL, F->stat_window, &F->stat_window, NULL));
   PetscCall(PetscOptionsReal("-stationary_rtol", "Stationarity: largest relative spread (max - min) / |W| of W over the window", NULL, F->stat_rtol, &F->stat_rtol, NULL));
   PetscCall(PetscOptionsReal("-stationary_xtol", "Stationarity: largest sum over the window of the steps' largest vertex displacements, in mean edge lengths", NULL, F->stat_xtol, &F->stat_xtol, NULL));

@@ -208,6 +208,7 @@ struct _p_CSWillmoreFlow {
 
   /* the stopping rule (stop.c, docs/willmore_flow.md "Stopping") */
   CSFlowELNormType      el_norm;   /* -flow_el_norm: what -flow_rtol tests */
+  PetscBool             el_norm_set;
   PetscReal             els;       /* el_residual_scaled at x: el sqrt(A) / max(|E|, 1e-3 |E0|) */
   PetscReal             E0;        /* |E| of the input (the floor of the scaling; < 0: not computed yet) */
   PetscInt              stat_window;          /* -flow_stationary_window K (0: off) */
