@@ -47,3 +47,7 @@ for name, ok, v in checks:
   print(("ok  " if ok else "BAD ") + name + ": " + repr(v)); bad += not ok
 sys.exit(bad)
 PY
+# bad values of the new options: one line naming the option
+EXPECT="-flow_stationary_window 65: use 0" expect_fail "$CS_BIN" -task flow -gen icosphere -gen_level 1 -flow_stationary_window 65 || exit 1
+EXPECT="-flow_keep_best guard: not available for -flow_type trianglefield" expect_fail "$CS_BIN" -task flow -flow_type trianglefield -gen icosphere -gen_level 1 -flow_keep_best guard || exit 1
+EXPECT="-flow_el_norm" expect_fail "$CS_BIN" -task flow -gen icosphere -gen_level 1 -flow_el_norm relative || exit 1

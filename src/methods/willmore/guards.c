@@ -64,7 +64,7 @@ static const char *ClassText(CSWillmoreFlow F, char buf[], size_t n)
 {
   const PetscReal w8 = 8 * PETSC_PI;
   PetscInt        g  = F->mesh->topo.genus;
-  if (g == 0) (void)PetscSNPrintf(buf, n, "W = %.4g on this genus-0 surface (every genus-0 surface is conformal to the round sphere, W = 4 pi = 12.57): the flow shrinks the parts that keep W above it, finer than this mesh resolves", (double)F->E);
+  if (g == 0) (void)PetscSNPrintf(buf, n, "W = %.4g on this genus-0 surface (conformal to the round sphere, whose W = 4 pi = 12.57 bounds every closed surface's from below): the conformal factor concentrates where this mesh cannot resolve it", (double)F->E);
   else if (F->E >= w8) (void)PetscSNPrintf(buf, n, "W = %.4g >= 8 pi = 25.13 on this genus-%" PetscInt_FMT " surface, as at every such stop measured so far: this conformal class's infimum of W appears to need a conformal factor that degenerates, which no fixed mesh carries (docs/real_meshes.md)", (double)F->E, g);
   else (void)PetscSNPrintf(buf, n, "W = %.4g < 8 pi = 25.13 on this genus-%" PetscInt_FMT " surface: a minimiser of the class may exist, and a finer or more regular mesh may get further (docs/real_meshes.md)", (double)F->E, g);
   return buf;
