@@ -15,7 +15,7 @@
 source tests/lib.sh
 T="-task flow -gen torus -gen_torus_R 3 -gen_tube_r 1 -gen_n 24 -gen_m 12"
 C="-task flow -gen cylinder -gen_n 24 -gen_m 12 -gen_height 2 -flow_energy area -flow_type cgd -flow_max_it 40"
-run() { local n=$1; shift; timeout 120 $MPIEXEC "$CS_BIN" "$@" -summary "$TMP/$n.json" > "$TMP/$n.log" 2>&1 || { tail "$TMP/$n.log"; exit 1; }; }
+run() { local n=$1; shift; timeout 300 $MPIEXEC "$CS_BIN" "$@" -summary "$TMP/$n.json" > "$TMP/$n.log" 2>&1 || { tail "$TMP/$n.log"; exit 1; }; }
 run div $T -flow_type gd -flow_max_area_ratio 1.2 -flow_max_it 30
 run stat $C
 run nostat $C -flow_stationary_window 0
