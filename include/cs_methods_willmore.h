@@ -34,11 +34,13 @@ typedef enum {
   CS_WILLMORE_FLOW_DIVERGED_MESH_DEGENERATE, /* vertex-area spread beyond -flow_max_area_ratio */
   CS_WILLMORE_FLOW_STALLED,                  /* the step size t fell below -flow_t_min: no progress, not converged */
   CS_WILLMORE_FLOW_CONVERGED_ENERGY_TARGET,  /* the energy reached -flow_energy_target */
-  CS_WILLMORE_FLOW_DIVERGED_FOLDED           /* the enclosed volume changed sign or faces turned over against the
+  CS_WILLMORE_FLOW_DIVERGED_FOLDED,          /* the enclosed volume changed sign or faces turned over against the
                                                 input (-flow_fold_guard): stopped at the last good state */
+  CS_WILLMORE_FLOW_CONVERGED_STATIONARY      /* W and x stationary over -flow_stationary_window accepted steps, the
+                                                violation below ctol (a fixed point of the iteration above rtol) */
 } CSWillmoreFlowConvergedReason;
-/* Whether a reason is a convergence (rtol, or the energy target). */
-#define CSWillmoreFlowReasonConverged(r) ((r) == CS_WILLMORE_FLOW_CONVERGED_RTOL || (r) == CS_WILLMORE_FLOW_CONVERGED_ENERGY_TARGET)
+/* Whether a reason is a convergence (rtol, the energy target, or a stationary iteration). */
+#define CSWillmoreFlowReasonConverged(r) ((r) == CS_WILLMORE_FLOW_CONVERGED_RTOL || (r) == CS_WILLMORE_FLOW_CONVERGED_ENERGY_TARGET || (r) == CS_WILLMORE_FLOW_CONVERGED_STATIONARY)
 PETSC_EXTERN const char *const CSWillmoreFlowConvergedReasons[];
 PETSC_EXTERN const char *const CSWillmoreFlowStopReasons[];
 
@@ -56,6 +58,12 @@ typedef enum { CS_FLOW_METRIC_H2, CS_FLOW_METRIC_L2, CS_FLOW_METRIC_H1 } CSFlowM
 typedef enum { CS_FLOW_BOUNDARY_DIRICHLET, CS_FLOW_BOUNDARY_FREE, CS_FLOW_BOUNDARY_NORMALS } CSFlowBoundaryType;
 typedef enum { CS_SADDLE_MAT_NEST, CS_SADDLE_MAT_AIJ } CSSaddleMatType;
 typedef enum { CS_ALM_METRIC_PLAIN, CS_ALM_METRIC_GAUSS_NEWTON } CSALMMetricType;
+/* -flow_el_norm: what -flow_rtol tests, the scale-free residual el_residual_scaled (default) or el_residual itself */
+typedef enum { CS_FLOW_EL_NORM_SCALED, CS_FLOW_EL_NORM_ABSOLUTE } CSFlowELNormType;
+/* -flow_keep_best: at which non-converged stops the flow returns the kept best state instead of the last one */
+typedef enum { CS_FLOW_KEEP_BEST_NONE, CS_FLOW_KEEP_BEST_GUARD, CS_FLOW_KEEP_BEST_ALL } CSFlowKeepBestType;
+PETSC_EXTERN const char *const CSFlowELNormTypes[];
+PETSC_EXTERN const char *const CSFlowKeepBestTypes[];
 PETSC_EXTERN const char *const CSALMMetricTypes[];
 PETSC_EXTERN const char *const CSFlowMetricTypes[];
 PETSC_EXTERN const char *const CSFlowBoundaryTypes[];
@@ -65,6 +73,7 @@ PETSC_EXTERN const char *const CSSaddleMatTypes[];
 typedef struct {
   PetscInt         it;                  /* accepted steps so far */
   PetscReal        energy, area, volume, conformal_violation, constraint_violation, el_residual, t;
+  PetscReal        el_residual_scaled;  /* el_residual sqrt(area) / max(|energy|, 1e-3 |energy of the input|): scale-free */
   PetscInt         ksp_its;             /* Krylov iterations of the last step */
   PetscInt         ksp_its_total, rejections, nguard, pc_setups, linear_solves;
   PetscReal        area_spread, q_max, seconds;
@@ -81,6 +90,13 @@ typedef struct {
   PetscInt         pinch_edges;         /* trianglefield: edges with |psi_jil - tau_ij psi_ijk| >= sqrt 2 (App. C.1; -1: other kinds) */
   PetscInt         k;                   /* global constraint values */
   const PetscReal *constraint_values;
+  /* -flow_keep_best: the state of smallest el_residual_scaled with the violation <= ctol seen in the run (best_it -1:
+     none yet); best_used: the flow returned it at its stop (CSWillmoreFlowUseBest), so the fields above describe it */
+  PetscInt         best_it;
+  PetscReal        best_el_residual_scaled, best_energy;
+  PetscBool        best_used;
+  PetscInt         last_it;             /* the iteration of the last state (== it unless best_used) */
+  PetscReal        last_energy, last_el_residual_scaled;
 } CSWillmoreFlowInfo;
 /* whether the state of info is an immersion -o may write: positions (vertex kinds), or a triangle field integrable to
    -flow_immersion_tol (its Poisson reconstruction is an immersion of it only then) */
@@ -101,6 +117,9 @@ PETSC_EXTERN PetscErrorCode CSWillmoreFlowSetUp(CSWillmoreFlow flow);
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowStep(CSWillmoreFlow flow, CSWillmoreFlowConvergedReason *reason);
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowSolve(CSWillmoreFlow flow);
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetConvergedReason(CSWillmoreFlow flow, CSWillmoreFlowConvergedReason *reason);
+/* After a stop: make the kept best state (-flow_keep_best) the flow's state when the stop reason calls for it
+   (*used); Solve leaves the last state, so a final checkpoint can store it first (the driver calls this after). */
+PETSC_EXTERN PetscErrorCode CSWillmoreFlowUseBest(CSWillmoreFlow flow, PetscBool *used);
 /* The positions of the current / initial state (dmV3, borrowed); for trianglefield the surface reconstructed from
    the triangle field (CSTriangleFieldReconstruct), whose own vector CSWillmoreFlowGetVariables gives. */
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetSolution(CSWillmoreFlow flow, Vec *x);   /* borrowed */

@@ -8,7 +8,7 @@ static PetscErrorCode MonitorProgress(CSWillmoreFlow flow, PetscInt it, void *ct
   PetscFunctionBeginUser;
   PetscCall(CSWillmoreFlowGetInfo(flow, &i));
   PetscCall(CSWillmoreFlowGetMesh(flow, &mesh));
-  PetscCall(PetscPrintf(mesh->comm, "%4" PetscInt_FMT " E %.12g area %.8g vol %.8g |c|inf %.3e |xi| %.3e el %.3e t %.3g ksp %" PetscInt_FMT "\n", it, (double)i.energy, (double)i.area, (double)i.volume, (double)i.conformal_violation, (double)i.constraint_violation, (double)i.el_residual, (double)i.t, i.ksp_its));
+  PetscCall(PetscPrintf(mesh->comm, "%4" PetscInt_FMT " E %.12g area %.8g vol %.8g |c|inf %.3e |xi| %.3e el %.3e t %.3g ksp %" PetscInt_FMT " els %.3e\n", it, (double)i.energy, (double)i.area, (double)i.volume, (double)i.conformal_violation, (double)i.constraint_violation, (double)i.el_residual, (double)i.t, i.ksp_its, (double)i.el_residual_scaled));
   PetscFunctionReturn(0);
 }
 
@@ -25,8 +25,8 @@ static PetscErrorCode MonitorHistory(CSWillmoreFlow flow, PetscInt it, void *ctx
   PetscFunctionBeginUser;
   PetscCall(CSWillmoreFlowGetInfo(flow, &i));
   {
-    PetscReal row[13] = {(PetscReal)it, i.energy, i.area, i.volume, i.conformal_violation, i.constraint_violation, i.el_residual, i.t, (PetscReal)i.ksp_its, (PetscReal)i.rejections, i.seconds, i.area_spread, i.q_max};
-    PetscCall(CSHistoryAppend((CSHistory)ctx, 13, row));
+    PetscReal row[14] = {(PetscReal)it, i.energy, i.area, i.volume, i.conformal_violation, i.constraint_violation, i.el_residual, i.t, (PetscReal)i.ksp_its, (PetscReal)i.rejections, i.seconds, i.area_spread, i.q_max, i.el_residual_scaled};
+    PetscCall(CSHistoryAppend((CSHistory)ctx, 14, row));
   }
   PetscFunctionReturn(0);
 }
@@ -40,7 +40,7 @@ PetscErrorCode CSWillmoreFlowMonitorHistorySet(CSWillmoreFlow flow, CSOutput *ou
   PetscFunctionBeginUser;
   PetscCall(CSWillmoreFlowGetInfo(flow, &i));
   PetscCall(CSWillmoreFlowGetMesh(flow, &mesh));
-  PetscCall(CSOutputHistoryCreate(out, mesh->comm, "it,energy,area,volume,conformal_violation,constraint_violation,el_residual,t,ksp_its,rejections,seconds,area_spread,q_max", i.it, &h));
+  PetscCall(CSOutputHistoryCreate(out, mesh->comm, "it,energy,area,volume,conformal_violation,constraint_violation,el_residual,t,ksp_its,rejections,seconds,area_spread,q_max,el_residual_scaled", i.it, &h));
   if (h) PetscCall(CSWillmoreFlowMonitorSet(flow, MonitorHistory, h, CSHistoryMonitorDestroy));
   PetscFunctionReturn(0);
 }

@@ -32,6 +32,15 @@ static PetscErrorCode SummaryKeys(CSWillmoreFlow flow, CSOutput *out, const CSWi
   PetscCall(CSJSONAddReal(out->json, "conformal_violation", i->conformal_violation));
   PetscCall(CSJSONAddReal(out->json, "constraint_violation", i->constraint_violation));
   PetscCall(CSJSONAddReal(out->json, "el_residual", i->el_residual));
+  PetscCall(CSJSONAddReal(out->json, "el_residual_scaled", i->el_residual_scaled)); /* what -flow_rtol tests by default */
+  /* which state -o and the keys above hold (-flow_keep_best), and the other one */
+  PetscCall(CSJSONAddString(out->json, "state", i->best_used ? "best" : "last"));
+  PetscCall(CSJSONAddInt(out->json, "best_iteration", i->best_it));
+  if (i->best_it >= 0) PetscCall(CSJSONAddReal(out->json, "best_el_residual_scaled", i->best_el_residual_scaled));
+  if (i->best_it >= 0) PetscCall(CSJSONAddReal(out->json, "best_energy", i->best_energy));
+  PetscCall(CSJSONAddInt(out->json, "last_iteration", i->last_it));
+  PetscCall(CSJSONAddReal(out->json, "last_energy", i->last_energy));
+  PetscCall(CSJSONAddReal(out->json, "last_el_residual_scaled", i->last_el_residual_scaled));
   PetscCall(CSJSONAddReal(out->json, "el_min", i->el_min)); /* the smallest EL residual of the run, at it_el_min */
   PetscCall(CSJSONAddInt(out->json, "it_el_min", i->it_el_min));
   PetscCall(CSJSONAddReal(out->json, "energy_el_min", i->energy_el_min));
@@ -79,14 +88,17 @@ static PetscErrorCode CheckImmersion(CSWillmoreFlow flow, CSOutput *out, CSMesh 
 }
 PetscErrorCode CSWillmoreFlowReport(CSWillmoreFlow flow, CSOutput *out)
 {
-  CSWillmoreFlowInfo            i;
+  CSWillmoreFlowInfo            i, last;
   CSWillmoreFlowType            type;
   CSWillmoreFlowConvergedReason reason;
   CSMesh                        mesh;
   Vec                           x, x0;
   const char                   *prefix;
+  PetscBool                     best;
   PetscFunctionBeginUser;
-  PetscCall(CSWillmoreFlowCheckpointFinal(flow, out));
+  PetscCall(CSWillmoreFlowCheckpointFinal(flow, out)); /* the last state: a resume continues the iteration */
+  PetscCall(CSWillmoreFlowGetInfo(flow, &last));       /* the path line is of the last state */
+  PetscCall(CSWillmoreFlowUseBest(flow, &best));       /* -flow_keep_best: -o and the summary get the best state */
   PetscCall(CSWillmoreFlowGetOptionsPrefix(flow, &prefix));
   PetscCall(CSWillmoreFlowGetInfo(flow, &i));
   PetscCall(CSWillmoreFlowGetType(flow, &type));
@@ -94,9 +106,9 @@ PetscErrorCode CSWillmoreFlowReport(CSWillmoreFlow flow, CSOutput *out)
   PetscCall(CSWillmoreFlowGetMesh(flow, &mesh));
   PetscCall(CSWillmoreFlowGetSolution(flow, &x));
   PetscCall(CSWillmoreFlowGetInitial(flow, &x0));
-  PetscCall(PetscPrintf(mesh->comm, "flow %s: %s after %" PetscInt_FMT " iterations (%s; %" PetscInt_FMT " rejected steps, %" PetscInt_FMT " KSP iterations, %" PetscInt_FMT " edges with guarded I_Q weight), %.3f s; conformal violation %.2e, constraint violation %.2e (largest violation of the run %.2e), EL residual %.2e\n", type, CSWillmoreFlowReasonConverged(reason) ? "converged" : "NOT converged", i.it, CSWillmoreFlowStopReasons[reason], i.rejections, i.ksp_its_total, i.nguard, i.seconds, (double)i.conformal_violation, (double)i.constraint_violation, (double)i.violation_max, (double)i.el_residual));
+  PetscCall(PetscPrintf(mesh->comm, "flow %s: %s after %" PetscInt_FMT " iterations (%s; %" PetscInt_FMT " rejected steps, %" PetscInt_FMT " KSP iterations, %" PetscInt_FMT " edges with guarded I_Q weight), %.3f s; conformal violation %.2e, constraint violation %.2e (largest violation of the run %.2e), EL residual %.2e (scaled %.2e)%s\n", type, CSWillmoreFlowReasonConverged(reason) ? "converged" : "NOT converged", i.it, CSWillmoreFlowStopReasons[reason], i.rejections, i.ksp_its_total, i.nguard, i.seconds, (double)i.conformal_violation, (double)i.constraint_violation, (double)i.violation_max, (double)i.el_residual, (double)i.el_residual_scaled, best ? "; these are of the best state kept (-o writes it)" : ""));
   if (i.violation_grew) PetscCall(PetscPrintf(mesh->comm, "flow %s: the constraint violation GREW during the run: %.2e at the end against %.2e at iteration %" PetscInt_FMT " (largest %.2e at iteration %" PetscInt_FMT "); the result does not satisfy the constraints (conformal class, global rows) to -%sctol (summary key violation_grew)\n", type, (double)PetscMax(i.conformal_violation, i.constraint_violation), (double)i.violation_min, i.violation_min_it, (double)i.violation_max, i.violation_max_it, prefix ? prefix : ""));
-  if (!CSWillmoreFlowReasonConverged(reason)) PetscCall(PathLine(mesh, &i));
+  if (!CSWillmoreFlowReasonConverged(reason)) PetscCall(PathLine(mesh, &last));
   PetscCall(SummaryKeys(flow, out, &i));
   PetscCall(CSOutputAddMeshFacts(out, mesh, x, x0));
   PetscCall(CheckImmersion(flow, out, mesh, &i));

@@ -16,7 +16,7 @@ check() { # task-args, must-have regex list, must-not regex
   echo "ok  $args -help: $(grep -c '^  -' "$TMP/t.txt") options, none of /$not/"
 }
 check "-task flow" "-flow_rtol -flow_type -flow_viewer_every -flow_constraint_area -o -mesh -viewer_dir" "^  -(spin_|bs_)|_ksp_|_pc_"
-grep -qE -- "-flow_rtol <1e-06 : 1e-06>" "$TMP/t.txt" || { echo "BAD: -flow_rtol default not shown"; exit 1; }
+grep -qE -- "-flow_rtol <5e-07 : 5e-07>" "$TMP/t.txt" || { echo "BAD: -flow_rtol default not shown"; exit 1; }
 check "-task flow -flow_type bs" "-bs_max_it -bs_scheme -o" "^  -(spin_|flow_rtol)|_ksp_|_pc_"
 check "-task spin" "-spin_solver -spin_boundary -o" "^  -(flow_|bs_)|_ksp_|_eps_|_st_"
 check "-task info" "-mesh -gen -o -mesh_remesh -mesh_remesh_edge_length -mesh_remesh_iterations -o_input" "^  -(flow_|bs_|spin_)"

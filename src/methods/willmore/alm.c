@@ -69,9 +69,10 @@ static PetscErrorCode TrialALM(CSWillmoreFlow F, PetscBool *accept)
   PetscInt its;
   PetscBool gn = (PetscBool)(F->alm_metric == CS_ALM_METRIC_GAUSS_NEWTON);
   PetscFunctionBeginUser;
-  if (F->alm_update != F->it && (F->alm_inner >= F->alm_inner_it || F->el < F->rtol)) {
+  if (F->alm_update != F->it && (F->alm_inner >= F->alm_inner_it || CSWFStopResidual(F) < F->rtol)) {
     PetscCall(UpdateMultipliers(F));
     PetscCall(CSWFResidual(F, &F->el)); /* grad L_A with the new mu, rho: the step's direction */
+    PetscCall(CSWFScaledResidual(F));
   }
   PetscCall(CSWFSetOperators(F, F->t, F->rho));
   PetscCall(VecCopy(F->r, F->tmp));

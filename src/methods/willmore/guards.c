@@ -57,6 +57,31 @@ static const char *DegenerationText(CSWillmoreFlowDegeneration d)
   }
 }
 
+/* W against 8 pi: Li-Yau (W >= 8 pi for a surface with a double point) and the torus sweep of issue 35 / docs/real_meshes.md
+   (every squeeze stop measured so far had W > 8 pi; the fat torus class b = sqrt(3), W 21.33, settles). A reading,
+   stated as one: the classes whose infimum needs a degenerating conformal factor end near or above 8 pi. */
+static const char *ClassText(CSWillmoreFlow F, char buf[], size_t n)
+{
+  const PetscReal w8 = 8 * PETSC_PI;
+  PetscInt        g  = F->mesh->topo.genus;
+  if (g == 0) (void)PetscSNPrintf(buf, n, "W = %.4g on this genus-0 surface (conformal to the round sphere, whose W = 4 pi = 12.57 bounds every closed surface's from below): the conformal factor concentrates where this mesh cannot resolve it", (double)F->E);
+  else if (F->E >= w8) (void)PetscSNPrintf(buf, n, "W = %.4g >= 8 pi = 25.13 on this genus-%" PetscInt_FMT " surface, as at every such stop measured so far: this conformal class's infimum of W appears to need a conformal factor that degenerates, which no fixed mesh carries (docs/real_meshes.md)", (double)F->E, g);
+  else (void)PetscSNPrintf(buf, n, "W = %.4g < 8 pi = 25.13 on this genus-%" PetscInt_FMT " surface: a minimiser of the class may exist, and a finer or more regular mesh may get further (docs/real_meshes.md)", (double)F->E, g);
+  return buf;
+}
+
+/* The guard's stop in one sentence: the mechanism measured (fins, or a smooth squeeze; the spread and q_max) and the
+   class's W against 8 pi with the genus. */
+static PetscErrorCode SayMechanism(CSWillmoreFlow F)
+{
+  char cls[400];
+  PetscFunctionBeginUser;
+  (void)ClassText(F, cls, sizeof(cls));
+  if (F->degeneration == CS_WILLMORE_FLOW_DEGENERATION_FINS) PetscCall(PetscPrintf(F->comm, "flow: the surface is growing fins at iteration %" PetscInt_FMT ": the conformal factor jumps across faces (a face's quasi-conformal error is %.3g > -%sfin_q %g) and the vertex areas spread %.0fx against the input; %s.\n", F->it, (double)F->qmax, F->prefix, (double)F->fin_q, (double)F->spread, cls));
+  else PetscCall(PetscPrintf(F->comm, "flow: the surface is squeezing conformally at iteration %" PetscInt_FMT ": the vertex areas spread %.0fx against the input while every face keeps its shape (q_max %.3g)%s; %s.\n", F->it, (double)F->spread, (double)F->qmax, F->degeneration == CS_WILLMORE_FLOW_DEGENERATION_SMOOTH ? ", or it slides along a Moebius orbit (the gauge is free)" : "", cls));
+  PetscFunctionReturn(0);
+}
+
 /* The resolution guard (-flow_max_area_ratio, docs/willmore_flow.md): sets *reason to DIVERGED_AREA when the total
    area has changed by more than the ratio, or to DIVERGED_MESH_DEGENERATE when the vertex areas relative to the input
    spread by more than it, and then says which concentration it measured (Classify); leaves it alone otherwise. */
@@ -73,6 +98,7 @@ PetscErrorCode CSWFCheckResolution(CSWillmoreFlow F, CSWillmoreFlowConvergedReas
   }
   if (!(F->spread <= F->max_area_ratio)) {
     F->degeneration = Classify(F);
+    PetscCall(SayMechanism(F));
     PetscCall(PetscPrintf(F->comm, "flow: mesh resolution collapse at iteration %" PetscInt_FMT ": the vertex areas relative to the input spread by max(A/A0)/min(A/A0) = %g, beyond -%smax_area_ratio (%g), with the constraints %s (violation %.2e) and the largest quasi-conformal error of a face %.3g (-%sfin_q %g): %s. Stopping with this state; it is not a critical point and its energy is not trustworthy (docs/real_meshes.md; -%smax_area_ratio 0 disables this check)\n", it, (double)F->spread, F->prefix, (double)F->max_area_ratio, viol < 1e3 * F->ctol ? "met" : "NOT met", (double)viol, (double)F->qmax, F->prefix, (double)F->fin_q, DegenerationText(F->degeneration), F->prefix));
     *reason = CS_WILLMORE_FLOW_DIVERGED_MESH_DEGENERATE;
   }

@@ -50,7 +50,7 @@ static PetscErrorCode StepOptions(CSWillmoreFlow F, PetscOptionItems *PetscOptio
   PetscCall(PetscOptionsReal("-max_area_ratio", "Stop when max(A_i/A0_i)/min(A_i/A0_i) of the vertex areas, or the total area relative to the input, exceeds this (0: off)", NULL, F->max_area_ratio, &F->max_area_ratio, NULL));
   PetscCall(PetscOptionsBool("-project_at_stop", "When the resolution guard stops the flow, project the state onto the constraints (PGD's projection) so the result lies in the prescribed conformal class", NULL, F->project_at_stop, &F->project_at_stop, NULL));
   PetscCall(PetscOptionsReal("-fin_q", "Resolution guard: a stop with the largest quasi-conformal error of a face above this is reported as fins (a jump of the conformal factor across faces), below it as a smooth concentration", NULL, F->fin_q, &F->fin_q, NULL));
-  PetscCall(PetscOptionsReal("-rtol", "Stop when ||g + X^T mu||_2 is below this", NULL, F->rtol, &F->rtol, NULL));
+  PetscCall(PetscOptionsReal("-rtol", "Stop when the Euler-Lagrange residual is below this: el_residual_scaled = ||g + X^T mu + sum nu_j row_j||_2 sqrt(A) / |E|, scale-free (or ||g + X^T mu + ...||_2 itself with -el_norm absolute)", NULL, F->rtol, &F->rtol, NULL));
   PetscCall(PetscOptionsReal("-ctol", "... and the constraint violation (inf-norm) below this", NULL, F->ctol, &F->ctol, NULL));
   PetscCall(PetscOptionsInt("-max_it", "Maximum number of iterations", NULL, F->max_it, &F->max_it, NULL));
   PetscCall(PetscOptionsReal("-max_seconds", "Stop (as at max_it) once this many seconds have passed since the set-up (0: no limit); rank 0's clock decides for all ranks", NULL, F->max_seconds, &F->max_seconds, NULL));
@@ -110,6 +110,9 @@ static PetscErrorCode CheckValues(CSWillmoreFlow F)
     {"iq_wmin", F->wmin, F->wmin > 0, "must be > 0"},
     {"rtol", F->rtol, F->rtol >= 0, "must be >= 0"},
     {"ctol", F->ctol, F->ctol >= 0, "must be >= 0"},
+    {"stationary_window", (PetscReal)F->stat_window, F->stat_window >= 0 && F->stat_window <= CS_WF_STAT_MAX, "use 0 (off) or a count of steps up to 64"},
+    {"stationary_rtol", F->stat_rtol, F->stat_rtol >= 0, "must be >= 0"},
+    {"stationary_xtol", F->stat_xtol, F->stat_xtol >= 0, "must be >= 0"},
     {"pgd_t_mu", F->proj_tmu, F->proj_tmu > 0, "must be > 0"},
     {"pgd_projection_max_it", (PetscReal)F->proj_max_it, F->proj_max_it >= 1, "must be >= 1"},
     {"fairing_epsilon", F->eps, F->eps > 0, "must be > 0"},
@@ -159,6 +162,7 @@ PetscErrorCode CSWillmoreFlowSetFromOptions(CSWillmoreFlow F)
   PetscCall(PetscOptionsFList("-type", "Flow kind", NULL, kinds, type, type, sizeof(type), &set));
   if (set) PetscCall(CSWillmoreFlowSetType(F, type));
   PetscCall(StepOptions(F, PetscOptionsObject));
+  PetscCall(CSWFStopOptions(F, PetscOptionsObject));
   PetscCall(ProblemOptions(F, energies, PetscOptionsObject));
   PetscOptionsEnd();
   PetscCall(CheckOptions(F));

@@ -30,6 +30,7 @@ static PetscErrorCode Evaluate(CSWillmoreFlow F)
     PetscCall(CSGeometryAreaVolume(F->mesh, F->x, &F->A, &F->V));
     PetscCall(CSWFMeasureQuality(F));
   }
+  PetscCall(CSWFScaledResidual(F));
   TrackViolation(F);
   PetscCall(CSWFTrackPath(F));
   PetscFunctionReturn(0);
@@ -142,10 +143,15 @@ PetscErrorCode CSWillmoreFlowStep(CSWillmoreFlow F, CSWillmoreFlowConvergedReaso
      series and the progress line show the state the flow returns; a NaN state is left to the check below */
   if (!F->reason && F->E == F->E && F->el == F->el) PetscCall(CSWFCheckResolution(F, &F->reason));
   if (F->reason == CS_WILLMORE_FLOW_DIVERGED_MESH_DEGENERATE) PetscCall(ProjectAtStop(F));
+  /* the window and the kept best state before the monitors: a checkpoint written by them stores the window */
+  PetscCall(CSWFTrackStationarity(F));
+  PetscCall(CSWFTrackBest(F));
   for (PetscInt i = 0; i < F->nmonitor; i++) PetscCall((*F->monitor[i].fn)(F, F->it, F->monitor[i].ctx));
   /* at the first state no step was taken yet: a smaller t cannot help, the start itself is degenerate */
   PetscCheck(F->E == F->E && F->el == F->el, F->comm, PETSC_ERR_FP, "flow: the energy or the residual is not a number at iteration %" PetscInt_FMT " (degenerate triangles?); %s%s%s", F->it, F->it == 0 && !F->resumed ? "the start state is degenerate: check the input mesh (or the initial field, -" : "try a smaller -", F->prefix, F->it == 0 && !F->resumed ? "init*)" : "t");
-  if (!F->reason && F->el < F->rtol && PetscMax(F->conf, F->glob) < F->ctol) F->reason = CS_WILLMORE_FLOW_CONVERGED_RTOL;
+  /* -rtol tests el_residual_scaled (or el_residual with -el_norm absolute; stop.c) */
+  if (!F->reason && CSWFStopResidual(F) < F->rtol && PetscMax(F->conf, F->glob) < F->ctol) F->reason = CS_WILLMORE_FLOW_CONVERGED_RTOL;
+  if (!F->reason) PetscCall(CSWFCheckStationary(F, &F->reason));
   if (!F->reason && F->energy_target_set && F->E <= F->energy_target) {
     PetscCall(PetscPrintf(F->comm, "flow: the energy %.10g reached -%senergy_target %.10g at iteration %" PetscInt_FMT "\n", (double)F->E, F->prefix, (double)F->energy_target, F->it));
     F->reason = CS_WILLMORE_FLOW_CONVERGED_ENERGY_TARGET;
@@ -174,6 +180,35 @@ PetscErrorCode CSWillmoreFlowStep(CSWillmoreFlow F, CSWillmoreFlowConvergedReaso
     F->it++;
   }
   *reason = F->reason;
+  PetscFunctionReturn(0);
+}
+
+/* Whether the stop reason returns the kept best state (-flow_keep_best): guard: the resolution guard's stops (its
+   state is not a critical point, and an earlier one in the class was nearer one); all: every stop that did not
+   converge. The best replaces the last only if its el_residual_scaled is smaller. */
+static PetscBool BestApplies(CSWillmoreFlow F)
+{
+  PetscBool guard = (PetscBool)(F->reason == CS_WILLMORE_FLOW_DIVERGED_MESH_DEGENERATE || F->reason == CS_WILLMORE_FLOW_DIVERGED_AREA);
+  if (F->best_it < 0 || F->reason == CS_WILLMORE_FLOW_ITERATING || CSWillmoreFlowReasonConverged(F->reason)) return PETSC_FALSE;
+  if (F->keep_best == CS_FLOW_KEEP_BEST_NONE || (F->keep_best == CS_FLOW_KEEP_BEST_GUARD && !guard)) return PETSC_FALSE;
+  return (PetscBool)(F->best_els < F->els);
+}
+
+PetscErrorCode CSWillmoreFlowUseBest(CSWillmoreFlow F, PetscBool *used)
+{
+  PetscFunctionBeginUser;
+  *used = PETSC_FALSE;
+  if (F->best_used || !BestApplies(F)) PetscFunctionReturn(0);
+  F->last_it  = F->it;
+  F->last_E   = F->E;
+  F->last_els = F->els;
+  PetscCall(VecCopy(F->best_x, F->x));
+  if (F->mu) PetscCall(VecCopy(F->best_mu, F->mu));
+  for (PetscInt j = 0; j < F->k; j++) F->nu[j] = F->best_nu[j];
+  PetscCall(Evaluate(F));
+  F->best_used = PETSC_TRUE;
+  *used        = PETSC_TRUE;
+  PetscCall(PetscPrintf(F->comm, "flow: -o and the summary hold the best state of the run (-%skeep_best %s): iteration %" PetscInt_FMT ", el_residual_scaled %.3e, W %.10g, violation %.2e; the last state (iteration %" PetscInt_FMT ") had el_residual_scaled %.3e, W %.10g\n", F->prefix, CSFlowKeepBestTypes[F->keep_best], F->best_it, (double)F->els, (double)F->E, (double)PetscMax(F->conf, F->glob), F->last_it, (double)F->last_els, (double)F->last_E));
   PetscFunctionReturn(0);
 }
 

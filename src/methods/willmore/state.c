@@ -1,6 +1,8 @@
 /* The loop state a checkpoint keeps besides its fields (the positions and mu, the edge field; a triangle field's
    own, trianglefield_state.c): [flow kind, t, t_mu, rejections, KSP its in total, KSP its of the last step, edges
-   with guarded I_Q weight, seconds, whether the -t_mu_final switch fired, nu_1..nu_k, the kind's own scalars]. The rest (g, c, X, metric, residual) is
+   with guarded I_Q weight, seconds, whether the -t_mu_final switch fired, nu_1..nu_k, the stationarity window (stop.c),
+   the kind's own scalars]. The kept best state (-flow_keep_best) is not stored: a resumed run keeps the best of its
+   own iterations. The rest (g, c, X, metric, residual) is
    recomputed from x at the top of the loop, so a resumed run continues exactly like the uninterrupted one. */
 #include "willmore_impl.h"
 
@@ -10,7 +12,7 @@ PetscErrorCode CSWillmoreFlowGetStateSize(CSWillmoreFlow F, PetscInt *nreal)
 {
   PetscFunctionBeginUser;
   PetscCheck(F->setupcalled, F->comm, PETSC_ERR_ORDER, "CSWillmoreFlowGetStateSize before CSWillmoreFlowSetUp");
-  *nreal = FLOW_CK_NREAL + F->k + F->ops.state_nreal;
+  *nreal = FLOW_CK_NREAL + F->k + CS_WF_STAT_NREAL + F->ops.state_nreal;
   PetscFunctionReturn(0);
 }
 
@@ -50,9 +52,10 @@ PetscErrorCode CSWillmoreFlowGetState(CSWillmoreFlow F, PetscReal ck[], CSCheckp
     ck[7] = (PetscReal)(now - F->t0);
     ck[8] = (PetscReal)F->tmu_final_on; /* stored: t_mu >= T does not tell (t_mu may pass T before EL falls) */
     for (PetscInt j = 0; j < F->k; j++) ck[FLOW_CK_NREAL + j] = F->nu[j];
+    CSWFStationaryGetState(F, ck + FLOW_CK_NREAL + F->k);
   }
   if (F->ops.get_state) { /* a kind with its own variables packs them (and its scalars after the flow's) */
-    PetscCall((*F->ops.get_state)(F, ck ? ck + FLOW_CK_NREAL + F->k : NULL, v));
+    PetscCall((*F->ops.get_state)(F, ck ? ck + FLOW_CK_NREAL + F->k + CS_WF_STAT_NREAL : NULL, v));
     PetscFunctionReturn(0);
   }
   v->x    = F->x;
@@ -75,8 +78,9 @@ PetscErrorCode CSWillmoreFlowSetState(CSWillmoreFlow F, PetscInt it, const Petsc
   F->nguard       = (PetscInt)ck[6];
   F->t0          -= ck[7]; /* the seconds column of the history continues */
   for (PetscInt j = 0; j < F->k; j++) F->nu[j] = ck[FLOW_CK_NREAL + j];
+  CSWFStationarySetState(F, ck + FLOW_CK_NREAL + F->k);
   F->it      = it;
   F->resumed = PETSC_TRUE;
-  if (F->ops.set_state) PetscCall((*F->ops.set_state)(F, ck + FLOW_CK_NREAL + F->k)); /* may override the above */
+  if (F->ops.set_state) PetscCall((*F->ops.set_state)(F, ck + FLOW_CK_NREAL + F->k + CS_WF_STAT_NREAL)); /* may override the above */
   PetscFunctionReturn(0);
 }

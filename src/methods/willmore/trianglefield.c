@@ -164,6 +164,9 @@ static PetscErrorCode SetFromOptionsTF(CSWillmoreFlow F)
     PetscCall(PetscOptionsEList("-variables", "Variables of the flow: the triangle field omega, or (u, psi) with omega = S_c(u, psi) (soliman2021 App. C.2)", NULL, CSTriangleFieldVariables, 2, CSTriangleFieldVariables[v], &v, NULL));
     d->spinor = (PetscBool)(v == 1);
   }
+  /* the spinor variables mix units (u dimensionless, psi ~ length^1/2): no power of the area makes their residual
+     scale-free, so -flow_rtol tests it as it is unless -flow_el_norm is given (docs/willmore_flow.md "Stopping") */
+  if (d->spinor && !F->el_norm_set) F->el_norm = CS_FLOW_EL_NORM_ABSOLUTE;
   PetscCall(PetscOptionsReal("-scale_gauge_weight", "-flow_variables spinor: multiplier metric of the scale gauge row mean(u) = const, relative to its |row|^2; 0: no gauge row", NULL, d->wgauge, &d->wgauge, NULL));
   PetscCall(PetscOptionsReal("-spinor_metric_shift", "-flow_variables spinor: add this times the mean psi diagonal of J^T I_H1 J to the whole metric (0: none)", NULL, d->mshift, &d->mshift, NULL));
   PetscCall(PetscOptionsInt("-seed", "Seed of -flow_init random, random_spinor and smooth", NULL, d->seed, &d->seed, NULL));

@@ -109,6 +109,8 @@ typedef struct {
   PetscErrorCode (*destroy)(void **);
 } CSWillmoreFlowMonitor;
 #define CS_WILLMORE_FLOW_MAX_MONITORS 8
+#define CS_WF_STAT_MAX                64 /* largest -flow_stationary_window (its values are stored in checkpoints) */
+#define CS_WF_STAT_NREAL              (2 + 2 * (CS_WF_STAT_MAX + 1)) /* checkpoint scalars of the window */
 
 struct _p_CSWillmoreFlow {
   MPI_Comm              comm;
@@ -203,7 +205,31 @@ struct _p_CSWillmoreFlow {
   PetscBool             path_set; /* path.c: the EL residual along the run (since the set-up or the resume) */
   PetscReal             el_first, el_min, E_el_min;
   PetscInt              it_el_min;
+
+  /* the stopping rule (stop.c, docs/willmore_flow.md "Stopping") */
+  CSFlowELNormType      el_norm;   /* -flow_el_norm: what -flow_rtol tests */
+  PetscBool             el_norm_set;
+  PetscReal             els;       /* el_residual_scaled at x: el sqrt(A) / max(|E|, 1e-3 |E0|) */
+  PetscReal             E0;        /* |E| of the input (the floor of the scaling; < 0: not computed yet) */
+  PetscInt              stat_window;          /* -flow_stationary_window K (0: off) */
+  PetscReal             stat_rtol, stat_xtol; /* -flow_stationary_rtol (W), -flow_stationary_xtol (x, mean edge lengths) */
+  PetscInt              stat_n, stat_it;      /* values in the window; the iteration recorded last (-1: none) */
+  PetscReal             stat_W[CS_WF_STAT_MAX + 1], stat_d[CS_WF_STAT_MAX + 1]; /* W and the step's displacement, newest last */
+  Vec                   stat_x;               /* the positions recorded last */
+  CSFlowKeepBestType    keep_best;            /* -flow_keep_best */
+  Vec                   best_x, best_mu;      /* the kept state: variables and multipliers */
+  PetscReal            *best_nu;
+  PetscInt              best_it;              /* -1: none */
+  PetscReal             best_els, best_E, last_E, last_els;
+  PetscInt              last_it;
+  PetscBool             best_used;
 };
+
+/* the residual -flow_rtol tests (-flow_el_norm) */
+static inline PetscReal CSWFStopResidual(CSWillmoreFlow F)
+{
+  return F->el_norm == CS_FLOW_EL_NORM_SCALED ? F->els : F->el;
+}
 
 /* evaluate.c */
 PETSC_INTERN PetscErrorCode CSWFZeroFixed(CSWillmoreFlow F, Vec v);
@@ -233,6 +259,15 @@ PETSC_INTERN PetscErrorCode CSWFTrackPath(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFCheckResolution(CSWillmoreFlow F, CSWillmoreFlowConvergedReason *reason);
 PETSC_INTERN PetscErrorCode CSWFCheckFolds(CSWillmoreFlow F, PetscBool *folded);
 PETSC_INTERN PetscErrorCode CSWFCheckStepGeometry(CSWillmoreFlow F, PetscBool *accept);
+/* stop.c */
+PETSC_INTERN PetscErrorCode CSWFStopOptions(CSWillmoreFlow F, PetscOptionItems *PetscOptionsObject);
+PETSC_INTERN PetscErrorCode CSWFScaledResidual(CSWillmoreFlow F);
+PETSC_INTERN PetscErrorCode CSWFTrackStationarity(CSWillmoreFlow F);
+PETSC_INTERN PetscErrorCode CSWFCheckStationary(CSWillmoreFlow F, CSWillmoreFlowConvergedReason *reason);
+PETSC_INTERN PetscErrorCode CSWFTrackBest(CSWillmoreFlow F);
+PETSC_INTERN void           CSWFStationaryGetState(CSWillmoreFlow F, PetscReal ck[]);
+PETSC_INTERN void           CSWFStationarySetState(CSWillmoreFlow F, const PetscReal ck[]);
+PETSC_INTERN PetscErrorCode CSWFStopDestroy(CSWillmoreFlow F);
 /* setup.c */
 PETSC_INTERN PetscErrorCode CSWFSetUpBoundary(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFSetUpConstraints(CSWillmoreFlow F);
