@@ -36,8 +36,11 @@ typedef enum {
   CS_WILLMORE_FLOW_CONVERGED_ENERGY_TARGET,  /* the energy reached -flow_energy_target */
   CS_WILLMORE_FLOW_DIVERGED_FOLDED,          /* the enclosed volume changed sign or faces turned over against the
                                                 input (-flow_fold_guard): stopped at the last good state */
-  CS_WILLMORE_FLOW_CONVERGED_STATIONARY      /* W and x stationary over -flow_stationary_window accepted steps, the
+  CS_WILLMORE_FLOW_CONVERGED_STATIONARY,     /* W and x stationary over -flow_stationary_window accepted steps, the
                                                 violation below ctol (a fixed point of the iteration above rtol) */
+  CS_WILLMORE_FLOW_DIVERGED_DRIFT            /* W stationary over -flow_drift_window steps while the residual rose
+                                                -flow_drift_rise-fold from its smallest value: sliding along a
+                                                direction of nearly constant W (a saddle; docs/real_meshes.md) */
 } CSWillmoreFlowConvergedReason;
 /* Whether a reason is a convergence (rtol, the energy target, or a stationary iteration). */
 #define CSWillmoreFlowReasonConverged(r) ((r) == CS_WILLMORE_FLOW_CONVERGED_RTOL || (r) == CS_WILLMORE_FLOW_CONVERGED_ENERGY_TARGET || (r) == CS_WILLMORE_FLOW_CONVERGED_STATIONARY)

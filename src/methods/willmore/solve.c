@@ -152,6 +152,7 @@ PetscErrorCode CSWillmoreFlowStep(CSWillmoreFlow F, CSWillmoreFlowConvergedReaso
   /* -rtol tests el_residual_scaled (or el_residual with -el_norm absolute; stop.c) */
   if (!F->reason && CSWFStopResidual(F) < F->rtol && PetscMax(F->conf, F->glob) < F->ctol) F->reason = CS_WILLMORE_FLOW_CONVERGED_RTOL;
   if (!F->reason) PetscCall(CSWFCheckStationary(F, &F->reason));
+  if (!F->reason) PetscCall(CSWFCheckDrift(F, &F->reason));
   if (!F->reason && F->energy_target_set && F->E <= F->energy_target) {
     PetscCall(PetscPrintf(F->comm, "flow: the energy %.10g reached -%senergy_target %.10g at iteration %" PetscInt_FMT "\n", (double)F->E, F->prefix, (double)F->energy_target, F->it));
     F->reason = CS_WILLMORE_FLOW_CONVERGED_ENERGY_TARGET;
@@ -188,7 +189,7 @@ PetscErrorCode CSWillmoreFlowStep(CSWillmoreFlow F, CSWillmoreFlowConvergedReaso
    converge. The best replaces the last only if its el_residual_scaled is smaller. */
 static PetscBool BestApplies(CSWillmoreFlow F)
 {
-  PetscBool guard = (PetscBool)(F->reason == CS_WILLMORE_FLOW_DIVERGED_MESH_DEGENERATE || F->reason == CS_WILLMORE_FLOW_DIVERGED_AREA);
+  PetscBool guard = (PetscBool)(F->reason == CS_WILLMORE_FLOW_DIVERGED_MESH_DEGENERATE || F->reason == CS_WILLMORE_FLOW_DIVERGED_AREA || F->reason == CS_WILLMORE_FLOW_DIVERGED_DRIFT);
   if (F->best_it < 0 || F->reason == CS_WILLMORE_FLOW_ITERATING || CSWillmoreFlowReasonConverged(F->reason)) return PETSC_FALSE;
   if (F->keep_best == CS_FLOW_KEEP_BEST_NONE || (F->keep_best == CS_FLOW_KEEP_BEST_GUARD && !guard)) return PETSC_FALSE;
   return (PetscBool)(F->best_els < F->els);

@@ -13,6 +13,9 @@ PetscErrorCode CSWFStopOptions(CSWillmoreFlow F, PetscOptionItems *PetscOptionsO
   PetscCall(PetscOptionsEnum("-el_norm", "What -rtol tests: the scale-free residual el_residual_scaled = el_residual sqrt(A) / max(|E|, 1e-3 |E_input|) (scaled), or el_residual itself (absolute)", NULL, CSFlowELNormTypes, (PetscEnum)F->el_norm, (PetscEnum *)&F->el_norm, &F->el_norm_set));
   PetscCall(PetscOptionsInt("-stationary_window", "Stop as converged (stop_reason stationary) when over this many accepted steps W changed by at most -stationary_rtol (relative) and the vertices moved by at most -stationary_xtol mean edge lengths in total, with the violation below -ctol (0: off)", NULL, F->stat_window, &F->stat_window, NULL));
   PetscCall(PetscOptionsReal("-stationary_rtol", "Stationarity: largest relative spread (max - min) / |W| of W over the window", NULL, F->stat_rtol, &F->stat_rtol, NULL));
+  PetscCall(PetscOptionsInt("-drift_window", "Stop (stop_reason drift, not converged) when over this many accepted steps W changed by at most -drift_wtol (relative, per step) while el_residual_scaled rose to -drift_rise times its smallest value of the run, the violation below -ctol (0: off)", NULL, F->drift_window, &F->drift_window, NULL));
+  PetscCall(PetscOptionsReal("-drift_wtol", "Drift: largest relative change of W per step over the window", NULL, F->drift_wtol, &F->drift_wtol, NULL));
+  PetscCall(PetscOptionsReal("-drift_rise", "Drift: el_residual_scaled at least this many times its smallest value of the run", NULL, F->drift_rise, &F->drift_rise, NULL));
   PetscCall(PetscOptionsReal("-stationary_xtol", "Stationarity: largest sum over the window of the steps' largest vertex displacements, in mean edge lengths", NULL, F->stat_xtol, &F->stat_xtol, NULL));
   PetscCall(PetscOptionsEnum("-keep_best", "Keep the state of smallest el_residual_scaled with the violation <= -ctol, and return it (-o, the summary) at the resolution guard's stops (guard), at every non-converged stop (all), or never (none)", NULL, CSFlowKeepBestTypes, (PetscEnum)F->keep_best, (PetscEnum *)&F->keep_best, &set));
   /* a triangle field's state is more than (x, mu, nu): its continuation and spinor data are not kept */
@@ -76,7 +79,11 @@ PetscErrorCode CSWFTrackStationarity(CSWillmoreFlow F)
   Vec       x;
   PetscReal d = 0;
   PetscFunctionBeginUser;
-  if (!F->stat_window || F->E != F->E) PetscFunctionReturn(0);
+  if ((!F->stat_window && !F->drift_window) || F->E != F->E) PetscFunctionReturn(0);
+  if (F->els == F->els && F->it > 0 && (F->els_min < 0 || F->els < F->els_min)) { /* the input's residual is no reference */
+    F->els_min    = F->els;
+    F->els_min_it = F->it;
+  }
   PetscCall(Positions(F, &x));
   if (!F->stat_x || F->stat_it < 0 || F->it <= F->stat_it) {
     if (!F->stat_x) PetscCall(VecDuplicate(x, &F->stat_x));
@@ -124,13 +131,34 @@ PetscErrorCode CSWFCheckStationary(CSWillmoreFlow F, CSWillmoreFlowConvergedReas
   PetscFunctionReturn(0);
 }
 
-/* checkpoint scalars of the window: [stat_it, stat_n, W[0..MAX], d[0..MAX]] */
+/* DIVERGED_DRIFT: over the last K = -drift_window accepted steps W changed by at most -drift_wtol per step
+   (relative) while el_residual_scaled is at least -drift_rise times its smallest value of the run, inside the class
+   (violation below -ctol). A converging run has a falling residual; a squeeze or a descent changes W faster. What
+   is left is a slide along a direction of nearly constant W away from the nearest critical point: the remeshed
+   fat torus's cos 2phi mode, a saddle of the discrete problem whose growth rate shrinks like h^2 (docs/real_meshes.md,
+   issue 35). It cannot converge at this mesh, so it stops, and -flow_keep_best returns the smallest residual. */
+PetscErrorCode CSWFCheckDrift(CSWillmoreFlow F, CSWillmoreFlowConvergedReason *reason)
+{
+  PetscInt  K = F->drift_window, n = F->stat_n;
+  PetscReal dw = 0;
+  PetscFunctionBeginUser;
+  if (!K || n < K || F->els_min <= 0 || !(F->els >= F->drift_rise * F->els_min) || !(PetscMax(F->conf, F->glob) < F->ctol)) PetscFunctionReturn(0);
+  for (PetscInt j = n - K + 1; j <= n; j++) dw = PetscMax(dw, PetscAbsReal(F->stat_W[j] - F->stat_W[j - 1]) / PetscMax(PetscAbsReal(F->stat_W[j]), PETSC_SMALL));
+  if (!(dw <= F->drift_wtol)) PetscFunctionReturn(0);
+  PetscCall(PetscPrintf(F->comm, "flow: drifting at iteration %" PetscInt_FMT ", not converging: over the last %" PetscInt_FMT " steps W changed by at most %.1e per step (relative; -%sdrift_wtol %g) while el_residual_scaled rose to %.3e, %.2f times its smallest value %.3e at iteration %" PetscInt_FMT " (-%sdrift_rise %g), violation %.2e. The flow slides along a direction of nearly constant W (on a remeshed torus of a fat class: a saddle of the discrete energy, docs/real_meshes.md)\n", F->it, K, (double)dw, F->prefix, (double)F->drift_wtol, (double)F->els, (double)(F->els / F->els_min), (double)F->els_min, F->els_min_it, F->prefix, (double)F->drift_rise, (double)PetscMax(F->conf, F->glob)));
+  *reason = CS_WILLMORE_FLOW_DIVERGED_DRIFT;
+  PetscFunctionReturn(0);
+}
+
+/* checkpoint scalars of the window: [stat_it, stat_n, W[0..MAX], d[0..MAX], els_min, els_min_it] */
 void CSWFStationaryGetState(CSWillmoreFlow F, PetscReal ck[])
 {
   ck[0] = (PetscReal)F->stat_it;
   ck[1] = (PetscReal)F->stat_n;
   for (PetscInt j = 0; j <= CS_WF_STAT_MAX; j++) ck[2 + j] = F->stat_W[j];
   for (PetscInt j = 0; j <= CS_WF_STAT_MAX; j++) ck[3 + CS_WF_STAT_MAX + j] = F->stat_d[j];
+  ck[4 + 2 * CS_WF_STAT_MAX] = F->els_min;
+  ck[5 + 2 * CS_WF_STAT_MAX] = (PetscReal)F->els_min_it;
 }
 
 void CSWFStationarySetState(CSWillmoreFlow F, const PetscReal ck[])
@@ -139,6 +167,8 @@ void CSWFStationarySetState(CSWillmoreFlow F, const PetscReal ck[])
   F->stat_n  = (PetscInt)ck[1];
   for (PetscInt j = 0; j <= CS_WF_STAT_MAX; j++) F->stat_W[j] = ck[2 + j];
   for (PetscInt j = 0; j <= CS_WF_STAT_MAX; j++) F->stat_d[j] = ck[3 + CS_WF_STAT_MAX + j];
+  F->els_min    = ck[4 + 2 * CS_WF_STAT_MAX];
+  F->els_min_it = (PetscInt)ck[5 + 2 * CS_WF_STAT_MAX];
 }
 
 /* -flow_keep_best: the state (x, mu, nu) of smallest el_residual_scaled among the evaluated states with the violation

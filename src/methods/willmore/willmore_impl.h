@@ -110,7 +110,7 @@ typedef struct {
 } CSWillmoreFlowMonitor;
 #define CS_WILLMORE_FLOW_MAX_MONITORS 8
 #define CS_WF_STAT_MAX                64 /* largest -flow_stationary_window (its values are stored in checkpoints) */
-#define CS_WF_STAT_NREAL              (2 + 2 * (CS_WF_STAT_MAX + 1)) /* checkpoint scalars of the window */
+#define CS_WF_STAT_NREAL              (4 + 2 * (CS_WF_STAT_MAX + 1)) /* checkpoint scalars of the window and of the drift test */
 
 struct _p_CSWillmoreFlow {
   MPI_Comm              comm;
@@ -216,6 +216,10 @@ struct _p_CSWillmoreFlow {
   PetscInt              stat_n, stat_it;      /* values in the window; the iteration recorded last (-1: none) */
   PetscReal             stat_W[CS_WF_STAT_MAX + 1], stat_d[CS_WF_STAT_MAX + 1]; /* W and the step's displacement, newest last */
   Vec                   stat_x;               /* the positions recorded last */
+  PetscInt              drift_window;         /* -flow_drift_window (0: off; the W values of the window above) */
+  PetscReal             drift_wtol, drift_rise; /* -flow_drift_wtol (largest relative W change per step), -flow_drift_rise */
+  PetscReal             els_min;              /* the smallest el_residual_scaled of the run (< 0: none yet) */
+  PetscInt              els_min_it;           /* and its iteration */
   CSFlowKeepBestType    keep_best;            /* -flow_keep_best */
   Vec                   best_x, best_mu;      /* the kept state: variables and multipliers */
   PetscReal            *best_nu;
@@ -264,6 +268,7 @@ PETSC_INTERN PetscErrorCode CSWFStopOptions(CSWillmoreFlow F, PetscOptionItems *
 PETSC_INTERN PetscErrorCode CSWFScaledResidual(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFTrackStationarity(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFCheckStationary(CSWillmoreFlow F, CSWillmoreFlowConvergedReason *reason);
+PETSC_INTERN PetscErrorCode CSWFCheckDrift(CSWillmoreFlow F, CSWillmoreFlowConvergedReason *reason);
 PETSC_INTERN PetscErrorCode CSWFTrackBest(CSWillmoreFlow F);
 PETSC_INTERN void           CSWFStationaryGetState(CSWillmoreFlow F, PetscReal ck[]);
 PETSC_INTERN void           CSWFStationarySetState(CSWillmoreFlow F, const PetscReal ck[]);
