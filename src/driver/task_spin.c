@@ -123,6 +123,7 @@ static PetscErrorCode SpinInterpolate(CSSpin spin, CSMesh mesh, PetscInt N, cons
   PetscCall(VecDuplicate(mesh->x, &r1));
   PetscCall(VecDuplicate(mesh->x, &xs));
   PetscCall(VecDuplicate(mesh->x, &xl));
+  PetscCall(CSCheckAllocation("-spin_interpolate: q_mean of N + 1 meshes, twice", 2 * ((PetscInt64)N + 1), sizeof(PetscReal)));
   PetscCall(PetscMalloc1(2 * (N + 1), &q));
   PetscCall(CSSpinInterpolateSetUp(spin, mesh->x, r.xt, r.mu, r0, r1));
   for (PetscInt k = 0; k <= N; k++) {
