@@ -282,7 +282,8 @@ PetscErrorCode CSTaskSpin(MPI_Comm comm)
   PetscFunctionBeginUser;
   PetscCall(PetscMemzero(&r, sizeof(r)));
   PetscCall(CSOutputFromOptions(comm, &out));
-  ierr = CSMeshCreateFromOptions(comm, NULL, &mesh);
+  ierr = CSMeshDataRefuseTargetClass(comm, NULL, "-task spin");
+  if (!ierr) ierr = CSMeshCreateFromOptions(comm, NULL, &mesh);
   if (!ierr) ierr = CSSpinCreate(mesh, &spin);
   if (!ierr) ierr = RunSpin(spin, mesh, &r, &out);
   /* on every path: no leak after an error (a bad -rho file) */

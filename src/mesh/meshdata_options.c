@@ -158,3 +158,15 @@ PetscErrorCode CSMeshDataFromOptions(MPI_Comm comm, const char prefix[], CSMeshD
   CSRootCall(comm, MeshSourceLoad(&src, md, topo));
   PetscFunctionReturn(0);
 }
+
+PetscErrorCode CSMeshDataRefuseTargetClass(MPI_Comm comm, const char prefix[], const char task[])
+{
+  const char *opts[] = {"-mesh_lengths", "-mesh_cross_ratios"};
+  PetscFunctionBeginUser;
+  for (int i = 0; i < 2; i++) {
+    PetscBool has;
+    PetscCall(PetscOptionsHasName(NULL, prefix, opts[i], &has));
+    PetscCheck(!has, comm, PETSC_ERR_ARG_INCOMP, "-%s%s: %s keeps the conformal class of the positions and has no target class to take from it (a target class is for -task flow -flow_type cgd|pgd|gd|newton|alm|trianglefield)", prefix ? prefix : "", opts[i] + 1, task);
+  }
+  PetscFunctionReturn(0);
+}

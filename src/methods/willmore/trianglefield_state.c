@@ -15,6 +15,7 @@
    iteration number. A kept factorisation (-flow_factor_reuse_its) is not stored: the resumed run's first step
    factors afresh. Not for -flow_variables spinor (other variables). */
 #include "trianglefield_impl.h"
+#include "cs_util.h"
 
 #define TF_CK_NREAL 7 /* after the flow's own (state.c: t, t_mu, the -t_mu_final switch, ...) */
 
@@ -203,8 +204,12 @@ PetscErrorCode CSTFStateSetUp(CSWillmoreFlow F, CSTriangleField *d)
     PetscCall(VecDuplicate(F->x, &d->start));
     PetscCall(VecCopy(F->x, d->start));
   } else {
+    PetscErrorCode ierr;
     PetscCall(VecDuplicate(d->xpos0, &d->start));
-    PetscCall(CSTriangleFieldReconstructionSolve(d->recon, F->x, d->xpos0, d->start));
+    /* a perturbed start may fold triangles: its *1 is then not positive definite and no step can be measured
+       (issue 36: the flow ended in "CHOLMOD error -4"); refused here, naming the option */
+    CSCaptureError(ierr, CSTriangleFieldReconstructionSolve(d->recon, F->x, d->xpos0, d->start));
+    PetscCheck(!ierr, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sinit %s: the start triangle field has no Poisson reconstruction (its *1 is not positive definite: the perturbation folds triangles); lower -%sinit_amplitude (%g)", F->prefix, CSTriangleFieldInits[d->init], F->prefix, (double)d->amp);
   }
   F->xstart          = d->start;
   F->ops.state_nreal = TF_CK_NREAL;
