@@ -89,7 +89,7 @@ static PetscErrorCode ReadEdges(const char option[], const char path[], const CS
     PetscCall(ParseLine(option, path, md, E, v + t, lines[t], &s));
     PetscCheck(!seen[s], PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "%s %s: line %" PetscInt_FMT ": the edge (%g, %g) is given twice (first on line %" PetscInt_FMT ")", option, path, lines[t], (double)v[t], (double)v[t + 1], seen[s]);
     /* a log cross ratio beyond 700 is a length ratio beyond e^700 = 1e304: no double metric has it (issue 36) */
-    PetscCheck(PetscAbsReal(v[t + 2]) <= CS_CROSS_RATIO_MAX, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "%s %s: line %" PetscInt_FMT ": the log cross ratio %g is not in [-%g, %g] (a length ratio beyond e^%g overflows a double)", option, path, lines[t], (double)v[t + 2], CS_CROSS_RATIO_MAX, CS_CROSS_RATIO_MAX, CS_CROSS_RATIO_MAX);
+    PetscCheck(PetscAbsReal(v[t + 2]) <= CS_CROSS_RATIO_MAX, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "%s %s: line %" PetscInt_FMT ": the log cross ratio %g is not in [-%d, %d] (a length ratio beyond e^%d overflows a double)", option, path, lines[t], (double)v[t + 2], (int)CS_CROSS_RATIO_MAX, (int)CS_CROSS_RATIO_MAX, (int)CS_CROSS_RATIO_MAX);
     seen[s] = lines[t];
     val[s]  = v[t + 2];
   }
