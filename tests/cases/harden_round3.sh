@@ -19,6 +19,10 @@ EXPECT="^confsurf: error: -gen_tau \(RE\) nan: must lie in" expect_fail run -tas
 EXPECT="^confsurf: error: -gen_radius nan" expect_fail run $I1 -gen_radius nan
 # item 17: the wrong value named (was "(got 2 values)")
 EXPECT="-gen_deform_nfold 3.?,1e\+300: A must lie in \(-1, 1\)" expect_fail run $I1 -gen_deform_nfold 3,1e300
+# item 17: the blame and the numbers right
+EXPECT="-spectrum_nev 48: at most 47 \(the problem has 48 eigenvalues" expect_fail run -task spectrum -gen icosphere -gen_level 0 -spectrum_nev 48
+EXPECT="-gen morin: 4294901762 vertices, 8589803520 faces: .*exceed the largest PetscInt" expect_fail run -task info -gen morin -gen_n 65536 -gen_m 65536
+EXPECT="^confsurf: error: -flow_boundary_frame \(cN\) nan: must lie in" expect_fail run -task flow -flow_type conformal -gen cylinder -flow_boundary vector -flow_boundary_frame nan,1,0
 # item 17: out of memory names the size
 EXPECT="-gen_curve_n: .*2000000000 entries of 1000 bytes need 2e\+03 GB, only .* GB" expect_fail run -task curveflow -gen_curve circle -gen_curve_n 2000000000
 run $I1 -o "$TMP/ico1.obj" > /dev/null 2>&1 || { echo "BAD: ico1.obj"; exit 1; }

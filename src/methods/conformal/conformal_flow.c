@@ -100,6 +100,10 @@ static PetscErrorCode CheckOptions(CSConformalFlow F)
     /* 2^-50 tau is below double precision's resolution of tau: more halvings change nothing */
     {"max_halvings", (PetscReal)F->max_halvings, F->max_halvings >= 0 && F->max_halvings <= 50, "must lie in 0..50 (2^-50 tau moves nothing)"},
     {"min_edge", F->min_edge, F->min_edge >= 0 && F->min_edge < 1, "must lie in [0, 1) (0: off)"},
+    /* a nan frame was blamed on a boundary vertex (issue 36, item 17) */
+    {"boundary_frame (cN)", F->frame[0], PetscAbsReal(F->frame[0]) <= 1e6, "must lie in [-1e6, 1e6]"},
+    {"boundary_frame (cT)", F->frame[1], PetscAbsReal(F->frame[1]) <= 1e6, "must lie in [-1e6, 1e6]"},
+    {"boundary_frame (cB)", F->frame[2], PetscAbsReal(F->frame[2]) <= 1e6, "must lie in [-1e6, 1e6]"},
   };
   PetscFunctionBeginUser;
   PetscCall(CSCheckOptionValues(F->hdr.comm, F->hdr.prefix, sizeof(checks) / sizeof(checks[0]), checks));
