@@ -105,5 +105,9 @@ PETSC_EXTERN PetscErrorCode CSMeshDataRemesh(CSMeshData *md, CSTopology *topo, P
    then validates it (topo filled on rank 0). Collective on comm: options are read on every rank, the data is
    loaded on rank 0 only (other ranks get an empty md); an error on rank 0 is raised on every rank (no hang). */
 PETSC_EXTERN PetscErrorCode CSMeshDataFromOptions(MPI_Comm comm, const char prefix[], CSMeshData *md, CSTopology *topo);
+/* A task that takes its conformal class from the positions (the conformal flow, spin transformations, the
+   Bobenko-Schroeder flow) refuses -mesh_lengths and -mesh_cross_ratios with one line naming the option and the task,
+   rather than ignoring them (issue 36, item 12). Collective on comm. */
+PETSC_EXTERN PetscErrorCode CSMeshDataRefuseTargetClass(MPI_Comm comm, const char prefix[], const char task[]);
 
 #endif

@@ -32,6 +32,7 @@ typedef struct _p_CSConformalFlow *CSConformalFlow;
 
 /* Why the flow stopped; CSConformalFlowConvergedReasons[reason] is the summary's stop_reason. */
 typedef enum {
+  CS_CONFORMAL_DIVERGED_STALLED    = -4, /* a step moved no vertex beyond rounding (1e-13 of the diameter) while the direction was not zero */
   CS_CONFORMAL_DIVERGED_RESOLUTION = -3, /* a step's shortest edge fell below -min_edge times the diameter: rejected, the last good state kept */
   CS_CONFORMAL_DIVERGED_ENERGY = -2, /* W not finite, or above -max_energy_growth times the initial W */
   CS_CONFORMAL_DIVERGED_MAX_IT = -1,

@@ -161,8 +161,8 @@ PETSC_EXTERN PetscErrorCode CSWillmoreFlowMonitorCancel(CSWillmoreFlow flow);
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetStateSize(CSWillmoreFlow flow, PetscInt *nreal);
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetState(CSWillmoreFlow flow, PetscReal reals[], CSCheckpointFields *v);
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowSetState(CSWillmoreFlow flow, PetscInt it, const PetscReal reals[]);
-/* The start the checkpoints fingerprint (borrowed): the input positions, or the start omega of -flow_type
-   trianglefield (fixed by the input and -flow_init_*, -flow_seed). */
+/* The start the checkpoints fingerprint (borrowed; positions): the input positions, or the reconstruction of the
+   start omega of -flow_type trianglefield (fixed by the input and -flow_init_*, -flow_seed). */
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetStart(CSWillmoreFlow flow, Vec *x);
 
 /* Flow kinds: a strategy per file in src/methods/willmore/ (cgd.c, pgd.c, gd.c), registered by name. */

@@ -97,6 +97,7 @@ PetscErrorCode CSFlowBS(MPI_Comm comm, CSOutput *out)
   CSMesh         mesh;
   PetscErrorCode ierr;
   PetscFunctionBeginUser;
+  PetscCall(CSMeshDataRefuseTargetClass(comm, NULL, "-flow_type bs"));
   PetscCall(CSMeshCreateFromOptions(comm, NULL, &mesh));
   ierr = CSMeshQualityCheck(mesh, mesh->x);
   if (!ierr) ierr = RunFlow(mesh, out);

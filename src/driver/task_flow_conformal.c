@@ -42,6 +42,7 @@ PetscErrorCode CSFlowConformal(MPI_Comm comm, CSOutput *out)
   PetscErrorCode ierr;
   PetscFunctionBeginUser;
   PetscCheck(!out->has_checkpoint && !out->has_resume, comm, PETSC_ERR_ARG_INCOMP, "-flow_type conformal: -checkpoint and -resume are not supported");
+  PetscCall(CSMeshDataRefuseTargetClass(comm, NULL, "-flow_type conformal"));
   PetscCall(CSMeshCreateFromOptions(comm, NULL, &mesh));
   ierr = RunFlow(mesh, out);
   PetscCall(CSMeshDestroy(&mesh));

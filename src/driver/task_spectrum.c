@@ -106,7 +106,7 @@ PetscErrorCode CSTaskSpectrum(MPI_Comm comm)
   PetscOptionsEnd();
   if (!has_k) nk = 0;
   PetscCheck(nev >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-spectrum_nev %" PetscInt_FMT ": need at least 1", nev);
-  PetscCheck(nev < 4 * mesh->Nv, comm, PETSC_ERR_ARG_OUTOFRANGE, "-spectrum_nev %" PetscInt_FMT ": the problem has only %" PetscInt_FMT " eigenvalues", nev, 4 * mesh->Nv);
+  PetscCheck(nev < 4 * mesh->Nv, comm, PETSC_ERR_ARG_OUTOFRANGE, "-spectrum_nev %" PetscInt_FMT ": at most %" PetscInt_FMT " (the problem has %" PetscInt_FMT " eigenvalues and the eigensolver needs fewer)", nev, 4 * mesh->Nv - 1, 4 * mesh->Nv);
   PetscCheck(!nk || sgn, comm, PETSC_ERR_ARG_INCOMP, "-spectrum_reconstruct needs -spectrum_signed (eigenvectors of Eq. 6)");
   PetscCheck(!sgn || mesh->topo.boundary_loops == 0, comm, PETSC_ERR_ARG_WRONG, "-spectrum_signed: mesh %s has a boundary; the signed spectrum needs a closed surface", mesh->name);
   PetscCall(CSSpinCreate(mesh, &spin));

@@ -123,6 +123,7 @@ static PetscErrorCode SpinInterpolate(CSSpin spin, CSMesh mesh, PetscInt N, cons
   PetscCall(VecDuplicate(mesh->x, &r1));
   PetscCall(VecDuplicate(mesh->x, &xs));
   PetscCall(VecDuplicate(mesh->x, &xl));
+  PetscCall(CSCheckAllocation("-spin_interpolate: q_mean of N + 1 meshes, twice", 2 * ((PetscInt64)N + 1), sizeof(PetscReal)));
   PetscCall(PetscMalloc1(2 * (N + 1), &q));
   PetscCall(CSSpinInterpolateSetUp(spin, mesh->x, r.xt, r.mu, r0, r1));
   for (PetscInt k = 0; k <= N; k++) {
@@ -281,7 +282,8 @@ PetscErrorCode CSTaskSpin(MPI_Comm comm)
   PetscFunctionBeginUser;
   PetscCall(PetscMemzero(&r, sizeof(r)));
   PetscCall(CSOutputFromOptions(comm, &out));
-  ierr = CSMeshCreateFromOptions(comm, NULL, &mesh);
+  ierr = CSMeshDataRefuseTargetClass(comm, NULL, "-task spin");
+  if (!ierr) ierr = CSMeshCreateFromOptions(comm, NULL, &mesh);
   if (!ierr) ierr = CSSpinCreate(mesh, &spin);
   if (!ierr) ierr = RunSpin(spin, mesh, &r, &out);
   /* on every path: no leak after an error (a bad -rho file) */

@@ -142,6 +142,7 @@ typedef enum {
   POINT_END,
   POINT_FORMAT,
   POINT_RANGE,
+  POINT_LARGE,
   POINT_TWICE
 } PointRecord;
 
@@ -159,6 +160,8 @@ static PointRecord ReadPointRecord(CSTokens *t, PetscInt Nv, const PetscBool see
   peek = *t;
   if (CSTokensNext(&peek, &tok, &len, &l) && l == *line) return POINT_FORMAT;
   if (*idx < 0 || *idx >= Nv) return POINT_RANGE;
+  for (int d = 0; d < 3; d++)
+    if (PetscAbsReal(x[d]) > 1e12) return POINT_LARGE; /* a target no surface reaches: 31 rejections, exit 0 (issue 36) */
   return seen[*idx] ? POINT_TWICE : POINT_OK;
 }
 
@@ -186,6 +189,7 @@ static PetscErrorCode ReadPointsFile(const char option[], const char path[], Pet
     cnt++;
   }
   if (r == POINT_FORMAT) PetscCall(PetscSNPrintf(msg, sizeof(msg), "%s %s line %" PetscInt_FMT ": expected 'vertex_index x y z' (0-based index and three finite numbers)", option, t.name, line));
+  if (r == POINT_LARGE) PetscCall(PetscSNPrintf(msg, sizeof(msg), "%s %s line %" PetscInt_FMT ": the target point (%g, %g, %g) lies beyond 1e12", option, t.name, line, x[0], x[1], x[2]));
   if (r == POINT_RANGE) PetscCall(PetscSNPrintf(msg, sizeof(msg), "%s %s line %" PetscInt_FMT ": vertex index %lld out of range [0, %" PetscInt_FMT ")", option, t.name, line, idx, Nv));
   if (r == POINT_TWICE) PetscCall(PetscSNPrintf(msg, sizeof(msg), "%s %s line %" PetscInt_FMT ": vertex %lld is constrained twice", option, t.name, line, idx));
   if (r == POINT_END && !cnt) PetscCall(PetscSNPrintf(msg, sizeof(msg), "%s %s: no point constraints in the file", option, t.name));

@@ -1,7 +1,7 @@
 /* Checkpoint/resume in natural order (independent of the number of ranks). The file (issue 18, item 9) is a text
    header of named fields, then the payload as little-endian float64 (the scalars, then the fields in natural order:
    the positions, vertex_dofs = 3 per vertex, the edge field, edge_dofs per edge, the face field, face_dofs per face):
-     confsurf-checkpoint 3
+     confsurf-checkpoint 4
      iteration 12
      scalars 5
      vertices 642
@@ -13,8 +13,9 @@
      payload_bytes 61288
      checksum_fnv1a64 0123456789abcdef
      end_header
-   (version 3: the faces and the values per point; version 2 had the positions always and at most one value per
-   edge, which cannot hold a triangle field.) Rank 0 writes it atomically (CSFile: unique temporary name, fsync,
+   (version 4: the checksum covers the header's lines before it too, so an edited iteration or size is damage;
+   version 3 checksummed the payload only; version 2 had the positions always and at most one value per edge, which
+   cannot hold a triangle field. Older versions are refused by the version line.) Rank 0 writes it atomically (CSFile: unique temporary name, fsync,
    rename over a regular file only) and reads it whole; the header is checked against the mesh and the caller's
    fields, the payload against its length and checksum, the values for range (a finite state, an iteration in
    [0, 1e9]), so a damaged file or one of another method is refused naming the file and the field. */
@@ -24,12 +25,13 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#define CS_CHECKPOINT_VERSION 3
+#define CS_CHECKPOINT_VERSION 4
 #define CS_CHECKPOINT_MAX_IT  1000000000
 
 typedef struct {
   long long version, it, nreal, nv, ne, nf, dof[3], bytes;
   uint64_t  sum;
+  size_t    nhead; /* the header's bytes before its checksum line, covered by the checksum */
 } Header;
 
 /* The fields of a checkpoint by depth (0 positions, 1 edges, 2 faces): values per point, points, the natural
@@ -81,11 +83,18 @@ static PetscErrorCode FieldsDestroy(Fields *f)
 }
 
 /* FNV-1a, 64 bits: a cheap checksum that notices any changed, lost or swapped byte with high probability */
-static uint64_t Checksum(const unsigned char *p, size_t n)
+static uint64_t Checksum(uint64_t h, const unsigned char *p, size_t n)
 {
-  uint64_t h = 14695981039346656037ULL;
   for (size_t i = 0; i < n; i++) h = (h ^ p[i]) * 1099511628211ULL;
   return h;
+}
+#define CS_FNV_BASIS 14695981039346656037ULL
+
+/* the checksum of version 4: over the header's text before its checksum line (the iteration, the sizes: an edited
+   "iteration 3" -> "4" is damage like any other), then over the payload (issue 36, item 8) */
+static uint64_t ChecksumFile(const char *head, size_t nhead, const double *pay, size_t bytes)
+{
+  return Checksum(Checksum(CS_FNV_BASIS, (const unsigned char *)head, nhead), (const unsigned char *)pay, bytes);
 }
 
 /* rank 0: the payload [reals, positions, edge field, face field] (natural vectors) as doubles; n doubles */
@@ -110,9 +119,10 @@ static PetscErrorCode Payload(PetscInt nreal, const PetscReal reals[], const Fie
 /* rank 0: the header and the payload into the open file */
 static void WriteFile(FILE *fp, CSMesh m, PetscInt it, PetscInt nreal, const Fields *f, const double *pay, size_t n)
 {
-  fprintf(fp, "confsurf-checkpoint %d\niteration %" PetscInt_FMT "\nscalars %" PetscInt_FMT "\nvertices %" PetscInt_FMT "\nedges %" PetscInt_FMT "\nfaces %" PetscInt_FMT "\n", CS_CHECKPOINT_VERSION, it, nreal, m->Nv, m->Ne, m->Nf);
-  fprintf(fp, "vertex_dofs %" PetscInt_FMT "\nedge_dofs %" PetscInt_FMT "\nface_dofs %" PetscInt_FMT "\n", f->dof[0], f->dof[1], f->dof[2]);
-  fprintf(fp, "payload_bytes %zu\nchecksum_fnv1a64 %016" PRIx64 "\nend_header\n", n * sizeof(double), Checksum((const unsigned char *)pay, n * sizeof(double)));
+  char head[512];
+  int  nh = snprintf(head, sizeof(head), "confsurf-checkpoint %d\niteration %" PetscInt_FMT "\nscalars %" PetscInt_FMT "\nvertices %" PetscInt_FMT "\nedges %" PetscInt_FMT "\nfaces %" PetscInt_FMT "\nvertex_dofs %" PetscInt_FMT "\nedge_dofs %" PetscInt_FMT "\nface_dofs %" PetscInt_FMT "\npayload_bytes %zu\n", CS_CHECKPOINT_VERSION, it, nreal, m->Nv, m->Ne, m->Nf, f->dof[0], f->dof[1], f->dof[2], n * sizeof(double));
+  fputs(head, fp);
+  fprintf(fp, "checksum_fnv1a64 %016" PRIx64 "\nend_header\n", ChecksumFile(head, (size_t)nh, pay, n * sizeof(double)));
   (void)fwrite(pay, sizeof(double), n, fp); /* a short write sets the stream's error, reported by the close */
 }
 
@@ -148,10 +158,19 @@ static PetscErrorCode ParseHeader(const char name[], const char *buf, size_t len
   for (size_t i = 0; i + 11 <= len && !e; i++)
     if (!memcmp(buf + i, "end_header\n", 11)) e = buf + i + 11;
   PetscCheck(len >= 20 && !memcmp(buf, "confsurf-checkpoint ", 20), PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "-resume %s: not a confsurf checkpoint (or one of an older version)", name);
+  if (!e) { /* a text transfer turned the line ends into CRLF: say so, not "truncated" */
+    for (size_t i = 0; i + 12 <= len && !e; i++)
+      if (!memcmp(buf + i, "end_header\r\n", 12)) e = buf + i;
+    PetscCheck(!e, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "-resume %s: the header has CRLF line ends (copied as text?): a checkpoint is binary, copy it unchanged", name);
+  }
   PetscCheck(e, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "-resume %s: truncated header (no end_header line)", name);
   k = sscanf(buf, "confsurf-checkpoint %lld iteration %lld scalars %lld vertices %lld edges %lld faces %lld vertex_dofs %lld edge_dofs %lld face_dofs %lld payload_bytes %lld checksum_fnv1a64 %" SCNx64, &h->version, &h->it, &h->nreal, &h->nv, &h->ne, &h->nf, &h->dof[0], &h->dof[1], &h->dof[2], &h->bytes, &h->sum);
   PetscCheck(k < 1 || h->version == CS_CHECKPOINT_VERSION, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "-resume %s: version %lld, this program reads version %d", name, h->version, CS_CHECKPOINT_VERSION);
   PetscCheck(k == 11, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "-resume %s: damaged header (field %d of 11 missing or not a number)", name, k + 1);
+  {
+    const char *c = strstr(buf, "\nchecksum_fnv1a64 "); /* sscanf found it, before end_header */
+    h->nhead = (size_t)(c - buf) + 1;
+  }
   *data = (size_t)(e - buf);
   PetscFunctionReturn(0);
 }
@@ -168,12 +187,12 @@ static PetscErrorCode CheckHeader(CSMesh m, const char name[], const Header *h, 
 }
 
 /* the payload against its length, checksum and range; n doubles expected */
-static PetscErrorCode CheckPayload(const char name[], const Header *h, long long n, const double *pay, size_t avail)
+static PetscErrorCode CheckPayload(const char name[], const char *head, const Header *h, long long n, const double *pay, size_t avail)
 {
   PetscFunctionBeginUser;
   PetscCheck(h->bytes == n * (long long)sizeof(double), PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "-resume %s: payload_bytes %lld, the fields need %lld", name, h->bytes, n * (long long)sizeof(double));
   PetscCheck((size_t)h->bytes <= avail, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "-resume %s: truncated: %zu of %lld payload bytes", name, avail, h->bytes);
-  PetscCheck(Checksum((const unsigned char *)pay, (size_t)h->bytes) == h->sum, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "-resume %s: checksum mismatch: the payload is damaged", name);
+  PetscCheck(ChecksumFile(head, h->nhead, pay, (size_t)h->bytes) == h->sum, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "-resume %s: checksum mismatch: the header or the payload is damaged", name);
   for (long long i = 0; i < n; i++) PetscCheck(isfinite(pay[i]), PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "-resume %s: non-finite value at payload entry %lld", name, i);
   PetscFunctionReturn(0);
 }
@@ -213,7 +232,7 @@ static PetscErrorCode ReadRoot(CSMesh m, const char path[], PetscInt *it, PetscI
     CSCaptureError(ierr, PetscMalloc1((len - data) / sizeof(double) + 1, &pay));
     if (!ierr) memcpy(pay, buf + data, len - data);
   }
-  if (!ierr) CSCaptureError(ierr, CheckPayload(name, &h, n, pay, len - data));
+  if (!ierr) CSCaptureError(ierr, CheckPayload(name, buf, &h, n, pay, len - data));
   PetscCall(PetscFree(buf));
   if (!ierr) {
     PetscCall(Unpack(nreal, reals, f, pay));

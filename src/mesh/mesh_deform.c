@@ -4,6 +4,7 @@
    soliman2021 Fig. 2, 21); a Moebius map (another representative of the same discrete conformal class, Fig. 4); an
    n-fold wave about the z axis (a symmetric start, Fig. 17). */
 #include "cs_mesh_deform.h"
+#include "cs_util.h"
 
 static PetscErrorCode Deform(Vec x, PetscReal a, PetscReal k, const PetscReal s[3])
 {
@@ -101,11 +102,27 @@ PetscErrorCode CSMeshDeformFromOptions(CSMesh mesh, const char prefix[])
   PetscCall(PetscOptionsRealArray("-gen_deform_invert", "Moebius map applied last: inversion in the unit sphere about cx,cy,cz and the mirror in x (the same discrete conformal class)", "CSMeshDeformFromOptions", centre, &ncentre, &inv));
   PetscCall(PetscOptionsRealArray("-gen_deform_nfold", "N,A: the distance from the z axis times 1 + A cos(N phi) (an N-fold symmetric start), applied first", "CSMeshDeformFromOptions", nfold, &nn, &nset));
   PetscOptionsEnd();
-  PetscCheck(!nset || (nn == 2 && nfold[0] == (PetscInt)nfold[0] && nfold[0] >= 0 && PetscAbsReal(nfold[1]) < 1), mesh->comm, PETSC_ERR_ARG_WRONG, "-%sgen_deform_nfold N,A: N a non-negative integer, |A| < 1 (got %" PetscInt_FMT " values)", prefix ? prefix : "", nn);
+  PetscCheck(!nset || nn == 2, mesh->comm, PETSC_ERR_ARG_WRONG, "-%sgen_deform_nfold N,A: give two numbers (got %" PetscInt_FMT ")", prefix ? prefix : "", nn);
+  PetscCheck(!nset || (nfold[0] == PetscFloorReal(nfold[0]) && nfold[0] >= 0 && nfold[0] <= 1e3), mesh->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sgen_deform_nfold %g,%g: N must be an integer in [0, 1000]", prefix ? prefix : "", (double)nfold[0], (double)nfold[1]);
+  PetscCheck(!nset || PetscAbsReal(nfold[1]) < 1, mesh->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sgen_deform_nfold %g,%g: A must lie in (-1, 1) (the factor 1 + A cos(N phi) must stay positive)", prefix ? prefix : "", (double)nfold[0], (double)nfold[1]);
+  {
+    /* issue 36, item 5: nan or 1e300 used to be written as a mesh of nan coordinates */
+    const CSOptionCheck checks[] = {
+      {"gen_deform_bump", bump, PetscAbsReal(bump) <= 10, "must lie in [-10, 10] (the radial factor 1 + a sin sin sin)"},
+      {"gen_deform_bump_freq", freq, PetscAbsReal(freq) <= 1e3, "must lie in [-1e3, 1e3] (a frequency beyond any mesh's resolution otherwise)"},
+      {"gen_deform_stretch (sx)", stretch[0], stretch[0] >= 1e-6 && stretch[0] <= 1e6, "must lie in [1e-6, 1e6]"},
+      {"gen_deform_stretch (sy)", stretch[1], stretch[1] >= 1e-6 && stretch[1] <= 1e6, "must lie in [1e-6, 1e6]"},
+      {"gen_deform_stretch (sz)", stretch[2], stretch[2] >= 1e-6 && stretch[2] <= 1e6, "must lie in [1e-6, 1e6]"},
+      {"gen_deform_twist", twist, PetscAbsReal(twist) <= 1e4, "must lie in [-1e4, 1e4] degrees"},
+      {"gen_deform_invert (cx)", centre[0], PetscAbsReal(centre[0]) <= 1e6, "must lie in [-1e6, 1e6]"},
+      {"gen_deform_invert (cy)", centre[1], PetscAbsReal(centre[1]) <= 1e6, "must lie in [-1e6, 1e6]"},
+      {"gen_deform_invert (cz)", centre[2], PetscAbsReal(centre[2]) <= 1e6, "must lie in [-1e6, 1e6]"},
+    };
+    PetscCall(CSCheckOptionValues(mesh->comm, prefix, sizeof(checks) / sizeof(checks[0]), checks));
+  }
   if (nfold[0] > 0 && nfold[1] != 0) PetscCall(NFold(mesh->x, (PetscInt)nfold[0], nfold[1]));
   PetscCheck(!set || nstretch == 3, mesh->comm, PETSC_ERR_ARG_SIZ, "-%sgen_deform_stretch needs three values sx,sy,sz", prefix ? prefix : "");
   PetscCheck(!inv || ncentre == 3, mesh->comm, PETSC_ERR_ARG_SIZ, "-%sgen_deform_invert needs three values cx,cy,cz", prefix ? prefix : "");
-  PetscCheck(PetscIsNormalReal(twist) || twist == 0, mesh->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sgen_deform_twist %g: must be a finite angle in degrees", prefix ? prefix : "", (double)twist);
   if (bump != 0 || stretch[0] != 1 || stretch[1] != 1 || stretch[2] != 1) PetscCall(Deform(mesh->x, bump, freq, stretch));
   if (twist != 0) PetscCall(Twist(mesh->comm, mesh->x, twist));
   if (inv) PetscCall(Invert(mesh->comm, mesh->x, centre, prefix ? prefix : ""));

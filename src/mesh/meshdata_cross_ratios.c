@@ -9,6 +9,9 @@
    exceeds tol in the max norm. Rank 0, serial arrays. */
 #include "cs_meshdata.h"
 #include "cs_util.h"
+#include <math.h>
+
+#define CS_CROSS_RATIO_MAX 700.0
 
 typedef struct {
   PetscInt  ne, *a, *b; /* the interior edges (0-based vertices) */
@@ -26,15 +29,23 @@ static void SignlessLaplacian(const EdgeValues *ev, PetscInt nv, const PetscReal
   }
 }
 
-/* r = A (A^T A)^{-1} A^T c (conjugate gradients to 1e-14 relative), the part of c outside ker A^T = im C */
+/* r = A (A^T A)^{-1} A^T c (conjugate gradients to 1e-14 relative), the part of c outside ker A^T = im C; on c
+   scaled by the power of 2 above max |c|, so that the squared norms cannot overflow (issue 36: c ~ 1e154 made rr inf, no iteration) */
 static PetscErrorCode OutsideImage(const EdgeValues *ev, PetscInt nv, PetscReal *r)
 {
-  PetscReal *x, *res, *p, *q, rr = 0, b2 = 0;
+  PetscReal *x, *res, *p, *q, rr = 0, b2 = 0, cmax = 0;
   PetscFunctionBeginUser;
   PetscCall(PetscCalloc4(nv, &x, nv, &res, nv, &p, nv, &q));
+  for (PetscInt e = 0; e < ev->ne; e++) cmax = PetscMax(cmax, PetscAbsReal(ev->c[e]));
+  if (cmax == 0) cmax = 1;
+  else { /* a power of 2: the scaling is exact, the answers bit-identical to the unscaled ones */
+    int ex;
+    (void)frexp(cmax, &ex);
+    cmax = ldexp(1.0, ex);
+  }
   for (PetscInt e = 0; e < ev->ne; e++) {
-    res[ev->a[e]] += ev->c[e];
-    res[ev->b[e]] += ev->c[e];
+    res[ev->a[e]] += ev->c[e] / cmax;
+    res[ev->b[e]] += ev->c[e] / cmax;
   }
   for (PetscInt v = 0; v < nv; v++) p[v] = res[v], rr += res[v] * res[v];
   b2 = rr;
@@ -47,7 +58,7 @@ static PetscErrorCode OutsideImage(const EdgeValues *ev, PetscInt nv, PetscReal 
     for (PetscInt v = 0; v < nv; v++) p[v] = res[v] + rr1 / rr * p[v];
     rr = rr1;
   }
-  for (PetscInt e = 0; e < ev->ne; e++) r[e] = x[ev->a[e]] + x[ev->b[e]];
+  for (PetscInt e = 0; e < ev->ne; e++) r[e] = cmax * (x[ev->a[e]] + x[ev->b[e]]);
   PetscCall(PetscFree4(x, res, p, q));
   PetscFunctionReturn(0);
 }
@@ -77,6 +88,8 @@ static PetscErrorCode ReadEdges(const char option[], const char path[], const CS
     PetscCheck(lines[t] == lines[t + 2], PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "%s %s: line %" PetscInt_FMT ": expected 3 numbers 'i j c0' on the line", option, path, lines[t]);
     PetscCall(ParseLine(option, path, md, E, v + t, lines[t], &s));
     PetscCheck(!seen[s], PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "%s %s: line %" PetscInt_FMT ": the edge (%g, %g) is given twice (first on line %" PetscInt_FMT ")", option, path, lines[t], (double)v[t], (double)v[t + 1], seen[s]);
+    /* a log cross ratio beyond 700 is a length ratio beyond e^700 = 1e304: no double metric has it (issue 36) */
+    PetscCheck(PetscAbsReal(v[t + 2]) <= CS_CROSS_RATIO_MAX, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "%s %s: line %" PetscInt_FMT ": the log cross ratio %g is not in [-%d, %d] (a length ratio beyond e^%d overflows a double)", option, path, lines[t], (double)v[t + 2], (int)CS_CROSS_RATIO_MAX, (int)CS_CROSS_RATIO_MAX, (int)CS_CROSS_RATIO_MAX);
     seen[s] = lines[t];
     val[s]  = v[t + 2];
   }

@@ -106,6 +106,31 @@ static PetscErrorCode RemeshOptions(MPI_Comm comm, const char prefix[], MeshSour
   PetscFunctionReturn(0);
 }
 
+/* Every generator real in a finite range, with its reason (issue 36, item 5: nan or 1e300 was written as a mesh of
+   nan coordinates with exit 0). Lengths in [1e-6, 1e6]: the mesh checks and the flows' tolerances are set for
+   sizes near 1 (a coordinate beyond 1e100 is refused anyway). Checked on every run, whichever -gen is chosen. */
+static PetscErrorCode CheckGeneratorValues(MPI_Comm comm, const char pre[], const MeshSource *s)
+{
+  const CSOptionCheck checks[] = {
+    {"gen_radius", s->radius, s->radius >= 1e-6 && s->radius <= 1e6, "must lie in [1e-6, 1e6] (a length)"},
+    {"gen_torus_R", s->R, s->R >= 1e-6 && s->R <= 1e6, "must lie in [1e-6, 1e6] (a length)"},
+    {"gen_tube_r", s->r, s->r >= 1e-6 && s->r <= 1e6, "must lie in [1e-6, 1e6] (a length)"},
+    {"gen_height", s->height, s->height >= 1e-6 && s->height <= 1e6, "must lie in [1e-6, 1e6] (a length)"},
+    {"gen_tau_re", s->tau_re, PetscAbsReal(s->tau_re) <= 1e3, "must lie in [-1e3, 1e3]"},
+    {"gen_tau_im", s->tau_im, s->tau_im >= 1e-3 && s->tau_im <= 1e3, "must lie in [1e-3, 1e3] (the torus' aspect ratio)"},
+    /* tau and tau + n are the same class; |tau| beyond 1e3 is a lattice no -gen_n resolves */
+    {"gen_tau (RE)", s->tau[0], PetscAbsReal(s->tau[0]) <= 1e3, "must lie in [-1e3, 1e3]"},
+    {"gen_tau (IM)", s->tau[1], PetscAbsReal(s->tau[1]) <= 1e3, "must lie in [-1e3, 1e3] (Im tau > 0 is checked by the lattice)"},
+    {"gen_spike_height", s->spike_h, PetscAbsReal(s->spike_h) <= 1e3, "must lie in (-1, 1e3] (the spikes' height, radius 1)"},
+    {"gen_spike_width", s->spike_w, PetscAbsReal(s->spike_w) <= 1, "must lie in (0, 0.55) radians"},
+    {"gen_morin_perturb", s->morin_eps, PetscAbsReal(s->morin_eps) <= 1, "must lie in [-1, 1] (a perturbation of a unit-size surface)"},
+    {"mesh_cross_ratios_tol", s->crtol, s->crtol > 0 && s->crtol <= 1e3, "must lie in (0, 1e3]"},
+  };
+  PetscFunctionBeginUser;
+  PetscCall(CSCheckOptionValues(comm, pre, sizeof(checks) / sizeof(checks[0]), checks));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode CSMeshDataFromOptions(MPI_Comm comm, const char prefix[], CSMeshData *md, CSTopology *topo)
 {
   MeshSource  src;
@@ -160,6 +185,7 @@ PetscErrorCode CSMeshDataFromOptions(MPI_Comm comm, const char prefix[], CSMeshD
   PetscCall(PetscOptionsInt("-mesh_refine", "Regular 1-to-4 refinements of the input (file or generator); the refined mesh's conformal class is a flow's constraint", "CSMeshDataRefine", src.refine, &src.refine, NULL));
   PetscCall(PetscOptionsEList("-mesh_refine_type", "Positions of the refined vertices: midpoint (shape kept) or loop (Loop subdivision)", "CSMeshDataRefine", RefineNames, 2, RefineNames[rtype], &rtype, NULL));
   PetscOptionsEnd();
+  PetscCall(CheckGeneratorValues(comm, pre, &src));
   PetscCheck(src.refine >= 0 && src.refine <= 6, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%smesh_refine %" PetscInt_FMT ": not in [0, 6] (each level multiplies the faces by 4)", pre, src.refine);
   PetscCheck(!tauset || ntau == 2, comm, PETSC_ERR_ARG_WRONG, "-%sgen_tau: give two numbers RE,IM (got %" PetscInt_FMT ")", pre, ntau);
   PetscCheck(!src.refine || !(gen == GEN_SPIKY && src.spike_round), comm, PETSC_ERR_ARG_INCOMP, "-%smesh_refine with -%sgen_spike_round_class: refine with -%sgen_level instead (the lengths are not refined)", pre, pre, pre);
@@ -167,12 +193,23 @@ PetscErrorCode CSMeshDataFromOptions(MPI_Comm comm, const char prefix[], CSMeshD
   PetscCheck(!src.refine || !src.lengths[0], comm, PETSC_ERR_ARG_INCOMP, "-%smesh_refine with -%smesh_lengths: the lengths are given for the unrefined faces", pre, pre);
   PetscCheck(!src.refine || !src.crossratios[0], comm, PETSC_ERR_ARG_INCOMP, "-%smesh_refine with -%smesh_cross_ratios: the cross ratios are given for the unrefined edges", pre, pre);
   PetscCheck(!src.lengths[0] || !src.crossratios[0], comm, PETSC_ERR_ARG_INCOMP, "-%smesh_lengths with -%smesh_cross_ratios: give the target class once", pre, pre);
-  PetscCheck(src.crtol > 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%smesh_cross_ratios_tol %g: must be > 0", pre, (double)src.crtol);
   src.refine_loop = rtype == 1 ? PETSC_TRUE : PETSC_FALSE;
   PetscCall(RemeshOptions(comm, prefix, &src));
   PetscCheck(!(src.remesh_faces || src.remesh_h > 0) || (!src.lengths[0] && !src.crossratios[0]), comm, PETSC_ERR_ARG_INCOMP, "-%smesh_remesh with -%smesh_lengths or -%smesh_cross_ratios: the target class is given for the input's own edges", pre, pre, pre);
   PetscCheck(src.file != genset, comm, PETSC_ERR_ARG_WRONG, "give exactly one of -%smesh FILE and -%sgen icosphere|torus|flattorus|cylinder|disk|lattice|spiky|morin (%s)", pre, pre, src.file ? "both were given" : "neither was given");
   src.gen = (GenType)gen;
   CSRootCall(comm, MeshSourceLoad(&src, md, topo));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSMeshDataRefuseTargetClass(MPI_Comm comm, const char prefix[], const char task[])
+{
+  const char *opts[] = {"-mesh_lengths", "-mesh_cross_ratios"};
+  PetscFunctionBeginUser;
+  for (int i = 0; i < 2; i++) {
+    PetscBool has;
+    PetscCall(PetscOptionsHasName(NULL, prefix, opts[i], &has));
+    PetscCheck(!has, comm, PETSC_ERR_ARG_INCOMP, "-%s%s: %s keeps the conformal class of the positions and has no target class to take from it (a target class is for -task flow -flow_type cgd|pgd|gd|newton|alm|trianglefield)", prefix ? prefix : "", opts[i] + 1, task);
+  }
   PetscFunctionReturn(0);
 }

@@ -58,8 +58,9 @@ PetscErrorCode CSMeshDataMorin(PetscInt n, PetscInt m, PetscReal eps, CSMeshData
   PetscInt R, *t;
   PetscFunctionBeginUser;
   PetscCheck(n >= 8 && m >= 4, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "-gen morin needs -gen_n >= 8 and -gen_m >= 4, got %" PetscInt_FMT ", %" PetscInt_FMT, n, m);
+  /* the sizes in floating point first: n (m - 1) overflowed PetscInt at 65536^2 ("-65534 vertices", issue 36) */
+  PetscCall(CSMeshDataAlloc("-gen morin", (double)n * (double)(m - 1) + 2, 2 * (double)n * (m - 1), md));
   R = n * (m - 1);
-  PetscCall(CSMeshDataAlloc("-gen morin", (double)R + 2, 2 * (double)n * (m - 1), md));
   for (PetscInt j = 1; j < m; j++)
     for (PetscInt i = 0; i < n; i++) MorinPoint(-PETSC_PI / 2 + j * PETSC_PI / m, 2 * PETSC_PI * i / n, eps, md->x + 3 * ((j - 1) * n + i));
   MorinPoint(-PETSC_PI / 2, 0, eps, md->x + 3 * R);    /* south pole */

@@ -102,6 +102,23 @@ static PetscErrorCode ReconstructionSetUpFirst(CSTriangleFieldReconstruction R)
   PetscFunctionReturn(0);
 }
 
+/* After a failed factorisation: everything but the stars is made again at the next set-up (CHOLMOD refuses to
+   analyse again after a failed supernodal numeric factorisation: "cannot operate on supernodal L", issue 36). */
+static PetscErrorCode ReconstructionReset(CSTriangleFieldReconstruction R)
+{
+  PetscFunctionBeginUser;
+  PetscCall(KSPDestroy(&R->ksp));
+  PetscCall(MatDestroy(&R->d0));
+  PetscCall(MatDestroy(&R->L));
+  PetscCall(MatDestroy(&R->B));
+  PetscCall(VecDestroy(&R->wc));
+  PetscCall(VecDestroy(&R->b));
+  PetscCall(VecDestroy(&R->f));
+  R->omega_id    = 0;
+  R->omega_state = 0;
+  PetscFunctionReturn(0);
+}
+
 /* The operators at omega's *1: B = *1 d0 and L = d0^T B (grounded) refilled in place; nothing is done if omega is
    the vector of the last set-up, unchanged (its id and state). */
 PetscErrorCode CSTriangleFieldReconstructionSetUp(CSTriangleFieldReconstruction R, Vec omega)
@@ -147,6 +164,7 @@ PetscErrorCode CSTriangleFieldReconstructionSolve(CSTriangleFieldReconstruction 
     {
       KSPConvergedReason kr; /* a failed factorisation under preonly gives Inf positions without an error */
       PetscCall(KSPGetConvergedReason(R->ksp, &kr));
+      if (kr < 0) PetscCall(ReconstructionReset(R)); /* a later call starts afresh (CHOLMOD cannot resymbol a failed L) */
       PetscCheck(kr >= 0, R->m->comm, PETSC_ERR_NOT_CONVERGED, "triangle field: the Poisson reconstruction (-trianglefield_poisson_ksp_type ...) failed: %s", KSPConvergedReasons[kr]);
     }
     PetscCall(CSTriangleFieldComponent(xref, c, R->b, PETSC_TRUE));

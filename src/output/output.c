@@ -175,16 +175,30 @@ PetscErrorCode CSOutputDestroy(CSOutput *o)
   PetscFunctionReturn(0);
 }
 
-/* Two numbers that identify the input positions x0 on any number of ranks (up to round-off). */
-static PetscErrorCode Fingerprint(Vec x0, PetscReal fp[2])
+/* Two numbers that identify the start positions x0 (dmV3 layout) on any number of ranks (up to round-off): |x0|
+   and sum_n w_n (x_n + sqrt2 y_n + sqrt3 z_n) over the vertices n in natural (file) order with fixed weights
+   w_n = 1 + (7919 n mod 1009) / 1009, summed on rank 0: a rotated or renumbered copy of the input changes it
+   (the plain sum did not see a rotation about the centroid; issue 36). */
+static PetscErrorCode Fingerprint(CSMesh mesh, Vec x0, PetscReal fp[2])
 {
-  PetscScalar sum;
+  Vec                nat;
+  PetscInt           n;
+  const PetscScalar *a;
+  PetscReal          s = 0;
   PetscFunctionBeginUser;
   fp[0] = fp[1] = 0;
   if (!x0) PetscFunctionReturn(0);
   PetscCall(VecNorm(x0, NORM_2, &fp[0]));
-  PetscCall(VecSum(x0, &sum));
-  fp[1] = PetscRealPart(sum);
+  PetscCall(CSMeshGather(&mesh->natV3, x0, &nat));
+  PetscCall(VecGetLocalSize(nat, &n));
+  PetscCall(VecGetArrayRead(nat, &a));
+  for (PetscInt v = 0; v < n / 3; v++) {
+    PetscReal w = 1 + (PetscReal)((7919 * (long long)v) % 1009) / 1009;
+    s += w * (PetscRealPart(a[3 * v]) + PETSC_SQRT2 * PetscRealPart(a[3 * v + 1]) + PetscSqrtReal(3.0) * PetscRealPart(a[3 * v + 2]));
+  }
+  PetscCall(VecRestoreArrayRead(nat, &a));
+  PetscCallMPI(MPI_Bcast(&s, 1, MPIU_REAL, 0, mesh->comm));
+  fp[1] = s;
   PetscFunctionReturn(0);
 }
 
@@ -202,7 +216,7 @@ PetscErrorCode CSOutputResume(CSOutput *o, CSMesh mesh, Vec x0, PetscInt *it, Pe
   ierr = CSCheckpointRead(mesh, o->resume, it, nreal + 2, buf, v);
   if (ierr) PetscCall(PetscFree(buf)); /* no leak on the error path */
   PetscCall(ierr);
-  PetscCall(Fingerprint(x0, fp));
+  PetscCall(Fingerprint(mesh, x0, fp));
   for (int i = 0; i < 2; i++) same = (PetscBool)(same && PetscAbsReal(buf[i] - fp[i]) <= 1e-10 * PetscMax(1.0, PetscAbsReal(fp[i])));
   if (same) PetscCall(PetscArraycpy(reals, buf + 2, nreal));
   PetscCall(PetscFree(buf));
@@ -220,7 +234,7 @@ PetscErrorCode CSOutputCheckpoint(CSOutput *o, CSMesh mesh, Vec x0, PetscInt it,
   o->checkpoint_used = PETSC_TRUE;
   if (!o->has_checkpoint || (!force && it % o->checkpoint_every)) PetscFunctionReturn(0);
   PetscCall(PetscMalloc1(nreal + 2, &buf));
-  PetscCall(Fingerprint(x0, buf));
+  PetscCall(Fingerprint(mesh, x0, buf));
   PetscCall(PetscArraycpy(buf + 2, reals, nreal));
   PetscCall(CSCheckpointWrite(mesh, o->checkpoint, it, nreal + 2, buf, v));
   PetscCall(PetscFree(buf));

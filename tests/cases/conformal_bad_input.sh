@@ -6,9 +6,9 @@
 source tests/lib.sh
 run() { timeout 60 $MPIEXEC "$CS_BIN" -task flow -flow_type conformal "$@"; }
 EXPECT="boundary loop.*Sec. 6.3" expect_fail run -gen disk -gen_rings 4
-EXPECT="-flow_tau 0: must be > 0" expect_fail run -gen icosphere -gen_level 1 -flow_tau 0
+EXPECT="-flow_tau 0: must lie in \[1e-14, 1e3\]" expect_fail run -gen icosphere -gen_level 1 -flow_tau 0
 [ "$NP" = 1 ] || exit 0
-EXPECT="-flow_tau -1: must be > 0" expect_fail run -gen icosphere -gen_level 1 -flow_tau -1
+EXPECT="-flow_tau -1: must lie in \[1e-14, 1e3\]" expect_fail run -gen icosphere -gen_level 1 -flow_tau -1
 EXPECT="-flow_filter_k 7: must lie in 0..4" expect_fail run -gen icosphere -gen_level 1 -flow_filter_k 7
 EXPECT="-flow_filter_sigma -1" expect_fail run -gen icosphere -gen_level 1 -flow_filter_sigma -1
 EXPECT="eigensolver" expect_fail run -gen icosphere -gen_level 1 -flow_eigensolver lanczos

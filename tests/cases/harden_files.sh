@@ -28,7 +28,7 @@ EXPECT="-checkpoint /dev/full: exists and is not a regular file" expect_fail $T 
 [ -c /dev/full ] || { echo "BAD: /dev/full replaced"; exit 1; }
 $T $MPIEXEC "$CS_BIN" $F -checkpoint "$TMP/c.ck" > "$TMP/log" 2>&1 || { cat "$TMP/log"; exit 1; }
 ls "$TMP"/c.ck.* 2> /dev/null && { echo "BAD: temporary file left"; exit 1; }
-head -c 200 "$TMP/c.ck" | grep -q "^confsurf-checkpoint 3" || { echo "BAD: no versioned header"; exit 1; }
+head -c 200 "$TMP/c.ck" | grep -q "^confsurf-checkpoint 4" || { echo "BAD: no versioned header"; exit 1; }
 R="$F -flow_max_it 4 -resume"
 python3 - "$TMP/c.ck" "$TMP" <<'PY'
 import sys
@@ -37,7 +37,7 @@ h = d.index(b'end_header\n') + 11
 open(t + '/flip.ck', 'wb').write(d[:-9] + bytes([d[-9] ^ 1]) + d[-8:])
 open(t + '/short.ck', 'wb').write(d[:h + 100])
 open(t + '/minus.ck', 'wb').write(d.replace(b'iteration 2\n', b'iteration -5\n', 1))
-open(t + '/v9.ck', 'wb').write(d.replace(b"confsurf-checkpoint 3", b"confsurf-checkpoint 9", 1))
+open(t + '/v9.ck', 'wb').write(d.replace(b"confsurf-checkpoint 4", b"confsurf-checkpoint 9", 1))
 PY
 EXPECT="-resume .*flip.ck: checksum mismatch" expect_fail $T $MPIEXEC "$CS_BIN" $R "$TMP/flip.ck"
 serial && EXPECT="-resume .*short.ck: truncated" expect_fail $T $MPIEXEC "$CS_BIN" $R "$TMP/short.ck"

@@ -81,7 +81,7 @@ EXPECT="-resume .*c.ck: stores 0 values per vertex, 110 per edge and 34 per face
 EXPECT="-resume .*c.ck: written for 144 vertices, 432 edges and 288 faces, the mesh has 168" expect_fail timeout 60 $MPIEXEC "$CS_BIN" $L -gen_n 14 -resume "$TMP/c.ck"
 if [ "$NP" = 1 ]; then
   EXPECT="-resume .*c.ck: the checkpoint was written by a run from other input positions" expect_fail timeout 60 $MPIEXEC "$CS_BIN" $L -flow_seed 2 -resume "$TMP/c.ck"
-  python3 -c "import sys; d = open(sys.argv[1], 'rb').read(); open(sys.argv[2], 'wb').write(d.replace(b'confsurf-checkpoint 3', b'confsurf-checkpoint 2', 1))" "$TMP/c.ck" "$TMP/old.ck"
-  EXPECT="-resume .*old.ck: version 2, this program reads version 3" expect_fail timeout 60 $MPIEXEC "$CS_BIN" $L -resume "$TMP/old.ck"
+  python3 -c "import sys; d = open(sys.argv[1], 'rb').read(); open(sys.argv[2], 'wb').write(d.replace(b'confsurf-checkpoint 4', b'confsurf-checkpoint 3', 1))" "$TMP/c.ck" "$TMP/old.ck"
+  EXPECT="-resume .*old.ck: version 3, this program reads version 4" expect_fail timeout 60 $MPIEXEC "$CS_BIN" $L -resume "$TMP/old.ck"
   EXPECT="-checkpoint/-resume with -flow_variables spinor: the variables \(u, psi\) are not stored" expect_fail timeout 60 $MPIEXEC "$CS_BIN" -task flow -flow_type trianglefield -gen lattice -gen_tau 0,1 -gen_n 12 -gen_m 12 -flow_variables spinor -checkpoint "$TMP/s.ck"
 fi

@@ -6,8 +6,8 @@
 #include "cs_util.h"
 
 static const CSFlowLoopOps LoopOps; /* the flow's parts for the iteration driver (defined below) */
-static const char *const ReasonsShifted[]              = {"resolution", "energy_growth", "max_it", "iterating", "converged_atol", "converged_rtol"};
-const char *const       *CSConformalFlowConvergedReasons = ReasonsShifted + 3;
+static const char *const ReasonsShifted[]              = {"stalled", "resolution", "energy_growth", "max_it", "iterating", "converged_atol", "converged_rtol"};
+const char *const       *CSConformalFlowConvergedReasons = ReasonsShifted + 4;
 const char *const        CSConformalCurvatures[]       = {"barycentric", "voronoi", "CSConformalCurvature", "CS_CONFORMAL_CURVATURE_", NULL};
 const char *const        CSConformalMobiusSteps[]      = {"newton", "paper", "CSConformalMobiusStep", "CS_CONFORMAL_MOBIUS_", NULL};
 const char *const        CSConformalEigensolvers[]      = {"inverse", "eps", "CSConformalEigensolver", "CS_CONFORMAL_EIGEN_", NULL};
@@ -84,19 +84,26 @@ PetscErrorCode CSConformalFlowSetFilter(CSConformalFlow F, PetscReal sigma, Pets
 static PetscErrorCode CheckOptions(CSConformalFlow F)
 {
   const CSOptionCheck checks[] = {
-    {"tau", F->tau, F->tau > 0, "must be > 0 (the flow is stable for 0 < tau < 1)"},
+    /* below 1e-14 rho = tau v is rounding noise against D: the step moves nothing (tests take 1e-12 as the identity) */
+    {"tau", F->tau, F->tau >= 1e-14 && F->tau <= 1e3, "must lie in [1e-14, 1e3] (the flow is stable for 0 < tau < 1; rho = tau v below 1e-14 is rounding noise)"},
     {"max_it", (PetscReal)F->loop.max_it, F->loop.max_it >= 0, "must be >= 0"},
     {"atol", F->atol, F->atol >= 0, "must be >= 0"},
     {"rtol", F->rtol, F->rtol >= 0, "must be >= 0"},
     {"max_energy_growth", F->egrow, F->egrow > 1, "must be > 1"},
-    {"filter_sigma", F->sigma, F->sigma >= 0, "must be >= 0 (0: no filter)"},
+    /* the filter removes the modes with sigma lambda^k < 1: below 1e-12 that is every mode of any mesh, so v = 0 */
+    {"filter_sigma", F->sigma, F->sigma == 0 || (F->sigma >= 1e-12 && F->sigma <= 1e12), "must be 0 (no filter) or lie in [1e-12, 1e12] (a smaller sigma removes every mode: no step)"},
     {"filter_k", (PetscReal)F->fk, F->fk >= 0 && F->fk <= 4, "must lie in 0..4"},
-    {"curvature_factor", F->hfactor, F->hfactor > 0, "must be > 0"},
-    {"mobius_weight", F->mobius_weight, F->mobius_weight >= 0, "must be >= 0"},
+    {"curvature_factor", F->hfactor, F->hfactor > 0 && F->hfactor <= 1e3, "must lie in (0, 1e3] (2: the gradient of |mu|^2)"},
+    {"mobius_weight", F->mobius_weight, F->mobius_weight >= 0 && F->mobius_weight <= 1e6, "must lie in [0, 1e6]"},
     {"max_seconds", F->loop.max_seconds, F->loop.max_seconds >= 0, "use 0 (no limit) or a positive number of seconds"},
     {"max_nonexact", F->max_nonexact, F->max_nonexact >= 0, "must be >= 0 (0: off)"},
-    {"max_halvings", (PetscReal)F->max_halvings, F->max_halvings >= 0, "must be >= 0"},
+    /* 2^-50 tau is below double precision's resolution of tau: more halvings change nothing */
+    {"max_halvings", (PetscReal)F->max_halvings, F->max_halvings >= 0 && F->max_halvings <= 50, "must lie in 0..50 (2^-50 tau moves nothing)"},
     {"min_edge", F->min_edge, F->min_edge >= 0 && F->min_edge < 1, "must lie in [0, 1) (0: off)"},
+    /* a nan frame was blamed on a boundary vertex (issue 36, item 17) */
+    {"boundary_frame (cN)", F->frame[0], PetscAbsReal(F->frame[0]) <= 1e6, "must lie in [-1e6, 1e6]"},
+    {"boundary_frame (cT)", F->frame[1], PetscAbsReal(F->frame[1]) <= 1e6, "must lie in [-1e6, 1e6]"},
+    {"boundary_frame (cB)", F->frame[2], PetscAbsReal(F->frame[2]) <= 1e6, "must lie in [-1e6, 1e6]"},
   };
   PetscFunctionBeginUser;
   PetscCall(CSCheckOptionValues(F->hdr.comm, F->hdr.prefix, sizeof(checks) / sizeof(checks[0]), checks));
@@ -182,6 +189,7 @@ static PetscErrorCode SetUpFlow(void *ctx)
   PetscCall(VecCopy(m->x, F->x0));
   PetscCall(VecDuplicate(m->x, &F->xnew));
   PetscCall(VecDuplicate(m->x, &F->N));
+  PetscCall(VecDuplicate(m->x, &F->work3));
   PetscCall(DMCreateGlobalVector(m->dmV1, &F->area));
   {
     Vec *vs[] = {&F->area0, &F->H, &F->v, &F->rho, &F->work};
@@ -225,6 +233,7 @@ static PetscErrorCode Judge(void *ctx, PetscInt *reason)
   PetscFunctionBeginUser;
   *reason = CS_CONFORMAL_ITERATING;
   if (F->rejected) *reason = CS_CONFORMAL_DIVERGED_RESOLUTION; /* conformal_integrate.c: the step was not taken */
+  else if (F->stalled) *reason = CS_CONFORMAL_DIVERGED_STALLED; /* a step that moved nothing is not convergence */
   else if (!(s->W == s->W) || s->W > F->egrow * F->W0) *reason = CS_CONFORMAL_DIVERGED_ENERGY;
   else if (F->atol > 0 && s->W <= F->atol) *reason = CS_CONFORMAL_CONVERGED_ATOL;
   else if (F->loop.it > 0 && PetscAbsReal(s->W - F->Wprev) <= F->rtol * F->Wprev) *reason = CS_CONFORMAL_CONVERGED_RTOL;
@@ -294,7 +303,7 @@ PetscErrorCode CSConformalFlowDestroy(CSConformalFlow *flow)
   if (!F) PetscFunctionReturn(0);
   PetscCall(CSMonitorListCancel(&F->hdr.monitors));
   {
-    Vec *vs[] = {&F->x, &F->x0, &F->xnew, &F->area0, &F->area, &F->N, &F->H, &F->v, &F->rho, &F->work, &F->lambda};
+    Vec *vs[] = {&F->x, &F->x0, &F->xnew, &F->work3, &F->area0, &F->area, &F->N, &F->H, &F->v, &F->rho, &F->work, &F->lambda};
     for (size_t k = 0; k < sizeof(vs) / sizeof(vs[0]); k++) PetscCall(VecDestroy(vs[k]));
   }
   if (F->c) PetscCall(VecDestroyVecs(F->ncmax, &F->c));

@@ -26,10 +26,11 @@ struct _p_CSConformalFlow {
   PetscInt               max_halvings;
   PetscReal              min_edge;     /* reject a step whose shortest edge is below min_edge times the diameter */
   PetscBool              rejected;     /* the last step was rejected (conformal_integrate.c) */
+  PetscBool              stalled;      /* the last step moved no vertex beyond rounding though v was not zero */
   PetscReal              edge_ratio;   /* the new surface's shortest edge / its bounding-box diagonal */
   /* state: positions (current, input, next), per-vertex areas of the input, the step's fields */
   Vec       x, x0, xnew, area0;
-  Vec       area, N, H, v, rho, work, lambda;
+  Vec       area, N, H, v, rho, work, lambda, work3; /* work3: like x */
   Vec      *c;             /* the constraint functions {1, N^x,y,z, Z_i^x,y,z}, orthonormalised */
   PetscInt  nc, ncmax;     /* functions in c (after dropping dependent ones), allocated */
   PetscInt  nbefore;       /* c[0..nbefore) are 1 and N (the Moebius step goes after them) */

@@ -54,9 +54,30 @@ static PetscErrorCode Resolved(CSConformalFlow F, Vec x, PetscBool *ok)
   PetscFunctionReturn(0);
 }
 
+/* Did the step move anything? (issue 36, item 7) The largest vertex displacement against the bounding-box diagonal
+   of x: at 1e-13 or below the new surface is x up to rounding, and the W test (|W - W_prev| <= rtol W) would
+   report convergence for a step that did nothing (a tau halved to nothing, rho = tau v below rounding). Unless v
+   itself is zero relative to c H (a fixed point such as the round sphere: then the step rightly moves nothing). */
+static PetscErrorCode Stalled(CSConformalFlow F, Vec x, Vec xnew, PetscBool *stalled)
+{
+  PetscReal d2 = 0, move;
+  PetscFunctionBeginUser;
+  for (PetscInt d = 0; d < 3; d++) {
+    PetscReal lo, hi;
+    PetscCall(VecStrideMin(x, d, NULL, &lo));
+    PetscCall(VecStrideMax(x, d, NULL, &hi));
+    d2 += (hi - lo) * (hi - lo);
+  }
+  PetscCall(VecWAXPY(F->work3, -1.0, x, xnew));
+  PetscCall(VecNorm(F->work3, NORM_INFINITY, &move));
+  *stalled = (PetscBool)(move <= 1e-13 * PetscSqrtReal(d2) && F->s.vnorm > 1e-8 * F->hfactor * PetscSqrtReal(F->s.EH));
+  PetscFunctionReturn(0);
+}
+
 /* With -flow_max_nonexact eta_max > 0 (a safeguard, docs/conformal_flow.md "knot1"): a step whose non-exact
-   residual exceeds eta_max is rejected and retried with tau / 2, at most max_halvings times; s.tau reports the
-   step taken. A step that Resolved() refuses is not taken (F->rejected; the state and its measures are kept). */
+   residual exceeds eta_max is rejected and retried with tau / 2, at most max_halvings (<= 50) times, and not once
+   tau / 2 underflows; s.tau reports the step taken. A step that Resolved() refuses is not taken (F->rejected; the
+   state and its measures are kept); one that moved nothing is taken and stops the flow (F->stalled). */
 PetscErrorCode CSConformalFlowIntegrate(CSConformalFlow F)
 {
   PetscReal              tau = F->tau;
@@ -65,7 +86,7 @@ PetscErrorCode CSConformalFlowIntegrate(CSConformalFlow F)
   PetscFunctionBeginUser;
   F->s.halvings = 0;
   PetscCall(Attempt(F, tau));
-  while (F->max_nonexact > 0 && F->s.nonexact > F->max_nonexact && F->s.halvings < F->max_halvings) {
+  while (F->max_nonexact > 0 && F->s.nonexact > F->max_nonexact && F->s.halvings < F->max_halvings && tau / 2 > 0) {
     tau /= 2;
     F->s.halvings++;
     PetscCall(Attempt(F, tau));
@@ -88,6 +109,8 @@ PetscErrorCode CSConformalFlowIntegrate(CSConformalFlow F)
     PetscCheck(A > 0 && A == A, F->hdr.comm, PETSC_ERR_NOT_CONVERGED, "conformal flow: step %" PetscInt_FMT " produced a surface of area %g", F->loop.it + 1, (double)A);
     PetscCall(CSSpinRestoreArea(F->spin, F->x0, F->xnew));
   }
+  PetscCall(Stalled(F, F->x, F->xnew, &F->stalled));
+  if (F->stalled) PetscCall(PetscPrintf(F->hdr.comm, "conformal flow: step %" PetscInt_FMT " (tau %g) moved no vertex beyond rounding (1e-13 of the diameter) though the direction is not zero: stopping as stalled\n", F->loop.it + 1, (double)tau));
   PetscCall(VecCopy(F->xnew, F->x));
   PetscFunctionReturn(0);
 }

@@ -16,12 +16,16 @@ static PetscErrorCode ReadValuesFile(const char option[], const char path[], Pet
   PetscFunctionBeginUser;
   PetscCall(CSTokensLoad(option, path, &t));
   while (CSTokensNext(&t, &tok, &len, &line) && !(bad = CSTokenReal(tok, len, &v))) {
+    if (PetscAbsReal(v) > 1e12) { /* rho beyond 1e12 swamps the Dirac operator (issue 36, item 16) */
+      bad = 3;
+      break;
+    }
     if (count < want) a[count] = v;
     count++;
   }
   if (bad) {
     char text[40], msg[PETSC_MAX_PATH_LEN + 128];
-    PetscCall(PetscSNPrintf(msg, sizeof(msg), "%s %s: line %" PetscInt_FMT ": value %" PetscInt_FMT " '%s' is %s", option, t.name, line, count + 1, CSTokenText(tok, len, text), bad == 1 ? "not a number" : "not finite"));
+    PetscCall(PetscSNPrintf(msg, sizeof(msg), "%s %s: line %" PetscInt_FMT ": value %" PetscInt_FMT " '%s' is %s", option, t.name, line, count + 1, CSTokenText(tok, len, text), bad == 1 ? "not a number" : (bad == 3 ? "beyond 1e12 in absolute value" : "not finite")));
     PetscCall(CSTokensDestroy(&t));
     SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "%s", msg);
   }
@@ -187,8 +191,17 @@ PetscErrorCode CSSpinRhoFromOptions(CSSpin spin, Vec x, CSRhoLocation *loc, Vec 
   PetscOptionsEnd();
   if (!hasbump) nc = 0;
   {
-    const CSOptionCheck checks[] = {{"rho_smooth", smooth, !hassmooth || smooth > 0, "must be a positive time (length^2)"}};
-    PetscCall(CSCheckOptionValues(mesh->comm, NULL, 1, checks));
+    /* finite and bounded (issue 36, item 16: inf or nan failed later inside the factorisation, naming nothing):
+       rho beyond 1e12 swamps the Dirac operator's O(1/h) entries and the factorisation loses every digit */
+    const CSOptionCheck checks[] = {
+      {"rho_smooth", smooth, !hassmooth || (smooth > 0 && smooth <= 1e6), "must be a positive time (length^2) up to 1e6"},
+      {"rho_scale", scale, PetscAbsReal(scale) <= 1e12, "must lie in [-1e12, 1e12]"},
+      {"rho_bump_height", height, PetscAbsReal(height) <= 1e12, "must lie in [-1e12, 1e12]"},
+      {"rho_bump_radius", radius, radius > 0 && radius <= 1e6, "must lie in (0, 1e6]"},
+      {"rho_mean_curvature", hs, PetscAbsReal(hs) <= 1e6, "must lie in [-1e6, 1e6]"},
+    };
+    PetscCall(CSCheckOptionValues(mesh->comm, NULL, sizeof(checks) / sizeof(checks[0]), checks));
+    for (PetscInt i = 0; i < nc; i++) PetscCheck(PetscAbsReal(centers[i]) <= 1e6, mesh->comm, PETSC_ERR_ARG_OUTOFRANGE, "-rho_bump_center: value %" PetscInt_FMT " is %g, not in [-1e6, 1e6]", i + 1, (double)centers[i]);
   }
   PetscCheck(!hasdisp || !(hastarget || (hasfile && iloc == 1)), mesh->comm, PETSC_ERR_ARG_INCOMP, "-rho_from_displacement gives a per-vertex rho: not with -spin_target_mesh or -rho_location face");
   PetscCheck(!hassmooth || !(hastarget || (hasfile && iloc == 1)), mesh->comm, PETSC_ERR_ARG_INCOMP, "-rho_smooth filters a per-vertex rho: not with -spin_target_mesh or -rho_location face");

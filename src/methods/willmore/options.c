@@ -94,9 +94,10 @@ static PetscErrorCode ProblemOptions(CSWillmoreFlow F, PetscFunctionList energie
 static PetscErrorCode CheckValues(CSWillmoreFlow F)
 {
   const CSOptionCheck checks[] = {
-    {"t", F->t, F->t > 0, "must be > 0"},
-    {"t_mu", F->tmu, F->tmu >= 0, "must be > 0 (0: the default, 1e3 t)"},
-    {"t_max", F->tmax, F->tmax >= F->t, "must be >= the initial step -t"},
+    /* first, with a range: a t of 1e-300 was blamed on -t_min, one of 1e300 failed inside the factorisation */
+    {"t", F->t, F->t >= 1e-12 && F->t <= 1e8, "must lie in [1e-12, 1e8] (a step size of the scaled flow)"},
+    {"t_mu", F->tmu, F->tmu >= 0 && F->tmu <= 1e15, "must lie in (0, 1e15] (0: the default, 1e3 t)"},
+    {"t_max", F->tmax, F->tmax >= F->t && F->tmax <= 1e8, "must lie in [-t, 1e8]"},
     {"t_grow", F->grow, F->grow >= 1, "must be >= 1"},
     {"t_mu_grow", F->tmu_grow, F->tmu_grow == 0 || F->tmu_grow >= 1, "use 0 (t_mu follows t) or a factor >= 1"},
     {"t_mu_max", F->tmu_max, F->tmu_max >= 0, "must be >= 0 (0: the default)"},
@@ -130,6 +131,9 @@ static PetscErrorCode CheckValues(CSWillmoreFlow F)
     {"alm_rho_max", F->alm_rho_max, F->alm_rho_max >= F->alm_rho, "must be >= -alm_rho"},
     {"alm_inner_it", (PetscReal)F->alm_inner_it, F->alm_inner_it >= 1, "must be >= 1"},
     {"soc_max_it", (PetscReal)F->soc_max_it, F->soc_max_it >= 0, "use 0 (no corrections) or a positive count"},
+    /* a target the surface cannot have: inf was taken, then 31 rejected steps and exit 0 (issue 36, item 16) */
+    {"constraint_area", F->area_given ? F->area_target : 1, !F->area_given || (F->area_target > 0 && F->area_target <= 1e12), "the target area must lie in (0, 1e12]"},
+    {"constraint_volume", F->vol_given ? F->vol_target : 1, !F->vol_given || PetscAbsReal(F->vol_target) <= 1e12, "the target volume must lie in [-1e12, 1e12]"},
   };
   PetscFunctionBeginUser;
   PetscCall(CSCheckOptionValues(F->comm, F->prefix, sizeof(checks) / sizeof(checks[0]), checks));

@@ -1,6 +1,7 @@
 /* CSWillmoreFlowSetUp: positions, boundary, energy, constraints, work vectors, scaling and the saddle solver
    on the mesh the flow was given. */
 #include "willmore_impl.h"
+#include "cs_util.h"
 
 /* Dirichlet vertices: the boundary of a surface with boundary unless -flow_boundary free. */
 PetscErrorCode CSWFSetUpBoundary(CSWillmoreFlow F)
@@ -183,6 +184,24 @@ static PetscErrorCode SetUpPositions(CSWillmoreFlow F)
   PetscFunctionReturn(0);
 }
 
+/* The memory a run of this kind needs, per vertex, against the memory available (issue 36, item 20): the peak RSS
+   of one step, measured (docs/hardening.md "Memory per flow kind"): the vertex kinds about 30 KB per vertex (CGD:
+   bunny_closed_cgal 926 MB / 37706, icosphere 5 292 MB / 10242), the triangle field about 160 KB (its 18 unknowns
+   per vertex against 3, the same bytes per unknown: bunny_closed_cgal 5.7 GB, icosphere 5 1.6 GB, 48 x 48 lattice
+   397 MB / 2304). All ranks' vertices against one node's memory (the common single-machine run; an overestimate
+   across nodes). Refused before anything is built, with the sizes, rather than killed mid-run. */
+#define CS_FLOW_BYTES_PER_VERTEX    30000
+#define CS_TF_FLOW_BYTES_PER_VERTEX 160000
+static PetscErrorCode CheckMemory(CSWillmoreFlow F)
+{
+  char   what[256];
+  size_t per = F->ops.setup_problem ? CS_TF_FLOW_BYTES_PER_VERTEX : CS_FLOW_BYTES_PER_VERTEX;
+  PetscFunctionBeginUser;
+  PetscCall(PetscSNPrintf(what, sizeof(what), "-%stype %s on %s: %" PetscInt_FMT " vertices at about %d KB per vertex for the run", F->prefix, F->type, F->mesh->name, F->mesh->Nv, (int)(per / 1000)));
+  CSRootCall(F->comm, CSCheckAllocation(what, (PetscInt64)F->mesh->Nv, per));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode CSWillmoreFlowSetUp(CSWillmoreFlow F)
 {
   char      prefix[80];
@@ -190,6 +209,7 @@ PetscErrorCode CSWillmoreFlowSetUp(CSWillmoreFlow F)
   PetscFunctionBeginUser;
   if (F->setupcalled) PetscFunctionReturn(0);
   PetscCall(PetscTime(&F->t0));
+  PetscCall(CheckMemory(F));
   /* rather refused than ignored: the least-squares multipliers are CGD's dual step on the conformal rows */
   PetscCheck(!F->mu_ls_every || (F->ops.dual == CSWFMultiplierLS && F->conformal), F->comm, PETSC_ERR_SUP, "-%smultiplier_ls_every %" PetscInt_FMT ": only for -%stype cgd with the conformal constraint", F->prefix, F->mu_ls_every, F->prefix);
   if (F->ops.setup_problem) { /* a kind with its own variables (trianglefield) */

@@ -64,11 +64,31 @@ PetscErrorCode CSWillmoreFlowGetState(CSWillmoreFlow F, PetscReal ck[], CSCheckp
   PetscFunctionReturn(0);
 }
 
+/* The stored scalars in their ranges (issue 36, item 8: t = -1, t_mu = -1 or 1e18 rejections behind a valid
+   checksum were taken as they were): step sizes positive, counters whole numbers in [0, 1e9], the switch 0 or 1. */
+static PetscErrorCode CheckScalars(CSWillmoreFlow F, PetscInt it, const PetscReal ck[])
+{
+  const char *names[] = {"t", "t_mu", "rejections", "KSP iterations", "KSP iterations of the last step", "guarded edges", "seconds", "-t_mu_final switch"};
+  PetscFunctionBeginUser;
+  PetscCheck(it <= F->max_it, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-resume: the checkpoint is at iteration %" PetscInt_FMT ", beyond -%smax_it %" PetscInt_FMT ": nothing left to run", it, F->prefix, F->max_it);
+  for (PetscInt i = 1; i < FLOW_CK_NREAL; i++) {
+    PetscReal v  = ck[i];
+    PetscBool ok = (PetscBool)(PetscIsNormalReal(v) || v == 0);
+    if (i <= 2) ok = (PetscBool)(ok && v > 0 && v < 1e300);
+    else if (i == 7) ok = (PetscBool)(ok && v >= 0);
+    else if (i == 8) ok = (PetscBool)(v == 0 || v == 1);
+    else ok = (PetscBool)(ok && v >= 0 && v <= 1e9 && v == PetscFloorReal(v));
+    PetscCheck(ok, F->comm, PETSC_ERR_FILE_UNEXPECTED, "-resume: the checkpoint's %s is %g, out of range (a damaged or crafted file)", names[i - 1], (double)v);
+  }
+  PetscFunctionReturn(0);
+}
+
 /* After the fields of GetState and ck were overwritten by a checkpoint of iteration it. */
 PetscErrorCode CSWillmoreFlowSetState(CSWillmoreFlow F, PetscInt it, const PetscReal ck[])
 {
   PetscFunctionBeginUser;
   PetscCheck(ck[0] == (PetscReal)F->ops.id, F->comm, PETSC_ERR_ARG_INCOMP, "-resume: the checkpoint was written by another flow type (this run is %s)", F->type);
+  PetscCall(CheckScalars(F, it, ck));
   F->t            = ck[1];
   F->tmu          = ck[2];
   F->tmu_final_on = (PetscBool)(ck[8] != 0); /* the -t_mu_final switch had fired */

@@ -56,7 +56,7 @@ typedef struct {
   PetscInt  stage_maxit, stage_it0, nstages;
   DM        dmCkE, dmCkF;  /* checkpoints (trianglefield_state.c): the packed per-edge and per-face fields */
   Vec       ckE, ckF;
-  Vec       start;         /* the start omega: fingerprinted by checkpoints (another -flow_init is refused) */
+  Vec       start;         /* the start omega's reconstruction (dmV3): fingerprinted by checkpoints (another -flow_init is refused) */
 } CSTriangleField;
 PETSC_INTERN const char *const CSTriangleFieldVariables[];
 

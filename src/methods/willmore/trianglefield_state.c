@@ -7,14 +7,15 @@
                -flow_conformal false), of its lens row d1 omega (3)],
      per face  [its spinor psi (4: the signs followed along the flow), then per slot E or mu of its closure row (3)];
    and the scalars [restoration failed, spin weight, stage start, stages, the saddle's last Krylov
-   its, wait, backoff (the schedule of kept factorisations)]. The checkpoint's fingerprint is that of the start omega
-   (CSWillmoreFlowGetStart), so a resume from another -flow_init, -flow_seed, ... is refused like another input. The two halfedges
+   its, wait, backoff (the schedule of kept factorisations)]. The checkpoint's fingerprint is that of the start omega's
+   reconstruction (CSWillmoreFlowGetStart), so a resume from another -flow_init, -flow_seed, ... is refused like another input. The two halfedges
    of an edge are ordered by the natural numbers of their vertices (first the one from the lower to the higher), so
    the file does not depend on how the ranks orient their edges. The rest (lambda, D, X, the stars, the
    reconstruction xpos) is recomputed from omega at the top of the loop; the integrability schedule follows the
    iteration number. A kept factorisation (-flow_factor_reuse_its) is not stored: the resumed run's first step
    factors afresh. Not for -flow_variables spinor (other variables). */
 #include "trianglefield_impl.h"
+#include "cs_util.h"
 
 #define TF_CK_NREAL 7 /* after the flow's own (state.c: t, t_mu, the -t_mu_final switch, ...) */
 
@@ -192,12 +193,24 @@ static PetscErrorCode SetState(CSWillmoreFlow F, const PetscReal ck[])
   PetscFunctionReturn(0);
 }
 
-/* At the set-up, after the start omega is made: a copy (the checkpoints' fingerprint), and the hooks. */
+/* At the set-up, after the start omega is made: the checkpoints' fingerprint, and the hooks. The fingerprint is
+   the start's Poisson reconstruction (positions; output.c weighs them by their natural numbers), not omega:
+   the sums of omega cancel in halfedge pairs and its norm is that of a rotated copy too (issue 36). The spinor
+   variables are not stored (refused by name), their start is kept as it is. */
 PetscErrorCode CSTFStateSetUp(CSWillmoreFlow F, CSTriangleField *d)
 {
   PetscFunctionBeginUser;
-  PetscCall(VecDuplicate(F->x, &d->start));
-  PetscCall(VecCopy(F->x, d->start));
+  if (d->spinor) {
+    PetscCall(VecDuplicate(F->x, &d->start));
+    PetscCall(VecCopy(F->x, d->start));
+  } else {
+    PetscErrorCode ierr;
+    PetscCall(VecDuplicate(d->xpos0, &d->start));
+    /* a perturbed start may fold triangles: its *1 is then not positive definite and no step can be measured
+       (issue 36: the flow ended in "CHOLMOD error -4"); refused here, naming the option */
+    CSCaptureError(ierr, CSTriangleFieldReconstructionSolve(d->recon, F->x, d->xpos0, d->start));
+    PetscCheck(!ierr, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sinit %s: the start triangle field has no Poisson reconstruction (its *1 is not positive definite: the perturbation folds triangles); lower -%sinit_amplitude (%g)", F->prefix, CSTriangleFieldInits[d->init], F->prefix, (double)d->amp);
+  }
   F->xstart          = d->start;
   F->ops.state_nreal = TF_CK_NREAL;
   F->ops.get_state   = GetState;
