@@ -4,6 +4,9 @@
 #define CS_DRIVER_H
 #include "cs_output.h"
 
+/* before MPI starts (src/driver/startup.c): Open MPI defaults for a serial run, its private session tree */
+PETSC_EXTERN void CSSingletonDefaults(void);
+
 PETSC_EXTERN PetscErrorCode CSTaskInfo(MPI_Comm comm);
 PETSC_EXTERN PetscErrorCode CSTaskFlow(MPI_Comm comm);
 PETSC_EXTERN PetscErrorCode CSTaskSpin(MPI_Comm comm);

@@ -191,23 +191,6 @@ static PetscErrorCode Run(MPI_Comm comm)
   PetscFunctionReturn(0);
 }
 
-/* Start-up of a serial run (an MPI singleton, not started by mpirun): Open MPI's defaults spawn a helper daemon
-   (ess singleton), open UCX and every transport (pml, btl) and let hwloc load its GL/OpenCL/PCI/libxml plugins (X11,
-   libicu) and opens nine collective components; for one process none of that is used. Measured (docs/output.md):
-   MPI_Init 384 ms -> 46 ms, the tiny -task info run 0.60 s -> 0.14 s wall. Set only
-   what the user did not set; CS_MPI_DEFAULTS=0 turns it off. */
-static void SingletonDefaults(void)
-{
-  const char *off = getenv("CS_MPI_DEFAULTS");
-  if (off && !strcmp(off, "0")) return;
-  if (getenv("OMPI_COMM_WORLD_SIZE") || getenv("PMIX_RANK") || getenv("PMI_RANK")) return; /* under a launcher */
-  setenv("OMPI_MCA_ess_singleton_isolated", "1", 0);
-  setenv("OMPI_MCA_pml", "ob1", 0);
-  setenv("OMPI_MCA_btl", "self", 0);
-  setenv("OMPI_MCA_coll", "self,basic,libnbc", 0);
-  setenv("HWLOC_PLUGINS_BLACKLIST", "hwloc_gl,hwloc_opencl,hwloc_pci,hwloc_xml_libxml", 0);
-}
-
 /* 1 when path can be written: an existing file writable, or a new one in a writable folder */
 static int Writable(const char *path)
 {
@@ -244,7 +227,7 @@ int main(int argc, char **argv)
 
   helpmode = HelpFromArgs(&argc, argv);
   if (!InitializeFilesUsable(argc, argv)) return 1;
-  SingletonDefaults();
+  CSSingletonDefaults();
   PetscCall(SlepcInitialize(&argc, &argv, NULL, help));
   if (helpmode) {
     PetscCall(PetscOptionsHasName(NULL, NULL, "-task", &task));
