@@ -8,13 +8,14 @@ cd "$(dirname "$0")/.."
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 N=${1:-200}
 P=${2:-8}
+BIN=${CS_BIN:-bin/confsurf} # a copy, when the tree is rebuilt meanwhile
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 fail=0
 t0=$(date +%s)
 for ((r = 0; r < N; r++)); do
   for ((p = 0; p < P; p++)); do
-    (bin/confsurf -task info -gen icosphere -gen_level 1 >"$tmp/out.$p" 2>"$tmp/err.$p"; echo $? >"$tmp/rc.$p") &
+    ("$BIN" -task info -gen icosphere -gen_level 1 >"$tmp/out.$p" 2>"$tmp/err.$p"; echo $? >"$tmp/rc.$p") &
   done
   wait
   for ((p = 0; p < P; p++)); do

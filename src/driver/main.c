@@ -191,42 +191,13 @@ static PetscErrorCode Run(MPI_Comm comm)
   PetscFunctionReturn(0);
 }
 
-/* 1 when path can be written: an existing file writable, or a new one in a writable folder */
-static int Writable(const char *path)
-{
-  char        dir[PETSC_MAX_PATH_LEN];
-  const char *slash = strrchr(path, '/');
-  snprintf(dir, sizeof(dir), "%.*s", slash ? (int)(slash - path + (slash == path)) : 1, slash ? path : ".");
-  return access(path, F_OK) ? !access(dir, W_OK | X_OK) : !access(path, W_OK);
-}
-
-/* The files PetscInitialize itself opens from the command line (issue 18), checked by every rank before MPI starts
-   (all come to the same conclusion on the same file system, so all stop with one line): PETSc's own -history FILE,
-   opened by rank 0 inside PetscInitialize, crashed it (or hung the other ranks) when it cannot be written (item 1);
-   a missing -options_file printed PETSc's full traceback with the configure line (item 10). */
-static int InitializeFilesUsable(int argc, char **argv)
-{
-  for (int i = 1; i + 1 < argc; i++) {
-    const char *path = argv[i + 1];
-    if (!strcmp(argv[i], "-history") && !Writable(path)) {
-      fprintf(stderr, "confsurf: error: -history %s: cannot write there (%s); PETSc's -history logs the options, the flows' table is -history_csv\n", path, strerror(errno));
-      return 0;
-    }
-    if (!strcmp(argv[i], "-options_file") && access(path, R_OK)) {
-      fprintf(stderr, "confsurf: error: -options_file %s: cannot read it (%s)\n", path, strerror(errno));
-      return 0;
-    }
-  }
-  return 1;
-}
-
 int main(int argc, char **argv)
 {
   PetscErrorCode ierr;
   PetscBool      bad = PETSC_FALSE, traceback = PETSC_FALSE, helpmode, task;
 
   helpmode = HelpFromArgs(&argc, argv);
-  if (!InitializeFilesUsable(argc, argv)) return 1;
+  if (!CSStartupFilesUsable(argc, argv)) return 1;
   CSSingletonDefaults();
   PetscCall(SlepcInitialize(&argc, &argv, NULL, help));
   if (helpmode) {
