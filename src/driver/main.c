@@ -16,6 +16,7 @@ static const char *const task_help[][2] = {
 
 #include <slepcsys.h>
 #include <errno.h>
+#include <signal.h>
 #include <unistd.h>
 #include "cs_driver.h"
 #include "cs_package.h"
@@ -209,6 +210,9 @@ int main(int argc, char **argv)
     }
     PetscCall(HelpTaskSetUp());
   }
+  /* output into a closed pipe (| head -1) is dropped, not a crash dump from PETSc's signal handler: the writes fail
+     with EPIPE and the run ends as it would, its files written (issue 36, item 19) */
+  signal(SIGPIPE, SIG_IGN);
   PetscCall(CSLimitThreads(PETSC_COMM_WORLD));
   PetscCall(CSInitializePackage()); /* events, PCs and solver types, before any options are read */
   PetscCall(PetscOptionsHasName(NULL, NULL, "-cs_traceback", &traceback));
