@@ -236,5 +236,7 @@ int CSStartupFilesUsable(int argc, char **argv)
     ok         = copy && ScanString(copy, 0);
     free(copy);
   }
-  return ok && ScanTokens(argv + 1, argc - 1, 0);
+  ok = ok && ScanTokens(argv + 1, argc - 1, 0);
+  if (!ok && getenv("OMPI_COMM_WORLD_RANK") && strcmp(getenv("OMPI_COMM_WORLD_RANK"), "0")) sleep(2); /* mpirun ends the job at the first failed rank: let rank 0 print first */
+  return ok;
 }
