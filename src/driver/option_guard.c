@@ -4,7 +4,8 @@
    option given without a value (-flow_t '') as not given at all (the default, silently). bin/confsurf defines
    PetscOptionsGetInt, PetscOptionsGetReal and PetscOptionsGetString itself: PETSc's option objects
    (PetscOptionsInt/Real/String/FList, also PETSc's own solvers') call them through the shared library's PLT, so
-   these run first for every option, check the value and hand over to PETSc's (dlsym RTLD_NEXT). Only in the
+   these run first for every option, check the value and hand over to PETSc's (dlsym RTLD_NEXT). Every rank reads
+   the options, so a refusal is raised on PETSC_COMM_WORLD: printed once, by rank 0. Only in the
    program (src/driver), not in the library the unit programs link. A static PETSc would fail to link: a loud
    failure, not a silent one. */
 #define _GNU_SOURCE
@@ -48,13 +49,13 @@ static PetscErrorCode CheckInteger(const char full[], const char *value)
   char       *end;
   long long   v;
   PetscFunctionBegin;
-  PetscCheck(!Empty(value), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%s: needs an integer value", full);
+  PetscCheck(!Empty(value), PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "%s: needs an integer value", full);
   for (size_t i = 0; i < sizeof(words) / sizeof(words[0]); i++)
     if (!strcasecmp(value, words[i])) PetscFunctionReturn(0);
   errno = 0;
   v     = strtoll(value, &end, 10);
-  PetscCheck(end != value && !*end, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%s %s: not an integer", full, value);
-  PetscCheck(errno != ERANGE && v <= PETSC_MAX_INT && v >= PETSC_MIN_INT, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "%s %s: out of range (an integer from %" PetscInt_FMT " to %" PetscInt_FMT ")", full, value, PETSC_MIN_INT, PETSC_MAX_INT);
+  PetscCheck(end != value && !*end, PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "%s %s: not an integer", full, value);
+  PetscCheck(errno != ERANGE && v <= PETSC_MAX_INT && v >= PETSC_MIN_INT, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "%s %s: out of range (an integer from %" PetscInt_FMT " to %" PetscInt_FMT ")", full, value, PETSC_MIN_INT, PETSC_MAX_INT);
   PetscFunctionReturn(0);
 }
 
@@ -85,7 +86,7 @@ PetscErrorCode PetscOptionsGetReal(PetscOptions options, const char pre[], const
   PetscCheck(next, PETSC_COMM_SELF, PETSC_ERR_LIB, "PETSc's PetscOptionsGetReal not found (dlsym: %s)", dlerror());
   PetscCall(PetscOptionsFindPair(options, pre, name, &value, &found));
   OptionName(pre, name, full, sizeof(full));
-  PetscCheck(!found || !Empty(value), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%s: needs a number", full);
+  PetscCheck(!found || !Empty(value), PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "%s: needs a number", full);
   PetscCall(next(options, pre, name, dvalue, set));
   PetscFunctionReturn(0);
 }
@@ -102,8 +103,8 @@ PetscErrorCode PetscOptionsGetString(PetscOptions options, const char pre[], con
   PetscCall(PetscOptionsFindPair(options, pre, name, &value, &found));
   OptionName(pre, name, full, sizeof(full));
   if (found) {
-    PetscCheck(!Empty(value) || !NeedsValue(full), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%s: needs a value", full);
-    PetscCheck(Empty(value) || !len || strlen(value) < len, PETSC_COMM_SELF, PETSC_ERR_ARG_SIZ, "%s: the value is %zu characters long, at most %zu are read (it would be cut)", full, strlen(value), len - 1);
+    PetscCheck(!Empty(value) || !NeedsValue(full), PETSC_COMM_WORLD, PETSC_ERR_ARG_WRONG, "%s: needs a value", full);
+    PetscCheck(Empty(value) || !len || strlen(value) < len, PETSC_COMM_WORLD, PETSC_ERR_ARG_SIZ, "%s: the value is %zu characters long, at most %zu are read (it would be cut)", full, strlen(value), len - 1);
   }
   PetscCall(next(options, pre, name, string, len, set));
   PetscFunctionReturn(0);
