@@ -187,17 +187,13 @@ static int ScanTokens(char **tok, int n, int depth)
 
 static int ScanString(char *s, int depth)
 {
-  char *tok[1024], *t;
-  int   n = 0, ok = 1;
-  while ((t = NextToken(&s))) {
-    tok[n++] = t;
-    if (n == 1024) { /* the options of a very long string, in pieces (a key at the cut keeps its value) */
-      ok = ok && ScanTokens(tok, n - 1, depth);
-      tok[0] = tok[n - 1];
-      n      = 1;
-    }
-  }
-  return ok && ScanTokens(tok, n, depth);
+  char **tok = malloc((strlen(s) / 2 + 1) * sizeof(char *)), *t; /* at most one token per two characters */
+  int    n   = 0, ok;
+  if (!tok) return 1; /* no memory for the check: PETSc reads the string itself */
+  while ((t = NextToken(&s))) tok[n++] = t;
+  ok = ScanTokens(tok, n, depth);
+  free(tok);
+  return ok;
 }
 
 /* an options file as PETSc reads it: one option (and its value) per line, '#' starts a comment */
