@@ -4,6 +4,11 @@
 #define CS_DRIVER_H
 #include "cs_output.h"
 
+/* before MPI starts (src/driver/startup.c): Open MPI defaults for a serial run, its private session tree */
+PETSC_EXTERN void CSSingletonDefaults(void);
+/* before MPI starts: 0 (after one line on stderr) when a file PetscInitialize opens cannot be used */
+PETSC_EXTERN int CSStartupFilesUsable(int argc, char **argv);
+
 PETSC_EXTERN PetscErrorCode CSTaskInfo(MPI_Comm comm);
 PETSC_EXTERN PetscErrorCode CSTaskFlow(MPI_Comm comm);
 PETSC_EXTERN PetscErrorCode CSTaskSpin(MPI_Comm comm);

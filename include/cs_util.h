@@ -72,6 +72,9 @@ PETSC_EXTERN PetscErrorCode CSPathSanitize(const char in[], char out[], size_t l
 typedef struct {
   FILE     *fp; /* open on the ranks with mine, after CSFileOpen */
   PetscBool mine, atomic, regular, created; /* created: ours to remove on failure */
+  PetscBool keep;    /* set by a writer of records (the history): on failure keep the records flushed before it */
+  long      good;    /* with keep: the file's length after the last flush that succeeded */
+  PetscInt  records; /* with keep: the records in it (the writer counts them) */
   char      what[64]; /* the option, for messages */
   char      path[PETSC_MAX_PATH_LEN], tmp[PETSC_MAX_PATH_LEN];
 } CSFile;
@@ -79,6 +82,10 @@ PETSC_EXTERN PetscErrorCode CSFileOpen(MPI_Comm comm, PetscBool mine, const char
 PETSC_EXTERN PetscErrorCode CSFileFlush(MPI_Comm comm, CSFile *f); /* collective: errors of the writes so far */
 PETSC_EXTERN PetscErrorCode CSFileClose(MPI_Comm comm, CSFile *f);
 PETSC_EXTERN PetscErrorCode CSFileDiscard(CSFile *f); /* not collective: close and remove (error paths) */
+/* Not collective: path can take an output (checked before any work; missing folders are created), and a name of
+   the file it is or would be (the same for two paths of one file) */
+PETSC_EXTERN PetscErrorCode CSFileCheckTarget(const char what[], const char path[]);
+PETSC_EXTERN PetscErrorCode CSFileIdentity(const char path[], char id[], size_t len);
 /* Not collective: the whole of a regular file into *buf (NUL-terminated, PetscFree it); a folder, FIFO or device
    is refused without blocking; what names the option in messages. */
 PETSC_EXTERN PetscErrorCode CSFileLoad(const char what[], const char path[], char **buf, size_t *len);

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Start-up cost of a tiny serial run (issue 17, item 5): `bin/confsurf -task info -gen icosphere -gen_level 1`,
 # 10 runs per configuration, median/min/max wall seconds, for the singleton defaults of src/driver/main.c
-# (SingletonDefaults) and without them (CS_MPI_DEFAULTS=0), with Open MPI's ess_singleton_isolated alone, and with
+# (CSSingletonDefaults, src/driver/startup.c) and without them (CS_MPI_DEFAULTS=0), with Open MPI's ess_singleton_isolated alone, and with
 # one OpenBLAS thread (OPENBLAS_NUM_THREADS=1: must be in the environment before the program starts).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -12,7 +12,8 @@ import os, statistics, subprocess, sys, time
 cmd = sys.argv[1].split()
 cfgs = [("CS_MPI_DEFAULTS=0 (Open MPI defaults)", {"CS_MPI_DEFAULTS": "0"}),
         ("CS_MPI_DEFAULTS=0 OMPI_MCA_ess_singleton_isolated=1", {"CS_MPI_DEFAULTS": "0", "OMPI_MCA_ess_singleton_isolated": "1"}),
-        ("singleton defaults (the default)", {}),
+        ("singleton defaults, shared session tree (OMPI_MCA_orte_tmpdir_base=/tmp: as before issue 36 item 2)", {"OMPI_MCA_orte_tmpdir_base": "/tmp"}),
+        ("singleton defaults (the default: a private session tree)", {}),
         ("singleton defaults + OPENBLAS_NUM_THREADS=1", {"OPENBLAS_NUM_THREADS": "1"})]
 print("| configuration | median s | min | max |\n|---|---|---|---|")
 for name, extra in cfgs:

@@ -16,6 +16,7 @@ static const char *const task_help[][2] = {
 
 #include <slepcsys.h>
 #include <errno.h>
+#include <signal.h>
 #include <unistd.h>
 #include "cs_driver.h"
 #include "cs_package.h"
@@ -191,60 +192,14 @@ static PetscErrorCode Run(MPI_Comm comm)
   PetscFunctionReturn(0);
 }
 
-/* Start-up of a serial run (an MPI singleton, not started by mpirun): Open MPI's defaults spawn a helper daemon
-   (ess singleton), open UCX and every transport (pml, btl) and let hwloc load its GL/OpenCL/PCI/libxml plugins (X11,
-   libicu) and opens nine collective components; for one process none of that is used. Measured (docs/output.md):
-   MPI_Init 384 ms -> 46 ms, the tiny -task info run 0.60 s -> 0.14 s wall. Set only
-   what the user did not set; CS_MPI_DEFAULTS=0 turns it off. */
-static void SingletonDefaults(void)
-{
-  const char *off = getenv("CS_MPI_DEFAULTS");
-  if (off && !strcmp(off, "0")) return;
-  if (getenv("OMPI_COMM_WORLD_SIZE") || getenv("PMIX_RANK") || getenv("PMI_RANK")) return; /* under a launcher */
-  setenv("OMPI_MCA_ess_singleton_isolated", "1", 0);
-  setenv("OMPI_MCA_pml", "ob1", 0);
-  setenv("OMPI_MCA_btl", "self", 0);
-  setenv("OMPI_MCA_coll", "self,basic,libnbc", 0);
-  setenv("HWLOC_PLUGINS_BLACKLIST", "hwloc_gl,hwloc_opencl,hwloc_pci,hwloc_xml_libxml", 0);
-}
-
-/* 1 when path can be written: an existing file writable, or a new one in a writable folder */
-static int Writable(const char *path)
-{
-  char        dir[PETSC_MAX_PATH_LEN];
-  const char *slash = strrchr(path, '/');
-  snprintf(dir, sizeof(dir), "%.*s", slash ? (int)(slash - path + (slash == path)) : 1, slash ? path : ".");
-  return access(path, F_OK) ? !access(dir, W_OK | X_OK) : !access(path, W_OK);
-}
-
-/* The files PetscInitialize itself opens from the command line (issue 18), checked by every rank before MPI starts
-   (all come to the same conclusion on the same file system, so all stop with one line): PETSc's own -history FILE,
-   opened by rank 0 inside PetscInitialize, crashed it (or hung the other ranks) when it cannot be written (item 1);
-   a missing -options_file printed PETSc's full traceback with the configure line (item 10). */
-static int InitializeFilesUsable(int argc, char **argv)
-{
-  for (int i = 1; i + 1 < argc; i++) {
-    const char *path = argv[i + 1];
-    if (!strcmp(argv[i], "-history") && !Writable(path)) {
-      fprintf(stderr, "confsurf: error: -history %s: cannot write there (%s); PETSc's -history logs the options, the flows' table is -history_csv\n", path, strerror(errno));
-      return 0;
-    }
-    if (!strcmp(argv[i], "-options_file") && access(path, R_OK)) {
-      fprintf(stderr, "confsurf: error: -options_file %s: cannot read it (%s)\n", path, strerror(errno));
-      return 0;
-    }
-  }
-  return 1;
-}
-
 int main(int argc, char **argv)
 {
   PetscErrorCode ierr;
   PetscBool      bad = PETSC_FALSE, traceback = PETSC_FALSE, helpmode, task;
 
   helpmode = HelpFromArgs(&argc, argv);
-  if (!InitializeFilesUsable(argc, argv)) return 1;
-  SingletonDefaults();
+  if (!CSStartupFilesUsable(argc, argv)) return 1;
+  CSSingletonDefaults();
   PetscCall(SlepcInitialize(&argc, &argv, NULL, help));
   if (helpmode) {
     PetscCall(PetscOptionsHasName(NULL, NULL, "-task", &task));
@@ -255,6 +210,9 @@ int main(int argc, char **argv)
     }
     PetscCall(HelpTaskSetUp());
   }
+  /* output into a closed pipe (| head -1) is dropped, not a crash dump from PETSc's signal handler: the writes fail
+     with EPIPE and the run ends as it would, its files written (issue 36, item 19) */
+  signal(SIGPIPE, SIG_IGN);
   PetscCall(CSLimitThreads(PETSC_COMM_WORLD));
   PetscCall(CSInitializePackage()); /* events, PCs and solver types, before any options are read */
   PetscCall(PetscOptionsHasName(NULL, NULL, "-cs_traceback", &traceback));

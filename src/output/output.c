@@ -16,6 +16,33 @@ static PetscErrorCode CheckWritable(MPI_Comm comm, const char path[])
   PetscFunctionReturn(0);
 }
 
+/* Rank 0: every output file can be written, and no two name the same file (issue 36, items 13, 14): a run on a
+   read-only target or a folder completed and then lost its result; -o s.obj -summary s.obj overwrote one with the
+   other. PETSc's -history (opened at start-up, src/driver/startup.c) takes part in the comparison. */
+static PetscErrorCode CheckOutputsLocal(const CSOutput *o)
+{
+  char        history[PETSC_MAX_PATH_LEN], ids[5][PETSC_MAX_PATH_LEN];
+  PetscBool   has_history;
+  const char *what[5] = {"-o", "-summary", "-history_csv", "-checkpoint", "-history"}, *path[5];
+  PetscBool   has[5];
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsGetString(NULL, NULL, "-history", history, sizeof(history), &has_history));
+  path[0] = o->out, path[1] = o->summary, path[2] = o->history, path[3] = o->checkpoint, path[4] = history;
+  has[0] = o->has_out, has[1] = o->has_summary, has[2] = o->has_history, has[3] = o->has_checkpoint, has[4] = (PetscBool)(has_history && history[0]);
+  for (int i = 0; i < 5; i++) {
+    if (!has[i]) continue;
+    if (i < 3) PetscCall(CSFileCheckTarget(what[i], path[i])); /* the checkpoint: CheckWritable; -history: at start-up */
+    PetscCall(CSFileIdentity(path[i], ids[i], sizeof(ids[i])));
+    for (int j = 0; j < i; j++) {
+      char name[PETSC_MAX_PATH_LEN];
+      if (!has[j] || strcmp(ids[i], ids[j])) continue;
+      PetscCall(CSPathSanitize(path[i], name, sizeof(name)));
+      SETERRQ(PETSC_COMM_SELF, PETSC_ERR_ARG_INCOMP, "%s %s: the same file as %s (one output would overwrite the other)", what[i], name, what[j]);
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode CSOutputFromOptions(MPI_Comm comm, CSOutput *o)
 {
   const char *const exts[] = {"obj", "ply", NULL};
@@ -41,7 +68,6 @@ PetscErrorCode CSOutputFromOptionsFormats(MPI_Comm comm, const char *const exts[
   PetscCall(PetscOptionsString("-resume", "Iterative tasks: start from this checkpoint (the mesh still comes from -mesh/-gen, for the connectivity)", NULL, o->resume, o->resume, sizeof(o->resume), &o->has_resume));
   PetscOptionsEnd();
   PetscCheck(o->checkpoint_every >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-checkpoint_every %" PetscInt_FMT ": must be >= 1", o->checkpoint_every);
-  if (o->has_checkpoint) PetscCall(CheckWritable(comm, o->checkpoint));
   if (o->has_out) {
     char      ext[16];
     PetscBool ok = PETSC_FALSE;
@@ -49,6 +75,8 @@ PetscErrorCode CSOutputFromOptionsFormats(MPI_Comm comm, const char *const exts[
     for (PetscInt k = 0; exts[k]; k++) ok = (PetscBool)(ok || !strcmp(ext, exts[k]));
     PetscCheck(ok, comm, PETSC_ERR_ARG_WRONG, "-o %s: %s", o->out, what);
   }
+  if (o->has_checkpoint) PetscCall(CheckWritable(comm, o->checkpoint));
+  CSRootCall(comm, CheckOutputsLocal(o));
   PetscCall(CSJSONCreate(comm, &o->json));
   { /* the threads of rank 0 (src/util/threads.c); "ranks" comes with CSOutputFinish */
     PetscInt omp, blas;

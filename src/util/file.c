@@ -8,6 +8,7 @@
 #include "cs_util.h"
 #include <errno.h>
 #include <fcntl.h>
+#include <limits.h>
 #include <stdlib.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -36,7 +37,9 @@ static PetscErrorCode OpenLocal(CSFile *f, PetscBool atomic)
   PetscCall(CSPathMakeParents(f->path));
   PetscCall(CheckTarget(f, atomic));
   if (atomic) { /* unique: two runs writing the same checkpoint cannot collide */
-    PetscCall(PetscSNPrintf(f->tmp, sizeof(f->tmp), "%s.XXXXXX", f->path));
+    const char *slash = strrchr(f->path, '/'), *base = slash ? slash + 1 : f->path;
+    /* the target's name with .XXXXXX, its name cut so that the whole stays within NAME_MAX (255) */
+    PetscCall(PetscSNPrintf(f->tmp, sizeof(f->tmp), "%.*s%.*s.XXXXXX", (int)(base - f->path), f->path, (int)PetscMin(strlen(base), (size_t)(NAME_MAX - 7)), base));
     fd = mkstemp(f->tmp);
     PetscCheck(fd >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "%s %s: cannot create a temporary file beside it (%s)", f->what, name, strerror(errno));
     {
@@ -45,22 +48,32 @@ static PetscErrorCode OpenLocal(CSFile *f, PetscBool atomic)
       (void)fchmod(fd, 0666 & ~um);
     }
     f->fp = fdopen(fd, "wb");
-  } else {
+  } else { /* non-blocking open: a FIFO nobody reads is refused (ENXIO) instead of waiting for a reader */
     f->tmp[0] = 0;
-    f->fp     = fopen(f->path, "wb");
+    fd        = open(f->path, O_WRONLY | O_CREAT | O_TRUNC | O_NONBLOCK, 0666);
+    PetscCheck(fd >= 0 || errno != ENXIO, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "%s %s: a FIFO nobody reads (writing would block)", f->what, name);
+    if (fd >= 0) {
+      (void)fcntl(fd, F_SETFL, fcntl(fd, F_GETFL) & ~O_NONBLOCK);
+      f->fp = fdopen(fd, "wb");
+    }
   }
   if (!f->fp && fd >= 0) {
     close(fd);
-    (void)remove(f->tmp);
+    if (atomic) (void)remove(f->tmp);
   }
   PetscCheck(f->fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "%s %s: cannot open for writing (%s)", f->what, name, strerror(errno));
   f->created = (PetscBool)(atomic || f->regular);
   PetscFunctionReturn(0);
 }
 
-/* Removes what this rank has written so far (after a failure anywhere) */
+/* Removes what this rank has written so far (after a failure anywhere); a file of records (keep) is cut back to
+   the records of the last flush that succeeded instead: a full disk must not cost the rows already written */
 static void Discard(CSFile *f)
 {
+  if (f->keep && f->fp) {
+    if (ftruncate(fileno(f->fp), f->good)) { /* a record half-written when the disk filled: cut it; if that fails, it stays */ }
+    f->created = PETSC_FALSE;
+  }
   if (f->fp) (void)fclose(f->fp);
   f->fp = NULL;
   if (f->created) (void)remove(f->tmp[0] ? f->tmp : f->path);
@@ -101,7 +114,9 @@ static PetscErrorCode FlushLocal(CSFile *f, PetscBool sync)
   errno = 0;
   bad   = fflush(f->fp) || ferror(f->fp) || (sync && fsync(fileno(f->fp)));
   PetscCall(CSPathSanitize(f->path, name, sizeof(name)));
+  PetscCheck(!bad || !f->keep, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "%s %s: write error (%s); kept the %" PetscInt_FMT " complete rows written before it", f->what, name, errno ? strerror(errno) : "stream error", f->records);
   PetscCheck(!bad, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "%s %s: write error (%s)", f->what, name, errno ? strerror(errno) : "stream error");
+  if (f->keep) f->good = ftell(f->fp);
   PetscFunctionReturn(0);
 }
 
@@ -148,5 +163,48 @@ PetscErrorCode CSFileDiscard(CSFile *f)
 {
   PetscFunctionBeginUser;
   Discard(f);
+  PetscFunctionReturn(0);
+}
+
+/* Not collective: whether path can take an output, tested before any work (issue 36, item 13) and without touching
+   an existing file: a folder, a FIFO nobody reads or a target that cannot be opened for writing (read-only file or
+   file system, a parent that is a file) is refused; missing folders above it are created (as the writer would). */
+PetscErrorCode CSFileCheckTarget(const char what[], const char path[])
+{
+  struct stat st;
+  char        name[PETSC_MAX_PATH_LEN];
+  int         fd;
+  PetscFunctionBeginUser;
+  PetscCall(CSPathSanitize(path, name, sizeof(name)));
+  if (!stat(path, &st)) {
+    PetscCheck(!S_ISDIR(st.st_mode), PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "%s %s: is a folder, cannot write a file there", what, name);
+    fd = open(path, O_WRONLY | O_NONBLOCK); /* no O_TRUNC: the file stays as it is until the run writes it */
+    PetscCheck(fd >= 0 || errno != ENXIO, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "%s %s: a FIFO nobody reads (writing would block)", what, name);
+    PetscCheck(fd >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "%s %s: cannot write there (%s)", what, name, strerror(errno));
+    close(fd);
+    PetscFunctionReturn(0);
+  }
+  PetscCheck(errno == ENOENT, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "%s %s: cannot write there (%s)", what, name, strerror(errno));
+  PetscCall(CSPathMakeParents(path));
+  fd = open(path, O_WRONLY | O_CREAT | O_EXCL, 0666); /* a real test: access() passes for root on a read-only mount */
+  PetscCheck(fd >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "%s %s: cannot create it (%s)", what, name, strerror(errno));
+  close(fd);
+  (void)unlink(path);
+  PetscFunctionReturn(0);
+}
+
+/* Not collective: a name for the file path is or would be, equal for two paths of the same file (through links,
+   "./" or "..") so that two outputs to one file are caught; the path itself when its folder does not resolve. */
+PetscErrorCode CSFileIdentity(const char path[], char id[], size_t len)
+{
+  char        dir[PETSC_MAX_PATH_LEN], real[PATH_MAX];
+  const char *slash = strrchr(path, '/');
+  PetscFunctionBeginUser;
+  if (realpath(path, real)) PetscCall(PetscStrncpy(id, real, len));
+  else {
+    PetscCall(PetscSNPrintf(dir, sizeof(dir), "%.*s", slash ? (int)(slash - path + (slash == path)) : 1, slash ? path : "."));
+    if (realpath(dir, real)) PetscCall(PetscSNPrintf(id, len, "%s/%s", real, slash ? slash + 1 : path));
+    else PetscCall(PetscStrncpy(id, path, len));
+  }
   PetscFunctionReturn(0);
 }

@@ -18,6 +18,7 @@ PetscErrorCode CSHistoryCreate(MPI_Comm comm, const char path[], const char head
   ierr = CSFileOpen(comm, (PetscBool)!rank, "-history_csv", path, PETSC_FALSE, &(*h)->file);
   if (!ierr && (*h)->file.fp) fprintf((*h)->file.fp, "%s\n", header);
   if (!ierr) ierr = CSFileFlush(comm, &(*h)->file);
+  (*h)->file.keep = PETSC_TRUE; /* from here on a write error keeps the rows before it (issue 36, item 15) */
   if (ierr) PetscCall(CSHistoryDestroy(h)); /* the error is collective: every rank frees */
   PetscCall(ierr);
   PetscFunctionReturn(0);
@@ -34,6 +35,7 @@ PetscErrorCode CSHistoryAppend(CSHistory h, PetscInt n, const PetscReal row[])
     fprintf(fp, "\n");
   }
   PetscCall(CSFileFlush(h->comm, &h->file));
+  h->file.records++;
   PetscFunctionReturn(0);
 }
 
