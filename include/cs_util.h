@@ -116,4 +116,16 @@ typedef struct {
 } CSOptionCheck;
 PETSC_EXTERN PetscErrorCode CSCheckOptionValues(MPI_Comm comm, const char prefix[], size_t n, const CSOptionCheck checks[]);
 
+/* The project's option readers (issue 36, items 9-11): PETSc 3.18 reads an integer with strtoll and a cast to int
+   (-flow_max_it 4294967298 gave 2 iterations), copies a string cut to the caller's buffer (a long -summary path
+   wrote another file) and takes an option given without a value as not given (-flow_t '' ran with the default).
+   These check the raw value first (an integer PetscInt holds, a string that fits, a value present) and then read
+   it with PETSc's reader; use them in place of PetscOptionsInt/Real/String inside PetscOptionsBegin/End. */
+PETSC_EXTERN PetscErrorCode CSOptionsInt_Private(PetscOptionItems *, const char[], const char[], const char[], PetscInt, PetscInt *, PetscBool *);
+PETSC_EXTERN PetscErrorCode CSOptionsReal_Private(PetscOptionItems *, const char[], const char[], const char[], PetscReal, PetscReal *, PetscBool *);
+PETSC_EXTERN PetscErrorCode CSOptionsString_Private(PetscOptionItems *, const char[], const char[], const char[], const char[], char[], size_t, PetscBool *);
+#define CSOptionsInt(opt, text, man, cur, val, set)         CSOptionsInt_Private(PetscOptionsObject, opt, text, man, cur, val, set)
+#define CSOptionsReal(opt, text, man, cur, val, set)        CSOptionsReal_Private(PetscOptionsObject, opt, text, man, cur, val, set)
+#define CSOptionsString(opt, text, man, cur, val, len, set) CSOptionsString_Private(PetscOptionsObject, opt, text, man, cur, val, len, set)
+
 #endif

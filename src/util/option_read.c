@@ -1,0 +1,79 @@
+/* The project's option readers (cs_util.h): the raw value is checked before PETSc reads it, so a value that PETSc
+   would wrap (integers), cut (strings) or drop (an empty value) is refused with one line naming the option. */
+#include "cs_util.h"
+#include <errno.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+
+/* The raw value of -<prefix><opt> (found: given at all; value NULL or "" when given without one) and its name for
+   messages. */
+static PetscErrorCode RawValue(PetscOptionItems *items, const char opt[], const char **value, PetscBool *found, char full[], size_t len)
+{
+  const char *pre = items->prefix ? items->prefix : "";
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsFindPair(items->options, items->prefix, opt, value, found));
+  snprintf(full, len, "-%s%s", pre, opt[0] == '-' ? opt + 1 : opt);
+  PetscFunctionReturn(0);
+}
+
+static PetscBool Empty(const char *value)
+{
+  return (PetscBool)(!value || !value[0]);
+}
+
+/* A decimal integer must fit PetscInt; PETSc's words (DEFAULT, DECIDE, ...) and other spellings are left to PETSc,
+   which refuses what it cannot read. */
+static PetscErrorCode CheckInteger(MPI_Comm comm, const char full[], const char value[])
+{
+  char     *end;
+  long long v;
+  PetscFunctionBeginUser;
+  errno = 0;
+  v     = strtoll(value, &end, 10);
+  if (end == value || *end) PetscFunctionReturn(0);
+  PetscCheck(errno != ERANGE && v >= PETSC_MIN_INT && v <= PETSC_MAX_INT, comm, PETSC_ERR_ARG_OUTOFRANGE, "%s %s: out of range (an integer from %d to %d)", full, value, (int)PETSC_MIN_INT, (int)PETSC_MAX_INT);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSOptionsInt_Private(PetscOptionItems *items, const char opt[], const char text[], const char man[], PetscInt cur, PetscInt *val, PetscBool *set)
+{
+  const char *value;
+  PetscBool   found;
+  char        full[256];
+  PetscFunctionBeginUser;
+  PetscCall(RawValue(items, opt, &value, &found, full, sizeof(full)));
+  if (found) {
+    PetscCheck(!Empty(value), items->comm, PETSC_ERR_ARG_WRONG, "%s: needs an integer value", full);
+    PetscCall(CheckInteger(items->comm, full, value));
+  }
+  PetscCall(PetscOptionsInt_Private(items, opt, text, man, cur, val, set, PETSC_MIN_INT, PETSC_MAX_INT));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSOptionsReal_Private(PetscOptionItems *items, const char opt[], const char text[], const char man[], PetscReal cur, PetscReal *val, PetscBool *set)
+{
+  const char *value;
+  PetscBool   found;
+  char        full[256];
+  PetscFunctionBeginUser;
+  PetscCall(RawValue(items, opt, &value, &found, full, sizeof(full)));
+  PetscCheck(!found || !Empty(value), items->comm, PETSC_ERR_ARG_WRONG, "%s: needs a number", full);
+  PetscCall(PetscOptionsReal_Private(items, opt, text, man, cur, val, set));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSOptionsString_Private(PetscOptionItems *items, const char opt[], const char text[], const char man[], const char cur[], char val[], size_t len, PetscBool *set)
+{
+  const char *value;
+  PetscBool   found;
+  char        full[256];
+  PetscFunctionBeginUser;
+  PetscCall(RawValue(items, opt, &value, &found, full, sizeof(full)));
+  if (found) {
+    PetscCheck(!Empty(value), items->comm, PETSC_ERR_ARG_WRONG, "%s: needs a value", full);
+    PetscCheck(strlen(value) < len, items->comm, PETSC_ERR_ARG_SIZ, "%s: the value is %zu characters long; at most %zu are read (it would be cut)", full, strlen(value), len - 1);
+  }
+  PetscCall(PetscOptionsString_Private(items, opt, text, man, cur, val, len, set));
+  PetscFunctionReturn(0);
+}
