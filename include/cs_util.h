@@ -124,6 +124,10 @@ PETSC_EXTERN PetscErrorCode CSCheckOptionValues(MPI_Comm comm, const char prefix
 PETSC_EXTERN PetscErrorCode CSOptionsInt_Private(PetscOptionItems *, const char[], const char[], const char[], PetscInt, PetscInt *, PetscBool *);
 PETSC_EXTERN PetscErrorCode CSOptionsReal_Private(PetscOptionItems *, const char[], const char[], const char[], PetscReal, PetscReal *, PetscBool *);
 PETSC_EXTERN PetscErrorCode CSOptionsString_Private(PetscOptionItems *, const char[], const char[], const char[], const char[], char[], size_t, PetscBool *);
+PETSC_EXTERN PetscErrorCode CSOptionsEList_Private(PetscOptionItems *, const char[], const char[], const char[], const char *const *, PetscInt, const char[], PetscInt *, PetscBool *);
+PETSC_EXTERN PetscErrorCode CSOptionsEnum_Private(PetscOptionItems *, const char[], const char[], const char[], const char *const *, PetscEnum, PetscEnum *, PetscBool *);
+#define CSOptionsEList(opt, text, man, list, n, cur, val, set) CSOptionsEList_Private(PetscOptionsObject, opt, text, man, list, n, cur, val, set)
+#define CSOptionsEnum(opt, text, man, list, cur, val, set)     CSOptionsEnum_Private(PetscOptionsObject, opt, text, man, list, cur, val, set)
 #define CSOptionsInt(opt, text, man, cur, val, set)         CSOptionsInt_Private(PetscOptionsObject, opt, text, man, cur, val, set)
 #define CSOptionsReal(opt, text, man, cur, val, set)        CSOptionsReal_Private(PetscOptionsObject, opt, text, man, cur, val, set)
 #define CSOptionsString(opt, text, man, cur, val, len, set) CSOptionsString_Private(PetscOptionsObject, opt, text, man, cur, val, len, set)

@@ -5,6 +5,7 @@
 #include "cs_driver.h"
 #include "cs_geometry.h"
 #include "cs_methods_spin.h"
+#include "cs_util.h"
 
 static PetscErrorCode SpectrumReport(MPI_Comm comm, CSSpin spin, PetscInt nev, const PetscReal eig[], PetscReal root[], CSOutput *out)
 {
@@ -99,10 +100,10 @@ PetscErrorCode CSTaskSpectrum(MPI_Comm comm)
   PetscCall(CSOutputFromOptions(comm, &out));
   PetscCall(CSMeshCreateFromOptions(comm, NULL, &mesh));
   PetscOptionsBegin(comm, NULL, "Dirac spectrum (crane2011 Fig. 8)", NULL);
-  PetscCall(PetscOptionsInt("-spectrum_nev", "Number of smallest eigenvalues (of Eq. 7, or of |gamma| in Eq. 6 with -spectrum_signed)", NULL, nev, &nev, NULL));
+  PetscCall(CSOptionsInt("-spectrum_nev", "Number of smallest eigenvalues (of Eq. 7, or of |gamma| in Eq. 6 with -spectrum_signed)", NULL, nev, &nev, NULL));
   PetscCall(PetscOptionsBool("-spectrum_signed", "Signed eigenvalues of the generalised problem Eq. 6 (Sec. 6.2) instead of the squared Eq. 7", NULL, sgn, &sgn, NULL));
   PetscCall(PetscOptionsIntArray("-spectrum_reconstruct", "With -spectrum_signed: Dirac spheres (Fig. 9, 11) of these eigenvectors (0 = ground state, numbered by |eigenvalue|)", NULL, k, &nk, &has_k));
-  PetscCall(PetscOptionsString("-spectrum_reconstruct_prefix", "Dirac sphere k is written to PREFIX_k.obj", NULL, prefix, prefix, sizeof(prefix), NULL));
+  PetscCall(CSOptionsString("-spectrum_reconstruct_prefix", "Dirac sphere k is written to PREFIX_k.obj", NULL, prefix, prefix, sizeof(prefix), NULL));
   PetscOptionsEnd();
   if (!has_k) nk = 0;
   PetscCheck(nev >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-spectrum_nev %" PetscInt_FMT ": need at least 1", nev);

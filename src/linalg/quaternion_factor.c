@@ -11,6 +11,7 @@
 #include "cs_linalg.h"
 #include "cs_cholmod.h"
 #include "cs_quaternion_cholesky.h"
+#include "cs_util.h"
 
 static const char *const OrderingNames[] = {"amd", "metis", "nesdis", "auto"};
 
@@ -55,8 +56,8 @@ static PetscErrorCode MatCholeskyFactorSymbolic_CSQuatFactor(Mat F, Mat A, IS pe
   PetscCallMPI(MPI_Comm_size(PetscObjectComm((PetscObject)A), &size));
   PetscCheck(size == 1, PetscObjectComm((PetscObject)A), PETSC_ERR_SUP, "-pc_factor_mat_solver_type %s is serial: the matrix lives on %d processes", F->solvertype, size);
   PetscOptionsBegin(PetscObjectComm((PetscObject)F), ((PetscObject)F)->prefix, "Quaternionic Cholesky factorisation", "Mat");
-  if (q->quat) PetscCall(PetscOptionsEList("-mat_csquat_ordering", "Fill-reducing ordering of the quaternion Cholesky, by CHOLMOD (auto: CHOLMOD tries several)", NULL, OrderingNames, 4, OrderingNames[ordering], &ordering, NULL));
-  else PetscCall(PetscOptionsEList("-mat_cscholmod_ordering", "Fill-reducing ordering of CHOLMOD's complex-form Cholesky (auto: CHOLMOD tries several)", NULL, OrderingNames, 4, OrderingNames[ordering], &ordering, NULL));
+  if (q->quat) PetscCall(CSOptionsEList("-mat_csquat_ordering", "Fill-reducing ordering of the quaternion Cholesky, by CHOLMOD (auto: CHOLMOD tries several)", NULL, OrderingNames, 4, OrderingNames[ordering], &ordering, NULL));
+  else PetscCall(CSOptionsEList("-mat_cscholmod_ordering", "Fill-reducing ordering of CHOLMOD's complex-form Cholesky (auto: CHOLMOD tries several)", NULL, OrderingNames, 4, OrderingNames[ordering], &ordering, NULL));
   PetscOptionsEnd();
   if (ordering != q->ordering) {
     PetscCall(CSQuatCholeskyDestroy(&q->qc));

@@ -700,10 +700,10 @@ static PetscErrorCode PCSetFromOptions_SubChol(PC pc, PetscOptionItems *PetscOpt
   PC_SubChol *s = (PC_SubChol *)pc->data;
   PetscFunctionBeginUser;
   PetscOptionsHeadBegin(PetscOptionsObject, "Substructured CHOLMOD Cholesky (cssubchol)");
-  PetscCall(PetscOptionsEList("-pc_cssubchol_ordering", "Ordering of each rank's interior", NULL, OrderingNames, 3, OrderingNames[s->ordering], &s->ordering, NULL));
-  PetscCall(PetscOptionsEList("-pc_cssubchol_interface", "Side of each cut that holds the interface (auto: the smaller largest local matrix)", NULL, SideNames, 3, SideNames[s->side_opt], &s->side_opt, NULL));
-  PetscCall(PetscOptionsReal("-pc_cssubchol_max_interface_ratio", "Substructure while the dense interface per rank takes at most this times the memory of the largest local factor, else MUMPS", NULL, s->max_ratio, &s->max_ratio, NULL));
-  PetscCall(PetscOptionsReal("-pc_cssubchol_fits_mb", "A dense interface of at most this many MB per rank is always substructured", NULL, s->fits_mb, &s->fits_mb, NULL));
+  PetscCall(CSOptionsEList("-pc_cssubchol_ordering", "Ordering of each rank's interior", NULL, OrderingNames, 3, OrderingNames[s->ordering], &s->ordering, NULL));
+  PetscCall(CSOptionsEList("-pc_cssubchol_interface", "Side of each cut that holds the interface (auto: the smaller largest local matrix)", NULL, SideNames, 3, SideNames[s->side_opt], &s->side_opt, NULL));
+  PetscCall(CSOptionsReal("-pc_cssubchol_max_interface_ratio", "Substructure while the dense interface per rank takes at most this times the memory of the largest local factor, else MUMPS", NULL, s->max_ratio, &s->max_ratio, NULL));
+  PetscCall(CSOptionsReal("-pc_cssubchol_fits_mb", "A dense interface of at most this many MB per rank is always substructured", NULL, s->fits_mb, &s->fits_mb, NULL));
   PetscOptionsHeadEnd();
   PetscCheck(s->fits_mb >= 0, PetscObjectComm((PetscObject)pc), PETSC_ERR_ARG_OUTOFRANGE, "-%spc_cssubchol_fits_mb %g: must be >= 0", ((PetscObject)pc)->prefix ? ((PetscObject)pc)->prefix : "", (double)s->fits_mb);
   PetscCheck(s->max_ratio >= 0, PetscObjectComm((PetscObject)pc), PETSC_ERR_ARG_OUTOFRANGE, "-%spc_cssubchol_max_interface_ratio %g: must be >= 0", ((PetscObject)pc)->prefix ? ((PetscObject)pc)->prefix : "", (double)s->max_ratio);

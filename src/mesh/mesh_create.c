@@ -399,7 +399,7 @@ PetscErrorCode CSMeshCreateFromOptions(MPI_Comm comm, const char prefix[], CSMes
   PetscCall(PetscMemzero(&topo, sizeof(topo)));
   PetscOptionsBegin(comm, prefix, "Mesh orientation", NULL);
   PetscCall(PetscOptionsBool("-mesh_keep_orientation", "Keep an inward-oriented closed mesh as it is", NULL, keep, &keep, NULL));
-  PetscCall(PetscOptionsString("-o_input", "Write the input mesh as the task sees it (after -mesh_remesh, -mesh_refine, -mesh_deform_*) to this .obj/.off/.ply", NULL, input_out, input_out, sizeof(input_out), &write_input));
+  PetscCall(CSOptionsString("-o_input", "Write the input mesh as the task sees it (after -mesh_remesh, -mesh_refine, -mesh_deform_*) to this .obj/.off/.ply", NULL, input_out, input_out, sizeof(input_out), &write_input));
   PetscOptionsEnd();
   if (write_input) PetscCall(CheckInputOutput(comm, input_out));
   PetscCall(PetscLogEventBegin(CS_EVENT_MeshRead, 0, 0, 0, 0));

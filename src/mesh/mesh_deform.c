@@ -95,10 +95,10 @@ PetscErrorCode CSMeshDeformFromOptions(CSMesh mesh, const char prefix[])
   PetscBool set, inv, nset = PETSC_FALSE;
   PetscFunctionBeginUser;
   PetscOptionsBegin(mesh->comm, prefix, "Test-input deformation", NULL);
-  PetscCall(PetscOptionsReal("-gen_deform_bump", "Radial bump amplitude a applied to the input positions", "CSMeshDeformFromOptions", bump, &bump, NULL));
-  PetscCall(PetscOptionsReal("-gen_deform_bump_freq", "Bump frequency k in sin(k x) sin(k y) sin(k z)", "CSMeshDeformFromOptions", freq, &freq, NULL));
+  PetscCall(CSOptionsReal("-gen_deform_bump", "Radial bump amplitude a applied to the input positions", "CSMeshDeformFromOptions", bump, &bump, NULL));
+  PetscCall(CSOptionsReal("-gen_deform_bump_freq", "Bump frequency k in sin(k x) sin(k y) sin(k z)", "CSMeshDeformFromOptions", freq, &freq, NULL));
   PetscCall(PetscOptionsRealArray("-gen_deform_stretch", "Stretch factors sx,sy,sz applied after the bump", "CSMeshDeformFromOptions", stretch, &nstretch, &set));
-  PetscCall(PetscOptionsReal("-gen_deform_twist", "Twist about the z axis: the top turns by this angle (degrees), linearly in z, after the stretch", "CSMeshDeformFromOptions", twist, &twist, NULL));
+  PetscCall(CSOptionsReal("-gen_deform_twist", "Twist about the z axis: the top turns by this angle (degrees), linearly in z, after the stretch", "CSMeshDeformFromOptions", twist, &twist, NULL));
   PetscCall(PetscOptionsRealArray("-gen_deform_invert", "Moebius map applied last: inversion in the unit sphere about cx,cy,cz and the mirror in x (the same discrete conformal class)", "CSMeshDeformFromOptions", centre, &ncentre, &inv));
   PetscCall(PetscOptionsRealArray("-gen_deform_nfold", "N,A: the distance from the z axis times 1 + A cos(N phi) (an N-fold symmetric start), applied first", "CSMeshDeformFromOptions", nfold, &nn, &nset));
   PetscOptionsEnd();

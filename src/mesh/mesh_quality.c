@@ -95,9 +95,9 @@ PetscErrorCode CSMeshQualityCheck(CSMesh m, Vec x)
   Vec                 nat;
   PetscFunctionBeginUser;
   PetscOptionsBegin(m->comm, NULL, "Mesh quality before a flow", NULL);
-  PetscCall(PetscOptionsEnum("-mesh_quality_action", "Faces below the thresholds: refuse the run, warn, or no check", "CSMeshQualityCheck", CSMeshQualityActions, (PetscEnum)action, (PetscEnum *)&action, NULL));
-  PetscCall(PetscOptionsReal("-mesh_quality_min_area", "Smallest accepted face area relative to the mean face area", "CSMeshQualityCheck", q.min_area, &q.min_area, NULL));
-  PetscCall(PetscOptionsReal("-mesh_quality_min_angle", "Smallest accepted face angle (degrees)", "CSMeshQualityCheck", q.min_angle, &q.min_angle, NULL));
+  PetscCall(CSOptionsEnum("-mesh_quality_action", "Faces below the thresholds: refuse the run, warn, or no check", "CSMeshQualityCheck", CSMeshQualityActions, (PetscEnum)action, (PetscEnum *)&action, NULL));
+  PetscCall(CSOptionsReal("-mesh_quality_min_area", "Smallest accepted face area relative to the mean face area", "CSMeshQualityCheck", q.min_area, &q.min_area, NULL));
+  PetscCall(CSOptionsReal("-mesh_quality_min_angle", "Smallest accepted face angle (degrees)", "CSMeshQualityCheck", q.min_angle, &q.min_angle, NULL));
   PetscOptionsEnd();
   {
     const CSOptionCheck checks[] = {

@@ -36,11 +36,11 @@ PetscErrorCode CSViewerCreate(CSMesh mesh, const char dir[], CSViewer *v)
   PetscCall(PetscStrncpy((*v)->dir, dir, sizeof((*v)->dir)));
   (*v)->format = CS_VIEWER_BINARY;
   PetscOptionsBegin(mesh->comm, NULL, "ParaView output (-viewer_dir)", NULL);
-  PetscCall(PetscOptionsEnum("-viewer_format", "Data arrays of the .vtu pieces: appended raw binary, the same zlib-compressed, or ascii", "CSViewerSetFormat", CSViewerFormats, (PetscEnum)(*v)->format, (PetscEnum *)&(*v)->format, NULL));
+  PetscCall(CSOptionsEnum("-viewer_format", "Data arrays of the .vtu pieces: appended raw binary, the same zlib-compressed, or ascii", "CSViewerSetFormat", CSViewerFormats, (PetscEnum)(*v)->format, (PetscEnum *)&(*v)->format, NULL));
   {
     const char *prec[] = {"double", "single"};
     PetscInt    ip     = 0;
-    PetscCall(PetscOptionsEList("-viewer_precision", "Positions and fields as Float64 (double) or Float32 (single: 7 digits, half the bytes)", "CSViewerSetFormat", prec, 2, prec[0], &ip, NULL));
+    PetscCall(CSOptionsEList("-viewer_precision", "Positions and fields as Float64 (double) or Float32 (single: 7 digits, half the bytes)", "CSViewerSetFormat", prec, 2, prec[0], &ip, NULL));
     (*v)->single = (PetscBool)(ip == 1);
   }
   PetscOptionsEnd();

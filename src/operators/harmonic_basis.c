@@ -84,7 +84,7 @@ PetscErrorCode CSHarmonicBasisSetFromOptions(CSHarmonicBasis hb)
   PetscInt seed0 = hb->seed;
   PetscFunctionBeginUser;
   PetscOptionsBegin(hb->hdr.comm, hb->hdr.prefix, "Harmonic 1-form basis (crane2013 App. C.1)", NULL);
-  PetscCall(PetscOptionsInt("-seed", "Seed of the random 1-forms whose harmonic parts span the basis", NULL, hb->seed, &hb->seed, NULL));
+  PetscCall(CSOptionsInt("-seed", "Seed of the random 1-forms whose harmonic parts span the basis", NULL, hb->seed, &hb->seed, NULL));
   PetscOptionsEnd();
   {
     const CSOptionCheck checks[] = {

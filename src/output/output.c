@@ -2,6 +2,7 @@
 #include "cs_output.h"
 #include "cs_geometry.h"
 #include "cs_energy_bs.h"
+#include "cs_util.h"
 
 /* fail now rather than after hours of iterations: the checkpoint's folder takes a file, and the target is a
    regular file or absent (CSFile refuses to replace anything else) */
@@ -57,15 +58,15 @@ PetscErrorCode CSOutputFromOptionsFormats(MPI_Comm comm, const char *const exts[
   PetscCall(PetscMemzero(o, sizeof(*o)));
   PetscCall(PetscTime(&o->t0));
   PetscOptionsBegin(comm, NULL, "confsurf output", NULL);
-  PetscCall(PetscOptionsString("-o", "Final mesh (.obj or .ply)", NULL, o->out, o->out, sizeof(o->out), &o->has_out));
-  PetscCall(PetscOptionsString("-viewer_dir", "Directory for the ParaView series (series.pvd)", NULL, o->viewer_dir, o->viewer_dir, sizeof(o->viewer_dir), &o->has_viewer));
-  PetscCall(PetscOptionsString("-summary", "JSON summary file", NULL, o->summary, o->summary, sizeof(o->summary), &o->has_summary));
-  PetscCall(PetscOptionsString("-history_csv", "Iterative tasks: per-iteration CSV history (columns in the header line)", NULL, o->history, o->history, sizeof(o->history), &o->has_history));
-  PetscCall(PetscOptionsString("-reference", "Mesh with the same connectivity for the quasi-conformal error", NULL, o->reference, o->reference, sizeof(o->reference), &o->has_reference));
+  PetscCall(CSOptionsString("-o", "Final mesh (.obj or .ply)", NULL, o->out, o->out, sizeof(o->out), &o->has_out));
+  PetscCall(CSOptionsString("-viewer_dir", "Directory for the ParaView series (series.pvd)", NULL, o->viewer_dir, o->viewer_dir, sizeof(o->viewer_dir), &o->has_viewer));
+  PetscCall(CSOptionsString("-summary", "JSON summary file", NULL, o->summary, o->summary, sizeof(o->summary), &o->has_summary));
+  PetscCall(CSOptionsString("-history_csv", "Iterative tasks: per-iteration CSV history (columns in the header line)", NULL, o->history, o->history, sizeof(o->history), &o->has_history));
+  PetscCall(CSOptionsString("-reference", "Mesh with the same connectivity for the quasi-conformal error", NULL, o->reference, o->reference, sizeof(o->reference), &o->has_reference));
   o->checkpoint_every = 10;
-  PetscCall(PetscOptionsString("-checkpoint", "Iterative tasks: write a checkpoint (positions and loop state) to this file", NULL, o->checkpoint, o->checkpoint, sizeof(o->checkpoint), &o->has_checkpoint));
-  PetscCall(PetscOptionsInt("-checkpoint_every", "Write the checkpoint every this many accepted iterations (and always at the end)", NULL, o->checkpoint_every, &o->checkpoint_every, NULL));
-  PetscCall(PetscOptionsString("-resume", "Iterative tasks: start from this checkpoint (the mesh still comes from -mesh/-gen, for the connectivity)", NULL, o->resume, o->resume, sizeof(o->resume), &o->has_resume));
+  PetscCall(CSOptionsString("-checkpoint", "Iterative tasks: write a checkpoint (positions and loop state) to this file", NULL, o->checkpoint, o->checkpoint, sizeof(o->checkpoint), &o->has_checkpoint));
+  PetscCall(CSOptionsInt("-checkpoint_every", "Write the checkpoint every this many accepted iterations (and always at the end)", NULL, o->checkpoint_every, &o->checkpoint_every, NULL));
+  PetscCall(CSOptionsString("-resume", "Iterative tasks: start from this checkpoint (the mesh still comes from -mesh/-gen, for the connectivity)", NULL, o->resume, o->resume, sizeof(o->resume), &o->has_resume));
   PetscOptionsEnd();
   PetscCheck(o->checkpoint_every >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-checkpoint_every %" PetscInt_FMT ": must be >= 1", o->checkpoint_every);
   if (o->has_out) {
@@ -92,7 +93,7 @@ PetscErrorCode CSOutputViewerEvery(MPI_Comm comm, const char prefix[], const cha
   PetscFunctionBeginUser;
   *every = zero_final ? 0 : 1;
   PetscOptionsBegin(comm, prefix, title, NULL);
-  PetscCall(PetscOptionsInt("-viewer_every", help, NULL, *every, every, NULL));
+  PetscCall(CSOptionsInt("-viewer_every", help, NULL, *every, every, NULL));
   PetscOptionsEnd();
   if (zero_final) PetscCheck(*every >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sviewer_every %" PetscInt_FMT ": use 0 (the final state only) or a positive count", prefix, *every);
   else PetscCheck(*every >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sviewer_every %" PetscInt_FMT ": must be >= 1", prefix, *every);

@@ -72,8 +72,36 @@ PetscErrorCode CSOptionsString_Private(PetscOptionItems *items, const char opt[]
   PetscCall(RawValue(items, opt, &value, &found, full, sizeof(full)));
   if (found) {
     PetscCheck(!Empty(value), items->comm, PETSC_ERR_ARG_WRONG, "%s: needs a value", full);
-    PetscCheck(strlen(value) < len, items->comm, PETSC_ERR_ARG_SIZ, "%s: the value is %zu characters long; at most %zu are read (it would be cut)", full, strlen(value), len - 1);
+    PetscCheck(strlen(value) < len, items->comm, PETSC_ERR_ARG_SIZ, "%s: the value is %zu characters long, at most %zu are read (it would be cut)", full, strlen(value), len - 1);
   }
   PetscCall(PetscOptionsString_Private(items, opt, text, man, cur, val, len, set));
+  PetscFunctionReturn(0);
+}
+
+/* a choice given without a value (-gen '') is refused, not taken as not given */
+static PetscErrorCode RequireValue(PetscOptionItems *items, const char opt[])
+{
+  const char *value;
+  PetscBool   found;
+  char        full[256];
+  PetscFunctionBeginUser;
+  PetscCall(RawValue(items, opt, &value, &found, full, sizeof(full)));
+  PetscCheck(!found || !Empty(value), items->comm, PETSC_ERR_ARG_WRONG, "%s: needs a value", full);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSOptionsEList_Private(PetscOptionItems *items, const char opt[], const char text[], const char man[], const char *const *list, PetscInt n, const char cur[], PetscInt *val, PetscBool *set)
+{
+  PetscFunctionBeginUser;
+  PetscCall(RequireValue(items, opt));
+  PetscCall(PetscOptionsEList_Private(items, opt, text, man, list, n, cur, val, set));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSOptionsEnum_Private(PetscOptionItems *items, const char opt[], const char text[], const char man[], const char *const *list, PetscEnum cur, PetscEnum *val, PetscBool *set)
+{
+  PetscFunctionBeginUser;
+  PetscCall(RequireValue(items, opt));
+  PetscCall(PetscOptionsEnum_Private(items, opt, text, man, list, cur, val, set));
   PetscFunctionReturn(0);
 }

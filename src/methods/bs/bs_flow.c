@@ -2,6 +2,7 @@
    loop and the monitors; the schemes are in bs_semi.c and bs_tao.c. See include/cs_methods_bs.h. */
 #include "bs_flow_impl.h"
 #include "cs_package.h"
+#include "cs_util.h"
 
 const char *const CSBSSchemes[]  = {"semi", "tao", "CSBSScheme", "CS_BS_SCHEME_", NULL};
 const char *const CSBSProblems[] = {"static", "euler", "CSBSProblem", "CS_BS_PROBLEM_", NULL};
@@ -77,26 +78,26 @@ PetscErrorCode CSBSFlowSetFromOptions(CSBSFlow F)
 {
   PetscFunctionBeginUser;
   PetscOptionsBegin(F->mesh->comm, F->hdr.prefix, "Bobenko-Schroeder Willmore flow (bobenko-schroeder2005)", NULL);
-  PetscCall(PetscOptionsEnum("-scheme", "semi: semi-implicit (1/dt I + K) dx = -grad W; tao: TAO (static problem or backward Euler)", "CSBSFlowSetFromOptions", CSBSSchemes, (PetscEnum)F->scheme, (PetscEnum *)&F->scheme, NULL));
-  PetscCall(PetscOptionsEnum("-boundary", "fixed: G1, boundary and one-ring fixed; free: vertex at infinity (Sec. 3.3)", "CSBSFlowSetFromOptions", CSBSBoundaries, (PetscEnum)F->bc, (PetscEnum *)&F->bc, NULL));
-  PetscCall(PetscOptionsReal("-beta_eps", "Diamonds with |sin beta| below this contribute no gradient (Sec. 3.2)", NULL, F->beta_eps, &F->beta_eps, NULL));
-  PetscCall(PetscOptionsInt("-max_it", "Maximum number of accepted steps (TAO static: iterations)", NULL, F->max_it, &F->max_it, NULL));
-  PetscCall(PetscOptionsReal("-dt", "Initial time step (units length^2); default -dt_rel times the squared mean edge length", NULL, F->dt_opt, &F->dt_opt, &F->dt_set));
-  PetscCall(PetscOptionsReal("-dt_rel", "Initial time step relative to the squared mean edge length", NULL, F->dt_rel, &F->dt_rel, NULL));
-  PetscCall(PetscOptionsReal("-dt_grow", "Factor on dt after an accepted step", NULL, F->dt_grow, &F->dt_grow, NULL));
-  PetscCall(PetscOptionsReal("-dt_max", "Largest dt (default 1e4 times the initial dt)", NULL, F->dt_max_opt, &F->dt_max_opt, NULL));
-  PetscCall(PetscOptionsInt("-max_rejections", "semi: consecutive rejected steps (each divides dt by 4) before giving up", NULL, F->max_rej, &F->max_rej, NULL));
-  PetscCall(PetscOptionsReal("-atol", "Stop when W is below this", NULL, F->atol, &F->atol, NULL));
-  PetscCall(PetscOptionsReal("-rtol", "Stop when a step decreases W by less than this fraction", NULL, F->rtol, &F->rtol, NULL));
-  PetscCall(PetscOptionsEnum("-problem", "tao: static minimises W in one TaoSolve; euler: backward Euler steps through TAO", "CSBSFlowSetFromOptions", CSBSProblems, (PetscEnum)F->problem, (PetscEnum *)&F->problem, NULL));
-  PetscCall(PetscOptionsReal("-hessian_eps", "Leave diamonds with sin beta below this out of K (default -beta_eps)", NULL, F->hessian_eps, &F->hessian_eps, &F->hessian_eps_set));
-  PetscCall(PetscOptionsReal("-perturb", "Move the free vertices randomly by this fraction of the mean edge length before flowing (breaks co-circular diamonds, beta = 0, of grid-like meshes)", NULL, F->perturb, &F->perturb, NULL));
-  PetscCall(PetscOptionsReal("-dt_min_rel", "semi: stop as stalled when dt falls below this times the initial dt", NULL, F->dt_min_rel, &F->dt_min_rel, NULL));
-  PetscCall(PetscOptionsReal("-max_area_ratio", "semi: stop with the last good state when the total area, or max(A/A0)/min(A/A0) of the vertex areas, exceeds this (0: off)", NULL, F->max_area_ratio, &F->max_area_ratio, NULL));
-  PetscCall(PetscOptionsReal("-energy_target", "semi: stop when W is at or below this (stop_reason energy_target)", NULL, F->energy_target, &F->energy_target, &F->energy_target_set));
-  PetscCall(PetscOptionsString("-islands", "File of 0-based vertex (or face) indices in file order held fixed with their one-ring (Sec. 3.3, islands)", NULL, F->islands, F->islands, sizeof(F->islands), NULL));
-  PetscCall(PetscOptionsEnum("-islands_type", "What -islands lists", "CSBSFlowSetFromOptions", CSBSIslandsTypes, (PetscEnum)F->islands_type, (PetscEnum *)&F->islands_type, NULL));
-  PetscCall(PetscOptionsEnum("-singular", "Vanishing beta (Sec. 3.2): heuristic (its gradient set to 0), single (the paper's steepest descent where one beta at a vertex vanishes) or delta (the paper's delta minimisation, any number)", "CSBSFlowSetFromOptions", CSBSSingularRules, (PetscEnum)F->singular, (PetscEnum *)&F->singular, NULL));
+  PetscCall(CSOptionsEnum("-scheme", "semi: semi-implicit (1/dt I + K) dx = -grad W; tao: TAO (static problem or backward Euler)", "CSBSFlowSetFromOptions", CSBSSchemes, (PetscEnum)F->scheme, (PetscEnum *)&F->scheme, NULL));
+  PetscCall(CSOptionsEnum("-boundary", "fixed: G1, boundary and one-ring fixed; free: vertex at infinity (Sec. 3.3)", "CSBSFlowSetFromOptions", CSBSBoundaries, (PetscEnum)F->bc, (PetscEnum *)&F->bc, NULL));
+  PetscCall(CSOptionsReal("-beta_eps", "Diamonds with |sin beta| below this contribute no gradient (Sec. 3.2)", NULL, F->beta_eps, &F->beta_eps, NULL));
+  PetscCall(CSOptionsInt("-max_it", "Maximum number of accepted steps (TAO static: iterations)", NULL, F->max_it, &F->max_it, NULL));
+  PetscCall(CSOptionsReal("-dt", "Initial time step (units length^2); default -dt_rel times the squared mean edge length", NULL, F->dt_opt, &F->dt_opt, &F->dt_set));
+  PetscCall(CSOptionsReal("-dt_rel", "Initial time step relative to the squared mean edge length", NULL, F->dt_rel, &F->dt_rel, NULL));
+  PetscCall(CSOptionsReal("-dt_grow", "Factor on dt after an accepted step", NULL, F->dt_grow, &F->dt_grow, NULL));
+  PetscCall(CSOptionsReal("-dt_max", "Largest dt (default 1e4 times the initial dt)", NULL, F->dt_max_opt, &F->dt_max_opt, NULL));
+  PetscCall(CSOptionsInt("-max_rejections", "semi: consecutive rejected steps (each divides dt by 4) before giving up", NULL, F->max_rej, &F->max_rej, NULL));
+  PetscCall(CSOptionsReal("-atol", "Stop when W is below this", NULL, F->atol, &F->atol, NULL));
+  PetscCall(CSOptionsReal("-rtol", "Stop when a step decreases W by less than this fraction", NULL, F->rtol, &F->rtol, NULL));
+  PetscCall(CSOptionsEnum("-problem", "tao: static minimises W in one TaoSolve; euler: backward Euler steps through TAO", "CSBSFlowSetFromOptions", CSBSProblems, (PetscEnum)F->problem, (PetscEnum *)&F->problem, NULL));
+  PetscCall(CSOptionsReal("-hessian_eps", "Leave diamonds with sin beta below this out of K (default -beta_eps)", NULL, F->hessian_eps, &F->hessian_eps, &F->hessian_eps_set));
+  PetscCall(CSOptionsReal("-perturb", "Move the free vertices randomly by this fraction of the mean edge length before flowing (breaks co-circular diamonds, beta = 0, of grid-like meshes)", NULL, F->perturb, &F->perturb, NULL));
+  PetscCall(CSOptionsReal("-dt_min_rel", "semi: stop as stalled when dt falls below this times the initial dt", NULL, F->dt_min_rel, &F->dt_min_rel, NULL));
+  PetscCall(CSOptionsReal("-max_area_ratio", "semi: stop with the last good state when the total area, or max(A/A0)/min(A/A0) of the vertex areas, exceeds this (0: off)", NULL, F->max_area_ratio, &F->max_area_ratio, NULL));
+  PetscCall(CSOptionsReal("-energy_target", "semi: stop when W is at or below this (stop_reason energy_target)", NULL, F->energy_target, &F->energy_target, &F->energy_target_set));
+  PetscCall(CSOptionsString("-islands", "File of 0-based vertex (or face) indices in file order held fixed with their one-ring (Sec. 3.3, islands)", NULL, F->islands, F->islands, sizeof(F->islands), NULL));
+  PetscCall(CSOptionsEnum("-islands_type", "What -islands lists", "CSBSFlowSetFromOptions", CSBSIslandsTypes, (PetscEnum)F->islands_type, (PetscEnum *)&F->islands_type, NULL));
+  PetscCall(CSOptionsEnum("-singular", "Vanishing beta (Sec. 3.2): heuristic (its gradient set to 0), single (the paper's steepest descent where one beta at a vertex vanishes) or delta (the paper's delta minimisation, any number)", "CSBSFlowSetFromOptions", CSBSSingularRules, (PetscEnum)F->singular, (PetscEnum *)&F->singular, NULL));
   PetscCall(PetscOptionsBool("-monotone", "semi: reject steps that increase W (false: accept them, as needed when many diamonds start at beta = 0)", NULL, F->monotone, &F->monotone, NULL));
   PetscOptionsEnd();
   PetscCall(CheckOptions(F));

@@ -114,38 +114,38 @@ PetscErrorCode CSConformalFlowSetFromOptions(CSConformalFlow F)
 {
   PetscFunctionBeginUser;
   PetscOptionsBegin(F->hdr.comm, F->hdr.prefix, "Conformal curvature flow (crane2013 Sec. 6)", NULL);
-  PetscCall(PetscOptionsReal("-tau", "Time step of rho = tau v, v = -2 H projected (Table 1 V); stable for tau < 1", NULL, F->tau, &F->tau, NULL));
-  PetscCall(PetscOptionsInt("-max_it", "Maximum number of steps", NULL, F->loop.max_it, &F->loop.max_it, NULL));
-  PetscCall(PetscOptionsReal("-atol", "Stop when W is at most this (0: off)", NULL, F->atol, &F->atol, NULL));
-  PetscCall(PetscOptionsReal("-rtol", "Stop when a step changes W by at most this fraction", NULL, F->rtol, &F->rtol, NULL));
-  PetscCall(PetscOptionsReal("-max_energy_growth", "Stop (diverged) when W exceeds this times the initial W", NULL, F->egrow, &F->egrow, NULL));
-  PetscCall(PetscOptionsReal("-filter_sigma", "Spectral filter v <- v - (id + sigma A^k)^-1 v (Sec. 4, A = M^-1 L >= 0); sigma in units of (area/4pi)^k, 0: off", NULL, F->sigma, &F->sigma, NULL));
-  PetscCall(PetscOptionsInt("-filter_k", "Filter order k (0..4)", NULL, F->fk, &F->fk, NULL));
+  PetscCall(CSOptionsReal("-tau", "Time step of rho = tau v, v = -2 H projected (Table 1 V); stable for tau < 1", NULL, F->tau, &F->tau, NULL));
+  PetscCall(CSOptionsInt("-max_it", "Maximum number of steps", NULL, F->loop.max_it, &F->loop.max_it, NULL));
+  PetscCall(CSOptionsReal("-atol", "Stop when W is at most this (0: off)", NULL, F->atol, &F->atol, NULL));
+  PetscCall(CSOptionsReal("-rtol", "Stop when a step changes W by at most this fraction", NULL, F->rtol, &F->rtol, NULL));
+  PetscCall(CSOptionsReal("-max_energy_growth", "Stop (diverged) when W exceeds this times the initial W", NULL, F->egrow, &F->egrow, NULL));
+  PetscCall(CSOptionsReal("-filter_sigma", "Spectral filter v <- v - (id + sigma A^k)^-1 v (Sec. 4, A = M^-1 L >= 0); sigma in units of (area/4pi)^k, 0: off", NULL, F->sigma, &F->sigma, NULL));
+  PetscCall(CSOptionsInt("-filter_k", "Filter order k (0..4)", NULL, F->fk, &F->fk, NULL));
   PetscCall(PetscOptionsBool("-inversion", "Constrain sphere inversions: <<v, N^x,y,z>> = 0 (Sec. 6.2, App. D)", NULL, F->inversion, &F->inversion, NULL));
   PetscCall(PetscOptionsBool("-exactness", "Genus >= 1: constrain <<v, Z_i^x,y,z>> = 0 with D Z_i = v_i for the harmonic vector fields v_i (App. C, C.1)", NULL, F->exactness, &F->exactness, NULL));
   PetscCall(PetscOptionsBool("-exactness_paper", "Exactness functions as App. C.1 writes them (Im Z_i, D Z_i = v_i) instead of the discrete linearisation of the closing condition", NULL, F->exactness_paper, &F->exactness_paper, NULL));
   PetscCall(PetscOptionsBool("-mobius", "Moebius balancing v += w <a, N> toward the input's area distribution (App. E, E.1)", NULL, F->mobius, &F->mobius, NULL));
-  PetscCall(PetscOptionsEnum("-mobius_step", "Moebius balancing step: newton (the least-squares inversion that removes the balanceable part of the area distortion in one step) or paper (App. E.1's unit direction)", NULL, CSConformalMobiusSteps, (PetscEnum)F->mobius_step, (PetscEnum *)&F->mobius_step, NULL));
-  PetscCall(PetscOptionsReal("-mobius_weight", "Moebius balancing: the weight w of the unit-norm direction", NULL, F->mobius_weight, &F->mobius_weight, NULL));
-  PetscCall(PetscOptionsReal("-curvature_factor", "c in rho' = -c H: 2 is the gradient of |mu|^2 (Eq. 1, stable for tau < 1); 1 is the paper's (D + tau H) lambda = gamma lambda", NULL, F->hfactor, &F->hfactor, NULL));
+  PetscCall(CSOptionsEnum("-mobius_step", "Moebius balancing step: newton (the least-squares inversion that removes the balanceable part of the area distortion in one step) or paper (App. E.1's unit direction)", NULL, CSConformalMobiusSteps, (PetscEnum)F->mobius_step, (PetscEnum *)&F->mobius_step, NULL));
+  PetscCall(CSOptionsReal("-mobius_weight", "Moebius balancing: the weight w of the unit-norm direction", NULL, F->mobius_weight, &F->mobius_weight, NULL));
+  PetscCall(CSOptionsReal("-curvature_factor", "c in rho' = -c H: 2 is the gradient of |mu|^2 (Eq. 1, stable for tau < 1); 1 is the paper's (D + tau H) lambda = gamma lambda", NULL, F->hfactor, &F->hfactor, NULL));
   PetscCall(PetscOptionsBool("-keep_area", "Scale every new surface to the input's area", NULL, F->keep_area, &F->keep_area, NULL));
   {
     PetscInt  nf = 4; /* room for one more than three, to tell a longer list */
     PetscReal fr[4] = {F->frame[0], F->frame[1], F->frame[2], 0};
     PetscBool fset;
-    PetscCall(PetscOptionsEnum("-boundary", "Boundary condition (Sec. 6.3): none (closed meshes), vector (6.3.1: prescribed directions V~ for V in span{N, T, B}), fixed (6.3.2: prescribed positions)", NULL, CSConformalBoundaries, (PetscEnum)F->bmode, (PetscEnum *)&F->bmode, NULL));
+    PetscCall(CSOptionsEnum("-boundary", "Boundary condition (Sec. 6.3): none (closed meshes), vector (6.3.1: prescribed directions V~ for V in span{N, T, B}), fixed (6.3.2: prescribed positions)", NULL, CSConformalBoundaries, (PetscEnum)F->bmode, (PetscEnum *)&F->bmode, NULL));
     PetscCall(PetscOptionsRealArray("-boundary_frame", "-boundary vector: V = cN N + cT T + cB B (cN,cT,cB; not +-N)", NULL, fr, &nf, &fset));
     /* a shorter list would be completed silently with the defaults' tail (1 read as 1,0,1), a longer one cut */
     PetscCheck(!fset || nf == 3, F->hdr.comm, PETSC_ERR_ARG_WRONG, "-%sboundary_frame: give exactly three numbers cN,cT,cB (%s given)", F->hdr.prefix, nf > 3 ? "more" : (nf == 2 ? "2" : (nf == 1 ? "1" : "0")));
     for (int c = 0; c < 3; c++) F->frame[c] = fr[c];
-    PetscCall(PetscOptionsString("-target_mesh", "-boundary vector|fixed: the targets (V~ of this mesh, or its boundary positions; same connectivity)", NULL, F->target, F->target, sizeof(F->target), NULL));
+    PetscCall(CSOptionsString("-target_mesh", "-boundary vector|fixed: the targets (V~ of this mesh, or its boundary positions; same connectivity)", NULL, F->target, F->target, sizeof(F->target), NULL));
   }
-  PetscCall(PetscOptionsEnum("-curvature", "Table 1 I: H = (L f).N/(2A) with the barycentric area and area-weighted normal, or with the mixed Voronoi area and the 1-ring sphere-fit normal (exactly constant on inscribed spheres)", NULL, CSConformalCurvatures, (PetscEnum)F->curvature, (PetscEnum *)&F->curvature, NULL));
-  PetscCall(PetscOptionsReal("-max_seconds", "Stop (as at max_it) once this many seconds have passed since the set-up (0: no limit); rank 0's clock decides", NULL, F->loop.max_seconds, &F->loop.max_seconds, NULL));
-  PetscCall(PetscOptionsReal("-max_nonexact", "Safeguard (not the paper's): retry a step with tau / 2 while the Poisson step's relative least-squares residual |df~ - conj(lambda) df lambda| / |conj(lambda) df lambda| exceeds this (0: off)", NULL, F->max_nonexact, &F->max_nonexact, NULL));
-  PetscCall(PetscOptionsReal("-min_edge", "Reject a step (stop with reason resolution, the last good state kept) whose shortest edge is below this times the surface's bounding-box diagonal, or that has a face of zero area (0: off)", NULL, F->min_edge, &F->min_edge, NULL));
-  PetscCall(PetscOptionsInt("-max_halvings", "-max_nonexact: at most this many halvings of tau per step", NULL, F->max_halvings, &F->max_halvings, NULL));
-  PetscCall(PetscOptionsEnum("-eigensolver", "Eq. 5: one inverse-iteration step on a factorisation of the current X (Sec. 6.4.2), or SLEPc to convergence (options -spin_eps_*, -spin_st_*)", NULL, CSConformalEigensolvers, (PetscEnum)F->eigensolver, (PetscEnum *)&F->eigensolver, NULL));
+  PetscCall(CSOptionsEnum("-curvature", "Table 1 I: H = (L f).N/(2A) with the barycentric area and area-weighted normal, or with the mixed Voronoi area and the 1-ring sphere-fit normal (exactly constant on inscribed spheres)", NULL, CSConformalCurvatures, (PetscEnum)F->curvature, (PetscEnum *)&F->curvature, NULL));
+  PetscCall(CSOptionsReal("-max_seconds", "Stop (as at max_it) once this many seconds have passed since the set-up (0: no limit); rank 0's clock decides", NULL, F->loop.max_seconds, &F->loop.max_seconds, NULL));
+  PetscCall(CSOptionsReal("-max_nonexact", "Safeguard (not the paper's): retry a step with tau / 2 while the Poisson step's relative least-squares residual |df~ - conj(lambda) df lambda| / |conj(lambda) df lambda| exceeds this (0: off)", NULL, F->max_nonexact, &F->max_nonexact, NULL));
+  PetscCall(CSOptionsReal("-min_edge", "Reject a step (stop with reason resolution, the last good state kept) whose shortest edge is below this times the surface's bounding-box diagonal, or that has a face of zero area (0: off)", NULL, F->min_edge, &F->min_edge, NULL));
+  PetscCall(CSOptionsInt("-max_halvings", "-max_nonexact: at most this many halvings of tau per step", NULL, F->max_halvings, &F->max_halvings, NULL));
+  PetscCall(CSOptionsEnum("-eigensolver", "Eq. 5: one inverse-iteration step on a factorisation of the current X (Sec. 6.4.2), or SLEPc to convergence (options -spin_eps_*, -spin_st_*)", NULL, CSConformalEigensolvers, (PetscEnum)F->eigensolver, (PetscEnum *)&F->eigensolver, NULL));
   PetscOptionsEnd();
   PetscCall(CheckOptions(F));
   PetscFunctionReturn(0);

@@ -62,14 +62,14 @@ PetscErrorCode CSCurveFlowSetFromOptions(CSCurveFlow F)
 {
   PetscFunctionBeginUser;
   PetscOptionsBegin(F->hdr.comm, F->hdr.prefix, "Isometric curve flow (crane2013 Sec. 5)", NULL);
-  PetscCall(PetscOptionsReal("-tau", "Time step of the forward Euler step kappa <- kappa - 2 tau kappa (Eq. 2); stable for tau < 1", NULL, F->tau, &F->tau, NULL));
-  PetscCall(PetscOptionsInt("-max_it", "Maximum number of steps", NULL, F->loop.max_it, &F->loop.max_it, NULL));
-  PetscCall(PetscOptionsReal("-rtol", "Stop when |v|_d sqrt(length)/2pi (v: the constrained direction) and the last step's max |f - f_old| / (length/2pi) are below this", NULL, F->rtol, &F->rtol, NULL));
+  PetscCall(CSOptionsReal("-tau", "Time step of the forward Euler step kappa <- kappa - 2 tau kappa (Eq. 2); stable for tau < 1", NULL, F->tau, &F->tau, NULL));
+  PetscCall(CSOptionsInt("-max_it", "Maximum number of steps", NULL, F->loop.max_it, &F->loop.max_it, NULL));
+  PetscCall(CSOptionsReal("-rtol", "Stop when |v|_d sqrt(length)/2pi (v: the constrained direction) and the last step's max |f - f_old| / (length/2pi) are below this", NULL, F->rtol, &F->rtol, NULL));
   PetscCall(PetscOptionsBool("-filter", "Spectral filter v <- v - (id + sigma A^k)^{-1} v of the direction (Sec. 4)", NULL, F->filter, &F->filter, NULL));
-  PetscCall(PetscOptionsReal("-filter_sigma", "Filter sigma in units of (length/2pi)^(2k)", NULL, F->sigma, &F->sigma, NULL));
-  PetscCall(PetscOptionsInt("-filter_k", "Filter order k (0..4)", NULL, F->fk, &F->fk, NULL));
-  PetscCall(PetscOptionsReal("-max_energy_growth", "Stop (diverged) when E exceeds this times the initial E", NULL, F->egrow, &F->egrow, NULL));
-  PetscCall(PetscOptionsReal("-max_seconds", "Stop (as at max_it) once this many seconds have passed since the set-up (0: no limit); rank 0's clock decides", NULL, F->loop.max_seconds, &F->loop.max_seconds, NULL));
+  PetscCall(CSOptionsReal("-filter_sigma", "Filter sigma in units of (length/2pi)^(2k)", NULL, F->sigma, &F->sigma, NULL));
+  PetscCall(CSOptionsInt("-filter_k", "Filter order k (0..4)", NULL, F->fk, &F->fk, NULL));
+  PetscCall(CSOptionsReal("-max_energy_growth", "Stop (diverged) when E exceeds this times the initial E", NULL, F->egrow, &F->egrow, NULL));
+  PetscCall(CSOptionsReal("-max_seconds", "Stop (as at max_it) once this many seconds have passed since the set-up (0: no limit); rank 0's clock decides", NULL, F->loop.max_seconds, &F->loop.max_seconds, NULL));
   PetscOptionsEnd();
   PetscCall(CheckOptions(F));
   PetscFunctionReturn(0);

@@ -178,16 +178,16 @@ PetscErrorCode CSSpinRhoFromOptions(CSSpin spin, Vec x, CSRhoLocation *loc, Vec 
   *xtarget = NULL;
   *mu      = NULL;
   PetscOptionsBegin(mesh->comm, NULL, "Change of mean curvature half-density rho (crane2011 Sec. 4.1)", NULL);
-  PetscCall(PetscOptionsString("-rho", "File of rho values (one per vertex, or per face with -rho_location face), in file order", NULL, file, file, sizeof(file), &hasfile));
-  PetscCall(PetscOptionsEList("-rho_location", "Where -rho values live", NULL, locs, 2, locs[iloc], &iloc, NULL));
-  PetscCall(PetscOptionsReal("-rho_scale", "Multiply rho by this", NULL, scale, &scale, NULL));
+  PetscCall(CSOptionsString("-rho", "File of rho values (one per vertex, or per face with -rho_location face), in file order", NULL, file, file, sizeof(file), &hasfile));
+  PetscCall(CSOptionsEList("-rho_location", "Where -rho values live", NULL, locs, 2, locs[iloc], &iloc, NULL));
+  PetscCall(CSOptionsReal("-rho_scale", "Multiply rho by this", NULL, scale, &scale, NULL));
   PetscCall(PetscOptionsRealArray("-rho_bump_center", "Bump centres x,y,z[,x,y,z...]: rho += height exp(-|f - c|^2 / radius^2)", NULL, centers, &nc, &hasbump));
-  PetscCall(PetscOptionsReal("-rho_bump_radius", "Bump radius", NULL, radius, &radius, NULL));
-  PetscCall(PetscOptionsReal("-rho_bump_height", "Bump height", NULL, height, &height, NULL));
-  PetscCall(PetscOptionsReal("-rho_mean_curvature", "rho += s H (s = -1: minimal surface, crane2011 Sec. 7.3)", NULL, hs, &hs, &hash));
-  PetscCall(PetscOptionsString("-rho_from_displacement", "rho += (L g)/(2 M) for a normal displacement g (file: one value per vertex in file order; crane2011 Sec. 7.1)", NULL, disp, disp, sizeof(disp), &hasdisp));
-  PetscCall(PetscOptionsReal("-rho_smooth", "Heat-diffusion filter of the per-vertex rho: (M + t L) rho~ = M rho, t in length^2 (crane2011 Fig. 13)", NULL, smooth, &smooth, &hassmooth));
-  PetscCall(PetscOptionsString("-spin_target_mesh", "Nearest spin transformation of this deformation (same connectivity; crane2011 Sec. 7.2)", NULL, target, target, sizeof(target), &hastarget));
+  PetscCall(CSOptionsReal("-rho_bump_radius", "Bump radius", NULL, radius, &radius, NULL));
+  PetscCall(CSOptionsReal("-rho_bump_height", "Bump height", NULL, height, &height, NULL));
+  PetscCall(CSOptionsReal("-rho_mean_curvature", "rho += s H (s = -1: minimal surface, crane2011 Sec. 7.3)", NULL, hs, &hs, &hash));
+  PetscCall(CSOptionsString("-rho_from_displacement", "rho += (L g)/(2 M) for a normal displacement g (file: one value per vertex in file order; crane2011 Sec. 7.1)", NULL, disp, disp, sizeof(disp), &hasdisp));
+  PetscCall(CSOptionsReal("-rho_smooth", "Heat-diffusion filter of the per-vertex rho: (M + t L) rho~ = M rho, t in length^2 (crane2011 Fig. 13)", NULL, smooth, &smooth, &hassmooth));
+  PetscCall(CSOptionsString("-spin_target_mesh", "Nearest spin transformation of this deformation (same connectivity; crane2011 Sec. 7.2)", NULL, target, target, sizeof(target), &hastarget));
   PetscOptionsEnd();
   if (!hasbump) nc = 0;
   {
@@ -263,7 +263,7 @@ PetscErrorCode CSSpinBoundaryFromOptions(CSSpin spin, Vec xtarget, Vec *Tt)
   PetscFunctionBeginUser;
   *Tt = NULL;
   PetscOptionsBegin(mesh->comm, NULL, "Spin boundary tangents (crane2011 Sec. 5.7)", NULL);
-  PetscCall(PetscOptionsString("-spin_boundary_file", "Target boundary tangents: 3 numbers per vertex in file order (read on boundary vertices)", NULL, file, file, sizeof(file), &has));
+  PetscCall(CSOptionsString("-spin_boundary_file", "Target boundary tangents: 3 numbers per vertex in file order (read on boundary vertices)", NULL, file, file, sizeof(file), &has));
   PetscOptionsEnd();
   PetscCheck(!has || spin->boundary == CS_SPIN_BOUNDARY_FILE, mesh->comm, PETSC_ERR_ARG_INCOMP, "-spin_boundary_file needs -spin_boundary file");
   switch (spin->boundary) {

@@ -10,6 +10,7 @@
 #include "cs_methods_spin.h"
 #include "cs_linalg.h"
 #include "cs_package.h"
+#include "cs_util.h"
 
 PetscErrorCode CSSpinCreate(CSMesh mesh, CSSpin *spin)
 {
@@ -40,15 +41,15 @@ PetscErrorCode CSSpinSetFromOptions(CSSpin s)
   if (s->mesh->topo.boundary_loops > 0 && s->boundary == CS_SPIN_BOUNDARY_NONE) ib = CS_SPIN_BOUNDARY_KEEP;
   PetscFunctionBeginUser;
   PetscOptionsBegin(s->mesh->comm, NULL, "Spin transformations (crane2011)", NULL);
-  PetscCall(PetscOptionsEList("-spin_problem", "Eigenvalue problem: standard (Eq. 7) or generalized (Eq. 6)", NULL, problems, 2, problems[ip], &ip, NULL));
-  PetscCall(PetscOptionsEList("-spin_dirac_type", "Dirac operator: assembled AIJ (block size 4) or matrix-free shell", NULL, types, 2, types[it], &it, NULL));
-  PetscCall(PetscOptionsEList("-spin_solver", "Smallest eigenpair: EPS preconditioned by the scalar Laplacian (Davidson), EPS with shift-and-invert (a factorisation of K - sigma), or inverse iteration", NULL, solvers, 3, solvers[is], &is, &solver_set));
-  PetscCall(PetscOptionsInt("-spin_iterations", "Inverse iteration steps", NULL, s->inverse_its, &s->inverse_its, NULL));
+  PetscCall(CSOptionsEList("-spin_problem", "Eigenvalue problem: standard (Eq. 7) or generalized (Eq. 6)", NULL, problems, 2, problems[ip], &ip, NULL));
+  PetscCall(CSOptionsEList("-spin_dirac_type", "Dirac operator: assembled AIJ (block size 4) or matrix-free shell", NULL, types, 2, types[it], &it, NULL));
+  PetscCall(CSOptionsEList("-spin_solver", "Smallest eigenpair: EPS preconditioned by the scalar Laplacian (Davidson), EPS with shift-and-invert (a factorisation of K - sigma), or inverse iteration", NULL, solvers, 3, solvers[is], &is, &solver_set));
+  PetscCall(CSOptionsInt("-spin_iterations", "Inverse iteration steps", NULL, s->inverse_its, &s->inverse_its, NULL));
   PetscCall(PetscOptionsBool("-spin_keep_inverse_factor", "Inverse iteration: keep the first factorisation as preconditioner for later solves", NULL, s->keep_factor, &s->keep_factor, NULL));
-  PetscCall(PetscOptionsReal("-spin_shift", "Shift toward 0 (negative target), in units of the unit sphere's spectrum", NULL, s->target, &s->target, &s->target_set));
-  PetscCall(PetscOptionsReal("-spin_lap_shift", "-spin_solver precond: the mass shift c of L + c M, in units of 4 pi / area", NULL, s->lap_shift, &s->lap_shift, NULL));
+  PetscCall(CSOptionsReal("-spin_shift", "Shift toward 0 (negative target), in units of the unit sphere's spectrum", NULL, s->target, &s->target, &s->target_set));
+  PetscCall(CSOptionsReal("-spin_lap_shift", "-spin_solver precond: the mass shift c of L + c M, in units of 4 pi / area", NULL, s->lap_shift, &s->lap_shift, NULL));
   PetscCall(PetscOptionsBool("-spin_pin_vertex", "Fix the translation by pinning the first vertex instead of matching the mean", NULL, s->pin, &s->pin, NULL));
-  PetscCall(PetscOptionsEList("-spin_boundary", "Boundary condition (Sec. 5.7): none (free), keep tangents, tangents from -spin_boundary_file, or from -spin_target_mesh", NULL, bnames, 4, bnames[ib], &ib, NULL));
+  PetscCall(CSOptionsEList("-spin_boundary", "Boundary condition (Sec. 5.7): none (free), keep tangents, tangents from -spin_boundary_file, or from -spin_target_mesh", NULL, bnames, 4, bnames[ib], &ib, NULL));
   PetscOptionsEnd();
   s->generalized = (PetscBool)(ip == 1);
   s->shell       = (PetscBool)(it == 1);

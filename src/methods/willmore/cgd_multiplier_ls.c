@@ -10,12 +10,13 @@
    At CGD's fixed point (c = 0, r = 0: the constrained Euler-Lagrange equation, soliman2021 Theorem 3.2) the
    projection is skipped and dmu = 0, so the fixed points, hence the converged answers, are unchanged. */
 #include "willmore_impl.h"
+#include "cs_util.h"
 
 PetscErrorCode CSWFMultiplierLSOptions(CSWillmoreFlow F, PetscOptionItems *PetscOptionsObject)
 {
   PetscFunctionBeginUser;
-  PetscCall(PetscOptionsInt("-multiplier_ls_every", "CGD: every this many iterations restore the constraints by a Gauss-Newton projection and replace the multipliers by their least-squares estimate argmin |g + X^T mu|_{H^-1} (0: never; docs/boundary_twist.md)", NULL, F->mu_ls_every, &F->mu_ls_every, NULL));
-  PetscCall(PetscOptionsReal("-multiplier_ls_t_mu", "CGD: t_mu (with t = 1) of the projection and of the least-squares multiplier solve; large enough that t_mu s^2 / lambda_H >> 1 for the smallest singular value s of X", NULL, F->mu_ls_tmu, &F->mu_ls_tmu, NULL));
+  PetscCall(CSOptionsInt("-multiplier_ls_every", "CGD: every this many iterations restore the constraints by a Gauss-Newton projection and replace the multipliers by their least-squares estimate argmin |g + X^T mu|_{H^-1} (0: never; docs/boundary_twist.md)", NULL, F->mu_ls_every, &F->mu_ls_every, NULL));
+  PetscCall(CSOptionsReal("-multiplier_ls_t_mu", "CGD: t_mu (with t = 1) of the projection and of the least-squares multiplier solve; large enough that t_mu s^2 / lambda_H >> 1 for the smallest singular value s of X", NULL, F->mu_ls_tmu, &F->mu_ls_tmu, NULL));
   PetscCheck(F->mu_ls_every >= 0, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%smultiplier_ls_every %" PetscInt_FMT ": use 0 (off) or a positive iteration count", F->prefix, F->mu_ls_every);
   PetscCheck(F->mu_ls_tmu > 0 && !PetscIsInfOrNanReal(F->mu_ls_tmu), F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%smultiplier_ls_t_mu %g: must be finite and > 0", F->prefix, (double)F->mu_ls_tmu);
   PetscFunctionReturn(0);

@@ -19,6 +19,7 @@
    constraint; closed surfaces only): refused with a message. */
 #include "willmore_impl.h"
 #include "cs_geometry.h"
+#include "cs_util.h"
 
 typedef struct {
   Mat       N, A, Mn; /* normals, the shell Hessian N^T H N, the metric N^T I_H2 N */
@@ -374,10 +375,10 @@ static PetscErrorCode SetUpNewton(CSWillmoreFlow F)
   PetscCall(GetData(F, &d));
   PetscOptionsBegin(F->comm, F->prefix, "Newton flow (-flow_type newton)", NULL);
   PetscCall(PetscOptionsBool("-newton_factored_pc", "Precondition CG with (s M + L_n) M^-1 (s M + L_n) (two 1-ring solves) instead of a factorisation of N^T I_H2 N", NULL, d->factored, &d->factored, NULL));
-  PetscCall(PetscOptionsReal("-newton_relax", "Tangential relaxation toward the graph-harmonic vertex distribution after each accepted step: fraction of the way (0: off)", NULL, d->relax, &d->relax, NULL));
-  PetscCall(PetscOptionsInt("-newton_relax_sweeps", "Solves of the tangential relaxation per accepted step (weights recomputed before each)", NULL, d->relax_sweeps, &d->relax_sweeps, NULL));
+  PetscCall(CSOptionsReal("-newton_relax", "Tangential relaxation toward the graph-harmonic vertex distribution after each accepted step: fraction of the way (0: off)", NULL, d->relax, &d->relax, NULL));
+  PetscCall(CSOptionsInt("-newton_relax_sweeps", "Solves of the tangential relaxation per accepted step (weights recomputed before each)", NULL, d->relax_sweeps, &d->relax_sweeps, NULL));
   PetscCall(PetscOptionsBool("-newton_relax_scaled", "Weight the relaxation's edges by 1/sqrt(face area) (spacing in proportion to the local edge length: raises the smallest angle) instead of 1", NULL, d->relax_scaled, &d->relax_scaled, NULL));
-  PetscCall(PetscOptionsInt("-newton_reuse_its", "Keep the factored metric preconditioner of an earlier iteration while CG needed at most this many iterations (0: refactor every iteration)", NULL, d->reuse_its, &d->reuse_its, NULL));
+  PetscCall(CSOptionsInt("-newton_reuse_its", "Keep the factored metric preconditioner of an earlier iteration while CG needed at most this many iterations (0: refactor every iteration)", NULL, d->reuse_its, &d->reuse_its, NULL));
   PetscOptionsEnd();
   PetscCheck(d->relax >= 0 && d->relax <= 1, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%snewton_relax %g: must lie in [0, 1]", p, (double)d->relax);
   PetscCheck(d->relax_sweeps >= 1, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%snewton_relax_sweeps %" PetscInt_FMT ": must be >= 1", p, d->relax_sweeps);

@@ -10,6 +10,7 @@
 #include "willmore_impl.h"
 #include <petscblaslapack.h>
 #include "cs_substructured_cholesky.h"
+#include "cs_util.h"
 
 /* The defaults of the outer KSP, before KSPSetFromOptions. */
 static PetscErrorCode SetDefaultSolver(CSSaddle *s)
@@ -264,8 +265,8 @@ static PetscErrorCode ReadSchurOptions(CSSaddle *s)
   PetscFunctionBeginUser;
   if (!s->edges || s->monolithic) PetscFunctionReturn(0);
   PetscOptionsBegin(s->mesh->comm, s->prefix, "Saddle solve of the CGD/PGD step", NULL);
-  PetscCall(PetscOptionsEnum("-schur_solver", "Solver of the Schur complement: direct factorisation, or iterative in the primal or the multiplier space (docs/scaling.md)", NULL, CSSchurSolveTypes, (PetscEnum)s->schur, (PetscEnum *)&s->schur, NULL));
-  PetscCall(PetscOptionsReal("-schur_rtol", "Relative tolerance of the iterative Schur solve", NULL, s->schur_rtol, &s->schur_rtol, NULL));
+  PetscCall(CSOptionsEnum("-schur_solver", "Solver of the Schur complement: direct factorisation, or iterative in the primal or the multiplier space (docs/scaling.md)", NULL, CSSchurSolveTypes, (PetscEnum)s->schur, (PetscEnum *)&s->schur, NULL));
+  PetscCall(CSOptionsReal("-schur_rtol", "Relative tolerance of the iterative Schur solve", NULL, s->schur_rtol, &s->schur_rtol, NULL));
   PetscOptionsEnd();
   /* a kept BDDC (built for an earlier S) preconditions the current S badly: level 3 on 4 ranks, 8-9 CG iterations
      in the first step, 41-64 in the second, 147-220 in the third (docs/scaling.md); rebuilt every step unless the

@@ -2,6 +2,7 @@
    -flow_rtol tests, the stationarity test (reason CONVERGED_STATIONARY) and the kept best state (-flow_keep_best). */
 #include "willmore_impl.h"
 #include "cs_linalg.h"
+#include "cs_util.h"
 
 const char *const CSFlowELNormTypes[]   = {"scaled", "absolute", "CSFlowELNormType", "CS_FLOW_EL_NORM_", NULL};
 const char *const CSFlowKeepBestTypes[] = {"none", "guard", "all", "CSFlowKeepBestType", "CS_FLOW_KEEP_BEST_", NULL};
@@ -10,14 +11,14 @@ PetscErrorCode CSWFStopOptions(CSWillmoreFlow F, PetscOptionItems *PetscOptionsO
 {
   PetscBool set;
   PetscFunctionBeginUser;
-  PetscCall(PetscOptionsEnum("-el_norm", "What -rtol tests: the scale-free residual el_residual_scaled = el_residual sqrt(A) / max(|E|, 1e-3 |E_input|) (scaled), or el_residual itself (absolute)", NULL, CSFlowELNormTypes, (PetscEnum)F->el_norm, (PetscEnum *)&F->el_norm, &F->el_norm_set));
-  PetscCall(PetscOptionsInt("-stationary_window", "Stop as converged (stop_reason stationary) when over this many accepted steps W changed by at most -stationary_rtol (relative) and the vertices moved by at most -stationary_xtol mean edge lengths in total, with the violation below -ctol (0: off)", NULL, F->stat_window, &F->stat_window, NULL));
-  PetscCall(PetscOptionsReal("-stationary_rtol", "Stationarity: largest relative spread (max - min) / |W| of W over the window", NULL, F->stat_rtol, &F->stat_rtol, NULL));
-  PetscCall(PetscOptionsInt("-drift_window", "Stop (stop_reason drift, not converged) when over this many accepted steps W changed by at most -drift_wtol (relative, per step) while el_residual_scaled rose to -drift_rise times its smallest value of the run, the violation below -ctol (0: off)", NULL, F->drift_window, &F->drift_window, NULL));
-  PetscCall(PetscOptionsReal("-drift_wtol", "Drift: largest relative change of W per step over the window", NULL, F->drift_wtol, &F->drift_wtol, NULL));
-  PetscCall(PetscOptionsReal("-drift_rise", "Drift: el_residual_scaled at least this many times its smallest value of the run", NULL, F->drift_rise, &F->drift_rise, NULL));
-  PetscCall(PetscOptionsReal("-stationary_xtol", "Stationarity: largest sum over the window of the steps' largest vertex displacements, in mean edge lengths", NULL, F->stat_xtol, &F->stat_xtol, NULL));
-  PetscCall(PetscOptionsEnum("-keep_best", "Keep the state of smallest el_residual_scaled with the violation <= -ctol, and return it (-o, the summary) at the resolution guard's stops (guard), at every non-converged stop (all), or never (none)", NULL, CSFlowKeepBestTypes, (PetscEnum)F->keep_best, (PetscEnum *)&F->keep_best, &set));
+  PetscCall(CSOptionsEnum("-el_norm", "What -rtol tests: the scale-free residual el_residual_scaled = el_residual sqrt(A) / max(|E|, 1e-3 |E_input|) (scaled), or el_residual itself (absolute)", NULL, CSFlowELNormTypes, (PetscEnum)F->el_norm, (PetscEnum *)&F->el_norm, &F->el_norm_set));
+  PetscCall(CSOptionsInt("-stationary_window", "Stop as converged (stop_reason stationary) when over this many accepted steps W changed by at most -stationary_rtol (relative) and the vertices moved by at most -stationary_xtol mean edge lengths in total, with the violation below -ctol (0: off)", NULL, F->stat_window, &F->stat_window, NULL));
+  PetscCall(CSOptionsReal("-stationary_rtol", "Stationarity: largest relative spread (max - min) / |W| of W over the window", NULL, F->stat_rtol, &F->stat_rtol, NULL));
+  PetscCall(CSOptionsInt("-drift_window", "Stop (stop_reason drift, not converged) when over this many accepted steps W changed by at most -drift_wtol (relative, per step) while el_residual_scaled rose to -drift_rise times its smallest value of the run, the violation below -ctol (0: off)", NULL, F->drift_window, &F->drift_window, NULL));
+  PetscCall(CSOptionsReal("-drift_wtol", "Drift: largest relative change of W per step over the window", NULL, F->drift_wtol, &F->drift_wtol, NULL));
+  PetscCall(CSOptionsReal("-drift_rise", "Drift: el_residual_scaled at least this many times its smallest value of the run", NULL, F->drift_rise, &F->drift_rise, NULL));
+  PetscCall(CSOptionsReal("-stationary_xtol", "Stationarity: largest sum over the window of the steps' largest vertex displacements, in mean edge lengths", NULL, F->stat_xtol, &F->stat_xtol, NULL));
+  PetscCall(CSOptionsEnum("-keep_best", "Keep the state of smallest el_residual_scaled with the violation <= -ctol, and return it (-o, the summary) at the resolution guard's stops (guard), at every non-converged stop (all), or never (none)", NULL, CSFlowKeepBestTypes, (PetscEnum)F->keep_best, (PetscEnum *)&F->keep_best, &set));
   /* a triangle field's state is more than (x, mu, nu): its continuation and spinor data are not kept */
   PetscCheck(!set || F->keep_best == CS_FLOW_KEEP_BEST_NONE || !F->ops.setup_problem, F->comm, PETSC_ERR_SUP, "-%skeep_best %s: not available for -%stype %s (its spin continuation and spinor state are not kept); use -%skeep_best none", F->prefix, CSFlowKeepBestTypes[F->keep_best], F->prefix, F->type, F->prefix);
   if (F->ops.setup_problem) F->keep_best = CS_FLOW_KEEP_BEST_NONE;

@@ -9,6 +9,7 @@
    -flow_variables spinor: the same kind over x = (u, psi), omega = S_c(u, psi) (App. C.2/C.3, trianglefield_spinor.c). */
 #include "trianglefield_impl.h"
 #include "cs_quaternion.h"
+#include "cs_util.h"
 
 static PetscReal HashUniform(PetscInt seed, PetscInt e, PetscInt s, PetscInt c);
 static PetscErrorCode SetUpTriangleFieldSpinor(CSWillmoreFlow F, CSTriangleField *d);
@@ -158,24 +159,24 @@ static PetscErrorCode SetFromOptionsTF(CSWillmoreFlow F)
   CSTriangleField *d = (CSTriangleField *)F->data;
   PetscFunctionBeginUser;
   PetscOptionsBegin(F->comm, F->prefix, "Triangle-field flow (soliman2021 Algorithm 2)", NULL);
-  PetscCall(PetscOptionsEnum("-init", "Initial triangle field: df of the input, df plus a random field, S(l0, psi) with randomly rotated face spinors (App. C.2), or d(f + u) for a smooth random displacement u (plane waves)", NULL, CSTriangleFieldInits, (PetscEnum)d->init, (PetscEnum *)&d->init, NULL));
+  PetscCall(CSOptionsEnum("-init", "Initial triangle field: df of the input, df plus a random field, S(l0, psi) with randomly rotated face spinors (App. C.2), or d(f + u) for a smooth random displacement u (plane waves)", NULL, CSTriangleFieldInits, (PetscEnum)d->init, (PetscEnum *)&d->init, NULL));
   {
     PetscInt v = d->spinor;
-    PetscCall(PetscOptionsEList("-variables", "Variables of the flow: the triangle field omega, or (u, psi) with omega = S_c(u, psi) (soliman2021 App. C.2)", NULL, CSTriangleFieldVariables, 2, CSTriangleFieldVariables[v], &v, NULL));
+    PetscCall(CSOptionsEList("-variables", "Variables of the flow: the triangle field omega, or (u, psi) with omega = S_c(u, psi) (soliman2021 App. C.2)", NULL, CSTriangleFieldVariables, 2, CSTriangleFieldVariables[v], &v, NULL));
     d->spinor = (PetscBool)(v == 1);
   }
   /* the spinor variables mix units (u dimensionless, psi ~ length^1/2): no power of the area makes their residual
      scale-free, so -flow_rtol tests it as it is unless -flow_el_norm is given (docs/willmore_flow.md "Stopping") */
   if (d->spinor && !F->el_norm_set) F->el_norm = CS_FLOW_EL_NORM_ABSOLUTE;
-  PetscCall(PetscOptionsReal("-scale_gauge_weight", "-flow_variables spinor: multiplier metric of the scale gauge row mean(u) = const, relative to its |row|^2; 0: no gauge row", NULL, d->wgauge, &d->wgauge, NULL));
-  PetscCall(PetscOptionsReal("-spinor_metric_shift", "-flow_variables spinor: add this times the mean psi diagonal of J^T I_H1 J to the whole metric (0: none)", NULL, d->mshift, &d->mshift, NULL));
-  PetscCall(PetscOptionsInt("-seed", "Seed of -flow_init random, random_spinor and smooth", NULL, d->seed, &d->seed, NULL));
-  PetscCall(PetscOptionsReal("-immersion_tol", "-o writes the Poisson reconstruction of omega only when its integrability violation is at most this (else it is no immersion of omega)", NULL, F->immersion_tol, &F->immersion_tol, NULL));
-  PetscCall(PetscOptionsReal("-init_amplitude", "-flow_init random: each halfedge vector gets a uniform random vector in [-a, a]^3 times the mean edge length; random_spinor: each face rotated by up to a pi; smooth: the largest vertex displacement is a times the mean edge length", NULL, d->amp, &d->amp, NULL));
-  PetscCall(PetscOptionsInt("-init_modes", "-flow_init smooth: number of random plane waves (wavelength the input's bounding-box diagonal) in the displacement", NULL, d->modes, &d->modes, NULL));
-  PetscCall(PetscOptionsReal("-spin_weight", "Weight of the spin Dirichlet energy E_tau(psi(omega)) added to W~ (soliman2021 App. C.3); 0: none", NULL, d->wspin, &d->wspin, NULL));
-  PetscCall(PetscOptionsReal("-restore_near_ceiling", "Project an accepted omega back onto its rows (Gauss-Newton, I_H1 metric) when its violation exceeds this times -flow_vmax (0: only -flow_restore_above / -flow_restore_stalled)", NULL, d->restore_near, &d->restore_near, NULL));
-  PetscCall(PetscOptionsReal("-integrability_weight", "Multiplier metric of the integrability rows (d1 omega, face closure, <<Y_i|omega>>) relative to their size; small = stiff", NULL, d->wint, &d->wint, NULL));
+  PetscCall(CSOptionsReal("-scale_gauge_weight", "-flow_variables spinor: multiplier metric of the scale gauge row mean(u) = const, relative to its |row|^2; 0: no gauge row", NULL, d->wgauge, &d->wgauge, NULL));
+  PetscCall(CSOptionsReal("-spinor_metric_shift", "-flow_variables spinor: add this times the mean psi diagonal of J^T I_H1 J to the whole metric (0: none)", NULL, d->mshift, &d->mshift, NULL));
+  PetscCall(CSOptionsInt("-seed", "Seed of -flow_init random, random_spinor and smooth", NULL, d->seed, &d->seed, NULL));
+  PetscCall(CSOptionsReal("-immersion_tol", "-o writes the Poisson reconstruction of omega only when its integrability violation is at most this (else it is no immersion of omega)", NULL, F->immersion_tol, &F->immersion_tol, NULL));
+  PetscCall(CSOptionsReal("-init_amplitude", "-flow_init random: each halfedge vector gets a uniform random vector in [-a, a]^3 times the mean edge length; random_spinor: each face rotated by up to a pi; smooth: the largest vertex displacement is a times the mean edge length", NULL, d->amp, &d->amp, NULL));
+  PetscCall(CSOptionsInt("-init_modes", "-flow_init smooth: number of random plane waves (wavelength the input's bounding-box diagonal) in the displacement", NULL, d->modes, &d->modes, NULL));
+  PetscCall(CSOptionsReal("-spin_weight", "Weight of the spin Dirichlet energy E_tau(psi(omega)) added to W~ (soliman2021 App. C.3); 0: none", NULL, d->wspin, &d->wspin, NULL));
+  PetscCall(CSOptionsReal("-restore_near_ceiling", "Project an accepted omega back onto its rows (Gauss-Newton, I_H1 metric) when its violation exceeds this times -flow_vmax (0: only -flow_restore_above / -flow_restore_stalled)", NULL, d->restore_near, &d->restore_near, NULL));
+  PetscCall(CSOptionsReal("-integrability_weight", "Multiplier metric of the integrability rows (d1 omega, face closure, <<Y_i|omega>>) relative to their size; small = stiff", NULL, d->wint, &d->wint, NULL));
   PetscOptionsEnd();
   PetscCall(CSTFScheduleSetFromOptions(F, d));
   PetscCall(CSTFContinuationSetFromOptions(F, d));

@@ -8,17 +8,18 @@
    The step filter compares the Lagrangian at the current state with the trial state under the same w, so a change
    of w between two steps needs no reset: the state is re-evaluated with the new w before the next step. */
 #include "trianglefield_impl.h"
+#include "cs_util.h"
 
 PetscErrorCode CSTFContinuationSetFromOptions(CSWillmoreFlow F, CSTriangleField *d)
 {
   const char *p = F->prefix;
   PetscFunctionBeginUser;
   PetscOptionsBegin(F->comm, F->prefix, "Triangle-field spin-weight continuation (soliman2021 App. C.3)", NULL);
-  PetscCall(PetscOptionsReal("-spin_weight_decay", "Factor applied to -flow_spin_weight each time a stage converges (1: no continuation)", NULL, d->wdecay, &d->wdecay, NULL));
-  PetscCall(PetscOptionsReal("-spin_weight_min", "Below this the spin weight is set to 0 (the last stage is W alone)", NULL, d->wspin_min, &d->wspin_min, NULL));
-  PetscCall(PetscOptionsReal("-spin_stage_rtol", "el_residual at which a stage of the continuation is converged", NULL, d->stage_rtol, &d->stage_rtol, NULL));
-  PetscCall(PetscOptionsReal("-spin_stage_ctol", "Row violation below which a stage of the continuation may end", NULL, d->stage_ctol, &d->stage_ctol, NULL));
-  PetscCall(PetscOptionsInt("-spin_stage_max_it", "Iterations after which a stage ends even if not converged (0: no limit)", NULL, d->stage_maxit, &d->stage_maxit, NULL));
+  PetscCall(CSOptionsReal("-spin_weight_decay", "Factor applied to -flow_spin_weight each time a stage converges (1: no continuation)", NULL, d->wdecay, &d->wdecay, NULL));
+  PetscCall(CSOptionsReal("-spin_weight_min", "Below this the spin weight is set to 0 (the last stage is W alone)", NULL, d->wspin_min, &d->wspin_min, NULL));
+  PetscCall(CSOptionsReal("-spin_stage_rtol", "el_residual at which a stage of the continuation is converged", NULL, d->stage_rtol, &d->stage_rtol, NULL));
+  PetscCall(CSOptionsReal("-spin_stage_ctol", "Row violation below which a stage of the continuation may end", NULL, d->stage_ctol, &d->stage_ctol, NULL));
+  PetscCall(CSOptionsInt("-spin_stage_max_it", "Iterations after which a stage ends even if not converged (0: no limit)", NULL, d->stage_maxit, &d->stage_maxit, NULL));
   PetscOptionsEnd();
   PetscCheck(d->wdecay > 0 && d->wdecay <= 1, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sspin_weight_decay %g: must be in (0, 1]", p, (double)d->wdecay);
   PetscCheck(d->wspin_min >= 0 && !PetscIsInfOrNanReal(d->wspin_min), F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sspin_weight_min %g: must be >= 0", p, (double)d->wspin_min);
