@@ -19,6 +19,10 @@
 #   NP=1           MPI ranks (mpirun -n NP when > 1)
 #   TIMEOUT=900    seconds per mesh
 #   EXTRA=""       further options appended to the flow command line
+#   REMESH=6000    each mesh also flowed after -mesh_remesh REMESH (CGAL isotropic remeshing, docs/remeshing.md); 0: raw only
+# Per mesh and variant (raw, remeshed) a row with the input's triangle quality (min angle, obtuse share,
+# non-Delaunay share), the rejected steps, el_residual_scaled and the stop reason, and a picture of the result beside
+# its input (scripts/render_mesh.py: <variant>.png in the mesh's folder; faces coloured by their area change).
 # Usage:
 #   bash runs/study_real_meshes.sh                                  # everything (the big meshes take long)
 #   MESHES="eight_cgal knot1_cgal" MAXIT=20 bash runs/study_real_meshes.sh   # quick check
@@ -26,7 +30,7 @@
 set -u
 cd "$(dirname "$0")/.."
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-MAXIT=${MAXIT:-150}; MESHES=${MESHES:-}; NP=${NP:-1}; TIMEOUT=${TIMEOUT:-900}; EXTRA=${EXTRA:-}
+MAXIT=${MAXIT:-150}; MESHES=${MESHES:-}; NP=${NP:-1}; TIMEOUT=${TIMEOUT:-900}; EXTRA=${EXTRA:-}; REMESH=${REMESH:-6000}
 SHARED=${CS_SHARED:-../shared}/meshes
 BIN=$PWD/bin/confsurf
 res=runs/results; dir=$res/real_meshes; md=$res/real_meshes.md; csv=$res/real_meshes.csv
@@ -73,48 +77,65 @@ git diff --quiet HEAD -- src include 2>/dev/null || commit="$commit + uncommitte
   echo "$(date -u '+%Y-%m-%d %H:%M UTC'), commit $commit, MAXIT=$MAXIT, NP=$NP, EXTRA=\"$EXTRA\", TIMEOUT=$TIMEOUT s, host $(hostname) ($(nproc) cores)."
   echo "W before: energy_initial of the flow summary (else willmore of an info run on the input); q against the input."
   echo
-  echo "| mesh | V | F | genus | iterations | W before | W after | conformal violation | EL residual | q_mean | q_max | seconds | stop reason | degeneration | converged |"
-  echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
+  echo "| mesh | variant | V | F | genus | min angle | obtuse | non-Delaunay | iterations | rejections | W before | W after | conformal violation | EL scaled | q_max | seconds | stop reason | converged |"
+  echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
 } > "$md"
-echo "mesh,V,F,genus,iterations,W_before,W_after,conformal_violation,el_residual,q_mean,q_max,seconds,stop_reason,degeneration,converged" > "$csv"
+echo "mesh,variant,V,F,genus,min_angle_deg,obtuse_share,nondelaunay_share,iterations,rejections,W_before,W_after,conformal_violation,el_residual_scaled,q_max,seconds,stop_reason,converged" > "$csv"
 
-for f in "${closed[@]+"${closed[@]}"}"; do
-  b=$(basename "$f"); name=${b%.*}; d=$dir/$name
-  rm -f "$d/summary.json" "$d/history.csv" "$d/out.obj"
-  echo "== $b (flow, MAXIT=$MAXIT, NP=$NP)"
-  t0=$(date +%s.%N); rc=0
-  timeout -k 30 "$TIMEOUT" "${launch[@]+"${launch[@]}"}" "$BIN" -task flow -mesh "$f" -flow_max_it "$MAXIT" -reference "$f" \
-    -summary "$d/summary.json" -history_csv "$d/history.csv" -o "$d/out.obj" $EXTRA > "$d/log" 2>&1 || rc=$?
+# One flow of mesh $1 in folder $2 as variant $3 (raw | remeshed), with the input options $4...: the input as the flow
+# sees it (-o_input), its info (quality), the flow, a row, a picture.
+run_variant() {
+  local f=$1 d=$2 variant=$3; shift 3
+  local b; b=$(basename "$f")
+  rm -f "$d/$variant".{json,csv,obj,log,png} "$d/${variant}_input.obj" "$d/${variant}_info.json"
+  "$BIN" -task info -mesh "$f" "$@" -o_input "$d/${variant}_input.obj" -summary "$d/${variant}_info.json" > /dev/null 2>&1 || { echo "   $variant: the info run failed"; return 0; }
+  echo "== $b $variant (flow, MAXIT=$MAXIT, NP=$NP)"
+  local t0 rc=0 el; t0=$(date +%s.%N)
+  timeout -k 30 "$TIMEOUT" "${launch[@]+"${launch[@]}"}" "$BIN" -task flow -mesh "$d/${variant}_input.obj" -flow_max_it "$MAXIT" \
+    -reference "$d/${variant}_input.obj" -summary "$d/$variant.json" -history_csv "$d/$variant.csv" -o "$d/$variant.obj" $EXTRA > "$d/$variant.log" 2>&1 || rc=$?
   el=$(echo "$(date +%s.%N) - $t0" | bc)
-  [ "$rc" = 0 ] || { echo "   exit $rc"; tail -3 "$d/log"; }
-  python3 - "$b" "$d" "$rc" "$el" "$md" "$csv" <<'PY'
+  [ "$rc" = 0 ] || { echo "   exit $rc"; tail -3 "$d/$variant.log"; }
+  python3 - "$b" "$d" "$variant" "$rc" "$el" "$md" "$csv" <<'PY'
 import csv, json, os, sys
-b, d, rc, el, md, cf = sys.argv[1], sys.argv[2], int(sys.argv[3]), float(sys.argv[4]), sys.argv[5], sys.argv[6]
-info = json.load(open(d + '/info.json'))
-s = json.load(open(d + '/summary.json')) if rc == 0 and os.path.exists(d + '/summary.json') else {}
+b, d, variant, rc, el, md, cf = sys.argv[1], sys.argv[2], sys.argv[3], int(sys.argv[4]), float(sys.argv[5]), sys.argv[6], sys.argv[7]
+info = json.load(open('%s/%s_info.json' % (d, variant)))
+sp = '%s/%s.json' % (d, variant)
+s = json.load(open(sp)) if rc == 0 and os.path.exists(sp) else {}
 if not s:  # timed out or failed: what the history has
-    h = list(csv.DictReader(open(d + '/history.csv'))) if os.path.exists(d + '/history.csv') else []
+    hp = '%s/%s.csv' % (d, variant)
+    h = list(csv.DictReader(open(hp))) if os.path.exists(hp) else []
     if h:
         last = h[-1]
-        s = {'iterations': int(last['it']), 'energy': float(last['energy']),
-             'conformal_violation': float(last['conformal_violation']), 'el_residual': float(last['el_residual'])}
+        s = {'iterations': int(last['it']), 'energy': float(last['energy']), 'rejections': int(float(last['rejections'])),
+             'conformal_violation': float(last['conformal_violation']), 'el_residual_scaled': float(last.get('el_residual_scaled', 'nan'))}
     s['seconds'] = el
     s['stop_reason'] = 'timeout' if rc in (124, 137) else 'failed (exit %d)' % rc
     s['converged'] = False
 w0 = s.get('energy_initial', info['willmore'])
-def g(k, fmt):
-    v = s.get(k)
-    return '-' if v is None else fmt % v
-row = [b[:b.rfind('.')], str(info['vertices']), str(info['faces']), str(info['genus']), g('iterations', '%d'),
-       '%.6g' % w0, g('energy', '%.6g'), g('conformal_violation', '%.2e'), g('el_residual', '%.2e'),
-       g('q_mean', '%.4f'), g('q_max', '%.4f'), g('seconds', '%.1f'), str(s.get('stop_reason', '-')),
-       str(s.get('degeneration', '-')), 'yes' if s.get('converged') in (True, 1, 'true') else 'no']
+def g(src, k, fmt, scale=1):
+    v = src.get(k)
+    return '-' if v is None else fmt % (v * scale)
+row = [b[:b.rfind('.')], variant, str(info['vertices']), str(info['faces']), str(info['genus']),
+       g(info, 'quality_min_angle_deg', '%.2f'), g(info, 'quality_obtuse_share', '%.1f %%', 100),
+       g(info, 'quality_nondelaunay_share', '%.2f %%', 100), g(s, 'iterations', '%d'), g(s, 'rejections', '%d'),
+       '%.6g' % w0, g(s, 'energy', '%.6g'), g(s, 'conformal_violation', '%.2e'), g(s, 'el_residual_scaled', '%.2e'),
+       g(s, 'q_max', '%.4f'), g(s, 'seconds', '%.1f'), str(s.get('stop_reason', '-')),
+       'yes' if s.get('converged') in (True, 1, 'true') else 'no']
 with open(md, 'a') as fh: fh.write('| ' + ' | '.join(row) + ' |\n')
 with open(cf, 'a', newline='') as fh: csv.writer(fh).writerow(row)
 print('   ' + ' | '.join(row))
 PY
+  if [ -f "$d/$variant.obj" ]; then
+    /usr/bin/python3 scripts/render_mesh.py "$d/$variant.png" "$d/${variant}_input.obj" "$d/${variant}_input.obj" "$d/$variant.obj" --views 2 --title "$b $variant" > /dev/null 2>&1 || echo "   (no picture)"
+  fi
+}
+
+for f in "${closed[@]+"${closed[@]}"}"; do
+  b=$(basename "$f"); name=${b%.*}; d=$dir/$name
+  run_variant "$f" "$d" raw
+  [ "$REMESH" -gt 0 ] && run_variant "$f" "$d" remeshed -mesh_remesh "$REMESH"
 done
 if [ "${#skipped[@]}" -gt 0 ]; then
   { echo; echo "Skipped:"; for s in "${skipped[@]}"; do echo "- $s"; done; } >> "$md"
 fi
-echo "wrote $md and $csv"
+echo "wrote $md and $csv; pictures: $dir/<mesh>/{raw,remeshed}.png"
