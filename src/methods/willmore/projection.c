@@ -58,15 +58,18 @@ PetscErrorCode CSWFProject(CSWillmoreFlow F, Vec x, PetscBool *ok, PetscInt *ksp
 PetscErrorCode CSWFRestore(CSWillmoreFlow F, PetscInt *kspits)
 {
   PetscReal conf, glob, v;
-  PetscBool ok, stalled;
+  PetscBool ok, stalled, predicted;
   Vec       keep;
   PetscFunctionBeginUser;
-  stalled = (PetscBool)(F->restore_stalled && F->t < 1e-3 * F->tmax);
-  if (F->restore_failed || (!stalled && !(F->vrestore > 0))) PetscFunctionReturn(0);
+  stalled   = (PetscBool)(F->restore_stalled && F->t < 1e-3 * F->tmax);
+  predicted = (PetscBool)(F->restore_stalled && F->step_model == CS_WF_STEP_PREDICTIVE);
+  if (F->restore_failed || (!stalled && !predicted && !(F->vrestore > 0))) PetscFunctionReturn(0);
   PetscCall(CSWFEvalConstraints(F, F->x, F->ct, F->cxt, PETSC_FALSE));
   PetscCall(CSWFViolation(F, F->ct, F->cxt, &conf, &glob));
   v = PetscMax(conf, glob);
-  if (!((F->vrestore > 0 && v > F->vrestore) || (stalled && v > 0.1 * F->vmax))) PetscFunctionReturn(0);
+  /* predicted: the step model says the step just taken, taken again, would cross the ceiling (step_model.c) */
+  if (predicted) predicted = CSWFStepModelNearCeiling(F, v);
+  if (!((F->vrestore > 0 && v > F->vrestore) || (stalled && v > 0.1 * F->vmax) || predicted)) PetscFunctionReturn(0);
   PetscCall(VecDuplicate(F->x, &keep));
   PetscCall(VecCopy(F->x, keep));
   PetscCall(CSWFProject(F, F->x, &ok, kspits));

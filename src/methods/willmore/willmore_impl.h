@@ -67,6 +67,19 @@ PETSC_INTERN PetscErrorCode CSSaddleDestroy(CSSaddle *s);
 PETSC_INTERN PetscErrorCode CSSaddleGetGuess(CSSaddle *s, PetscInt j, Vec E, Vec V);
 PETSC_INTERN PetscErrorCode CSSaddleSetGuess(CSSaddle *s, PetscInt j, Vec E, Vec V);
 
+/* ---- the step size model (step_model.c) ---- */
+typedef enum { CS_WF_STEP_PREDICTIVE, CS_WF_STEP_HALVING } CSWFStepModel;
+PETSC_INTERN const char *const CSWFStepModels[];
+#define CS_WF_REJECT_CEILING    1 /* the filter's criteria that rejected a trial */
+#define CS_WF_REJECT_LAGRANGIAN 2
+typedef struct {
+  PetscInt  it, n;       /* the iteration of the trials recorded, and how many so far */
+  PetscInt  why;         /* CS_WF_REJECT_* bits of the last trial (0: accepted) */
+  PetscReal t, v0, vt;   /* its step, the violation of x and of the trial point (after the corrections) */
+  PetscReal dL, slope;   /* L(t) - L0 and the slope <df, H df>/t (Lagrangian rejections only) */
+  PetscReal t1, d1;      /* the trial before it at this x: step and v(t1) - v0 */
+} CSWFTrialRecord;
+
 /* ---- the flow kind: a strategy struct (cgd.c, pgd.c, gd.c) ---- */
 struct _CSWillmoreFlowOps {
   PetscInt  id;             /* stored in checkpoints (a resume must use the same kind) */
@@ -163,6 +176,9 @@ struct _p_CSWillmoreFlow {
   PetscInt              max_it, max_rej, proj_max_it, soc_max_it;
   PetscReal             max_seconds; /* wall-time budget (0: none); its stop is reported as DIVERGED_MAX_IT */
   PetscBool             step_control;
+  CSWFStepModel         step_model;        /* -step_model: the predictive t or halving (step_model.c) */
+  CSWFTrialRecord       trial;             /* the filter's measurements of the trials (step_model.c) */
+  PetscReal             step_tacc, step_dacc; /* the step model: t and the violation added by the last accepted step (checkpointed) */
   PetscReal             proj_tmu;
   PetscReal             tmu_grow, tmu_max; /* own schedule of the dual step (0: t_mu follows t) */
   PetscReal             tmu_ratio_max;     /* following t: t_mu <= this * t (1e3 times the initial t_mu / t) */
@@ -223,6 +239,11 @@ PETSC_INTERN PetscErrorCode CSWFTrialPGD(CSWillmoreFlow F, PetscBool *accept);
 PETSC_INTERN PetscErrorCode CSWFFilterLagrangian(CSWillmoreFlow F, PetscBool *accept);
 PETSC_INTERN PetscErrorCode CSWFFilterEnergy(CSWillmoreFlow F, PetscBool *accept);
 PETSC_INTERN PetscErrorCode CSWFCheckFinite(CSWillmoreFlow F, PetscBool *accept);
+/* step_model.c */
+PETSC_INTERN PetscErrorCode CSWFStepModelRecord(CSWillmoreFlow F, PetscReal v0, PetscReal vt, PetscReal dL, PetscInt why);
+PETSC_INTERN PetscReal      CSWFStepModelShrink(CSWillmoreFlow F);
+PETSC_INTERN PetscErrorCode CSWFStepModelGrow(CSWillmoreFlow F, PetscReal *factor);
+PETSC_INTERN PetscBool      CSWFStepModelNearCeiling(CSWillmoreFlow F, PetscReal v);
 /* projection.c */
 PETSC_INTERN PetscErrorCode CSWFProject(CSWillmoreFlow F, Vec x, PetscBool *ok, PetscInt *kspits);
 PETSC_INTERN PetscErrorCode CSWFRestore(CSWillmoreFlow F, PetscInt *kspits);
@@ -257,7 +278,7 @@ PETSC_INTERN PetscErrorCode CSWFMultiplierLS(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFMultiplierLSRestore(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFAcceptCGD(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFGrowCGD(CSWillmoreFlow F);
-PETSC_INTERN PetscReal      CSWFGrowStep(CSWillmoreFlow F);
+PETSC_INTERN PetscErrorCode CSWFGrowStep(CSWillmoreFlow F, PetscReal *r);
 PETSC_INTERN PetscErrorCode CSWFShrinkCGD(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFGrowPrimal(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFShrinkPrimal(CSWillmoreFlow F);
