@@ -51,6 +51,8 @@ typedef struct {
   PetscReal   schur_rtol; /* -<prefix>schur_rtol of the iterative Schur solve */
   CSMetric   *metric;     /* the flow's (borrowed): its terms build the unassembled S for bddc */
   PetscReal   t;          /* this step's t */
+  PetscReal   t_pc, tmu_pc; /* the t and t_mu of the preconditioner (factorisation) in use */
+  PetscBool   reuse_same_step; /* keep a preconditioner only for the t, t_mu it was built with (the predictive step) */
   Mat         Sis;        /* bddc: S unassembled (MATIS), the user Schur preconditioner */
 } CSSaddle;
 
@@ -246,6 +248,7 @@ PETSC_INTERN PetscErrorCode CSWFStepModelGrow(CSWillmoreFlow F, PetscReal *facto
 PETSC_INTERN PetscBool      CSWFStepModelNearCeiling(CSWillmoreFlow F, PetscReal v);
 /* projection.c */
 PETSC_INTERN PetscErrorCode CSWFProject(CSWillmoreFlow F, Vec x, PetscBool *ok, PetscInt *kspits);
+PETSC_INTERN PetscErrorCode CSWFProjectTo(CSWillmoreFlow F, Vec x, PetscReal vtarget, PetscBool *ok, PetscInt *kspits);
 PETSC_INTERN PetscErrorCode CSWFRestore(CSWillmoreFlow F, PetscInt *kspits);
 /* guards.c */
 PETSC_INTERN PetscErrorCode CSWFMeasureQuality(CSWillmoreFlow F);
