@@ -19,6 +19,7 @@ const char *const CSWFStepModels[] = {"predictive", "halving", "CSWFStepModel", 
 #define STEP_P_MAX      2.0  /* constraint is solved: the fits outside these are noise */
 #define STEP_P_RUN_MIN  0.05 /* the run's p (from step to step): ~0 early, up to 3 measured */
 #define STEP_P_RUN_MAX  4.0
+#define STEP_Q_WEAK     0.5 /* a step leaving more than this part of a violation restores weakly */
 
 /* The filter's measurements of a trial at step t (why: CS_WF_REJECT_* bits of the criteria that rejected it, 0
    when accepted). The trial before it at the same x is kept for the exponent p. */
@@ -88,7 +89,7 @@ PetscReal CSWFStepModelShrink(CSWillmoreFlow F)
 PetscErrorCode CSWFStepModelGrow(CSWillmoreFlow F, PetscReal *factor)
 {
   const CSWFTrialRecord *r = &F->trial;
-  PetscReal              conf, glob, d = r->vt - r->v0, room, p;
+  PetscReal              conf, glob, d = r->vt - r->q * r->v0, room, p; /* the violation the step added: v(t) = q v0 + d */
   PetscFunctionBeginUser;
   *factor = F->grow;
   if (F->step_model != CS_WF_STEP_PREDICTIVE || r->it != F->it || r->t != F->t || r->why) PetscFunctionReturn(0);
@@ -99,15 +100,20 @@ PetscErrorCode CSWFStepModelGrow(CSWillmoreFlow F, PetscReal *factor)
   if (!(d > 0)) PetscFunctionReturn(0); /* the step lowered the violation: t_grow */
   PetscCall(CSWFEvalConstraints(F, F->x, F->ct, F->cxt, PETSC_FALSE));
   PetscCall(CSWFViolation(F, F->ct, F->cxt, &conf, &glob));
-  room    = F->vmax - PetscMax(conf, glob);
+  room    = F->vmax - r->q * PetscMax(conf, glob); /* the next step leaves ~ q of x's violation */
   *factor = room > 0 ? PetscPowReal(STEP_ROOM_GROW * room / d, 1.0 / p) : 1.0;
   if (!(*factor == *factor)) *factor = 1.0;
   *factor = PetscMax(1.0, PetscMin(F->grow, *factor));
+  PetscCall(PetscInfo(NULL, "step model: accepted t = %g, v0 %.3e -> %.3e, restoring ratio q %.3f, added %.3e, p %.2f, v(x) %.3e: factor %.3f\n", (double)F->t, (double)r->v0, (double)r->vt, (double)r->q, (double)d, (double)p, (double)PetscMax(conf, glob), (double)*factor));
   PetscFunctionReturn(0);
 }
 
 /* After an accepted step, x at violation v: true when the step just taken, taken again from x, would cross the
-   ceiling (v + (v(t) - v0) > -vmax) with v above -vmax / 10 (the threshold of a stalled restoration): x is then
+   ceiling with v above -vmax / 10 (the threshold of a stalled restoration). The step's operator leaves the part q
+   of a violation (measured by its first second-order correction, step.c) and adds d = v(t) - q v0, so the same
+   step from x ends at q v + d; a weak restoring (q > 1/2: t t_mu s^2 < lambda_H) lets the violation pile up, while
+   with a strong one the next, larger step (t and t_mu both grow) restores it (the figure-eight: v 8.6e-3 at t = 1,
+   4.1e-3 after the step at t = 2, where a restoration cost 5 solves and the step's progress). x is then
    projected back onto the constraints (projection.c CSWFRestore) instead of t being cut, which would weaken the
    restoring of the next step, t t_mu s^2 / (lambda_H + t t_mu s^2), with t t_mu ~ t^2 once t_mu is capped at
    tmu_ratio_max t. */
@@ -115,5 +121,5 @@ PetscBool CSWFStepModelNearCeiling(CSWillmoreFlow F, PetscReal v)
 {
   const CSWFTrialRecord *r = &F->trial;
   if (F->step_model != CS_WF_STEP_PREDICTIVE || r->it != F->it || r->t != F->t || r->why) return PETSC_FALSE;
-  return (PetscBool)(v > 0.1 * F->vmax && v + (r->vt - r->v0) > F->vmax);
+  return (PetscBool)(v > 0.1 * F->vmax && r->q > STEP_Q_WEAK && r->q * v + (r->vt - r->q * r->v0) > F->vmax);
 }

@@ -80,6 +80,8 @@ typedef struct {
   PetscReal t, v0, vt;   /* its step, the violation of x and of the trial point (after the corrections) */
   PetscReal dL, slope;   /* L(t) - L0 and the slope <df, H df>/t (Lagrangian rejections only) */
   PetscReal t1, d1;      /* the trial before it at this x: step and v(t1) - v0 */
+  PetscReal q;           /* the violation left by the step's first second-order correction, relative (step.c): the
+                            part (1 - t t_mu s^2 / (lambda_H + t t_mu s^2)) of a violation the step's operator leaves */
 } CSWFTrialRecord;
 
 /* ---- the flow kind: a strategy struct (cgd.c, pgd.c, gd.c) ---- */
