@@ -63,28 +63,32 @@ PetscErrorCode CSWFProjectTo(CSWillmoreFlow F, Vec x, PetscReal vtarget, PetscBo
    projection fails the state is left as it was and no restoration is tried again in the run (cow_cgal: it
    fails from |c| = 9e-3). -flow_restore_above 1e-3 helped nowhere (measured, docs/real_meshes.md): on the area +
    volume case of tests/cases/willmore_constraints.sh one restoration at iteration 0 sent the run past the
-   critical point it converges to without. With -flow_step_model predictive a state is also restored when the step
-   just taken, taken again, would cross the ceiling (step_model.c CSWFStepModelNearCeiling), to vmax / 100 only. */
+   critical point it converges to without. With -flow_step_model predictive the step model also restores a state
+   (to vmax / 100) where no next step would stay below the ceiling (step_model.c). */
 PetscErrorCode CSWFRestore(CSWillmoreFlow F, PetscInt *kspits)
 {
   PetscReal conf, glob, v;
-  PetscBool ok, stalled, predicted;
-  Vec       keep;
+  PetscBool stalled;
   PetscFunctionBeginUser;
-  stalled   = (PetscBool)(F->restore_stalled && F->t < 1e-3 * F->tmax);
-  predicted = (PetscBool)(F->restore_stalled && F->step_model == CS_WF_STEP_PREDICTIVE);
-  if (F->restore_failed || (!stalled && !predicted && !(F->vrestore > 0))) PetscFunctionReturn(0);
+  stalled = (PetscBool)(F->restore_stalled && F->t < 1e-3 * F->tmax);
+  if (F->restore_failed || (!stalled && !(F->vrestore > 0))) PetscFunctionReturn(0);
   PetscCall(CSWFEvalConstraints(F, F->x, F->ct, F->cxt, PETSC_FALSE));
   PetscCall(CSWFViolation(F, F->ct, F->cxt, &conf, &glob));
   v = PetscMax(conf, glob);
-  /* predicted: the step model says the step just taken, taken again, would cross the ceiling (step_model.c) */
-  if (predicted) predicted = CSWFStepModelNearCeiling(F, v);
-  if (!((F->vrestore > 0 && v > F->vrestore) || (stalled && v > 0.1 * F->vmax) || predicted)) PetscFunctionReturn(0);
+  if (!((F->vrestore > 0 && v > F->vrestore) || (stalled && v > 0.1 * F->vmax))) PetscFunctionReturn(0);
+  PetscCall(CSWFRestoreTo(F, v, 0.1 * F->ctol, kspits));
+  PetscFunctionReturn(0);
+}
+
+/* The restoration of x (violation v) to vtarget, kept as it was if the projection fails (then never again). */
+PetscErrorCode CSWFRestoreTo(CSWillmoreFlow F, PetscReal v, PetscReal vtarget, PetscInt *kspits)
+{
+  PetscBool ok;
+  Vec       keep;
+  PetscFunctionBeginUser;
   PetscCall(VecDuplicate(F->x, &keep));
   PetscCall(VecCopy(F->x, keep));
-  /* the predicted restoration only makes room below the ceiling: Gauss-Newton squares the violation, so one or
-     two steps reach vmax / 100 (each a factorisation), where the full projection takes two or three more */
-  PetscCall(CSWFProjectTo(F, F->x, predicted && !stalled && !(F->vrestore > 0 && v > F->vrestore) ? 1e-2 * F->vmax : 0.1 * F->ctol, &ok, kspits));
+  PetscCall(CSWFProjectTo(F, F->x, vtarget, &ok, kspits));
   F->saddle.wait = PetscMax(F->saddle.wait, 1); /* else the projection's factorisation preconditions the steps
                                                    in ~8 iterations, under the refactorisation threshold, for good */
   if (!ok) {

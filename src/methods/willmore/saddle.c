@@ -320,18 +320,6 @@ static PetscErrorCode ConfigureKSP(CSSaddle *s, Vec iq, PetscReal tmu, Mat X)
   PetscFunctionReturn(0);
 }
 
-/* With -flow_step_model predictive (reuse_same_step): a factorisation is kept only for the step sizes it was built
-   with, within 5 %. H/t and I_Q/t_mu enter S = H/t + t_mu X^T I_Q^-1 X with weights that change by f and f^2 when
-   t and t_mu change by f: measured on the bumped 7.7k torus, a kept factorisation of t needs 19-20 FGMRES
-   iterations (the cap) at 2 t or t/2 and 3-4 at t, and each such failed attempt also sets the back-off that
-   then refactors steps with an unchanged t. Not an attempt, so no back-off. */
-static PetscBool OtherStep(CSSaddle *s, PetscReal tmu)
-{
-  if (!s->reuse_same_step) return PETSC_FALSE;
-  if (PetscAbsReal(PetscLogReal(s->t / s->t_pc)) > 0.05) return PETSC_TRUE;
-  return (PetscBool)(tmu > 0 && s->tmu_pc > 0 && PetscAbsReal(PetscLogReal(tmu / s->tmu_pc)) > 0.05);
-}
-
 /* A later step: keep the preconditioner or rebuild it. */
 static PetscErrorCode ReuseOrRebuild(CSSaddle *s, Vec iq, PetscReal tmu, Mat X)
 {
@@ -344,7 +332,7 @@ static PetscErrorCode ReuseOrRebuild(CSSaddle *s, Vec iq, PetscReal tmu, Mat X)
   if (s->wait > 0) {
     s->reusing = PETSC_FALSE;
     s->wait--;
-  } else s->reusing = (PetscBool)(s->reuse_its > 0 && s->last_its <= s->reuse_its && !OtherStep(s, tmu));
+  } else s->reusing = (PetscBool)(s->reuse_its > 0 && s->last_its <= s->reuse_its);
   PetscCall(PetscInfo(s->ksp, "saddle: t = %g, t_mu = %g, factorisation of t = %g, t_mu = %g %s\n", (double)s->t, (double)tmu, (double)s->t_pc, (double)s->tmu_pc, s->reusing ? "kept" : "rebuilt"));
   if (!s->reusing) {
     s->t_pc   = s->t;

@@ -5,7 +5,6 @@
 PetscErrorCode CSWFSetOperators(CSWillmoreFlow F, PetscReal t, PetscReal tmu)
 {
   PetscFunctionBeginUser;
-  F->saddle.reuse_same_step = (PetscBool)(F->step_model == CS_WF_STEP_PREDICTIVE); /* saddle.c OtherStep */
   PetscCall(CSSaddleSetOperators(&F->saddle, F->metric.H, t, F->iq, tmu, F->conformal ? F->Xc : NULL, F->rows, F->gw));
   PetscFunctionReturn(0);
 }

@@ -52,7 +52,6 @@ typedef struct {
   CSMetric   *metric;     /* the flow's (borrowed): its terms build the unassembled S for bddc */
   PetscReal   t;          /* this step's t */
   PetscReal   t_pc, tmu_pc; /* the t and t_mu of the preconditioner (factorisation) in use */
-  PetscBool   reuse_same_step; /* keep a preconditioner only for the t, t_mu it was built with (the predictive step) */
   Mat         Sis;        /* bddc: S unassembled (MATIS), the user Schur preconditioner */
 } CSSaddle;
 
@@ -247,11 +246,11 @@ PETSC_INTERN PetscErrorCode CSWFCheckFinite(CSWillmoreFlow F, PetscBool *accept)
 PETSC_INTERN PetscErrorCode CSWFStepModelRecord(CSWillmoreFlow F, PetscReal v0, PetscReal vt, PetscReal dL, PetscInt why);
 PETSC_INTERN PetscReal      CSWFStepModelShrink(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFStepModelGrow(CSWillmoreFlow F, PetscReal *factor);
-PETSC_INTERN PetscBool      CSWFStepModelNearCeiling(CSWillmoreFlow F, PetscReal v);
 /* projection.c */
 PETSC_INTERN PetscErrorCode CSWFProject(CSWillmoreFlow F, Vec x, PetscBool *ok, PetscInt *kspits);
 PETSC_INTERN PetscErrorCode CSWFProjectTo(CSWillmoreFlow F, Vec x, PetscReal vtarget, PetscBool *ok, PetscInt *kspits);
 PETSC_INTERN PetscErrorCode CSWFRestore(CSWillmoreFlow F, PetscInt *kspits);
+PETSC_INTERN PetscErrorCode CSWFRestoreTo(CSWillmoreFlow F, PetscReal v, PetscReal vtarget, PetscInt *kspits);
 /* guards.c */
 PETSC_INTERN PetscErrorCode CSWFMeasureQuality(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFMeasureQualityOf(CSWillmoreFlow F, Vec x0, Vec x);
