@@ -67,7 +67,8 @@ static PetscReal ViolationFactor(CSWillmoreFlow F, PetscReal v0next)
   if (!(d > 0)) return PETSC_INFINITY;
   if (!(p >= STEP_P_MIN)) return STEP_SHRINK_MAX; /* v hardly falls with t at this x (a cylinder at its critical point:
                                                     v(1) 1.01e-2, v(1/2) 1.16e-2): t is not the lever, halve */
-  if (!(room > 0)) return 0;
+  if (!(room > 0)) return STEP_SHRINK_MAX; /* x above -vmax: the ceiling is v0 itself and only the step's restoring
+                                              can pass it, which this model does not see (the vesicle at 0.67): halve */
   return PetscPowReal(STEP_ROOM * room / d, 1.0 / p);
 }
 
