@@ -4,8 +4,9 @@
      violation:  v(t) = v0 + a t^p  (a, p fitted to the trials at x; p = 1 until two trials measure it)
      Lagrangian: L(tau t) = L0 - s tau + q tau^2, s = <df, H df>/t the slope of the CGD step (its first row),
                  q from the trial's L(t) (Nocedal & Wright Sec. 3.5, the quadratic backtracking interpolation).
-   A rejected trial shrinks t to the smaller prediction, within [1/10, 1/2] of t; an accepted one grows t toward
-   the t whose predicted violation fills half the room below the ceiling, within [1/10, -flow_t_grow] of t.
+   A rejected trial shrinks t to the smaller prediction, within [1/10, 1/2] of t; an accepted step grows t by the
+   largest factor in [1, -flow_t_grow] whose predicted next violation stays below 0.8 -vmax (CSWFStepModelGrow),
+   restoring x first where none does and the step restores weakly.
    -flow_step_model halving: t halves on rejection and grows by -flow_t_grow on acceptance (the earlier rule). */
 #include "willmore_impl.h"
 
@@ -57,8 +58,8 @@ static PetscReal Exponent(const CSWFTrialRecord *r)
   return PetscMin(STEP_P_MAX, PetscLogReal(r->d1 / d) / PetscLogReal(r->t1 / r->t)); /* below STEP_P_MIN: no model */
 }
 
-/* the factor on t that brings the violation model of the last trial to v0' + STEP_ROOM (ceiling - v0'), v0' the
-   violation the next step starts from; +inf when the trial did not raise the violation */
+/* the factor on t that brings the violation model of the last trial to v0 + STEP_ROOM (ceiling - v0) at the same x
+   (v0next = v0); +inf when the trial did not raise the violation */
 static PetscReal ViolationFactor(CSWillmoreFlow F, PetscReal v0next)
 {
   const CSWFTrialRecord *r = &F->trial;
