@@ -30,18 +30,22 @@ static PetscErrorCode FinalDualStep(CSWillmoreFlow F, PetscBool *on)
   PetscFunctionReturn(0);
 }
 
-/* t after an accepted step: times -t_grow, capped at -t_max (reached also when t_max is not t times a power of
-   t_grow); returns the factor it grew by (1 at t_max), which t_mu follows */
-PetscReal CSWFGrowStep(CSWillmoreFlow F)
+/* t after an accepted step: times the step model's factor (step_model.c; -t_grow with -step_model halving), capped
+   at -t_max (reached also when t_max is not t times a power of t_grow); *r is the factor t changed by (1 at t_max),
+   which t_mu follows */
+PetscErrorCode CSWFGrowStep(CSWillmoreFlow F, PetscReal *r)
 {
-  PetscReal r;
-  if (F->t * F->grow <= F->tmax) {
-    F->t *= F->grow;
-    return F->grow;
+  PetscReal f;
+  PetscFunctionBeginUser;
+  PetscCall(CSWFStepModelGrow(F, &f));
+  if (F->t * f <= F->tmax) {
+    F->t *= f;
+    *r = f;
+    PetscFunctionReturn(0);
   }
-  r    = F->t < F->tmax ? F->tmax / F->t : 1.0;
+  *r   = F->t < F->tmax ? F->tmax / F->t : 1.0;
   F->t = F->tmax; /* t_max itself, not t * r, which may round past it */
-  return r;
+  PetscFunctionReturn(0);
 }
 
 PetscErrorCode CSWFGrowCGD(CSWillmoreFlow F)
@@ -50,7 +54,7 @@ PetscErrorCode CSWFGrowCGD(CSWillmoreFlow F)
   PetscReal r;
   PetscFunctionBeginUser;
   PetscCall(FinalDualStep(F, &fixed));
-  r = CSWFGrowStep(F);
+  PetscCall(CSWFGrowStep(F, &r));
   if (fixed) F->tmu = PetscMax(F->tmu, F->tmu_final); /* t_mu = max(t_mu, T): a ramp (-t_mu_grow) already above T is kept */
   else if (F->tmu_grow > 0) {
     /* a dual step ramped on its own (-flow_t_mu_grow): a large t_mu during the transient of a class change
@@ -60,13 +64,13 @@ PetscErrorCode CSWFGrowCGD(CSWillmoreFlow F)
   PetscFunctionReturn(0);
 }
 
-/* A rejection halves t but not t_mu: t_mu sets how strongly the step restores the constraints (t t_mu
-   X^T I_Q^-1 X against H in the Schur complement); each rejection doubles t_mu / t for good, up to
-   tmu_ratio_max (docs/willmore_flow.md, docs/real_meshes.md). */
+/* A rejection shrinks t (halves it with -step_model halving; step_model.c) but not t_mu: t_mu sets how strongly
+   the step restores the constraints (t t_mu X^T I_Q^-1 X against H in the Schur complement); each rejection raises
+   t_mu / t for good, up to tmu_ratio_max (docs/willmore_flow.md, docs/real_meshes.md). */
 PetscErrorCode CSWFShrinkCGD(CSWillmoreFlow F)
 {
   PetscFunctionBeginUser;
-  F->t *= 0.5;
+  F->t *= CSWFStepModelShrink(F);
   if (F->tmu_grow == 0 && !F->tmu_final_on) F->tmu = PetscMin(F->tmu, F->tmu_ratio_max * F->t);
   PetscFunctionReturn(0);
 }

@@ -38,6 +38,7 @@ PetscErrorCode CSWFFilterEnergy(CSWillmoreFlow F, PetscBool *accept)
 PetscErrorCode CSWFFilterLagrangian(CSWillmoreFlow F, PetscBool *accept)
 {
   PetscReal v0, vt, ca, cb, L0, Lt, Et;
+  PetscInt  why = 0;
   PetscFunctionBeginUser;
   if (F->conformal) PetscCall(VecWAXPY(F->mun, 1.0, F->dmu, F->mu));
   for (PetscInt j = 0; j < F->k; j++) F->nun[j] = F->nu[j] + F->dnu[j];
@@ -50,8 +51,11 @@ PetscErrorCode CSWFFilterLagrangian(CSWillmoreFlow F, PetscBool *accept)
   PetscCall(CSWFViolation(F, F->ct, F->cxt, &ca, &cb));
   vt = PetscMax(ca, cb);
   /* the relative slack 1e-12 (and ctol on v) lets converged iterates, changing at round-off level, pass */
-  *accept = PETSC_TRUE;
-  if (!(Lt == Lt) || !(vt == vt) || (Lt > L0 + 1e-12 * PetscAbsReal(L0) && (vt > v0 + F->ctol || v0 <= F->ctol)) || vt > PetscMax(v0, F->vmax)) *accept = PETSC_FALSE;
-  if (!*accept) PetscCall(PetscPrintf(F->comm, "     step rejected: Lagrangian %.15g -> %.15g, violation %.3e -> %.3e with t = %g; halving t\n", (double)L0, (double)Lt, (double)v0, (double)vt, (double)F->t));
+  if (!(Lt == Lt) || !(vt == vt)) why = CS_WF_REJECT_CEILING | CS_WF_REJECT_LAGRANGIAN; /* no model: halved */
+  if (Lt > L0 + 1e-12 * PetscAbsReal(L0) && (vt > v0 + F->ctol || v0 <= F->ctol)) why |= CS_WF_REJECT_LAGRANGIAN;
+  if (vt > PetscMax(v0, F->vmax)) why |= CS_WF_REJECT_CEILING;
+  *accept = (PetscBool)!why;
+  PetscCall(CSWFStepModelRecord(F, v0, vt, Lt - L0, why));
+  if (!*accept) PetscCall(PetscPrintf(F->comm, "     step rejected: %s: Lagrangian %.15g -> %.15g, violation %.3e -> %.3e (ceiling %.3e) with t = %g; %s\n", why == CS_WF_REJECT_CEILING ? "violation above the ceiling" : why == CS_WF_REJECT_LAGRANGIAN ? "the Lagrangian increases" : "both criteria", (double)L0, (double)Lt, (double)v0, (double)vt, (double)PetscMax(v0, F->vmax), (double)F->t, F->step_model == CS_WF_STEP_PREDICTIVE ? "t from the step model" : "halving t"));
   PetscFunctionReturn(0);
 }

@@ -92,6 +92,7 @@ static void SetDefaults(CSWillmoreFlow F)
   F->mu_ls_every     = 0;
   F->mu_ls_tmu       = 1e12;
   F->step_control    = PETSC_TRUE;
+  F->step_model      = CS_WF_STEP_PREDICTIVE;
   F->vmax            = 1e-2;
   F->restore_stalled = PETSC_TRUE;
   F->max_area_ratio  = 200;

@@ -31,8 +31,9 @@ static PetscErrorCode AcceptPGD(CSWillmoreFlow F)
 /* t grows by -flow_t_grow up to -flow_t_max after an accepted step, halves after a rejected one (PGD, ALM) */
 PetscErrorCode CSWFGrowPrimal(CSWillmoreFlow F)
 {
+  PetscReal r;
   PetscFunctionBeginUser;
-  (void)CSWFGrowStep(F);
+  PetscCall(CSWFGrowStep(F, &r));
   PetscFunctionReturn(0);
 }
 

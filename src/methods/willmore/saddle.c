@@ -302,6 +302,8 @@ static PetscErrorCode ConfigureKSP(CSSaddle *s, Vec iq, PetscReal tmu, Mat X)
   if (s->edges && !s->monolithic) PetscCall(PetscObjectTypeCompare((PetscObject)pc, PCFIELDSPLIT, &fs));
   if (fs) PetscCall(ConfigureFieldSplit(s, pc, chosen, iq, tmu, X));
   s->have_pc = PETSC_TRUE;
+  s->t_pc    = s->t;
+  s->tmu_pc  = tmu;
   if (!s->setups && s->wait > 0) s->wait--; /* a resumed run's first step is fresh like those it waited for */
   s->setups++; /* 1 at the first call; more after a new solver (failed factorisation) */
   s->reusing = PETSC_FALSE;
@@ -332,7 +334,10 @@ static PetscErrorCode ReuseOrRebuild(CSSaddle *s, Vec iq, PetscReal tmu, Mat X)
     s->reusing = PETSC_FALSE;
     s->wait--;
   } else s->reusing = (PetscBool)(s->reuse_its > 0 && s->last_its <= s->reuse_its);
+  PetscCall(PetscInfo(s->ksp, "saddle: t = %g, t_mu = %g, factorisation of t = %g, t_mu = %g %s\n", (double)s->t, (double)tmu, (double)s->t_pc, (double)s->tmu_pc, s->reusing ? "kept" : "rebuilt"));
   if (!s->reusing) {
+    s->t_pc   = s->t;
+    s->tmu_pc = tmu;
     if (s->S) PetscCall(AssembleSchur(s, iq, tmu, X));
     if (s->Sis) PetscCall(AssembleSchurIS(s, iq, tmu, X));
     s->setups++;
@@ -384,6 +389,7 @@ static PetscErrorCode KSolve(CSSaddle *s, Vec b, Vec z, PetscInt *its, KSPConver
     PetscCall(KSPGetConvergedReason(s->ksp, &reason));
     PetscCall(KSPGetIterationNumber(s->ksp, &n));
     s->last_its = n;
+    PetscCall(PetscInfo(s->ksp, "saddle: the kept factorisation of t = %g at t = %g: %" PetscInt_FMT " iterations (reuse while <= %" PetscInt_FMT ")\n", (double)s->t_pc, (double)s->t, n, s->reuse_its));
     if (n > s->reuse_its) { /* a failed attempt: back off */
       s->backoff = PetscMin(16, PetscMax(1, 2 * s->backoff));
       s->wait    = s->backoff;
@@ -393,6 +399,8 @@ static PetscErrorCode KSolve(CSSaddle *s, Vec b, Vec z, PetscInt *its, KSPConver
     if (reason > 0) PetscFunctionReturn(0);
     s->reusing = PETSC_FALSE;
     s->setups++;
+    s->t_pc   = s->t;
+    s->tmu_pc = s->tmu;
     if (s->S) PetscCall(AssembleSchur(s, s->iq, s->tmu, s->X));
     if (s->Sis) PetscCall(AssembleSchurIS(s, s->iq, s->tmu, s->X));
     PetscCall(KSPSetReusePreconditioner(s->ksp, PETSC_FALSE));

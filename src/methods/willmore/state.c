@@ -1,12 +1,13 @@
 /* The loop state a checkpoint keeps besides its fields (the positions and mu, the edge field; a triangle field's
    own, trianglefield_state.c): [flow kind, t, t_mu, rejections, KSP its in total, KSP its of the last step, edges
-   with guarded I_Q weight, seconds, whether the -t_mu_final switch fired, nu_1..nu_k, the stationarity window (stop.c),
-   the kind's own scalars]. The kept best state (-flow_keep_best) is not stored: a resumed run keeps the best of its
-   own iterations. The rest (g, c, X, metric, residual) is
+   with guarded I_Q weight, seconds, whether the -t_mu_final switch fired, the step model's last accepted t and the
+   violation it added (step_model.c), nu_1..nu_k, the stationarity window and the drift test's smallest residual
+   (stop.c), the kind's own scalars]. The kept best state (-flow_keep_best) is not stored: a resumed run keeps the best
+   of its own iterations. The rest (g, c, X, metric, residual) is
    recomputed from x at the top of the loop, so a resumed run continues exactly like the uninterrupted one. */
 #include "willmore_impl.h"
 
-#define FLOW_CK_NREAL 9
+#define FLOW_CK_NREAL 11
 
 PetscErrorCode CSWillmoreFlowGetStateSize(CSWillmoreFlow F, PetscInt *nreal)
 {
@@ -51,6 +52,8 @@ PetscErrorCode CSWillmoreFlowGetState(CSWillmoreFlow F, PetscReal ck[], CSCheckp
     ck[6] = (PetscReal)F->nguard;
     ck[7] = (PetscReal)(now - F->t0);
     ck[8] = (PetscReal)F->tmu_final_on; /* stored: t_mu >= T does not tell (t_mu may pass T before EL falls) */
+    ck[9]  = F->step_tacc; /* the predictive step's growth fits the violation of the next step against this one */
+    ck[10] = F->step_dacc;
     for (PetscInt j = 0; j < F->k; j++) ck[FLOW_CK_NREAL + j] = F->nu[j];
     CSWFStationaryGetState(F, ck + FLOW_CK_NREAL + F->k);
   }
@@ -93,6 +96,8 @@ PetscErrorCode CSWillmoreFlowSetState(CSWillmoreFlow F, PetscInt it, const Petsc
   F->tmu          = ck[2];
   F->tmu_final_on = (PetscBool)(ck[8] != 0); /* the -t_mu_final switch had fired */
   F->rejections   = (PetscInt)ck[3];
+  F->step_tacc    = ck[9];
+  F->step_dacc    = ck[10];
   F->kspits_total = (PetscInt)ck[4];
   F->kspits       = (PetscInt)ck[5];
   F->nguard       = (PetscInt)ck[6];

@@ -43,9 +43,10 @@ PetscErrorCode CSWFSolveCorrection(CSWillmoreFlow F, Vec zE, Vec zV, PetscInt *i
 static PetscErrorCode SecondOrderCorrection(CSWillmoreFlow F, Vec xt, PetscInt *kspits, PetscBool *ok)
 {
   Vec       dmu2 = NULL, df2;
-  PetscReal conf, glob;
+  PetscReal conf, glob, v0 = 0;
   PetscFunctionBeginUser;
   *ok = PETSC_TRUE;
+  F->trial.q = 0; /* no correction needed: the operator's restoring is not measured, none assumed left */
   if (F->soc_max_it <= 0 || (!F->conformal && !F->k)) PetscFunctionReturn(0);
   if (F->dmu) PetscCall(VecDuplicate(F->dmu, &dmu2));
   PetscCall(VecDuplicate(F->df, &df2));
@@ -53,6 +54,8 @@ static PetscErrorCode SecondOrderCorrection(CSWillmoreFlow F, Vec xt, PetscInt *
     PetscInt its;
     PetscCall(CSWFEvalConstraints(F, xt, F->ct, F->cxt, PETSC_FALSE));
     PetscCall(CSWFViolation(F, F->ct, F->cxt, &conf, &glob));
+    if (i == 0) v0 = PetscMax(conf, glob);
+    if (i == 1 && v0 > 0) F->trial.q = PetscMin(1.0, PetscMax(conf, glob) / v0); /* the step model's restoring ratio */
     if (!(PetscMax(conf, glob) >= 0.1 * F->ctol)) break; /* feasible enough, or not a number (the filter rejects it) */
     PetscCall(CSWFSolveCorrection(F, dmu2, df2, &its, ok));
     *kspits += its;

@@ -51,6 +51,7 @@ typedef struct {
   PetscReal   schur_rtol; /* -<prefix>schur_rtol of the iterative Schur solve */
   CSMetric   *metric;     /* the flow's (borrowed): its terms build the unassembled S for bddc */
   PetscReal   t;          /* this step's t */
+  PetscReal   t_pc, tmu_pc; /* the t and t_mu of the preconditioner (factorisation) in use */
   Mat         Sis;        /* bddc: S unassembled (MATIS), the user Schur preconditioner */
 } CSSaddle;
 
@@ -66,6 +67,21 @@ PETSC_INTERN PetscErrorCode CSSaddleDestroy(CSSaddle *s);
 /* checkpoints: the bordering solves' initial guesses W_j (the last solutions), by parts (E NULL without the edge block) */
 PETSC_INTERN PetscErrorCode CSSaddleGetGuess(CSSaddle *s, PetscInt j, Vec E, Vec V);
 PETSC_INTERN PetscErrorCode CSSaddleSetGuess(CSSaddle *s, PetscInt j, Vec E, Vec V);
+
+/* ---- the step size model (step_model.c) ---- */
+typedef enum { CS_WF_STEP_PREDICTIVE, CS_WF_STEP_HALVING } CSWFStepModel;
+PETSC_INTERN const char *const CSWFStepModels[];
+#define CS_WF_REJECT_CEILING    1 /* the filter's criteria that rejected a trial */
+#define CS_WF_REJECT_LAGRANGIAN 2
+typedef struct {
+  PetscInt  it, n;       /* the iteration of the trials recorded, and how many so far */
+  PetscInt  why;         /* CS_WF_REJECT_* bits of the last trial (0: accepted) */
+  PetscReal t, v0, vt;   /* its step, the violation of x and of the trial point (after the corrections) */
+  PetscReal dL, slope;   /* L(t) - L0 and the slope <df, H df>/t (Lagrangian rejections only) */
+  PetscReal t1, d1;      /* the trial before it at this x: step and v(t1) - v0 */
+  PetscReal q;           /* the violation left by the step's first second-order correction, relative (step.c): the
+                            part (1 - t t_mu s^2 / (lambda_H + t t_mu s^2)) of a violation the step's operator leaves */
+} CSWFTrialRecord;
 
 /* ---- the flow kind: a strategy struct (cgd.c, pgd.c, gd.c) ---- */
 struct _CSWillmoreFlowOps {
@@ -165,6 +181,9 @@ struct _p_CSWillmoreFlow {
   PetscInt              max_it, max_rej, proj_max_it, soc_max_it;
   PetscReal             max_seconds; /* wall-time budget (0: none); its stop is reported as DIVERGED_MAX_IT */
   PetscBool             step_control;
+  CSWFStepModel         step_model;        /* -step_model: the predictive t or halving (step_model.c) */
+  CSWFTrialRecord       trial;             /* the filter's measurements of the trials (step_model.c) */
+  PetscReal             step_tacc, step_dacc; /* the step model: t and the violation added by the last accepted step (checkpointed) */
   PetscReal             proj_tmu;
   PetscReal             tmu_grow, tmu_max; /* own schedule of the dual step (0: t_mu follows t) */
   PetscReal             tmu_ratio_max;     /* following t: t_mu <= this * t (1e3 times the initial t_mu / t) */
@@ -253,9 +272,15 @@ PETSC_INTERN PetscErrorCode CSWFTrialPGD(CSWillmoreFlow F, PetscBool *accept);
 PETSC_INTERN PetscErrorCode CSWFFilterLagrangian(CSWillmoreFlow F, PetscBool *accept);
 PETSC_INTERN PetscErrorCode CSWFFilterEnergy(CSWillmoreFlow F, PetscBool *accept);
 PETSC_INTERN PetscErrorCode CSWFCheckFinite(CSWillmoreFlow F, PetscBool *accept);
+/* step_model.c */
+PETSC_INTERN PetscErrorCode CSWFStepModelRecord(CSWillmoreFlow F, PetscReal v0, PetscReal vt, PetscReal dL, PetscInt why);
+PETSC_INTERN PetscReal      CSWFStepModelShrink(CSWillmoreFlow F);
+PETSC_INTERN PetscErrorCode CSWFStepModelGrow(CSWillmoreFlow F, PetscReal *factor);
 /* projection.c */
 PETSC_INTERN PetscErrorCode CSWFProject(CSWillmoreFlow F, Vec x, PetscBool *ok, PetscInt *kspits);
+PETSC_INTERN PetscErrorCode CSWFProjectTo(CSWillmoreFlow F, Vec x, PetscReal vtarget, PetscBool *ok, PetscInt *kspits);
 PETSC_INTERN PetscErrorCode CSWFRestore(CSWillmoreFlow F, PetscInt *kspits);
+PETSC_INTERN PetscErrorCode CSWFRestoreTo(CSWillmoreFlow F, PetscReal v, PetscReal vtarget, PetscInt *kspits);
 /* guards.c */
 PETSC_INTERN PetscErrorCode CSWFMeasureQuality(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFMeasureQualityOf(CSWillmoreFlow F, Vec x0, Vec x);
@@ -297,7 +322,7 @@ PETSC_INTERN PetscErrorCode CSWFMultiplierLS(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFMultiplierLSRestore(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFAcceptCGD(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFGrowCGD(CSWillmoreFlow F);
-PETSC_INTERN PetscReal      CSWFGrowStep(CSWillmoreFlow F);
+PETSC_INTERN PetscErrorCode CSWFGrowStep(CSWillmoreFlow F, PetscReal *r);
 PETSC_INTERN PetscErrorCode CSWFShrinkCGD(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFGrowPrimal(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFShrinkPrimal(CSWillmoreFlow F);
