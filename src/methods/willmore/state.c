@@ -71,7 +71,7 @@ PetscErrorCode CSWillmoreFlowGetState(CSWillmoreFlow F, PetscReal ck[], CSCheckp
    checksum were taken as they were): step sizes positive, counters whole numbers in [0, 1e9], the switch 0 or 1. */
 static PetscErrorCode CheckScalars(CSWillmoreFlow F, PetscInt it, const PetscReal ck[])
 {
-  const char *names[] = {"t", "t_mu", "rejections", "KSP iterations", "KSP iterations of the last step", "guarded edges", "seconds", "-t_mu_final switch"};
+  const char *names[FLOW_CK_NREAL - 1] = {"t", "t_mu", "rejections", "KSP iterations", "KSP iterations of the last step", "guarded edges", "seconds", "-t_mu_final switch", "step model's last accepted t", "step model's added violation"};
   PetscFunctionBeginUser;
   PetscCheck(it <= F->max_it, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-resume: the checkpoint is at iteration %" PetscInt_FMT ", beyond -%smax_it %" PetscInt_FMT ": nothing left to run", it, F->prefix, F->max_it);
   for (PetscInt i = 1; i < FLOW_CK_NREAL; i++) {
@@ -80,6 +80,7 @@ static PetscErrorCode CheckScalars(CSWillmoreFlow F, PetscInt it, const PetscRea
     if (i <= 2) ok = (PetscBool)(ok && v > 0 && v < 1e300);
     else if (i == 7) ok = (PetscBool)(ok && v >= 0);
     else if (i == 8) ok = (PetscBool)(v == 0 || v == 1);
+    else if (i >= 9) ok = (PetscBool)(ok && v >= 0 && v < 1e300); /* step_model.c: 0 before the first accepted step */
     else ok = (PetscBool)(ok && v >= 0 && v <= 1e9 && v == PetscFloorReal(v));
     PetscCheck(ok, F->comm, PETSC_ERR_FILE_UNEXPECTED, "-resume: the checkpoint's %s is %g, out of range (a damaged or crafted file)", names[i - 1], (double)v);
   }
