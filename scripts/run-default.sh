@@ -34,8 +34,8 @@ s = json.load(open(sys.argv[1]))
 how = ("converged in %d iterations" % s["iterations"]) if s["converged"] else \
       ("NOT converged: stopped after %d iterations (%s)" % (s["iterations"], s["stop_reason"]))
 print("Reading:")
-print("  Willmore energy %.6g -> %.6g (4 pi = %.6g), %s, EL residual %.2g" %
-      (s["energy_initial"], s["energy"], 4 * math.pi, how, s["el_residual"]))
+print("  Willmore energy %.6g -> %.6g (4 pi = %.6g), %s, EL residual %.2g (scale-free: %.2g)" %
+      (s["energy_initial"], s["energy"], 4 * math.pi, how, s["el_residual"], s["el_residual_scaled"]))
 print("  conformal error: cross-ratio constraint violation %.2g, quasi-conformal error against the input q_mean %.4f, q_max %.4f"
       % (s["conformal_violation"], s["q_mean"], s["q_max"]))
 PY

@@ -36,6 +36,7 @@ static PetscErrorCode StepOptions(CSWillmoreFlow F, PetscOptionItems *PetscOptio
   PetscCall(CSOptionsReal("-t_mu_final_el", "CGD: the EL residual below which -t_mu_final takes over", NULL, F->tmu_final_el, &F->tmu_final_el, NULL));
   PetscCall(CSOptionsReal("-t_grow", "Factor on t after an accepted step", NULL, F->grow, &F->grow, NULL));
   PetscCall(PetscOptionsBool("-step_control", "Accept a step only if the filter accepts it (else shrink t: -step_model)", NULL, F->step_control, &F->step_control, NULL));
+  if (F->ops.step_halving) F->step_model = CS_WF_STEP_HALVING;
   PetscCall(CSOptionsEnum("-step_model", "Step size after a trial: predicted from the violation and Lagrangian models of the trials (predictive) or halved on rejection and grown by -t_grow on acceptance (halving); docs/willmore_flow.md", NULL, CSWFStepModels, (PetscEnum)F->step_model, (PetscEnum *)&F->step_model, NULL));
   PetscCall(CSOptionsInt("-max_rejections", "Consecutive rejected steps before giving up", NULL, F->max_rej, &F->max_rej, NULL));
   PetscCall(CSOptionsReal("-t_min", "Stop as stalled (not converged) when the step size t falls below this", NULL, F->t_min, &F->t_min, NULL));

@@ -87,6 +87,7 @@ typedef struct {
 struct _CSWillmoreFlowOps {
   PetscInt  id;             /* stored in checkpoints (a resume must use the same kind) */
   PetscBool conformal;      /* default of -flow_conformal */
+  PetscBool step_halving;   /* default of -flow_step_model is halving (trianglefield: the model fell behind, docs/willmore_flow.md) */
   PetscBool projected;      /* PGD: the constraint set is kept by projection, not by the step's filter */
   PetscBool penalty;        /* ALM: the constraints enter L_A as penalty terms; the saddle solve is the metric alone */
   PetscErrorCode (*setup)(CSWillmoreFlow);               /* checks of the options against the kind */
