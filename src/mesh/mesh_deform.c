@@ -103,8 +103,8 @@ PetscErrorCode CSMeshDeformFromOptions(CSMesh mesh, const char prefix[])
   PetscCall(PetscOptionsRealArray("-gen_deform_nfold", "N,A: the distance from the z axis times 1 + A cos(N phi) (an N-fold symmetric start), applied first", "CSMeshDeformFromOptions", nfold, &nn, &nset));
   PetscOptionsEnd();
   PetscCheck(!nset || nn == 2, mesh->comm, PETSC_ERR_ARG_WRONG, "-%sgen_deform_nfold N,A: give two numbers (got %" PetscInt_FMT ")", prefix ? prefix : "", nn);
-  PetscCheck(!nset || (nfold[0] == PetscFloorReal(nfold[0]) && nfold[0] >= 0 && nfold[0] <= 1e3), mesh->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sgen_deform_nfold %g,%g: N must be an integer in [0, 1000]", prefix ? prefix : "", (double)nfold[0], (double)nfold[1]);
-  PetscCheck(!nset || PetscAbsReal(nfold[1]) < 1, mesh->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sgen_deform_nfold %g,%g: A must lie in (-1, 1) (the factor 1 + A cos(N phi) must stay positive)", prefix ? prefix : "", (double)nfold[0], (double)nfold[1]);
+  PetscCheck(!nset || (nfold[0] == PetscFloorReal(nfold[0]) && nfold[0] >= 0 && nfold[0] <= 1e3), mesh->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sgen_deform_nfold N,A = %g,%g: N must be an integer in [0, 1000]", prefix ? prefix : "", (double)nfold[0], (double)nfold[1]);
+  PetscCheck(!nset || PetscAbsReal(nfold[1]) < 1, mesh->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sgen_deform_nfold N,A = %g,%g: A must lie in (-1, 1) (the factor 1 + A cos(N phi) must stay positive)", prefix ? prefix : "", (double)nfold[0], (double)nfold[1]);
   {
     /* issue 36, item 5: nan or 1e300 used to be written as a mesh of nan coordinates */
     const CSOptionCheck checks[] = {

@@ -18,7 +18,7 @@ EXPECT="^confsurf: error: -gen_deform_bump 1e\+300: must lie in" expect_fail run
 EXPECT="^confsurf: error: -gen_tau \(RE\) nan: must lie in" expect_fail run -task info -gen lattice -gen_tau nan,1
 EXPECT="^confsurf: error: -gen_radius nan" expect_fail run $I1 -gen_radius nan
 # item 17: the wrong value named (was "(got 2 values)")
-EXPECT="-gen_deform_nfold 3.?,1e\+300: A must lie in \(-1, 1\)" expect_fail run $I1 -gen_deform_nfold 3,1e300
+EXPECT="-gen_deform_nfold N,A = 3.?,1e\+300: A must lie in \(-1, 1\)" expect_fail run $I1 -gen_deform_nfold 3,1e300
 # item 17: the blame and the numbers right
 EXPECT="-spectrum_nev 48: at most 47 \(the problem has 48 eigenvalues" expect_fail run -task spectrum -gen icosphere -gen_level 0 -spectrum_nev 48
 EXPECT="-gen morin: 4294901762 vertices, 8589803520 faces: .*exceed the largest PetscInt" expect_fail run -task info -gen morin -gen_n 65536 -gen_m 65536
