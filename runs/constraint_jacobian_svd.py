@@ -11,19 +11,20 @@ cylinders (optional third argument: vertices per ring), the mean of the smallest
 vertical and diagonal edges.
   usage: runs/constraint_jacobian_svd.py input.obj state.obj [ring_size]
 Dense SVD: meant for small generated meshes (24 x 12: 840 x 792, a second)."""
+import os
 import sys
+
 import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'scripts'))
+import objio  # noqa: E402  (scripts/objio.py, the project's OBJ reader)
 
 
 def read_obj(path):
-    V, F = [], []
-    for line in open(path):
-        s = line.split()
-        if s and s[0] == 'v':
-            V.append([float(x) for x in s[1:4]])
-        elif s and s[0] == 'f':
-            F.append([int(x.split('/')[0]) - 1 for x in s[1:4]])
-    return np.array(V), np.array(F)
+    """(vertices, faces) as numpy arrays, read by the project's OBJ reader"""
+    v, f = objio.read_obj(path)
+    return np.array(v), np.array(f)
+
 
 
 def main():

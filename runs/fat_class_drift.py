@@ -12,19 +12,20 @@ about the z axis) it prints, for each state:
   usage: runs/fat_class_drift.py [--png OUT.png] class.obj state1.obj [state2.obj ...]
 A state given as CLASS2=STATE is measured against its own class mesh CLASS2 (another torus; no displacement).
 With --png it also draws each state's log(A/A0) over the torus's angles (phi, theta) (Debian matplotlib)."""
+import os
 import sys
+
 import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'scripts'))
+import objio  # noqa: E402  (scripts/objio.py, the project's OBJ reader)
 
 
 def read_obj(path):
-    V, F = [], []
-    for line in open(path):
-        s = line.split()
-        if s and s[0] == 'v':
-            V.append([float(x) for x in s[1:4]])
-        elif s and s[0] == 'f':
-            F.append([int(x.split('/')[0]) - 1 for x in s[1:4]])
-    return np.array(V), np.array(F)
+    """(vertices, faces) as numpy arrays, read by the project's OBJ reader"""
+    v, f = objio.read_obj(path)
+    return np.array(v), np.array(f)
+
 
 
 def vertex_areas(X, F):

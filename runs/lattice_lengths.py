@@ -8,20 +8,19 @@ lengths of every face's edges (per face the edges opposite corners 0, 1, 2: the 
 then starts from the mesh's positions (class i*IM) and targets the lattice tau on the same irregular
 connectivity, as -gen lattice does on its grid.
   usage: runs/lattice_lengths.py mesh.obj IM RE,IMtau out.len"""
+import os
 import sys
+
 import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'scripts'))
+import objio  # noqa: E402  (scripts/objio.py, the project's OBJ reader)
 
 
 def main():
     path, im, tau, out = sys.argv[1], float(sys.argv[2]), sys.argv[3], sys.argv[4]
     tre, tim = (float(s) for s in tau.split(','))
-    V, F = [], []
-    for line in open(path):
-        s = line.split()
-        if s and s[0] == 'v':
-            V.append([float(x) for x in s[1:4]])
-        elif s and s[0] == 'f':
-            F.append([int(x.split('/')[0]) - 1 for x in s[1:4]])
+    V, F = objio.read_obj(path)
     X, F = np.array(V), np.array(F)
     r1 = 1 / np.sqrt(1 + im * im)
     r2 = im * r1
