@@ -36,64 +36,52 @@ static PetscErrorCode CheckInteger(MPI_Comm comm, const char full[], const char 
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CSOptionsInt_Private(PetscOptionItems *items, const char opt[], const char text[], const char man[], PetscInt cur, PetscInt *val, PetscBool *set)
+/* The raw value of an option of the given kind: present with a value ("needs <what>"), an integer PetscInt holds
+   (integer), no longer than len - 1 characters (len > 0: a string read into a buffer of len). */
+typedef enum { RAW_NUMBER, RAW_INTEGER, RAW_TEXT } RawKind;
+static PetscErrorCode CheckRaw(PetscOptionItems *items, const char opt[], RawKind kind, size_t len)
 {
+  const char *what[] = {"a number", "an integer value", "a value"};
   const char *value;
   PetscBool   found;
   char        full[256];
   PetscFunctionBeginUser;
   PetscCall(RawValue(items, opt, &value, &found, full, sizeof(full)));
-  if (found) {
-    PetscCheck(!Empty(value), items->comm, PETSC_ERR_ARG_WRONG, "%s: needs an integer value", full);
-    PetscCall(CheckInteger(items->comm, full, value));
-  }
+  if (!found) PetscFunctionReturn(0);
+  PetscCheck(!Empty(value), items->comm, PETSC_ERR_ARG_WRONG, "%s: needs %s", full, what[kind]);
+  if (kind == RAW_INTEGER) PetscCall(CheckInteger(items->comm, full, value));
+  PetscCheck(!len || strlen(value) < len, items->comm, PETSC_ERR_ARG_SIZ, "%s: the value is %zu characters long, at most %zu are read (it would be cut)", full, strlen(value), len - 1);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSOptionsInt_Private(PetscOptionItems *items, const char opt[], const char text[], const char man[], PetscInt cur, PetscInt *val, PetscBool *set)
+{
+  PetscFunctionBeginUser;
+  PetscCall(CheckRaw(items, opt, RAW_INTEGER, 0));
   PetscCall(PetscOptionsInt_Private(items, opt, text, man, cur, val, set, PETSC_MIN_INT, PETSC_MAX_INT));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode CSOptionsReal_Private(PetscOptionItems *items, const char opt[], const char text[], const char man[], PetscReal cur, PetscReal *val, PetscBool *set)
 {
-  const char *value;
-  PetscBool   found;
-  char        full[256];
   PetscFunctionBeginUser;
-  PetscCall(RawValue(items, opt, &value, &found, full, sizeof(full)));
-  PetscCheck(!found || !Empty(value), items->comm, PETSC_ERR_ARG_WRONG, "%s: needs a number", full);
+  PetscCall(CheckRaw(items, opt, RAW_NUMBER, 0));
   PetscCall(PetscOptionsReal_Private(items, opt, text, man, cur, val, set));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode CSOptionsString_Private(PetscOptionItems *items, const char opt[], const char text[], const char man[], const char cur[], char val[], size_t len, PetscBool *set)
 {
-  const char *value;
-  PetscBool   found;
-  char        full[256];
   PetscFunctionBeginUser;
-  PetscCall(RawValue(items, opt, &value, &found, full, sizeof(full)));
-  if (found) {
-    PetscCheck(!Empty(value), items->comm, PETSC_ERR_ARG_WRONG, "%s: needs a value", full);
-    PetscCheck(strlen(value) < len, items->comm, PETSC_ERR_ARG_SIZ, "%s: the value is %zu characters long, at most %zu are read (it would be cut)", full, strlen(value), len - 1);
-  }
+  PetscCall(CheckRaw(items, opt, RAW_TEXT, len));
   PetscCall(PetscOptionsString_Private(items, opt, text, man, cur, val, len, set));
-  PetscFunctionReturn(0);
-}
-
-/* a choice given without a value (-gen '') is refused, not taken as not given */
-static PetscErrorCode RequireValue(PetscOptionItems *items, const char opt[])
-{
-  const char *value;
-  PetscBool   found;
-  char        full[256];
-  PetscFunctionBeginUser;
-  PetscCall(RawValue(items, opt, &value, &found, full, sizeof(full)));
-  PetscCheck(!found || !Empty(value), items->comm, PETSC_ERR_ARG_WRONG, "%s: needs a value", full);
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode CSOptionsEList_Private(PetscOptionItems *items, const char opt[], const char text[], const char man[], const char *const *list, PetscInt n, const char cur[], PetscInt *val, PetscBool *set)
 {
   PetscFunctionBeginUser;
-  PetscCall(RequireValue(items, opt));
+  PetscCall(CheckRaw(items, opt, RAW_TEXT, 0)); /* a choice given without a value (-gen '') is refused */
   PetscCall(PetscOptionsEList_Private(items, opt, text, man, list, n, cur, val, set));
   PetscFunctionReturn(0);
 }
@@ -101,7 +89,7 @@ PetscErrorCode CSOptionsEList_Private(PetscOptionItems *items, const char opt[],
 PetscErrorCode CSOptionsEnum_Private(PetscOptionItems *items, const char opt[], const char text[], const char man[], const char *const *list, PetscEnum cur, PetscEnum *val, PetscBool *set)
 {
   PetscFunctionBeginUser;
-  PetscCall(RequireValue(items, opt));
+  PetscCall(CheckRaw(items, opt, RAW_TEXT, 0)); /* a choice given without a value (-gen '') is refused */
   PetscCall(PetscOptionsEnum_Private(items, opt, text, man, list, cur, val, set));
   PetscFunctionReturn(0);
 }
