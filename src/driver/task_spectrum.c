@@ -87,10 +87,23 @@ static PetscErrorCode Signed(CSSpin spin, CSMesh mesh, PetscInt nev, PetscInt nk
   PetscFunctionReturn(0);
 }
 
+/* The task's options against the mesh: -spectrum_nev in [1, 4V - 1], -spectrum_reconstruct with -spectrum_signed, the
+   signed spectrum on a closed surface */
+static PetscErrorCode CheckOptions(MPI_Comm comm, CSMesh mesh, PetscInt nev, PetscInt nk, PetscBool sgn)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(nev >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-spectrum_nev %" PetscInt_FMT ": need at least 1", nev);
+  PetscCheck(nev < 4 * mesh->Nv, comm, PETSC_ERR_ARG_OUTOFRANGE, "-spectrum_nev %" PetscInt_FMT ": at most %" PetscInt_FMT " (the problem has %" PetscInt_FMT " eigenvalues and the eigensolver needs fewer)", nev, 4 * mesh->Nv - 1, 4 * mesh->Nv);
+  PetscCheck(!nk || sgn, comm, PETSC_ERR_ARG_INCOMP, "-spectrum_reconstruct needs -spectrum_signed (eigenvectors of Eq. 6)");
+  PetscCheck(!sgn || mesh->topo.boundary_loops == 0, comm, PETSC_ERR_ARG_WRONG, "-spectrum_signed: mesh %s has a boundary; the signed spectrum needs a closed surface", mesh->name);
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode CSTaskSpectrum(MPI_Comm comm)
 {
   CSOutput   out;
   CSMesh     mesh;
+  PetscErrorCode ierr;
   CSSpin     spin;
   PetscInt   nev = 20, nconv, k[64], nk = 64;
   PetscReal *eig, *root;
@@ -106,10 +119,12 @@ PetscErrorCode CSTaskSpectrum(MPI_Comm comm)
   PetscCall(CSOptionsString("-spectrum_reconstruct_prefix", "Dirac sphere k is written to PREFIX_k.obj", NULL, prefix, prefix, sizeof(prefix), NULL));
   PetscOptionsEnd();
   if (!has_k) nk = 0;
-  PetscCheck(nev >= 1, comm, PETSC_ERR_ARG_OUTOFRANGE, "-spectrum_nev %" PetscInt_FMT ": need at least 1", nev);
-  PetscCheck(nev < 4 * mesh->Nv, comm, PETSC_ERR_ARG_OUTOFRANGE, "-spectrum_nev %" PetscInt_FMT ": at most %" PetscInt_FMT " (the problem has %" PetscInt_FMT " eigenvalues and the eigensolver needs fewer)", nev, 4 * mesh->Nv - 1, 4 * mesh->Nv);
-  PetscCheck(!nk || sgn, comm, PETSC_ERR_ARG_INCOMP, "-spectrum_reconstruct needs -spectrum_signed (eigenvectors of Eq. 6)");
-  PetscCheck(!sgn || mesh->topo.boundary_loops == 0, comm, PETSC_ERR_ARG_WRONG, "-spectrum_signed: mesh %s has a boundary; the signed spectrum needs a closed surface", mesh->name);
+  ierr = CheckOptions(comm, mesh, nev, nk, sgn);
+  if (ierr) { /* refused: the mesh and the outputs are freed before the error returns (no leak under ASan) */
+    PetscCall(CSMeshDestroy(&mesh));
+    PetscCall(CSOutputDestroy(&out));
+  }
+  PetscCall(ierr);
   PetscCall(CSSpinCreate(mesh, &spin));
   PetscCall(CSSpinSetFromOptions(spin));
   if (sgn) PetscCall(Signed(spin, mesh, nev, nk, k, prefix, &out));

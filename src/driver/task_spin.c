@@ -117,6 +117,8 @@ static PetscErrorCode SpinInterpolate(CSSpin spin, CSMesh mesh, PetscInt N, cons
   Vec        r0, r1, xs, xl;
   PetscReal *q, end[2];
   PetscFunctionBeginUser;
+  /* before anything is allocated: a refused size leaks nothing */
+  PetscCall(CSCheckAllocation("-spin_interpolate: q_mean of N + 1 meshes, twice", 2 * ((PetscInt64)N + 1), sizeof(PetscReal)));
   PetscCall(PetscMemzero(&r, sizeof(r)));
   PetscCall(CSSpinRhoFromOptions(spin, mesh->x, &r.loc, &r.rho, &r.xt, &r.mu));
   PetscCheck(r.xt, mesh->comm, PETSC_ERR_ARG_WRONG, "-spin_interpolate needs -spin_target_mesh FILE (the other end, same connectivity)");
@@ -124,7 +126,6 @@ static PetscErrorCode SpinInterpolate(CSSpin spin, CSMesh mesh, PetscInt N, cons
   PetscCall(VecDuplicate(mesh->x, &r1));
   PetscCall(VecDuplicate(mesh->x, &xs));
   PetscCall(VecDuplicate(mesh->x, &xl));
-  PetscCall(CSCheckAllocation("-spin_interpolate: q_mean of N + 1 meshes, twice", 2 * ((PetscInt64)N + 1), sizeof(PetscReal)));
   PetscCall(PetscMalloc1(2 * (N + 1), &q));
   PetscCall(CSSpinInterpolateSetUp(spin, mesh->x, r.xt, r.mu, r0, r1));
   for (PetscInt k = 0; k <= N; k++) {

@@ -407,7 +407,11 @@ PetscErrorCode CSMeshCreateFromOptions(MPI_Comm comm, const char prefix[], CSMes
   if (!rank) PetscCall(OrientOutward(&md, &topo, keep));
   PetscCall(PetscLogEventEnd(CS_EVENT_MeshRead, 0, 0, 0, 0));
   PetscCall(CSMeshCreateFromData(comm, &md, &topo, mesh));
-  PetscCall(CSMeshDeformFromOptions(*mesh, prefix));
+  {
+    PetscErrorCode ierr = CSMeshDeformFromOptions(*mesh, prefix); /* a refused -gen_deform_* value: no leak */
+    if (ierr) PetscCall(CSMeshDestroy(mesh));
+    PetscCall(ierr);
+  }
   if (write_input) {
     PetscErrorCode ierr = CSMeshWrite(*mesh, (*mesh)->x, input_out);
     if (ierr) PetscCall(CSMeshDestroy(mesh)); /* no leak on the error path */

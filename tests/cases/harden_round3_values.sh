@@ -70,10 +70,13 @@ EXPECT="-flow_init random: the start triangle field has no Poisson reconstructio
 
 # item 20: the memory check per flow kind: the same mesh under the same limit, the triangle field refused with its
 # size, the vertex flow accepted (icosphere 5: 10242 vertices, 1.64 GB at 160 KB against 0.31 GB at 30 KB)
+# (not under ASan: its shadow memory reserves terabytes of address space, which no ulimit -v leaves room for)
+case "$CS_BIN" in */build/san/*) echo "skipped under the sanitizer build: the ulimit -v case" ;; *)
 ( ulimit -v 1500000
   EXPECT="-flow_type trianglefield on icosphere.*: 10242 vertices at about 160 KB per vertex for the run: .* need 1.64 GB, only" expect_fail run -task flow -flow_type trianglefield -gen icosphere -gen_level 5 -flow_max_it 0
   run -task flow -flow_type cgd -gen icosphere -gen_level 5 -flow_max_it 0 > "$TMP/cgd5.log" 2>&1 || { cat "$TMP/cgd5.log"; echo "BAD: the vertex flow refused under 1.5 GB"; exit 1; }
-  echo "ok  cgd accepted under the same limit" )
+  echo "ok  cgd accepted under the same limit" ) ;;
+esac
 
 # item 8: the checkpoint's header is inside the checksum (version 4); its scalars are range-checked
 F="-task flow -gen icosphere -gen_level 1 -gen_deform_bump 0.1"
