@@ -68,41 +68,33 @@ static PetscErrorCode MeshSourceLoad(const MeshSource *src, CSMeshData *md, CSTo
   PetscFunctionReturn(0);
 }
 
-/* A numeric option read as text, so that every bad value ('abc', nan, 1e300, 2.5 for a count) is refused with one
-   line naming the option (PETSc's integer parser names only the string). Empty text: *v untouched. */
-static PetscErrorCode ParseOption(MPI_Comm comm, const char pre[], const char name[], const char text[], PetscBool integer, PetscReal lo, PetscReal hi, const char want[], PetscReal *v)
-{
-  char  *end;
-  double d;
-  PetscFunctionBeginUser;
-  if (!text[0]) PetscFunctionReturn(0);
-  d = strtod(text, &end);
-  PetscCheck(end != text && !*end && PetscIsNormalReal((PetscReal)d) && (!integer || d == PetscFloorReal(d)) && d >= lo && d <= hi, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%s%s %s: %s", pre, name, text, want);
-  *v = (PetscReal)d;
-  PetscFunctionReturn(0);
-}
-
-/* -mesh_remesh N | -mesh_remesh_edge_length h, -mesh_remesh_iterations k: read and checked on every rank */
+/* -mesh_remesh N | -mesh_remesh_edge_length h, -mesh_remesh_iterations k: read and checked on every rank (the
+   readers refuse 'abc', 2.5 for a count and values PetscInt cannot hold, naming the option; the table the ranges) */
 static PetscErrorCode RemeshOptions(MPI_Comm comm, const char prefix[], MeshSource *src)
 {
-  char        tn[64] = "", th[64] = "", tk[64] = "";
-  const char *pre = prefix ? prefix : "";
-  PetscReal   n = 0, h = 0, k = 5; /* 5 iterations: see docs/remeshing.md (min angle on cow/triceratops by k) */
-  char        want[128];
+  PetscInt  n = 0, k = 5; /* 5 iterations: see docs/remeshing.md (min angle on cow/triceratops by k) */
+  PetscReal h = 0;
+  PetscBool setn = PETSC_FALSE, seth = PETSC_FALSE;
+  char      want[128];
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, prefix, "Isotropic remeshing (CGAL) of the input", NULL);
-  PetscCall(CSOptionsString("-mesh_remesh", "Remesh the input isotropically to about N faces (CGAL isotropic_remeshing, before -mesh_refine; docs/remeshing.md)", "CSMeshDataRemesh", tn, tn, sizeof(tn), NULL));
-  PetscCall(CSOptionsString("-mesh_remesh_edge_length", "Remesh the input isotropically to this target edge length (instead of -mesh_remesh N)", "CSMeshDataRemesh", th, th, sizeof(th), NULL));
-  PetscCall(CSOptionsString("-mesh_remesh_iterations", "Iterations of the isotropic remeshing (split, collapse, flip, relax, project), default 5", "CSMeshDataRemesh", tk, tk, sizeof(tk), NULL));
+  PetscCall(CSOptionsInt("-mesh_remesh", "Remesh the input isotropically to about N faces (CGAL isotropic_remeshing, before -mesh_refine; docs/remeshing.md)", "CSMeshDataRemesh", n, &n, &setn));
+  PetscCall(CSOptionsReal("-mesh_remesh_edge_length", "Remesh the input isotropically to this target edge length (instead of -mesh_remesh N)", "CSMeshDataRemesh", h, &h, &seth));
+  PetscCall(CSOptionsInt("-mesh_remesh_iterations", "Iterations of the isotropic remeshing (split, collapse, flip, relax, project)", "CSMeshDataRemesh", k, &k, NULL));
   PetscOptionsEnd();
   PetscCall(PetscSNPrintf(want, sizeof(want), "want an integer face count in [%d, %.0e]", CS_REMESH_MIN_FACES, (double)CS_REMESH_MAX_FACES));
-  PetscCall(ParseOption(comm, pre, "mesh_remesh", tn, PETSC_TRUE, CS_REMESH_MIN_FACES, CS_REMESH_MAX_FACES, want, &n));
-  PetscCall(ParseOption(comm, pre, "mesh_remesh_edge_length", th, PETSC_FALSE, 0, PETSC_MAX_REAL, "want a finite length > 0", &h));
-  PetscCall(ParseOption(comm, pre, "mesh_remesh_iterations", tk, PETSC_TRUE, 1, 100, "want an integer in [1, 100]", &k));
-  PetscCheck(!(tn[0] && th[0]), comm, PETSC_ERR_ARG_INCOMP, "-%smesh_remesh %s with -%smesh_remesh_edge_length %s: give one of them", pre, tn, pre, th);
-  src->remesh_faces      = (PetscInt)n;
-  src->remesh_h          = h;
-  src->remesh_iterations = (PetscInt)k;
+  {
+    const CSOptionCheck checks[] = {
+      {"mesh_remesh", (PetscReal)n, !setn || (n >= CS_REMESH_MIN_FACES && n <= CS_REMESH_MAX_FACES), want},
+      {"mesh_remesh_edge_length", h, !seth || (h > 0 && h <= PETSC_MAX_REAL), "want a finite length > 0"},
+      {"mesh_remesh_iterations", (PetscReal)k, k >= 1 && k <= 100, "want an integer in [1, 100]"},
+    };
+    PetscCall(CSCheckOptionValues(comm, prefix, sizeof(checks) / sizeof(checks[0]), checks));
+  }
+  PetscCheck(!(setn && seth), comm, PETSC_ERR_ARG_INCOMP, "-%smesh_remesh %" PetscInt_FMT " with -%smesh_remesh_edge_length %g: give one of them", prefix ? prefix : "", n, prefix ? prefix : "", (double)h);
+  src->remesh_faces      = setn ? n : 0;
+  src->remesh_h          = seth ? h : 0;
+  src->remesh_iterations = k;
   PetscFunctionReturn(0);
 }
 

@@ -57,6 +57,11 @@ if [ -e h.csv ]; then head -1 h.csv | grep -q "^-----" || { echo "BAD: h.csv is 
 EXPECT="-flow_max_it 4294967298: out of range" refuse $F -flow_max_it 4294967298
 serial && EXPECT="-gen_level 4294967298: out of range" refuse $G -gen_level 4294967298
 EXPECT="-flow_max_it 99999999999999999999: out of range" refuse $F -flow_max_it 99999999999999999999
+# an integer option given a fraction or one of PETSc's words is refused naming the option (PETSc's reader named
+# only the string, and turned DEFAULT into -2)
+serial && EXPECT="-gen_level 1.5: not an integer" refuse $G -gen_level 1.5
+serial && EXPECT="-flow_max_it DEFAULT: not an integer" refuse $F -flow_max_it DEFAULT
+serial && EXPECT="-flow_rtol abc: not a number" refuse $F -flow_rtol abc
 long=$(printf 'a%.0s' $(seq 4100))
 EXPECT="-summary: the value is 4105 characters long, at most 4095" refuse $G -summary "$long.json"
 serial && EXPECT="-mesh: the value is 4104 characters long" refuse -task info -mesh "$long.obj"
