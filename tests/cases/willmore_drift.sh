@@ -11,6 +11,7 @@ source tests/lib.sh
 G="-task flow -gen torus -gen_torus_R 2 -gen_tube_r 1 -gen_n 64 -gen_m 32 -mesh_remesh 2400 -flow_constraint_mobius -flow_t_mu_final 4e9 -flow_t_mu_final_el 5e-3 -flow_max_it 300"
 timeout 300 $MPIEXEC "$CS_BIN" $G -flow_drift_wtol 3e-6 -summary "$TMP/d.json" -history_csv "$TMP/d.csv" -o "$TMP/d.obj" > "$TMP/d.log" 2>&1 || { tail "$TMP/d.log"; exit 1; }
 grep -q "drifting at iteration" "$TMP/d.log" || { echo "BAD: no drift line"; tail -5 "$TMP/d.log"; exit 1; }
+grep -q "drifting at iteration.*a saddle of the discrete energy" "$TMP/d.log" || { echo "BAD: with the Moebius gauge fixed the drift line must name the saddle, not a Moebius slide"; exit 1; }
 python3 - "$TMP" <<'PY'
 import csv, json, sys
 d = sys.argv[1]

@@ -138,6 +138,15 @@ PetscErrorCode CSWFCheckStationary(CSWillmoreFlow F, CSWillmoreFlowConvergedReas
    is left is a slide along a direction of nearly constant W away from the nearest critical point: the remeshed
    fat torus's cos 2phi mode, a saddle of the discrete problem whose growth rate shrinks like h^2 (docs/real_meshes.md,
    issue 35). It cannot converge at this mesh, so it stops, and -flow_keep_best returns the smallest residual. */
+/* The likely cause in the user's words: without the Moebius gauge a closed surface can slide along a Moebius orbit
+   (the R/r = 1.8 torus and the genus-2 theta converge once it is fixed, docs/real_meshes.md sections 4-5); with it,
+   what is left is a saddle of the discrete energy (the remeshed R/r = 2 torus). */
+static const char *DriftCause(CSWillmoreFlow F)
+{
+  if (F->conformal && !F->mobius && F->mesh->topo.boundary_loops == 0) return "likely a slide along a Moebius orbit, to which the conformal constraint is blind: rerun with -flow_constraint_mobius to fix that gauge";
+  return "a saddle of the discrete energy, as on a remeshed torus at R/r = 2";
+}
+
 PetscErrorCode CSWFCheckDrift(CSWillmoreFlow F, CSWillmoreFlowConvergedReason *reason)
 {
   PetscInt  K = F->drift_window, n = F->stat_n;
@@ -146,7 +155,7 @@ PetscErrorCode CSWFCheckDrift(CSWillmoreFlow F, CSWillmoreFlowConvergedReason *r
   if (!K || n < K || F->els_min <= 0 || !(F->els >= F->drift_rise * F->els_min) || !(PetscMax(F->conf, F->glob) < F->ctol)) PetscFunctionReturn(0);
   for (PetscInt j = n - K + 1; j <= n; j++) dw = PetscMax(dw, PetscAbsReal(F->stat_W[j] - F->stat_W[j - 1]) / PetscMax(PetscAbsReal(F->stat_W[j]), PETSC_SMALL));
   if (!(dw <= F->drift_wtol)) PetscFunctionReturn(0);
-  PetscCall(PetscPrintf(F->comm, "flow: drifting at iteration %" PetscInt_FMT ", not converging: over the last %" PetscInt_FMT " steps W changed by at most %.1e per step (relative; -%sdrift_wtol %g) while el_residual_scaled rose to %.3e, %.2f times its smallest value %.3e at iteration %" PetscInt_FMT " (-%sdrift_rise %g), violation %.2e. The flow slides along a direction of nearly constant W (on a remeshed torus of a fat class: a saddle of the discrete energy, docs/real_meshes.md)\n", F->it, K, (double)dw, F->prefix, (double)F->drift_wtol, (double)F->els, (double)(F->els / F->els_min), (double)F->els_min, F->els_min_it, F->prefix, (double)F->drift_rise, (double)PetscMax(F->conf, F->glob)));
+  PetscCall(PetscPrintf(F->comm, "flow: drifting at iteration %" PetscInt_FMT ", not converging: over the last %" PetscInt_FMT " steps W changed by at most %.1e per step (relative; -%sdrift_wtol %g) while el_residual_scaled rose to %.3e, %.2f times its smallest value %.3e at iteration %" PetscInt_FMT " (-%sdrift_rise %g), violation %.2e. The flow slides along a direction of nearly constant W (%s, docs/real_meshes.md)\n", F->it, K, (double)dw, F->prefix, (double)F->drift_wtol, (double)F->els, (double)(F->els / F->els_min), (double)F->els_min, F->els_min_it, F->prefix, (double)F->drift_rise, (double)PetscMax(F->conf, F->glob), DriftCause(F)));
   *reason = CS_WILLMORE_FLOW_DIVERGED_DRIFT;
   PetscFunctionReturn(0);
 }
