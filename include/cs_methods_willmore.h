@@ -127,6 +127,8 @@ PETSC_EXTERN PetscErrorCode CSWillmoreFlowUseBest(CSWillmoreFlow flow, PetscBool
    the triangle field (CSTriangleFieldReconstruct), whose own vector CSWillmoreFlowGetVariables gives. */
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetSolution(CSWillmoreFlow flow, Vec *x);   /* borrowed */
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetInitial(CSWillmoreFlow flow, Vec *x0);   /* borrowed */
+/* The positions of the last state when CSWillmoreFlowUseBest replaced it by the kept best (borrowed), else NULL. */
+PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetLastSolution(CSWillmoreFlow flow, Vec *x);
 /* The flow's own variables (positions, or the triangle field omega on halfedges; borrowed). */
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetVariables(CSWillmoreFlow flow, Vec *x);
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetMesh(CSWillmoreFlow flow, CSMesh *mesh);

@@ -86,6 +86,28 @@ static PetscErrorCode CheckImmersion(CSWillmoreFlow flow, CSOutput *out, CSMesh 
   PetscCall(CSOutputWriteSummary(out, mesh->comm));
   SETERRQ(mesh->comm, PETSC_ERR_NOT_CONVERGED, "-o %s: the triangle field is not integrable (integrability violation %.2e > -%simmersion_tol %.1e), so its Poisson reconstruction is not an immersion of it; the mesh was not written (run the flow to convergence)", out->out, (double)i->integrability_violation, prefix ? prefix : "", (double)tol);
 }
+/* -flow_keep_best put the kept best state into -o; the last state goes beside it as <stem>_last<ext> (issue 35: nothing
+   computed is thrown away; a guard stop's best can be an early state of small residual and the last one the state of
+   lowest W), named in the summary (last_state_file). */
+static PetscErrorCode WriteLastState(CSWillmoreFlow flow, CSOutput *out, CSMesh mesh)
+{
+  Vec         last;
+  char        path[PETSC_MAX_PATH_LEN];
+  const char *slash, *dot;
+  size_t      stem;
+  PetscFunctionBeginUser;
+  PetscCall(CSWillmoreFlowGetLastSolution(flow, &last));
+  if (!last || !out->has_out) PetscFunctionReturn(0);
+  slash = strrchr(out->out, '/');
+  dot   = strrchr(slash ? slash : out->out, '.');
+  stem  = dot ? (size_t)(dot - out->out) : strlen(out->out);
+  PetscCheck(snprintf(path, sizeof(path), "%.*s_last%s", (int)stem, out->out, dot ? dot : "") < (int)sizeof(path), mesh->comm, PETSC_ERR_ARG_SIZ, "-o %s: the name of the last state's file beside it is too long", out->out);
+  PetscCall(CSMeshWrite(mesh, last, path));
+  PetscCall(PetscPrintf(mesh->comm, "wrote the last state of the run to %s (-o holds the best)\n", path));
+  PetscCall(CSJSONAddString(out->json, "last_state_file", path));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode CSWillmoreFlowReport(CSWillmoreFlow flow, CSOutput *out)
 {
   CSWillmoreFlowInfo            i, last;
@@ -112,6 +134,7 @@ PetscErrorCode CSWillmoreFlowReport(CSWillmoreFlow flow, CSOutput *out)
   PetscCall(SummaryKeys(flow, out, &i));
   PetscCall(CSOutputAddMeshFacts(out, mesh, x, x0));
   PetscCall(CheckImmersion(flow, out, mesh, &i));
+  PetscCall(WriteLastState(flow, out, mesh));
   PetscCall(CSOutputFinish(out, mesh, x));
   PetscFunctionReturn(0);
 }

@@ -34,6 +34,10 @@ for name, ok, v in checks:
   print(("ok  " if ok else "BAD ") + name + ": " + repr(v)); bad += not ok
 sys.exit(bad)
 PY
+# nothing computed is lost: the last state goes beside -o (d_last.obj), its W the summary's last_energy
+[ "$(json last_state_file "$TMP/d.json")" = "$TMP/d_last.obj" ] || { echo "BAD: last_state_file is '$(json last_state_file "$TMP/d.json")', not $TMP/d_last.obj"; exit 1; }
+"$CS_BIN" -task info -mesh "$TMP/d_last.obj" -summary "$TMP/l.json" > /dev/null || exit 1
+check_close "$(json willmore "$TMP/l.json")" "$(json last_energy "$TMP/d.json")" 1e-9 "W of d_last.obj against last_energy:" || exit 1
 B="-task flow -gen icosphere -gen_level 1 -flow_max_it 1"
 EXPECT="-flow_drift_rise" expect_fail timeout 30 $MPIEXEC "$CS_BIN" $B -flow_drift_rise 0.5
 EXPECT="-flow_drift_window" expect_fail timeout 30 $MPIEXEC "$CS_BIN" $B -flow_drift_window 65

@@ -212,6 +212,13 @@ PetscErrorCode CSWillmoreFlowGetVariables(CSWillmoreFlow F, Vec *x)
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode CSWillmoreFlowGetLastSolution(CSWillmoreFlow F, Vec *x)
+{
+  PetscFunctionBeginUser;
+  *x = F->best_used ? F->last_x : NULL;
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode CSWillmoreFlowGetInitial(CSWillmoreFlow F, Vec *x0)
 {
   PetscFunctionBeginUser;

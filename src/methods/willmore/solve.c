@@ -203,6 +203,8 @@ PetscErrorCode CSWillmoreFlowUseBest(CSWillmoreFlow F, PetscBool *used)
   F->last_it  = F->it;
   F->last_E   = F->E;
   F->last_els = F->els;
+  if (!F->last_x) PetscCall(VecDuplicate(F->x, &F->last_x));
+  PetscCall(VecCopy(F->x, F->last_x)); /* nothing computed is lost: the report writes it beside -o */
   PetscCall(VecCopy(F->best_x, F->x));
   if (F->mu) PetscCall(VecCopy(F->best_mu, F->mu));
   for (PetscInt j = 0; j < F->k; j++) F->nu[j] = F->best_nu[j];

@@ -211,6 +211,7 @@ PetscErrorCode CSWFStopDestroy(CSWillmoreFlow F)
   PetscCall(VecDestroy(&F->stat_x));
   PetscCall(VecDestroy(&F->best_x));
   PetscCall(VecDestroy(&F->best_mu));
+  PetscCall(VecDestroy(&F->last_x));
   PetscCall(PetscFree(F->best_nu));
   PetscFunctionReturn(0);
 }

@@ -247,6 +247,7 @@ struct _p_CSWillmoreFlow {
   PetscReal             best_els, best_E, last_E, last_els;
   PetscInt              last_it;
   PetscBool             best_used;
+  Vec                   last_x;               /* the last state's variables once the best replaced them (written beside -o) */
 };
 
 /* the residual -flow_rtol tests (-flow_el_norm) */
