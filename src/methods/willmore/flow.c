@@ -322,6 +322,7 @@ PetscErrorCode CSWillmoreFlowDestroy(CSWillmoreFlow *flow)
   PetscCall(CSConformalConstraintDestroy(&F->cc));
   PetscCall(CSNormalConstraintDestroy(&F->nc));
   for (PetscInt j = 0; j < F->ng; j++) PetscCall(CSGlobalConstraintDestroy(&F->gc[j]));
+  PetscCall(PetscFree(F->gc));
   if (F->k) PetscCall(VecDestroyVecs(F->k, &F->rows));
   PetscCall(PetscFree(F->dnu2));
   PetscCall(PetscFree6(F->cx, F->cxt, F->nu, F->dnu, F->gw, F->nun));

@@ -27,13 +27,23 @@ PetscErrorCode CSWFSetUpBoundary(CSWillmoreFlow F)
   PetscFunctionReturn(0);
 }
 
+/* Append a global constraint to the flow's list (grown as needed; the flow owns g from here on). */
+PetscErrorCode CSWFAddConstraint(CSWillmoreFlow F, CSGlobalConstraint g)
+{
+  PetscFunctionBeginUser;
+  PetscCall(CSArrayGrow(sizeof(CSGlobalConstraint), F->ng, 8, &F->ngmax, (void **)&F->gc));
+  F->gc[F->ng++] = g;
+  PetscFunctionReturn(0);
+}
+
 /* The conformal constraint (target: the input's class, that of -flow_target_mesh, or the input's intrinsic
    lengths when it has them: -gen lattice) and the global ones. */
 PetscErrorCode CSWFSetUpConstraints(CSWillmoreFlow F)
 {
-  CSMesh    m = F->mesh;
-  PetscReal A, V;
-  char      opt[96];
+  CSMesh             m = F->mesh;
+  PetscReal          A, V;
+  char               opt[96];
+  CSGlobalConstraint g;
   PetscFunctionBeginUser;
   if (F->conformal) {
     Vec xt = F->x0;
@@ -49,19 +59,24 @@ PetscErrorCode CSWFSetUpConstraints(CSWillmoreFlow F)
   PetscCheck(!F->area_set || !F->area_given || F->area_target > 0, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sconstraint_area %g: the target area must be positive", F->prefix, (double)F->area_target);
   PetscCheck(!F->vol_set || m->topo.boundary_loops == 0, F->comm, PETSC_ERR_ARG_WRONG, "-%sconstraint_volume: the mesh %s has %" PetscInt_FMT " boundary loop(s); the enclosed volume is only defined for closed surfaces", F->prefix, m->name, m->topo.boundary_loops);
   PetscCheck(!F->vol_set || (F->vol_given ? F->vol_target : V) > 0, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sconstraint_volume %g: the target volume must be positive (outward-oriented surface)", F->prefix, (double)(F->vol_given ? F->vol_target : V));
-  if (F->area_set) PetscCall(CSConstraintCreateArea(m, F->area_given ? F->area_target : A, &F->gc[F->ng++]));
-  if (F->vol_set) PetscCall(CSConstraintCreateVolume(m, F->vol_given ? F->vol_target : V, &F->gc[F->ng++]));
+  if (F->area_set) PetscCall(CSConstraintCreateArea(m, F->area_given ? F->area_target : A, &g));
+  if (F->area_set) PetscCall(CSWFAddConstraint(F, g));
+  if (F->vol_set) PetscCall(CSConstraintCreateVolume(m, F->vol_given ? F->vol_target : V, &g));
+  if (F->vol_set) PetscCall(CSWFAddConstraint(F, g));
   PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%sconstraint_points", F->prefix));
-  if (F->points[0]) PetscCall(CSConstraintCreatePointsFromFile(m, opt, F->points, &F->gc[F->ng++]));
+  if (F->points[0]) PetscCall(CSConstraintCreatePointsFromFile(m, opt, F->points, &g));
+  if (F->points[0]) PetscCall(CSWFAddConstraint(F, g));
   /* Moebius balancing on request: not the default, its 3 dense rows cost 3 more solves per step
      (docs/willmore_flow.md), and soliman2021's method has no such rows */
   if (F->mobius) {
     PetscCheck(F->conformal, F->comm, PETSC_ERR_ARG_INCOMP, "-%sconstraint_mobius fixes the Moebius gauge of the conformal constraint: it needs -%sconformal (cgd, pgd)", F->prefix, F->prefix);
-    PetscCall(CSConstraintCreateMobiusBalance(m, F->x0, &F->gc[F->ng++]));
+    PetscCall(CSConstraintCreateMobiusBalance(m, F->x0, &g));
+    PetscCall(CSWFAddConstraint(F, g));
   }
   if (F->rotation) {
     PetscCheck(F->conformal && F->mobius, F->comm, PETSC_ERR_ARG_INCOMP, "-%sconstraint_rotation fixes the rotations of the domain left free by the conformal constraint and the Moebius balancing: it needs -%sconformal and -%sconstraint_mobius", F->prefix, F->prefix, F->prefix);
-    PetscCall(CSConstraintCreateRotationGauge(m, F->x0, &F->gc[F->ng++]));
+    PetscCall(CSConstraintCreateRotationGauge(m, F->x0, &g));
+    PetscCall(CSWFAddConstraint(F, g));
   }
   for (PetscInt j = 0; j < F->ng; j++) F->k += F->gc[j]->k;
   PetscCheck(F->conformal || F->k == 0 || !F->ops.projected, F->comm, PETSC_ERR_ARG_INCOMP, "pgd without the conformal constraint is not supported");

@@ -160,8 +160,8 @@ struct _p_CSWillmoreFlow {
   Mat                   Xn, Xext, Xc; /* nest [X; DN], its AIJ form, and the Jacobian in use (X or Xext) */
   IS                    isM[2];       /* edge / normal rows in the multiplier layout */
   Vec                   cE, cN, iqE, iqN;
-  PetscInt              ng, k;
-  CSGlobalConstraint    gc[5]; /* area, volume, points, Moebius balance, rotation gauge */
+  PetscInt              ng, ngmax, k; /* global constraints (ng of ngmax slots), their rows */
+  CSGlobalConstraint   *gc;    /* area, volume, points, Moebius balance, rotation gauge, registered ones (grows) */
   PetscBool            *fixed;   /* local vertices held fixed (Dirichlet), or NULL */
   IS                    fixedIS; /* global dmV3 dofs of owned fixed vertices */
   CSMetric              metric;
@@ -302,6 +302,7 @@ PETSC_INTERN PetscErrorCode CSWFStopDestroy(CSWillmoreFlow F);
 /* setup.c */
 PETSC_INTERN PetscErrorCode CSWFSetUpBoundary(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFSetUpConstraints(CSWillmoreFlow F);
+PETSC_INTERN PetscErrorCode CSWFAddConstraint(CSWillmoreFlow F, CSGlobalConstraint g);
 PETSC_INTERN PetscErrorCode CSWFSetUpPrimalVectors(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFSetUpMultiplierVectors(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFSetUpVectors(CSWillmoreFlow F);
