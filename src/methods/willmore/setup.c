@@ -27,15 +27,6 @@ PetscErrorCode CSWFSetUpBoundary(CSWillmoreFlow F)
   PetscFunctionReturn(0);
 }
 
-/* Append a global constraint to the flow's list (grown as needed; the flow owns g from here on). */
-PetscErrorCode CSWFAddConstraint(CSWillmoreFlow F, CSGlobalConstraint g)
-{
-  PetscFunctionBeginUser;
-  PetscCall(CSArrayGrow(sizeof(CSGlobalConstraint), F->ng, 8, &F->ngmax, (void **)&F->gc));
-  F->gc[F->ng++] = g;
-  PetscFunctionReturn(0);
-}
-
 /* The conformal constraint (target: the input's class, that of -flow_target_mesh, or the input's intrinsic
    lengths when it has them: -gen lattice) and the global ones. */
 PetscErrorCode CSWFSetUpConstraints(CSWillmoreFlow F)
@@ -78,6 +69,7 @@ PetscErrorCode CSWFSetUpConstraints(CSWillmoreFlow F)
     PetscCall(CSConstraintCreateRotationGauge(m, F->x0, &g));
     PetscCall(CSWFAddConstraint(F, g));
   }
+  PetscCall(CSWFSetUpAddedConstraints(F));
   for (PetscInt j = 0; j < F->ng; j++) F->k += F->gc[j]->k;
   PetscCheck(F->conformal || F->k == 0 || !F->ops.projected, F->comm, PETSC_ERR_ARG_INCOMP, "pgd without the conformal constraint is not supported");
   PetscFunctionReturn(0);
@@ -155,17 +147,10 @@ PetscErrorCode CSWFSetUpScaling(CSWillmoreFlow F)
   PetscCall(CSGeometryAreaVolume(F->mesh, F->x0, &A, &V));
   sc                    = A / (4 * PETSC_PI);
   F->metric.mass_weight = 1.0 / (sc * sc);
-  /* The fairing energy E = 1/2 |f - f0|^2_{*0(f0)} + eps W (soliman2021 Eq. 21): its fidelity term is a fixed
-     quadratic with Hessian *0, which the metric of W alone (w *0 + L *0^{-1} L, w = 1/s^4) does not see: along
-     the low modes (translations, scalings) the step was t/w times the fidelity gradient, 300 t on the low-res
-     bunny, and the flow oscillated (the volume 194 -> 198 -> 191 -> 197 in the first steps at eps 0.1) and then
-     drifted (60 iterations: E 13.6 -> 1.6e7). The metric of the sum, eps (w *0 + L *0^{-1} L) + *0 =
-     eps ((w + 1/eps) *0 + L *0^{-1} L), is a Newton step on the fidelity and the W metric on the rest (with the
-     current mass *0(f) for *0(f0)). */
-  if (!strcmp(F->energy_name, "fairing")) {
-    PetscCheck(F->metric_type != CS_FLOW_METRIC_H1, F->comm, PETSC_ERR_SUP, "-%smetric h1 with -%senergy fairing: not built (the fidelity's Newton weight below is for the H^2 metric's mass term)", F->prefix, F->prefix);
-    F->metric.scale = F->eps;
-    F->metric.mass_weight += 1.0 / F->eps;
+  /* an energy with its own metric term (the fairing energy's fidelity, soliman2021 Eq. 21: energy_fairing.c) */
+  if (F->energy->metric) {
+    PetscCheck(F->metric_type != CS_FLOW_METRIC_H1, F->comm, PETSC_ERR_SUP, "-%smetric h1 with -%senergy %s: not built (the energy's metric term is a weight on the H^2 metric's mass term)", F->prefix, F->prefix, F->energy_name);
+    PetscCall(CSEnergyMetric(F->energy, &F->metric));
   }
   /* the ceiling of t_mu: with its own ramp 1e3 t_max; following t, none but tmu_ratio_max (each rejection
      raises t_mu / t twofold for good, up to 1e3 times its initial value, see the step control) */
@@ -227,6 +212,7 @@ PetscErrorCode CSWillmoreFlowSetUp(CSWillmoreFlow F)
   PetscCall(CheckMemory(F));
   /* rather refused than ignored: the least-squares multipliers are CGD's dual step on the conformal rows */
   PetscCheck(!F->mu_ls_every || (F->ops.dual == CSWFMultiplierLS && F->conformal), F->comm, PETSC_ERR_SUP, "-%smultiplier_ls_every %" PetscInt_FMT ": only for -%stype cgd with the conformal constraint", F->prefix, F->mu_ls_every, F->prefix);
+  PetscCheck(!F->nadded || !F->ops.setup_problem, F->comm, PETSC_ERR_SUP, "CSWillmoreFlowAddConstraint(%s): the registered constraints act on vertex positions, not on the variables of -%stype %s", F->nadded ? F->added[0] : "", F->prefix, F->type);
   if (F->ops.setup_problem) { /* a kind with its own variables (trianglefield) */
     PetscCall((*F->ops.setup_problem)(F));
     F->setupcalled = PETSC_TRUE;
