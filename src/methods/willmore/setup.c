@@ -28,7 +28,8 @@ PetscErrorCode CSWFSetUpBoundary(CSWillmoreFlow F)
 }
 
 /* The conformal constraint (target: the input's class, that of -flow_target_mesh, or the input's intrinsic
-   lengths when it has them: -gen lattice) and the global ones. */
+   lengths when it has them: -gen lattice) and the global ones: those of the options, then those added by name
+   (constraints.c). */
 PetscErrorCode CSWFSetUpConstraints(CSWillmoreFlow F)
 {
   CSMesh             m = F->mesh;
@@ -50,13 +51,19 @@ PetscErrorCode CSWFSetUpConstraints(CSWillmoreFlow F)
   PetscCheck(!F->area_set || !F->area_given || F->area_target > 0, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sconstraint_area %g: the target area must be positive", F->prefix, (double)F->area_target);
   PetscCheck(!F->vol_set || m->topo.boundary_loops == 0, F->comm, PETSC_ERR_ARG_WRONG, "-%sconstraint_volume: the mesh %s has %" PetscInt_FMT " boundary loop(s); the enclosed volume is only defined for closed surfaces", F->prefix, m->name, m->topo.boundary_loops);
   PetscCheck(!F->vol_set || (F->vol_given ? F->vol_target : V) > 0, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sconstraint_volume %g: the target volume must be positive (outward-oriented surface)", F->prefix, (double)(F->vol_given ? F->vol_target : V));
-  if (F->area_set) PetscCall(CSConstraintCreateArea(m, F->area_given ? F->area_target : A, &g));
-  if (F->area_set) PetscCall(CSWFAddConstraint(F, g));
-  if (F->vol_set) PetscCall(CSConstraintCreateVolume(m, F->vol_given ? F->vol_target : V, &g));
-  if (F->vol_set) PetscCall(CSWFAddConstraint(F, g));
+  if (F->area_set) {
+    PetscCall(CSConstraintCreateArea(m, F->area_given ? F->area_target : A, &g));
+    PetscCall(CSWFAddConstraint(F, g));
+  }
+  if (F->vol_set) {
+    PetscCall(CSConstraintCreateVolume(m, F->vol_given ? F->vol_target : V, &g));
+    PetscCall(CSWFAddConstraint(F, g));
+  }
   PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%sconstraint_points", F->prefix));
-  if (F->points[0]) PetscCall(CSConstraintCreatePointsFromFile(m, opt, F->points, &g));
-  if (F->points[0]) PetscCall(CSWFAddConstraint(F, g));
+  if (F->points[0]) {
+    PetscCall(CSConstraintCreatePointsFromFile(m, opt, F->points, &g));
+    PetscCall(CSWFAddConstraint(F, g));
+  }
   /* Moebius balancing on request: not the default, its 3 dense rows cost 3 more solves per step
      (docs/willmore_flow.md), and soliman2021's method has no such rows */
   if (F->mobius) {
