@@ -171,53 +171,51 @@ static PetscErrorCode CheckToyFlow(MPI_Comm comm)
   PetscFunctionReturn(0);
 }
 
-/* Every registered energy (the toy one included): its gradient against central differences. */
-static PetscErrorCode CheckEnergies(MPI_Comm comm, CSMesh m, Vec x0)
+/* One registered energy (the toy one included): its gradient against central differences. */
+static PetscErrorCode CheckEnergy(MPI_Comm comm, CSMesh m, Vec x0, const char name[], PetscVoidFunction fn)
 {
-  PetscFunctionList list;
-  const char      **names;
-  int               n;
-  char              what[128];
+  PetscErrorCode (*create)(CSMesh, Vec, CSEnergy *) = (PetscErrorCode(*)(CSMesh, Vec, CSEnergy *))fn;
+  CSEnergy  e;
+  PetscReal err;
+  char      what[128];
   PetscFunctionBeginUser;
-  PetscCall(CSWillmoreFlowEnergyList(&list));
-  PetscCall(PetscFunctionListGet(list, &names, &n));
-  for (int i = 0; i < n && names[i]; i++) {
-    PetscErrorCode (*create)(CSMesh, Vec, CSEnergy *);
-    CSEnergy  e;
-    PetscReal err;
-    PetscCall(PetscFunctionListFind(list, names[i], &create));
-    PetscCall((*create)(m, x0, &e));
-    PetscCall(CSEnergySetOptionsPrefix(e, "check_"));
-    PetscCall(CSEnergySetFromOptions(e));
-    PetscCall(CSEnergyCheckGradient(e, m->x, 1e-6, 3, &err));
-    PetscCall(PetscSNPrintf(what, sizeof(what), "energy %s: FD gradient (relative)", names[i]));
-    PetscCall(CSTestCheck(comm, (PetscBool)(err < 1e-6), what, err, 1e-6));
-    PetscCall(CSEnergyDestroy(&e));
-  }
-  PetscCall(PetscFree(names));
+  PetscCall((*create)(m, x0, &e));
+  PetscCall(CSEnergySetOptionsPrefix(e, "check_"));
+  PetscCall(CSEnergySetFromOptions(e));
+  PetscCall(CSEnergyCheckGradient(e, m->x, 1e-6, 3, &err));
+  PetscCall(PetscSNPrintf(what, sizeof(what), "energy %s: FD gradient (relative)", name));
+  PetscCall(CSTestCheck(comm, (PetscBool)(err < 1e-6), what, err, 1e-6));
+  PetscCall(CSEnergyDestroy(&e));
   PetscFunctionReturn(0);
 }
 
-/* Every registered constraint (the toy one included): its rows against central differences. */
-static PetscErrorCode CheckConstraints(MPI_Comm comm, CSMesh m, Vec x0)
+/* One registered constraint (the toy one included): its rows against central differences. */
+static PetscErrorCode CheckConstraint(MPI_Comm comm, CSMesh m, Vec x0, const char name[], PetscVoidFunction fn)
 {
-  PetscFunctionList list;
-  const char      **names;
-  int               n;
-  char              what[128];
+  PetscErrorCode (*create)(CSMesh, Vec, const char[], CSGlobalConstraint *) = (PetscErrorCode(*)(CSMesh, Vec, const char[], CSGlobalConstraint *))fn;
+  CSGlobalConstraint g;
+  PetscReal          err;
+  char               what[128];
   PetscFunctionBeginUser;
-  PetscCall(CSWillmoreFlowConstraintList(&list));
+  PetscCall((*create)(m, x0, "check_", &g));
+  PetscCall(CSGlobalConstraintCheckRows(g, m->x, 1e-6, 3, &err));
+  PetscCall(PetscSNPrintf(what, sizeof(what), "constraint %s: FD rows (%" PetscInt_FMT ", relative)", name, g->k));
+  PetscCall(CSTestCheck(comm, (PetscBool)(err < 1e-6), what, err, 1e-6));
+  PetscCall(CSGlobalConstraintDestroy(&g));
+  PetscFunctionReturn(0);
+}
+
+/* check on every entry of a registry, in registration order */
+static PetscErrorCode CheckEach(MPI_Comm comm, PetscFunctionList list, CSMesh m, Vec x0, PetscErrorCode (*check)(MPI_Comm, CSMesh, Vec, const char[], PetscVoidFunction))
+{
+  const char **names;
+  int          n;
+  PetscFunctionBeginUser;
   PetscCall(PetscFunctionListGet(list, &names, &n));
-  for (int i = 0; i < n && names[i]; i++) {
-    PetscErrorCode (*create)(CSMesh, Vec, const char[], CSGlobalConstraint *);
-    CSGlobalConstraint g;
-    PetscReal          err;
-    PetscCall(PetscFunctionListFind(list, names[i], &create));
-    PetscCall((*create)(m, x0, "check_", &g));
-    PetscCall(CSGlobalConstraintCheckRows(g, m->x, 1e-6, 3, &err));
-    PetscCall(PetscSNPrintf(what, sizeof(what), "constraint %s: FD rows (%" PetscInt_FMT ", relative)", names[i], g->k));
-    PetscCall(CSTestCheck(comm, (PetscBool)(err < 1e-6), what, err, 1e-6));
-    PetscCall(CSGlobalConstraintDestroy(&g));
+  for (int i = 0; i < n && names[i]; i++) { /* n counts a closing NULL */
+    PetscVoidFunction fn;
+    PetscCall(PetscFunctionListFind(list, names[i], &fn));
+    PetscCall((*check)(comm, m, x0, names[i], fn));
   }
   PetscCall(PetscFree(names));
   PetscFunctionReturn(0);
@@ -227,17 +225,20 @@ static PetscErrorCode CheckConstraints(MPI_Comm comm, CSMesh m, Vec x0)
    term is at its minimum, where a wrong gradient could still vanish). */
 static PetscErrorCode CheckRegistered(MPI_Comm comm)
 {
-  CSMesh      m;
-  Vec         x0;
-  PetscRandom r;
+  CSMesh            m;
+  Vec               x0;
+  PetscRandom       r;
+  PetscFunctionList list;
   PetscFunctionBeginUser;
   PetscCall(MakeMesh(comm, &m));
   PetscCall(VecDuplicate(m->x, &x0));
   PetscCall(CSTestRandom(comm, -0.02, 0.02, 11, &r));
   PetscCall(VecSetRandom(x0, r));
   PetscCall(VecAXPY(x0, 1.0, m->x));
-  PetscCall(CheckEnergies(comm, m, x0));
-  PetscCall(CheckConstraints(comm, m, x0));
+  PetscCall(CSWillmoreFlowEnergyList(&list));
+  PetscCall(CheckEach(comm, list, m, x0, CheckEnergy));
+  PetscCall(CSWillmoreFlowConstraintList(&list));
+  PetscCall(CheckEach(comm, list, m, x0, CheckConstraint));
   PetscCall(PetscRandomDestroy(&r));
   PetscCall(VecDestroy(&x0));
   PetscCall(CSMeshDestroy(&m));
