@@ -58,6 +58,11 @@ struct _p_CSGlobalConstraint {
 };
 PETSC_EXTERN PetscErrorCode CSGlobalConstraintEvaluate(CSGlobalConstraint g, Vec x, PetscReal c[], Vec rows[]);
 PETSC_EXTERN PetscErrorCode CSGlobalConstraintDestroy(CSGlobalConstraint *g);
+/* For implementations: a constraint of k rows with a name; set ctx, evaluate and destroy. */
+PETSC_EXTERN PetscErrorCode CSGlobalConstraintCreateShell(CSMesh mesh, const char name[], PetscInt k, CSGlobalConstraint *g);
+/* Central finite-difference check of the rows (as CSEnergyCheckGradient): the largest error of the slopes of c
+   along n seeded random directions, relative to the largest row's slope. Collective. */
+PETSC_EXTERN PetscErrorCode CSGlobalConstraintCheckRows(CSGlobalConstraint g, Vec x, PetscReal h, PetscInt n, PetscReal *relerr);
 /* Total area A(f) = target (soliman2021 Sec. 2; gradient Lf). */
 PETSC_EXTERN PetscErrorCode CSConstraintCreateArea(CSMesh mesh, PetscReal target, CSGlobalConstraint *g);
 /* Enclosed volume V(f) = target (App. B.2; gradient Eq. 23). Refused on surfaces with boundary. */

@@ -171,7 +171,20 @@ PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetStart(CSWillmoreFlow flow, Vec *x);
 typedef struct _CSWillmoreFlowOps *CSWillmoreFlowOps;
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowRegister(const char name[], PetscErrorCode (*create)(CSWillmoreFlow));
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetTypeList(PetscFunctionList *list); /* the registered kinds (not to be freed) */
-/* Energies of the flow (-flow_energy), registered by name: willmore, area, fairing. */
-PETSC_EXTERN PetscErrorCode CSWillmoreFlowEnergyRegister(const char name[], PetscErrorCode (*create)(CSMesh, Vec x0, PetscReal eps, CSEnergy *));
+/* Energies of the flow (-flow_energy), registered by name: willmore, area, fairing. create(mesh, x0, e) builds
+   one at the input positions x0 with its defaults; the flow then gives it the options prefix "<flow prefix><name>_"
+   and calls CSEnergySetFromOptions (energies.c). A new energy is tested by being registered
+   (tests/unit/test_extension.c checks the gradient of every registered energy). */
+PETSC_EXTERN PetscErrorCode CSWillmoreFlowEnergyRegister(const char name[], PetscErrorCode (*create)(CSMesh, Vec x0, CSEnergy *));
+PETSC_EXTERN PetscErrorCode CSWillmoreFlowEnergyList(PetscFunctionList *list); /* the registered energies (not to be freed) */
+PETSC_EXTERN PetscErrorCode CSWillmoreFlowSetEnergyType(CSWillmoreFlow flow, const char name[]); /* as -flow_energy */
+/* Global constraints registered by name (constraints.c): area, volume, mobius, rotation (targets: the input's
+   values) and any registered later. create(mesh, x0, prefix, g) builds one at the input positions x0, reading
+   its options, if any, under prefix ("<flow prefix>constraint_<name>_"). AddConstraint appends one to a flow's
+   constraints (before SetUp; after the ones of the -flow_constraint_* options); the vertex kinds only. A new
+   constraint is tested by being registered (tests/unit/test_extension.c checks the rows of every one). */
+PETSC_EXTERN PetscErrorCode CSWillmoreFlowConstraintRegister(const char name[], PetscErrorCode (*create)(CSMesh, Vec x0, const char prefix[], CSGlobalConstraint *));
+PETSC_EXTERN PetscErrorCode CSWillmoreFlowConstraintList(PetscFunctionList *list); /* the registered constraints (not to be freed) */
+PETSC_EXTERN PetscErrorCode CSWillmoreFlowAddConstraint(CSWillmoreFlow flow, const char name[]);
 
 #endif

@@ -19,14 +19,64 @@ PetscErrorCode CSGlobalConstraintDestroy(CSGlobalConstraint *g)
   PetscFunctionReturn(0);
 }
 
-/* The object common to all global constraints; ctx is owned (freed by destroy). */
-static PetscErrorCode GlobalConstraintNew(CSMesh mesh, const char name[], PetscInt k, void *ctx, PetscErrorCode (*evaluate)(CSGlobalConstraint, Vec, PetscReal[], Vec[]), PetscErrorCode (*destroy)(CSGlobalConstraint), CSGlobalConstraint *g)
+PetscErrorCode CSGlobalConstraintCreateShell(CSMesh mesh, const char name[], PetscInt k, CSGlobalConstraint *g)
 {
   PetscFunctionBeginUser;
   PetscCall(PetscNew(g));
   PetscCall(PetscStrncpy((*g)->name, name, sizeof((*g)->name)));
-  (*g)->mesh     = mesh;
-  (*g)->k        = k;
+  (*g)->mesh = mesh;
+  (*g)->k    = k;
+  PetscFunctionReturn(0);
+}
+
+/* Central differences of c along n seeded random directions d against the rows: the largest over d of
+   max_j |(c_j(x+hd) - c_j(x-hd))/2h - <row_j, d>| / max_j |<row_j, d>| (relative to the largest row's slope, so
+   that a row with a vanishing slope along d does not divide by zero). */
+PetscErrorCode CSGlobalConstraintCheckRows(CSGlobalConstraint g, Vec x, PetscReal h, PetscInt n, PetscReal *relerr)
+{
+  PetscInt    k = g->k;
+  Vec        *rows, d, xp;
+  PetscReal  *cp, *cm;
+  PetscRandom rnd;
+  PetscFunctionBeginUser;
+  *relerr = 0;
+  PetscCall(VecDuplicateVecs(x, k, &rows));
+  PetscCall(VecDuplicate(x, &d));
+  PetscCall(VecDuplicate(x, &xp));
+  PetscCall(PetscMalloc2(k, &cp, k, &cm));
+  PetscCall(CSGlobalConstraintEvaluate(g, x, cp, rows));
+  PetscCall(PetscRandomCreate(g->mesh->comm, &rnd));
+  PetscCall(PetscRandomSetInterval(rnd, -1, 1));
+  PetscCall(PetscRandomSetSeed(rnd, 20210811));
+  PetscCall(PetscRandomSeed(rnd));
+  for (PetscInt i = 0; i < n; i++) {
+    PetscReal err = 0, slope = 0;
+    PetscCall(VecSetRandom(d, rnd));
+    PetscCall(VecWAXPY(xp, h, d, x));
+    PetscCall(CSGlobalConstraintEvaluate(g, xp, cp, NULL));
+    PetscCall(VecWAXPY(xp, -h, d, x));
+    PetscCall(CSGlobalConstraintEvaluate(g, xp, cm, NULL));
+    for (PetscInt j = 0; j < k; j++) {
+      PetscScalar an;
+      PetscCall(VecDot(rows[j], d, &an));
+      err   = PetscMax(err, PetscAbsReal((cp[j] - cm[j]) / (2 * h) - PetscRealPart(an)));
+      slope = PetscMax(slope, PetscAbsScalar(an));
+    }
+    *relerr = PetscMax(*relerr, err / PetscMax(slope, 1e-300));
+  }
+  PetscCall(PetscRandomDestroy(&rnd));
+  PetscCall(PetscFree2(cp, cm));
+  PetscCall(VecDestroy(&d));
+  PetscCall(VecDestroy(&xp));
+  PetscCall(VecDestroyVecs(k, &rows));
+  PetscFunctionReturn(0);
+}
+
+/* The object common to all global constraints; ctx is owned (freed by destroy). */
+static PetscErrorCode GlobalConstraintNew(CSMesh mesh, const char name[], PetscInt k, void *ctx, PetscErrorCode (*evaluate)(CSGlobalConstraint, Vec, PetscReal[], Vec[]), PetscErrorCode (*destroy)(CSGlobalConstraint), CSGlobalConstraint *g)
+{
+  PetscFunctionBeginUser;
+  PetscCall(CSGlobalConstraintCreateShell(mesh, name, k, g));
   (*g)->ctx      = ctx;
   (*g)->evaluate = evaluate;
   (*g)->destroy  = destroy;

@@ -37,6 +37,27 @@ PetscErrorCode CSEnergyDestroy(CSEnergy *e)
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode CSEnergySetOptionsPrefix(CSEnergy e, const char prefix[])
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscStrncpy(e->prefix, prefix ? prefix : "", sizeof(e->prefix)));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSEnergySetFromOptions(CSEnergy e)
+{
+  PetscFunctionBeginUser;
+  if (e->setfromoptions) PetscCall((*e->setfromoptions)(e));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSEnergyMetric(CSEnergy e, CSMetric *m)
+{
+  PetscFunctionBeginUser;
+  if (e->metric) PetscCall((*e->metric)(e, m));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode CSEnergyCheckGradient(CSEnergy e, Vec x, PetscReal h, PetscInt n, PetscReal *relerr)
 {
   Vec         g, d, xp;

@@ -17,6 +17,8 @@ check() { # task-args, must-have regex list, must-not regex
 }
 check "-task flow" "-flow_rtol -flow_type -flow_viewer_every -flow_constraint_area -o -mesh -viewer_dir" "^  -(spin_|bs_)|_ksp_|_pc_"
 grep -qE -- "-flow_rtol <5e-07 : 5e-07>" "$TMP/t.txt" || { echo "BAD: -flow_rtol default not shown"; exit 1; }
+# an energy's own options (its SetFromOptions under -flow_<energy>_) with that energy
+check "-task flow -flow_energy fairing" "-flow_fairing_epsilon -flow_energy" "^  -(spin_|bs_)|_ksp_|_pc_"
 check "-task flow -flow_type bs" "-bs_max_it -bs_scheme -o" "^  -(spin_|flow_rtol)|_ksp_|_pc_"
 check "-task spin" "-spin_solver -spin_boundary -o" "^  -(flow_|bs_)|_ksp_|_eps_|_st_"
 check "-task info" "-mesh -gen -o -mesh_remesh -mesh_remesh_edge_length -mesh_remesh_iterations -o_input" "^  -(flow_|bs_|spin_)"

@@ -98,7 +98,6 @@ static void SetDefaults(CSWillmoreFlow F)
   F->max_area_ratio  = 200;
   F->project_at_stop = PETSC_TRUE;
   F->fin_q           = 3; /* measured at the guard's stop: smooth squeezes 1.15-2.4, eight_cgal's fins 4.9 and growing */
-  F->eps             = 1e-3;
   F->reuse_its       = -1; /* the saddle solver's default */
   F->alm_rho         = 10;
   F->alm_grow        = 10;
@@ -328,7 +327,7 @@ PetscErrorCode CSWillmoreFlowDestroy(CSWillmoreFlow *flow)
   PetscCall(CSMetricDestroy(&F->metric));
   PetscCall(CSConformalConstraintDestroy(&F->cc));
   PetscCall(CSNormalConstraintDestroy(&F->nc));
-  for (PetscInt j = 0; j < F->ng; j++) PetscCall(CSGlobalConstraintDestroy(&F->gc[j]));
+  PetscCall(CSWFConstraintsDestroy(F));
   if (F->k) PetscCall(VecDestroyVecs(F->k, &F->rows));
   PetscCall(PetscFree(F->dnu2));
   PetscCall(PetscFree6(F->cx, F->cxt, F->nu, F->dnu, F->gw, F->nun));

@@ -79,7 +79,6 @@ static PetscErrorCode ProblemOptions(CSWillmoreFlow F, PetscFunctionList energie
   PetscFunctionBeginUser;
   PetscCall(CSOptionsEnum("-metric", "Metric of the primal step: H^2 (soliman2021 Eq. 26), the mass (l2), or H^1 = sqrt(w) *0 + L, of the area energy's order (docs/boundary_twist.md)", NULL, CSFlowMetricTypes, (PetscEnum)F->metric_type, (PetscEnum *)&F->metric_type, NULL));
   PetscCall(PetscOptionsFList("-energy", "Energy of the flow", NULL, energies, F->energy_name, F->energy_name, sizeof(F->energy_name), NULL));
-  PetscCall(CSOptionsReal("-fairing_epsilon", "Weight of W in the fairing energy (soliman2021 Eq. 21)", NULL, F->eps, &F->eps, NULL));
   PetscCall(PetscOptionsBool("-conformal", "Exact conformal constraint (default on for cgd and pgd)", NULL, conformal, &conformal, &F->conformal_set));
   F->conformal = conformal;
   PetscCall(CSOptionsString("-target_mesh", "Mesh with the same connectivity whose conformal class is the target (soliman2021 Fig. 2)", NULL, F->target, F->target, sizeof(F->target), NULL));
@@ -121,7 +120,6 @@ static PetscErrorCode CheckValues(CSWillmoreFlow F)
     {"drift_rise", F->drift_rise, F->drift_rise >= 1, "must be >= 1"},
     {"pgd_t_mu", F->proj_tmu, F->proj_tmu > 0, "must be > 0"},
     {"pgd_projection_max_it", (PetscReal)F->proj_max_it, F->proj_max_it >= 1, "must be >= 1"},
-    {"fairing_epsilon", F->eps, F->eps > 0, "must be > 0"},
     {"max_seconds", F->max_seconds, F->max_seconds >= 0, "use 0 (no limit) or a positive number of seconds"},
     {"max_it", (PetscReal)F->max_it, F->max_it >= 0, "must be >= 0"},
     {"max_rejections", (PetscReal)F->max_rej, F->max_rej >= 1, "must be >= 1"},

@@ -28,12 +28,14 @@ PetscErrorCode CSWFSetUpBoundary(CSWillmoreFlow F)
 }
 
 /* The conformal constraint (target: the input's class, that of -flow_target_mesh, or the input's intrinsic
-   lengths when it has them: -gen lattice) and the global ones. */
+   lengths when it has them: -gen lattice) and the global ones: those of the options, then those added by name
+   (constraints.c). */
 PetscErrorCode CSWFSetUpConstraints(CSWillmoreFlow F)
 {
-  CSMesh    m = F->mesh;
-  PetscReal A, V;
-  char      opt[96];
+  CSMesh             m = F->mesh;
+  PetscReal          A, V;
+  char               opt[96];
+  CSGlobalConstraint g;
   PetscFunctionBeginUser;
   if (F->conformal) {
     Vec xt = F->x0;
@@ -49,20 +51,32 @@ PetscErrorCode CSWFSetUpConstraints(CSWillmoreFlow F)
   PetscCheck(!F->area_set || !F->area_given || F->area_target > 0, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sconstraint_area %g: the target area must be positive", F->prefix, (double)F->area_target);
   PetscCheck(!F->vol_set || m->topo.boundary_loops == 0, F->comm, PETSC_ERR_ARG_WRONG, "-%sconstraint_volume: the mesh %s has %" PetscInt_FMT " boundary loop(s); the enclosed volume is only defined for closed surfaces", F->prefix, m->name, m->topo.boundary_loops);
   PetscCheck(!F->vol_set || (F->vol_given ? F->vol_target : V) > 0, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sconstraint_volume %g: the target volume must be positive (outward-oriented surface)", F->prefix, (double)(F->vol_given ? F->vol_target : V));
-  if (F->area_set) PetscCall(CSConstraintCreateArea(m, F->area_given ? F->area_target : A, &F->gc[F->ng++]));
-  if (F->vol_set) PetscCall(CSConstraintCreateVolume(m, F->vol_given ? F->vol_target : V, &F->gc[F->ng++]));
+  if (F->area_set) {
+    PetscCall(CSConstraintCreateArea(m, F->area_given ? F->area_target : A, &g));
+    PetscCall(CSWFAddConstraint(F, g));
+  }
+  if (F->vol_set) {
+    PetscCall(CSConstraintCreateVolume(m, F->vol_given ? F->vol_target : V, &g));
+    PetscCall(CSWFAddConstraint(F, g));
+  }
   PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%sconstraint_points", F->prefix));
-  if (F->points[0]) PetscCall(CSConstraintCreatePointsFromFile(m, opt, F->points, &F->gc[F->ng++]));
+  if (F->points[0]) {
+    PetscCall(CSConstraintCreatePointsFromFile(m, opt, F->points, &g));
+    PetscCall(CSWFAddConstraint(F, g));
+  }
   /* Moebius balancing on request: not the default, its 3 dense rows cost 3 more solves per step
      (docs/willmore_flow.md), and soliman2021's method has no such rows */
   if (F->mobius) {
     PetscCheck(F->conformal, F->comm, PETSC_ERR_ARG_INCOMP, "-%sconstraint_mobius fixes the Moebius gauge of the conformal constraint: it needs -%sconformal (cgd, pgd)", F->prefix, F->prefix);
-    PetscCall(CSConstraintCreateMobiusBalance(m, F->x0, &F->gc[F->ng++]));
+    PetscCall(CSConstraintCreateMobiusBalance(m, F->x0, &g));
+    PetscCall(CSWFAddConstraint(F, g));
   }
   if (F->rotation) {
     PetscCheck(F->conformal && F->mobius, F->comm, PETSC_ERR_ARG_INCOMP, "-%sconstraint_rotation fixes the rotations of the domain left free by the conformal constraint and the Moebius balancing: it needs -%sconformal and -%sconstraint_mobius", F->prefix, F->prefix, F->prefix);
-    PetscCall(CSConstraintCreateRotationGauge(m, F->x0, &F->gc[F->ng++]));
+    PetscCall(CSConstraintCreateRotationGauge(m, F->x0, &g));
+    PetscCall(CSWFAddConstraint(F, g));
   }
+  PetscCall(CSWFSetUpAddedConstraints(F));
   for (PetscInt j = 0; j < F->ng; j++) F->k += F->gc[j]->k;
   PetscCheck(F->conformal || F->k == 0 || !F->ops.projected, F->comm, PETSC_ERR_ARG_INCOMP, "pgd without the conformal constraint is not supported");
   PetscFunctionReturn(0);
@@ -140,17 +154,10 @@ PetscErrorCode CSWFSetUpScaling(CSWillmoreFlow F)
   PetscCall(CSGeometryAreaVolume(F->mesh, F->x0, &A, &V));
   sc                    = A / (4 * PETSC_PI);
   F->metric.mass_weight = 1.0 / (sc * sc);
-  /* The fairing energy E = 1/2 |f - f0|^2_{*0(f0)} + eps W (soliman2021 Eq. 21): its fidelity term is a fixed
-     quadratic with Hessian *0, which the metric of W alone (w *0 + L *0^{-1} L, w = 1/s^4) does not see: along
-     the low modes (translations, scalings) the step was t/w times the fidelity gradient, 300 t on the low-res
-     bunny, and the flow oscillated (the volume 194 -> 198 -> 191 -> 197 in the first steps at eps 0.1) and then
-     drifted (60 iterations: E 13.6 -> 1.6e7). The metric of the sum, eps (w *0 + L *0^{-1} L) + *0 =
-     eps ((w + 1/eps) *0 + L *0^{-1} L), is a Newton step on the fidelity and the W metric on the rest (with the
-     current mass *0(f) for *0(f0)). */
-  if (!strcmp(F->energy_name, "fairing")) {
-    PetscCheck(F->metric_type != CS_FLOW_METRIC_H1, F->comm, PETSC_ERR_SUP, "-%smetric h1 with -%senergy fairing: not built (the fidelity's Newton weight below is for the H^2 metric's mass term)", F->prefix, F->prefix);
-    F->metric.scale = F->eps;
-    F->metric.mass_weight += 1.0 / F->eps;
+  /* an energy with its own metric term (the fairing energy's fidelity, soliman2021 Eq. 21: energy_fairing.c) */
+  if (F->energy->metric) {
+    PetscCheck(F->metric_type != CS_FLOW_METRIC_H1, F->comm, PETSC_ERR_SUP, "-%smetric h1 with -%senergy %s: not built (the energy's metric term is a weight on the H^2 metric's mass term)", F->prefix, F->prefix, F->energy_name);
+    PetscCall(CSEnergyMetric(F->energy, &F->metric));
   }
   /* the ceiling of t_mu: with its own ramp 1e3 t_max; following t, none but tmu_ratio_max (each rejection
      raises t_mu / t twofold for good, up to 1e3 times its initial value, see the step control) */
@@ -212,6 +219,7 @@ PetscErrorCode CSWillmoreFlowSetUp(CSWillmoreFlow F)
   PetscCall(CheckMemory(F));
   /* rather refused than ignored: the least-squares multipliers are CGD's dual step on the conformal rows */
   PetscCheck(!F->mu_ls_every || (F->ops.dual == CSWFMultiplierLS && F->conformal), F->comm, PETSC_ERR_SUP, "-%smultiplier_ls_every %" PetscInt_FMT ": only for -%stype cgd with the conformal constraint", F->prefix, F->mu_ls_every, F->prefix);
+  PetscCheck(!F->nadded || !F->ops.setup_problem, F->comm, PETSC_ERR_SUP, "CSWillmoreFlowAddConstraint(%s): the registered constraints act on vertex positions, not on the variables of -%stype %s", F->nadded ? F->added[0] : "", F->prefix, F->type);
   if (F->ops.setup_problem) { /* a kind with its own variables (trianglefield) */
     PetscCall((*F->ops.setup_problem)(F));
     F->setupcalled = PETSC_TRUE;

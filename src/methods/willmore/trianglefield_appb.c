@@ -9,6 +9,7 @@ PetscErrorCode CSTFAppBSetUp(CSWillmoreFlow F, CSTriangleField *d)
 {
   CSMesh                 m = F->mesh;
   CSTriangleFieldPoisson P;
+  CSGlobalConstraint     g;
   char                   opt[96];
   PetscErrorCode         ierr = 0;
   PetscFunctionBeginUser;
@@ -18,16 +19,16 @@ PetscErrorCode CSTFAppBSetUp(CSWillmoreFlow F, CSTriangleField *d)
   if (F->vol_set) {
     PetscReal A, V;
     PetscCall(CSGeometryAreaVolume(m, d->xpos0, &A, &V));
-    ierr = CSConstraintCreateTriangleFieldVolume(m, P, F->vol_given ? F->vol_target : V, &F->gc[F->ng]);
-    if (!ierr) F->ng++;
+    ierr = CSConstraintCreateTriangleFieldVolume(m, P, F->vol_given ? F->vol_target : V, &g);
+    if (!ierr) ierr = CSWFAddConstraint(F, g);
   }
   if (!ierr && F->points[0]) {
-    ierr = CSConstraintCreateTriangleFieldPoints(m, P, opt, F->points, &F->gc[F->ng]);
-    if (!ierr) F->ng++;
+    ierr = CSConstraintCreateTriangleFieldPoints(m, P, opt, F->points, &g);
+    if (!ierr) ierr = CSWFAddConstraint(F, g);
   }
   if (!ierr && F->mobius) {
-    ierr = CSConstraintCreateTriangleFieldMobius(m, P, d->xpos0, &F->gc[F->ng]);
-    if (!ierr) F->ng++;
+    ierr = CSConstraintCreateTriangleFieldMobius(m, P, d->xpos0, &g);
+    if (!ierr) ierr = CSWFAddConstraint(F, g);
   }
   PetscCall(CSTriangleFieldPoissonDestroy(&P)); /* the constraints hold references; on an error nothing leaks */
   PetscCall(ierr);

@@ -141,7 +141,6 @@ struct _p_CSWillmoreFlow {
 
   /* options */
   char                  energy_name[32];
-  PetscReal             eps; /* fairing weight */
   CSFlowMetricType      metric_type;
   CSFlowBoundaryType    boundary;
   PetscBool             boundary_set, conformal_set, mobius, rotation;
@@ -160,8 +159,11 @@ struct _p_CSWillmoreFlow {
   Mat                   Xn, Xext, Xc; /* nest [X; DN], its AIJ form, and the Jacobian in use (X or Xext) */
   IS                    isM[2];       /* edge / normal rows in the multiplier layout */
   Vec                   cE, cN, iqE, iqN;
-  PetscInt              ng, k;
-  CSGlobalConstraint    gc[5]; /* area, volume, points, Moebius balance, rotation gauge */
+  PetscInt              ng, ngmax, k; /* global constraints (ng of ngmax slots), their rows */
+  CSGlobalConstraint   *gc;    /* area, volume, points, Moebius balance, rotation gauge, added ones (grows) */
+  char                **added; /* names of the registered constraints added (CSWillmoreFlowAddConstraint) */
+  PetscInt              nadded, naddedmax;
+  PetscFunctionList     constraint_list; /* the registry they were found in (borrowed) */
   PetscBool            *fixed;   /* local vertices held fixed (Dirichlet), or NULL */
   IS                    fixedIS; /* global dmV3 dofs of owned fixed vertices */
   CSMetric              metric;
@@ -303,12 +305,15 @@ PETSC_INTERN PetscErrorCode CSWFStopDestroy(CSWillmoreFlow F);
 /* setup.c */
 PETSC_INTERN PetscErrorCode CSWFSetUpBoundary(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFSetUpConstraints(CSWillmoreFlow F);
+/* constraints.c */
+PETSC_INTERN PetscErrorCode CSWFAddConstraint(CSWillmoreFlow F, CSGlobalConstraint g);
+PETSC_INTERN PetscErrorCode CSWFSetUpAddedConstraints(CSWillmoreFlow F);
+PETSC_INTERN PetscErrorCode CSWFConstraintsDestroy(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFSetUpPrimalVectors(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFSetUpMultiplierVectors(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFSetUpVectors(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFSetUpScaling(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFCreateEnergy(CSWillmoreFlow F);
-PETSC_INTERN PetscErrorCode CSWillmoreFlowEnergyList(PetscFunctionList *list);
 /* kinds */
 PETSC_INTERN PetscErrorCode CSWillmoreFlowCreate_CGD(CSWillmoreFlow);
 PETSC_INTERN PetscErrorCode CSWillmoreFlowCreate_PGD(CSWillmoreFlow);
