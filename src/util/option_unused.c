@@ -6,6 +6,7 @@
 #include <ctype.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 
 /* The names the project's readers looked up (option_read.c), given or not: the candidates of "did you mean". */
 static char  **ReadNames = NULL;
@@ -45,8 +46,11 @@ PetscErrorCode CSOptionsNoteRead(const char full[])
    its first PCSetUp, MUMPS reads -mat_mumps_* at the factorisation, the EPS of -task spin is made at the solve), so
    before the work they are legitimately unused. A misspelled one is still refused by the check at the end of the
    run. The families: KSP, PC (with the PCs' inner solvers fieldsplit_, sub_, mg_, redundant_, the project's csh2
-   h2_), Mat (factor packages), SNES, TS, TAO, SLEPc's EPS, ST, BV, DS, RG, FN. */
-static const char *const SolverFamilies[] = {"ksp_", "pc_", "mat_", "snes_", "ts_", "tao_", "eps_", "st_", "bv_", "ds_", "rg_", "fn_", "fieldsplit_", "sub_", "mg_", "redundant_", "h2_"};
+   h2_), Mat (factor packages), SNES, TS, TAO, SLEPc's EPS, ST, BV, DS, RG, FN, and the objects PETSc views or sets
+   up from the options when they are used (-vec_view at an assembly, -dm_*, -is_*, -sf_* at a scatter's set-up,
+   -draw_*, -random_*). No option of the project's own has a component of these names (checked against every name
+   its readers use; -viewer_* is the project's). */
+static const char *const SolverFamilies[] = {"ksp_", "pc_", "mat_", "snes_", "ts_", "tao_", "eps_", "st_", "bv_", "ds_", "rg_", "fn_", "fieldsplit_", "sub_", "mg_", "redundant_", "h2_", "vec_", "dm_", "is_", "sf_", "draw_", "random_"};
 
 static PetscBool IsSolverOption(const char name[])
 {
