@@ -18,5 +18,7 @@ PETSC_EXTERN PetscErrorCode CSTaskCurveFlow(MPI_Comm comm); /* src/driver/task_c
 PETSC_EXTERN PetscErrorCode CSFlowBS(MPI_Comm comm, CSOutput *out);
 /* -task flow -flow_type conformal (src/driver/task_flow_conformal.c) */
 PETSC_EXTERN PetscErrorCode CSFlowConformal(MPI_Comm comm, CSOutput *out);
+/* every flow, once all its options are read and before its first step: options given and not used are an error */
+PETSC_EXTERN PetscErrorCode CSFlowCheckUnusedOptions(MPI_Comm comm);
 
 #endif

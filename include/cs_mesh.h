@@ -155,6 +155,9 @@ typedef enum {
 PETSC_EXTERN const char *const CSViewerFormats[];
 PETSC_EXTERN PetscErrorCode    CSViewerCreate(CSMesh mesh, const char dir[], CSViewer *v);
 PETSC_EXTERN PetscErrorCode    CSViewerSetFormat(CSViewer v, CSViewerFormat format, PetscBool single);
+/* -viewer_format and -viewer_precision alone (CSViewerCreate reads them this way; the output reads them with
+   -viewer_dir before the work, so the check of unused options finds them read) */
+PETSC_EXTERN PetscErrorCode    CSViewerFormatFromOptions(MPI_Comm comm, CSViewerFormat *format, PetscBool *single);
 PETSC_EXTERN PetscErrorCode CSViewerAddVertexField(CSViewer v, const char name[], Vec g);
 PETSC_EXTERN PetscErrorCode CSViewerAddFaceField(CSViewer v, const char name[], Vec g);
 PETSC_EXTERN PetscErrorCode CSViewerWriteStep(CSViewer v, Vec x, PetscReal time); /* writes and clears the fields */

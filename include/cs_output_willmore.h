@@ -15,6 +15,8 @@ PETSC_EXTERN PetscErrorCode CSWillmoreFlowMonitorCheckpointSet(CSWillmoreFlow fl
 typedef struct _n_CSWillmoreViewer *CSWillmoreViewer;
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowMonitorViewerSet(CSWillmoreFlow flow, CSOutput *out, PetscInt every, CSWillmoreViewer *wv);
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowViewerFinish(CSWillmoreFlow flow, CSWillmoreViewer *wv);
+/* frees the context without writing (a run refused before its first step) */
+PETSC_EXTERN PetscErrorCode CSWillmoreFlowViewerDestroy(CSWillmoreViewer *wv);
 /* After SetUp, before Solve: with -resume, the state of the checkpoint. */
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowResume(CSWillmoreFlow flow, CSOutput *out);
 /* After Solve: the last accepted state's checkpoint (with -checkpoint), the final line, the summary keys,

@@ -133,4 +133,12 @@ PETSC_EXTERN PetscErrorCode CSOptionsEnum_Private(PetscOptionItems *, const char
 #define CSOptionsReal(opt, text, man, cur, val, set)        CSOptionsReal_Private(PetscOptionsObject, opt, text, man, cur, val, set)
 #define CSOptionsString(opt, text, man, cur, val, len, set) CSOptionsString_Private(PetscOptionsObject, opt, text, man, cur, val, len, set)
 
+/* Options given and not used, before the work (issue 36, item 18; src/util/option_unused.c): called by the driver
+   once every object of the task has read its options; a one-line error naming them (with the closest name read,
+   "did you mean -flow_max_it?") on every rank. PETSc's solver options (-<prefix>ksp_..., pc_, mat_, eps_, st_, ...)
+   are read lazily by PETSc and left to the end-of-run check. CSOptionsNoteRead records a name the project's
+   readers looked up (the candidates of the suggestion). */
+PETSC_EXTERN PetscErrorCode CSOptionsCheckUnused(MPI_Comm comm, const char task[]);
+PETSC_EXTERN PetscErrorCode CSOptionsNoteRead(const char full[]);
+
 #endif

@@ -3,7 +3,7 @@ static const char help[] = "confsurf: conformal geometry processing of triangle 
                            "  -mesh FILE (.obj .off .ply) or -gen icosphere|torus|flattorus|lattice|cylinder|disk\n"
                            "  curveflow: -curve FILE (.obj or text x y) or -gen_curve circle|ellipse|star|noisy|limacon\n"
                            "  -o FILE -viewer_dir DIR -summary FILE.json -history_csv FILE.csv -reference FILE\n"
-                           "Unknown options are an error (they are listed at the end of the run).\n";
+                           "Unknown options are an error, before the work starts (PETSc's solver options: at the end of the run).\n";
 
 /* The tasks and what they do, for -help (the same names as RegisterTasks). */
 static const char *const task_help[][2] = {

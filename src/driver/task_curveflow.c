@@ -13,8 +13,9 @@ static PetscErrorCode SetMonitors(CSCurveFlow flow, CSOutput *out)
   PetscCall(CSCurveFlowGetCurve(flow, &curve));
   PetscCall(CSCurveFlowGetOptionsPrefix(flow, &prefix));
   PetscCall(CSOutputViewerEvery(curve->comm, prefix, "Curve flow output", "Write the curve of every this many states into -viewer_dir", PETSC_FALSE, &every));
-  PetscCall(CSCurveFlowMonitorSetHistory(flow, out));
   PetscCall(CSCurveFlowMonitorSetSteps(flow, out, every));
+  PetscCall(CSOptionsCheckUnused(curve->comm, "-task curveflow")); /* the last options read; before the history file is created */
+  PetscCall(CSCurveFlowMonitorSetHistory(flow, out));
   PetscCall(CSCurveFlowMonitorSet(flow, CSCurveFlowMonitorProgress, NULL, NULL));
   PetscFunctionReturn(0);
 }

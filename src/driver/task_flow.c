@@ -46,17 +46,22 @@ static PetscErrorCode SolveOrSave(CSWillmoreFlow flow, CSWillmoreViewer *wv, CSO
 
 static PetscErrorCode SetMonitors(CSWillmoreFlow flow, CSOutput *out, CSWillmoreViewer *wv)
 {
-  PetscInt    every;
-  const char *prefix;
-  CSMesh      mesh;
+  PetscInt       every;
+  const char    *prefix;
+  CSMesh         mesh;
+  PetscErrorCode ierr;
   PetscFunctionBeginUser;
   PetscCall(CSWillmoreFlowGetMesh(flow, &mesh));
+  PetscCall(CSWillmoreFlowGetOptionsPrefix(flow, &prefix));
+  /* the viewer reads its options first: the last ones of the task, then the check, before any file is created */
+  PetscCall(CSOutputViewerEvery(mesh->comm, prefix, "Willmore flow output", "With -viewer_dir: a ParaView step every this many iterations (0: the final state only)", PETSC_TRUE, &every));
+  PetscCall(CSWillmoreFlowMonitorViewerSet(flow, out, every, wv));
+  ierr = CSFlowCheckUnusedOptions(mesh->comm);
+  if (ierr) PetscCall(CSWillmoreFlowViewerDestroy(wv)); /* nothing written, no leak */
+  PetscCall(ierr);
   PetscCall(CSWillmoreFlowMonitorProgressSet(flow));
   PetscCall(CSWillmoreFlowMonitorHistorySet(flow, out));
   PetscCall(CSWillmoreFlowMonitorCheckpointSet(flow, out));
-  PetscCall(CSWillmoreFlowGetOptionsPrefix(flow, &prefix));
-  PetscCall(CSOutputViewerEvery(mesh->comm, prefix, "Willmore flow output", "With -viewer_dir: a ParaView step every this many iterations (0: the final state only)", PETSC_TRUE, &every));
-  PetscCall(CSWillmoreFlowMonitorViewerSet(flow, out, every, wv));
   PetscFunctionReturn(0);
 }
 
@@ -97,6 +102,18 @@ static PetscErrorCode CSFlowWillmore(MPI_Comm comm, CSOutput *out)
 }
 
 static PetscFunctionList CSFlowList = NULL;
+static char              CSFlowType[64] = "cgd"; /* -flow_type of this run, for the message of the options check */
+
+/* Every option of the flow has been read (the mesh, the output, the flow and its monitors): one given and not used
+   is refused before the first step (issue 36, item 18). */
+PetscErrorCode CSFlowCheckUnusedOptions(MPI_Comm comm)
+{
+  char task[96];
+  PetscFunctionBeginUser;
+  PetscCall(PetscSNPrintf(task, sizeof(task), "-task flow -flow_type %s", CSFlowType));
+  PetscCall(CSOptionsCheckUnused(comm, task));
+  PetscFunctionReturn(0);
+}
 
 static PetscErrorCode FlowListDestroy(void)
 {
@@ -137,6 +154,7 @@ PetscErrorCode CSTaskFlow(MPI_Comm comm)
   PetscCall(PetscOptionsFList("-flow_type", "Flow", NULL, CSFlowList, type, type, sizeof(type), NULL));
   PetscOptionsEnd();
   PetscCall(PetscFunctionListFind(CSFlowList, type, &run));
+  PetscCall(PetscStrncpy(CSFlowType, type, sizeof(CSFlowType)));
   if (!run) {
     char known[256];
     PetscCall(CSFunctionListNames(CSFlowList, known, sizeof(known)));

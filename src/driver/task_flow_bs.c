@@ -15,8 +15,9 @@ static PetscErrorCode SetMonitors(CSBSFlow flow, CSOutput *out)
   PetscCall(CSBSFlowGetMesh(flow, &mesh));
   PetscCall(CSBSFlowGetOptionsPrefix(flow, &prefix));
   PetscCall(CSOutputViewerEvery(mesh->comm, prefix, "Bobenko-Schroeder flow output", "Write a ParaView step every this many steps (with -viewer_dir)", PETSC_FALSE, &every));
-  PetscCall(CSBSFlowMonitorSetHistory(flow, out));
   PetscCall(CSBSFlowMonitorSetViewer(flow, out, every));
+  PetscCall(CSFlowCheckUnusedOptions(mesh->comm)); /* the last options read; before the history file is created */
+  PetscCall(CSBSFlowMonitorSetHistory(flow, out));
   PetscCall(CSBSFlowMonitorSet(flow, CSBSFlowMonitorProgress, NULL, NULL));
   PetscCall(CSBSFlowMonitorSetCheckpoint(flow, out));
   PetscFunctionReturn(0);

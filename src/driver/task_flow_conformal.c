@@ -14,8 +14,9 @@ static PetscErrorCode SetMonitors(CSConformalFlow flow, CSOutput *out)
   PetscCall(CSConformalFlowGetMesh(flow, &mesh));
   PetscCall(CSConformalFlowGetOptionsPrefix(flow, &prefix));
   PetscCall(CSOutputViewerEvery(mesh->comm, prefix, "Conformal flow output", "With -viewer_dir: a ParaView step every this many steps (0: the final state only)", PETSC_TRUE, &every));
-  PetscCall(CSConformalFlowMonitorSetHistory(flow, out));
   PetscCall(CSConformalFlowMonitorSetViewer(flow, out, every));
+  PetscCall(CSFlowCheckUnusedOptions(mesh->comm)); /* the last options read; before the history file is created */
+  PetscCall(CSConformalFlowMonitorSetHistory(flow, out));
   PetscCall(CSConformalFlowMonitorSet(flow, CSConformalFlowMonitorProgress, NULL, NULL));
   PetscFunctionReturn(0);
 }

@@ -44,7 +44,8 @@ PetscErrorCode CSTaskInfo(MPI_Comm comm)
   ierr = CSMeshCreateFromOptions(comm, NULL, &mesh);
   if (ierr) PetscCall(CSOutputDestroy(&out)); /* no leak on the error path */
   PetscCall(ierr);
-  ierr = CSOutputAddMeshFacts(&out, mesh, mesh->x, NULL);
+  ierr = CSOptionsCheckUnused(comm, "-task info"); /* every option is read: the mesh's and the outputs' */
+  if (!ierr) ierr = CSOutputAddMeshFacts(&out, mesh, mesh->x, NULL);
   if (!ierr) ierr = CSOutputAddTriangleQuality(&out, mesh, mesh->x);
   if (!ierr) ierr = CSOutputAddWillmoreBS(&out, mesh, mesh->x);
   if (!ierr && out.has_viewer) ierr = WriteInfoFields(mesh, out.viewer_dir);

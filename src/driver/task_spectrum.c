@@ -126,7 +126,14 @@ PetscErrorCode CSTaskSpectrum(MPI_Comm comm)
   }
   PetscCall(ierr);
   PetscCall(CSSpinCreate(mesh, &spin));
-  PetscCall(CSSpinSetFromOptions(spin));
+  ierr = CSSpinSetFromOptions(spin);
+  if (!ierr) ierr = CSOptionsCheckUnused(comm, "-task spectrum"); /* before the eigensolve; its EPS reads -spin_eps_* there */
+  if (ierr) { /* refused: nothing written, nothing leaked */
+    PetscCall(CSSpinDestroy(&spin));
+    PetscCall(CSMeshDestroy(&mesh));
+    PetscCall(CSOutputDestroy(&out));
+  }
+  PetscCall(ierr);
   if (sgn) PetscCall(Signed(spin, mesh, nev, nk, k, prefix, &out));
   else {
     PetscCall(PetscMalloc2(nev, &eig, nev, &root));

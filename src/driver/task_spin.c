@@ -12,12 +12,11 @@ typedef struct {
   Vec           rho, xt, mu, Tt, lambda, xnew;
 } SpinRun;
 
-/* rho (Sec. 5.5), boundary tangents (Sec. 5.7), the eigenproblem, the similarity and Eq. 8 + Poisson. */
+/* With rho (Sec. 5.5) and the boundary tangents (Sec. 5.7) read: the eigenproblem, the similarity and Eq. 8 +
+   Poisson. */
 static PetscErrorCode SpinSolve(CSSpin spin, CSMesh mesh, SpinRun *r)
 {
   PetscFunctionBeginUser;
-  PetscCall(CSSpinRhoFromOptions(spin, mesh->x, &r->loc, &r->rho, &r->xt, &r->mu));
-  PetscCall(CSSpinBoundaryFromOptions(spin, r->xt, &r->Tt));
   if (spin->boundary != CS_SPIN_BOUNDARY_NONE) PetscCall(CSSpinSetBoundaryTangents(spin, mesh->x, r->Tt));
   PetscCall(DMCreateGlobalVector(spin->dm, &r->lambda));
   PetscCall(CSSpinSolveEigen(spin, mesh->x, r->loc, r->rho, r->lambda));
@@ -111,16 +110,12 @@ static PetscErrorCode SpinView(CSSpin spin, CSMesh mesh, const SpinRun *r, const
 /* -spin_interpolate N (Sec. 7.2, Fig. 21): meshes PREFIX_k.obj, k = 0..N, of the similarity interpolation from the
    input (k = 0) to -spin_target_mesh (k = N); q_mean against the input of each and of the linear interpolation
    (1 - t) x + t xt of the positions, and the distance of the ends to the input and the target. */
-static PetscErrorCode SpinInterpolate(CSSpin spin, CSMesh mesh, PetscInt N, const char prefix[], CSOutput *out)
+static PetscErrorCode SpinInterpolate(CSSpin spin, CSMesh mesh, PetscInt N, const char prefix[], const SpinRun *rr, CSOutput *out)
 {
-  SpinRun    r;
+  SpinRun    r = *rr;
   Vec        r0, r1, xs, xl;
   PetscReal *q, end[2];
   PetscFunctionBeginUser;
-  /* before anything is allocated: a refused size leaks nothing */
-  PetscCall(CSCheckAllocation("-spin_interpolate: q_mean of N + 1 meshes, twice", 2 * ((PetscInt64)N + 1), sizeof(PetscReal)));
-  PetscCall(PetscMemzero(&r, sizeof(r)));
-  PetscCall(CSSpinRhoFromOptions(spin, mesh->x, &r.loc, &r.rho, &r.xt, &r.mu));
   PetscCheck(r.xt, mesh->comm, PETSC_ERR_ARG_WRONG, "-spin_interpolate needs -spin_target_mesh FILE (the other end, same connectivity)");
   PetscCall(VecDuplicate(mesh->x, &r0));
   PetscCall(VecDuplicate(mesh->x, &r1));
@@ -156,9 +151,6 @@ static PetscErrorCode SpinInterpolate(CSSpin spin, CSMesh mesh, PetscInt N, cons
   PetscCall(VecDestroy(&r1));
   PetscCall(VecDestroy(&xs));
   PetscCall(VecDestroy(&xl));
-  PetscCall(VecDestroy(&r.rho));
-  PetscCall(VecDestroy(&r.xt));
-  PetscCall(VecDestroy(&r.mu));
   PetscFunctionReturn(0);
 }
 
@@ -166,31 +158,24 @@ static PetscErrorCode SpinInterpolate(CSSpin spin, CSMesh mesh, PetscInt N, cons
    best-fit similarities mu of -spin_target_mesh by Eq. 8 and the least-squares Poisson step, without the
    eigenproblem (mu is not integrable, so the result is not a spin transformation). Summary: q_mean, q_max against
    the input and target_distance_max, as for the spin result. */
-static PetscErrorCode SpinLeastSquares(CSSpin spin, CSMesh mesh, CSOutput *out)
+static PetscErrorCode SpinLeastSquares(CSSpin spin, CSMesh mesh, SpinRun *r, CSOutput *out)
 {
-  SpinRun   r;
   Vec       d;
   PetscReal nd, area, vol;
   PetscFunctionBeginUser;
-  PetscCall(PetscMemzero(&r, sizeof(r)));
-  PetscCall(CSSpinRhoFromOptions(spin, mesh->x, &r.loc, &r.rho, &r.xt, &r.mu));
-  PetscCheck(r.xt, mesh->comm, PETSC_ERR_ARG_WRONG, "-spin_least_squares needs -spin_target_mesh FILE");
-  PetscCall(VecDuplicate(mesh->x, &r.xnew));
-  PetscCall(CSSpinReconstruct(spin, mesh->x, r.mu, r.xt, r.xnew));
-  PetscCall(VecDuplicate(r.xnew, &d));
-  PetscCall(VecWAXPY(d, -1, r.xt, r.xnew));
+  PetscCheck(r->xt, mesh->comm, PETSC_ERR_ARG_WRONG, "-spin_least_squares needs -spin_target_mesh FILE");
+  PetscCall(VecDuplicate(mesh->x, &r->xnew));
+  PetscCall(CSSpinReconstruct(spin, mesh->x, r->mu, r->xt, r->xnew));
+  PetscCall(VecDuplicate(r->xnew, &d));
+  PetscCall(VecWAXPY(d, -1, r->xt, r->xnew));
   PetscCall(VecNorm(d, NORM_INFINITY, &nd));
-  PetscCall(CSGeometryAreaVolume(mesh, r.xt, &area, &vol));
+  PetscCall(CSGeometryAreaVolume(mesh, r->xt, &area, &vol));
   PetscCall(CSJSONAddReal(out->json, "target_distance_max", nd / PetscSqrtReal(area)));
   PetscCall(CSJSONAddString(out->json, "method", "least_squares"));
   PetscCall(PetscPrintf(mesh->comm, "least squares from mu (Fig. 22): max distance to -spin_target_mesh %.3e (relative to sqrt(area))\n", (double)(nd / PetscSqrtReal(area))));
-  PetscCall(CSOutputAddMeshFacts(out, mesh, r.xnew, mesh->x));
-  PetscCall(CSOutputFinish(out, mesh, r.xnew));
+  PetscCall(CSOutputAddMeshFacts(out, mesh, r->xnew, mesh->x));
+  PetscCall(CSOutputFinish(out, mesh, r->xnew));
   PetscCall(VecDestroy(&d));
-  PetscCall(VecDestroy(&r.xnew));
-  PetscCall(VecDestroy(&r.rho));
-  PetscCall(VecDestroy(&r.xt));
-  PetscCall(VecDestroy(&r.mu));
   PetscFunctionReturn(0);
 }
 
@@ -261,9 +246,15 @@ static PetscErrorCode RunSpin(CSSpin spin, CSMesh mesh, SpinRun *r, CSOutput *ou
     const CSOptionCheck checks[] = {{"spin_interpolate", (PetscReal)ninterp, ninterp >= 1, "need at least 1 step"}, {"spin_flow_steps", (PetscReal)nflow, nflow >= 1, "must be >= 1"}, {"spin_flow_tau", tau, tau > 0, "must be > 0"}};
     PetscCall(CSCheckOptionValues(comm, NULL, 3, checks));
   }
-  if (interp) PetscCall(SpinInterpolate(spin, mesh, ninterp, iprefix, out));
+  /* before anything is allocated: a refused size names it */
+  if (interp) PetscCall(CSCheckAllocation("-spin_interpolate: q_mean of N + 1 meshes, twice", 2 * ((PetscInt64)ninterp + 1), sizeof(PetscReal)));
+  /* rho and the boundary tangents are read (and rho made) before the check of unused options, the eigensolves after */
+  if (!flow) PetscCall(CSSpinRhoFromOptions(spin, mesh->x, &r->loc, &r->rho, &r->xt, &r->mu));
+  if (!interp && !flow && !lsq) PetscCall(CSSpinBoundaryFromOptions(spin, r->xt, &r->Tt));
+  PetscCall(CSOptionsCheckUnused(comm, "-task spin"));
+  if (interp) PetscCall(SpinInterpolate(spin, mesh, ninterp, iprefix, r, out));
   else if (flow) PetscCall(SpinFlow(spin, mesh, nflow, tau, out));
-  else if (lsq) PetscCall(SpinLeastSquares(spin, mesh, out));
+  else if (lsq) PetscCall(SpinLeastSquares(spin, mesh, r, out));
   else {
     PetscCall(SpinSolve(spin, mesh, r));
     PetscCall(SpinReport(spin, mesh, r, out));

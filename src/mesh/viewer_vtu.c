@@ -34,16 +34,21 @@ PetscErrorCode CSViewerCreate(CSMesh mesh, const char dir[], CSViewer *v)
   PetscCall(PetscNew(v));
   (*v)->mesh = mesh;
   PetscCall(PetscStrncpy((*v)->dir, dir, sizeof((*v)->dir)));
-  (*v)->format = CS_VIEWER_BINARY;
-  PetscOptionsBegin(mesh->comm, NULL, "ParaView output (-viewer_dir)", NULL);
-  PetscCall(CSOptionsEnum("-viewer_format", "Data arrays of the .vtu pieces: appended raw binary, the same zlib-compressed, or ascii", "CSViewerSetFormat", CSViewerFormats, (PetscEnum)(*v)->format, (PetscEnum *)&(*v)->format, NULL));
-  {
-    const char *prec[] = {"double", "single"};
-    PetscInt    ip     = 0;
-    PetscCall(CSOptionsEList("-viewer_precision", "Positions and fields as Float64 (double) or Float32 (single: 7 digits, half the bytes)", "CSViewerSetFormat", prec, 2, prec[0], &ip, NULL));
-    (*v)->single = (PetscBool)(ip == 1);
-  }
+  PetscCall(CSViewerFormatFromOptions(mesh->comm, &(*v)->format, &(*v)->single));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSViewerFormatFromOptions(MPI_Comm comm, CSViewerFormat *format, PetscBool *single)
+{
+  const char *prec[] = {"double", "single"};
+  PetscInt    ip     = 0;
+  PetscFunctionBeginUser;
+  *format = CS_VIEWER_BINARY;
+  PetscOptionsBegin(comm, NULL, "ParaView output (-viewer_dir)", NULL);
+  PetscCall(CSOptionsEnum("-viewer_format", "Data arrays of the .vtu pieces: appended raw binary, the same zlib-compressed, or ascii", "CSViewerSetFormat", CSViewerFormats, (PetscEnum)*format, (PetscEnum *)format, NULL));
+  PetscCall(CSOptionsEList("-viewer_precision", "Positions and fields as Float64 (double) or Float32 (single: 7 digits, half the bytes)", "CSViewerSetFormat", prec, 2, prec[0], &ip, NULL));
   PetscOptionsEnd();
+  *single = (PetscBool)(ip == 1);
   PetscFunctionReturn(0);
 }
 

@@ -77,6 +77,11 @@ PetscErrorCode CSOutputFromOptionsFormats(MPI_Comm comm, const char *const exts[
     PetscCheck(ok, comm, PETSC_ERR_ARG_WRONG, "-o %s: %s", o->out, what);
   }
   if (o->has_checkpoint) PetscCall(CheckWritable(comm, o->checkpoint));
+  if (o->has_viewer) { /* read (and checked) now, as every option before the work; the viewer reads them again */
+    CSViewerFormat format;
+    PetscBool      single;
+    PetscCall(CSViewerFormatFromOptions(comm, &format, &single));
+  }
   CSRootCall(comm, CheckOutputsLocal(o));
   PetscCall(CSJSONCreate(comm, &o->json));
   { /* the threads of rank 0 (src/util/threads.c); "ranks" comes with CSOutputFinish */

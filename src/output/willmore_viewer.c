@@ -151,6 +151,16 @@ PetscErrorCode CSWillmoreFlowMonitorViewerSet(CSWillmoreFlow flow, CSOutput *out
   PetscFunctionReturn(0);
 }
 
+/* without writing the final state: a run refused before its first step (options not used) */
+PetscErrorCode CSWillmoreFlowViewerDestroy(CSWillmoreViewer *wv)
+{
+  PetscFunctionBeginUser;
+  if (!*wv) PetscFunctionReturn(0);
+  PetscCall(CSViewerDestroy(&(*wv)->v));
+  PetscCall(PetscFree(*wv));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode CSWillmoreFlowViewerFinish(CSWillmoreFlow flow, CSWillmoreViewer *wv)
 {
   CSWillmoreFlowInfo i;

@@ -14,6 +14,7 @@ static PetscErrorCode RawValue(PetscOptionItems *items, const char opt[], const 
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsFindPair(items->options, items->prefix, opt, value, found));
   snprintf(full, len, "-%s%s", pre, opt[0] == '-' ? opt + 1 : opt);
+  PetscCall(CSOptionsNoteRead(full)); /* a candidate of "did you mean" (option_unused.c) */
   PetscFunctionReturn(0);
 }
 

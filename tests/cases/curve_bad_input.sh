@@ -66,7 +66,7 @@ EXPECT="-gen_curve_n 2"                   expect_fail run $G -gen_curve_n 2
 EXPECT="exactly one of -curve"            expect_fail run $G -curve "$D/open_line.obj"
 EXPECT="exactly one of -curve"            expect_fail run
 EXPECT="-o .*curve.*obj or text"          expect_fail run $G -o "$TMP/x.ply"
-EXPECT="unknown or unused option -curve_taux" expect_fail $MPIEXEC "$CS_BIN" -task curveflow $G -curve_taux 1
+EXPECT="unknown option -curve_taux 1 \(did you mean -curve_tau\?\)" expect_fail $MPIEXEC "$CS_BIN" -task curveflow $G -curve_taux 1
 EXPECT="not supported"                    expect_fail run $G -checkpoint "$TMP/c.bin"
 # an ill-conditioned filter (review of 2026-12-05): k = 3 on a 2000-vertex star left a relative residual of 15 (serially; on
 # 2 ranks CG stopped) and the flow went on with garbage; now it stops with a line naming the options, on every rank

@@ -65,6 +65,34 @@ static PetscErrorCode SetDefaultSubSolvers(CSSaddle *s, PC pc)
   PetscFunctionReturn(0);
 }
 
+/* -<prefix>schur_solver and -<prefix>schur_rtol (only with the edge block and without -<prefix>pc_type) */
+static PetscErrorCode ReadSchurOptions(CSSaddle *s)
+{
+  PetscFunctionBeginUser;
+  if (!s->edges || s->monolithic) PetscFunctionReturn(0);
+  PetscOptionsBegin(s->mesh->comm, s->prefix, "Saddle solve of the CGD/PGD step", NULL);
+  PetscCall(CSOptionsEnum("-schur_solver", "Solver of the Schur complement: direct factorisation, or iterative in the primal or the multiplier space (docs/scaling.md)", NULL, CSSchurSolveTypes, (PetscEnum)s->schur, (PetscEnum *)&s->schur, NULL));
+  PetscCall(CSOptionsReal("-schur_rtol", "Relative tolerance of the iterative Schur solve", NULL, s->schur_rtol, &s->schur_rtol, NULL));
+  PetscOptionsEnd();
+  /* a kept BDDC (built for an earlier S) preconditions the current S badly: level 3 on 4 ranks, 8-9 CG iterations
+     in the first step, 41-64 in the second, 147-220 in the third (docs/scaling.md); rebuilt every step unless the
+     user set -flow_factor_reuse_its */
+  if (s->schur == CS_SCHUR_BDDC && !s->reuse_set) s->reuse_its = 0;
+  PetscCheck(s->schur_rtol > 0 && s->schur_rtol < 1, s->mesh->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sschur_rtol %g: must be in (0, 1)", s->prefix, (double)s->schur_rtol);
+  PetscFunctionReturn(0);
+}
+
+/* -<prefix>reuse_borders (with global rows only) */
+static PetscErrorCode ReadBorderOptions(CSSaddle *s)
+{
+  PetscFunctionBeginUser;
+  if (!s->k) PetscFunctionReturn(0);
+  PetscOptionsBegin(s->mesh->comm, s->prefix, "Bordering of the global constraint rows", NULL);
+  PetscCall(PetscOptionsBool("-reuse_borders", "Solve K W = B once per operator and keep W for the step's later solves (second-order corrections, refinement, restoration)", NULL, s->reuse_borders, &s->reuse_borders, NULL));
+  PetscOptionsEnd();
+  PetscFunctionReturn(0);
+}
+
 /* the KSP of the saddle solve, configured at the next CSSaddleSetOperators */
 static PetscErrorCode NewKSP(CSSaddle *s)
 {
@@ -91,6 +119,10 @@ PetscErrorCode CSSaddleCreate(CSMesh mesh, const char prefix[], PetscBool edges,
   s->reuse_set  = (PetscBool)(reuse_its >= 0);
   s->reuse_borders = PETSC_TRUE;
   PetscCall(PetscStrncpy(s->prefix, prefix, sizeof(s->prefix)));
+  /* the saddle's own options are read here, with the flow's set-up, not at the first solve: every option of a run is
+     read before its first step (the driver's check of unused options, issue 36 item 18) */
+  PetscCall(ReadSchurOptions(s));
+  PetscCall(ReadBorderOptions(s));
   PetscCall(NewKSP(s));
   if (k) {
     PetscCall(PetscMalloc1(k, &s->G));
@@ -259,34 +291,6 @@ static PetscErrorCode ConfigureFieldSplit(CSSaddle *s, PC pc, PetscBool chosen, 
   PetscFunctionReturn(0);
 }
 
-/* -<prefix>schur_solver and -<prefix>schur_rtol (only with the edge block and without -<prefix>pc_type) */
-static PetscErrorCode ReadSchurOptions(CSSaddle *s)
-{
-  PetscFunctionBeginUser;
-  if (!s->edges || s->monolithic) PetscFunctionReturn(0);
-  PetscOptionsBegin(s->mesh->comm, s->prefix, "Saddle solve of the CGD/PGD step", NULL);
-  PetscCall(CSOptionsEnum("-schur_solver", "Solver of the Schur complement: direct factorisation, or iterative in the primal or the multiplier space (docs/scaling.md)", NULL, CSSchurSolveTypes, (PetscEnum)s->schur, (PetscEnum *)&s->schur, NULL));
-  PetscCall(CSOptionsReal("-schur_rtol", "Relative tolerance of the iterative Schur solve", NULL, s->schur_rtol, &s->schur_rtol, NULL));
-  PetscOptionsEnd();
-  /* a kept BDDC (built for an earlier S) preconditions the current S badly: level 3 on 4 ranks, 8-9 CG iterations
-     in the first step, 41-64 in the second, 147-220 in the third (docs/scaling.md); rebuilt every step unless the
-     user set -flow_factor_reuse_its */
-  if (s->schur == CS_SCHUR_BDDC && !s->reuse_set) s->reuse_its = 0;
-  PetscCheck(s->schur_rtol > 0 && s->schur_rtol < 1, s->mesh->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sschur_rtol %g: must be in (0, 1)", s->prefix, (double)s->schur_rtol);
-  PetscFunctionReturn(0);
-}
-
-/* -<prefix>reuse_borders (with global rows only) */
-static PetscErrorCode ReadBorderOptions(CSSaddle *s)
-{
-  PetscFunctionBeginUser;
-  if (!s->k) PetscFunctionReturn(0);
-  PetscOptionsBegin(s->mesh->comm, s->prefix, "Bordering of the global constraint rows", NULL);
-  PetscCall(PetscOptionsBool("-reuse_borders", "Solve K W = B once per operator and keep W for the step's later solves (second-order corrections, refinement, restoration)", NULL, s->reuse_borders, &s->reuse_borders, NULL));
-  PetscOptionsEnd();
-  PetscFunctionReturn(0);
-}
-
 /* First configuration of a (new) KSP: the defaults unless the user chose a solver, the options, the splits. */
 static PetscErrorCode ConfigureKSP(CSSaddle *s, Vec iq, PetscReal tmu, Mat X)
 {
@@ -294,8 +298,6 @@ static PetscErrorCode ConfigureKSP(CSSaddle *s, Vec iq, PetscReal tmu, Mat X)
   PetscBool chosen, fs = PETSC_FALSE, preonly;
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsHasName(NULL, s->prefix, "-pc_type", &chosen)); /* the user chose the whole solver */
-  PetscCall(ReadSchurOptions(s));
-  PetscCall(ReadBorderOptions(s));
   if (!chosen) PetscCall(SetDefaultSolver(s));
   PetscCall(KSPSetFromOptions(s->ksp));
   PetscCall(KSPGetPC(s->ksp, &pc));
