@@ -236,6 +236,6 @@ PetscErrorCode CSWillmoreFlowCreate_Fairing(CSWillmoreFlow F)
   F->ops.shrink    = CSWFShrinkPrimal;
   F->ops.destroy   = DestroyFair;
   F->t             = kinds[k].t;
-  F->tmax          = PETSC_MAX_REAL;
+  F->tmax          = 1e8; /* the step never grows (grow is a no-op): no cap, the largest -flow_t_max the checks admit */
   PetscFunctionReturn(0);
 }
