@@ -5,9 +5,16 @@
 # CS_TEST_FILTER=regex selects cases. Closing line: "N passed, N failed".
 #
 # Runs share the machine's cores (CS_TEST_JOBS, default nproc): a run of NP ranks takes NP cores, and a serial run
-# whose script launches mpirun itself takes them all, so two serial cases run side by side on a 2-core machine while
-# a 2-rank case runs alone (Open MPI's ranks busy-poll: oversubscribing them costs more than it saves).
-# CS_TEST_JOBS=1 is the plain one-after-the-other order.
+# whose script launches more than one rank itself (an mpirun outside a comment and not "mpirun -n 1") takes them all,
+# so two serial cases run side by side on a 2-core machine while a 2-rank case runs alone (Open MPI's ranks
+# busy-poll: oversubscribing them costs more than it saves). A "# cores: N" line overrides that guess.
+# CS_TEST_JOBS=1 runs them one after the other.
+#
+# Order: longest first (the seconds of each run in build/test-times.txt, written by the last full run, else in
+# tests/times.txt; a run in neither goes first), and a run that does not fit in the free cores lets the next one that
+# does go ahead, so no core idles while a serial run is left, and the suite does not end on one long run with a core
+# idle (a simulation of the 2026-12-06 full run's 201 times: 1053 s in file order, 856 s this way, the sum of
+# cores x seconds / 2 is 856 s).
 set -u
 cd "$(dirname "$0")/.."
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
@@ -17,10 +24,23 @@ export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_
 export OMPI_MCA_odls_base_sigkill_timeout=${OMPI_MCA_odls_base_sigkill_timeout:-0}
 export CS_ROOT=$PWD CS_BIN=${CS_BIN:-$PWD/bin/confsurf} CS_TESTS=${CS_TESTS:-$PWD/build/tests} # make sanitize: build/san/
 export CS_SHARED=${CS_SHARED:-$PWD/../shared}
+# python3 resolved once: the cases call it hundreds of times (json, check_close, the checks), and a version
+# manager's shim in PATH (pyenv's is a shell script running `pyenv exec`) costs 1.1-1.9 s per call on a loaded
+# 2-core machine against 0.1 s for the interpreter it picks. The same interpreter, first in PATH for the cases.
+if py=$(python3 -c 'import sys; print(sys.executable)' 2>/dev/null) && [ -x "$py" ] && [ "$(command -v python3)" != "$py" ]; then
+  py_dir=$(mktemp -d); ln -s "$py" "$py_dir/python3"; export PATH="$py_dir:$PATH"; trap 'rm -rf "$py_dir"' EXIT
+fi
 jobs_max=${CS_TEST_JOBS:-$(nproc 2>/dev/null || echo 1)}
 [[ $jobs_max =~ ^[1-9][0-9]*$ ]] || { echo "tests/run.sh: CS_TEST_JOBS=$jobs_max is not a positive integer" >&2; exit 2; }
 pass=0; fail=0; failed=(); used=0
-declare -A weight name_of np_of t0_of tmp_of
+declare -A weight name_of np_of t0_of tmp_of cost_of
+times_local=build/test-times.txt
+# "name np seconds" lines; the later file wins
+for f in tests/times.txt "$times_local"; do
+  [ -f "$f" ] || continue
+  while read -r n p sec; do [[ $n == \#* || -z $sec ]] || cost_of["$n $p"]=$sec; done < "$f"
+done
+declare -A measured
 t_start=$(date +%s)
 
 # One run of case $1 with $2 ranks, in its own scratch directory, in the background; its exit code is its verdict.
@@ -39,8 +59,9 @@ reap_one() {
   local pid rc
   wait -n -p pid; rc=$?
   local name=${name_of[$pid]} np=${np_of[$pid]} tmp=${tmp_of[$pid]}
+  local dt; dt=$(echo "$(date +%s.%N) - ${t0_of[$pid]}" | bc); measured["$name $np"]=$(printf '%.1f' "$dt")
   if [ "$rc" = 0 ]; then
-    pass=$((pass+1)); printf 'PASS %-40s np=%s  %5.1fs\n' "$name" "$np" "$(echo "$(date +%s.%N) - ${t0_of[$pid]}" | bc)"
+    pass=$((pass+1)); printf 'PASS %-40s np=%s  %5.1fs\n' "$name" "$np" "$dt"
   else
     fail=$((fail+1)); failed+=("$name np=$np")
     printf 'FAIL %-40s np=%s\n' "$name" "$np"; sed 's/^/    | /' "$tmp/log" | tail -40
@@ -49,20 +70,41 @@ reap_one() {
   unset "weight[$pid]" "name_of[$pid]" "np_of[$pid]" "t0_of[$pid]" "tmp_of[$pid]"
 }
 
+runs=()   # "seconds<TAB>case<TAB>np<TAB>cores"
 for c in tests/cases/*.sh; do
   name=$(basename "$c" .sh)
   if [ -n "${CS_TEST_FILTER:-}" ] && ! [[ $name =~ $CS_TEST_FILTER ]]; then continue; fi
   nps=$(sed -n 's/^# nprocs: *//p' "$c" | head -1); nps=${nps:-"1 2"}
-  own_ranks=0; grep -q 'mpirun' "$c" && own_ranks=1                 # the script starts ranks of its own
+  cores=$(sed -n 's/^# cores: *//p' "$c" | head -1)
+  own_ranks=0                                                      # the script starts more than one rank of its own
+  grep -v '^[[:space:]]*#' "$c" | grep 'mpirun' | grep -qv 'mpirun -n 1 ' && own_ranks=1
   for np in $nps; do
     if [ "${CS_TEST_NPROCS:-}" = 1 ] && [ "$np" != 1 ]; then continue; fi
-    w=$np; [ "$own_ranks" = 1 ] && w=$jobs_max
+    w=$np; extra=1; [ "$own_ranks" = 1 ] && extra=$jobs_max; [ -n "$cores" ] && extra=$cores
+    [ "$extra" -gt "$w" ] && w=$extra
     [ "$w" -gt "$jobs_max" ] && w=$jobs_max
-    while [ "$used" -gt 0 ] && [ $((used + w)) -gt "$jobs_max" ]; do reap_one; done
-    start_run "$c" "$np" "$w"
+    runs+=("${cost_of["$name $np"]:-99999}"$'\t'"$c"$'\t'"$np"$'\t'"$w")
   done
 done
+mapfile -t pending < <(printf '%s\n' "${runs[@]+"${runs[@]}"}" | sort -s -t$'\t' -k1,1gr | grep .)
+while [ "${#pending[@]}" -gt 0 ]; do
+  started=0
+  for i in "${!pending[@]}"; do                                     # the longest run that fits in the free cores
+    IFS=$'\t' read -r _ c np w <<< "${pending[$i]}"
+    if [ "$used" = 0 ] || [ $((used + w)) -le "$jobs_max" ]; then
+      start_run "$c" "$np" "$w"; unset "pending[$i]"; started=1; break
+    fi
+  done
+  [ "$started" = 1 ] || reap_one
+done
 while [ "$used" -gt 0 ]; do reap_one; done
+# a full run keeps its times for the next run's order (a filtered run does not: one case timed alone or under
+# another load would misplace it among the others)
+if [ -d build ] && [ -z "${CS_TEST_FILTER:-}" ] && [ "${CS_TEST_NPROCS:-}" != 1 ] && [ "${#measured[@]}" -gt 0 ]; then
+  for k in "${!measured[@]}"; do cost_of[$k]=${measured[$k]}; done
+  { echo "# name np seconds: written by tests/run.sh (the order of the next run)"
+    for k in "${!cost_of[@]}"; do echo "$k ${cost_of[$k]}"; done | sort; } > "$times_local.tmp" && mv "$times_local.tmp" "$times_local"
+fi
 echo "suite time: $(( $(date +%s) - t_start )) s ($jobs_max cores)"
 for f in "${failed[@]+"${failed[@]}"}"; do echo "failed: $f"; done
 echo "$pass passed, $fail failed"
