@@ -92,7 +92,9 @@ static void StartupError(const char *fmt, const char *opt, const char *path, con
 }
 
 /* PETSc's -history target: appended to, never replaced */
-static int HistoryUsable(const char *path)
+/* 1: usable, 0: refused (said), -1: another process of this run (a rank of the same mpirun, all checking the same
+   path at once) created or removed the file between the stat and the open: look again */
+static int HistoryUsableOnce(const char *path)
 {
   struct stat st;
   int         fd;
@@ -104,7 +106,7 @@ static int HistoryUsable(const char *path)
       close(fd);
       return 1;
     }
-    if ((fd = open(path, O_WRONLY | O_APPEND | O_NONBLOCK)) < 0) return StartupError(fmt, "-history", path, strerror(errno)), 0;
+    if ((fd = open(path, O_WRONLY | O_APPEND | O_NONBLOCK)) < 0) return errno == ENOENT ? -1 : (StartupError(fmt, "-history", path, strerror(errno)), 0);
     close(fd);
     return 1;
   }
@@ -112,12 +114,25 @@ static int HistoryUsable(const char *path)
   /* created and removed again: a permission test (access) passes for root where the file system refuses */
   if ((fd = open(path, O_WRONLY | O_CREAT | O_EXCL, 0666)) < 0) {
     char why[256];
+    if (errno == EEXIST) return -1;
     snprintf(why, sizeof(why), "cannot create it: %s", strerror(errno));
     return StartupError(fmt, "-history", path, why), 0;
   }
   close(fd);
   (void)unlink(path);
   return 1;
+}
+
+/* -history's file can be written. Every rank of an mpirun checks before MPI exists, so two ranks can race on the
+   probe file (one's O_EXCL create fails with "File exists" while the other holds it: make test failed at random on 2
+   ranks); a race is looked at again, a bounded number of times. */
+static int HistoryUsable(const char *path)
+{
+  for (int k = 0; k < 100; k++) {
+    int r = HistoryUsableOnce(path);
+    if (r >= 0) return r;
+  }
+  return StartupError("confsurf: error: %s %s: cannot write there (%s); PETSc's -history logs the options, the flows' table is -history_csv\n", "-history", path, "it keeps appearing and disappearing"), 0;
 }
 
 /* an options file: a regular file that can be read (a folder, FIFO or device is refused without opening it) */
