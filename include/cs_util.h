@@ -60,6 +60,7 @@ PETSC_EXTERN PetscErrorCode CSReadNumberFile(const char option[], const char pat
 PETSC_EXTERN PetscErrorCode CSArrayGrow(size_t size, PetscInt n, PetscInt initial, PetscInt *cap, void **a);
 PETSC_EXTERN PetscErrorCode CSPathExtension(const char path[], char ext[], size_t len); /* lower-case, without dot */
 PETSC_EXTERN PetscErrorCode CSPathMakeDir(const char dir[]);       /* mkdir -p of a folder */
+PETSC_EXTERN PetscErrorCode CSPathInsertSuffix(const char path[], const char suffix[], char out[], size_t len); /* a.obj, _last -> a_last.obj */
 PETSC_EXTERN PetscErrorCode CSFunctionListNames(PetscFunctionList list, char *buf, size_t len); /* "a b c": the registered names */
 PETSC_EXTERN PetscErrorCode CSFunctionListJoin(PetscFunctionList list, const char sep[], char *buf, size_t len); /* "a|b|c" with sep "|" */
 PETSC_EXTERN PetscErrorCode CSPathMakeParents(const char path[]); /* mkdir -p of the folders above a file to write */

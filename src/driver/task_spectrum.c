@@ -104,7 +104,7 @@ PetscErrorCode CSTaskSpectrum(MPI_Comm comm)
   CSOutput   out;
   CSMesh     mesh;
   PetscErrorCode ierr;
-  CSSpin     spin;
+  CSSpin     spin = NULL;
   PetscInt   nev = 20, nconv, k[64], nk = 64;
   PetscReal *eig, *root;
   PetscBool  sgn = PETSC_FALSE, has_k;
@@ -120,15 +120,10 @@ PetscErrorCode CSTaskSpectrum(MPI_Comm comm)
   PetscOptionsEnd();
   if (!has_k) nk = 0;
   ierr = CheckOptions(comm, mesh, nev, nk, sgn);
-  if (ierr) { /* refused: the mesh and the outputs are freed before the error returns (no leak under ASan) */
-    PetscCall(CSMeshDestroy(&mesh));
-    PetscCall(CSOutputDestroy(&out));
-  }
-  PetscCall(ierr);
-  PetscCall(CSSpinCreate(mesh, &spin));
-  ierr = CSSpinSetFromOptions(spin);
+  if (!ierr) ierr = CSSpinCreate(mesh, &spin);
+  if (!ierr) ierr = CSSpinSetFromOptions(spin);
   if (!ierr) ierr = CSOptionsCheckUnused(comm, "-task spectrum"); /* before the eigensolve; its EPS reads -spin_eps_* there */
-  if (ierr) { /* refused: nothing written, nothing leaked */
+  if (ierr) { /* refused: nothing written, and everything freed before the error returns (no leak under ASan) */
     PetscCall(CSSpinDestroy(&spin));
     PetscCall(CSMeshDestroy(&mesh));
     PetscCall(CSOutputDestroy(&out));

@@ -91,17 +91,12 @@ static PetscErrorCode CheckImmersion(CSWillmoreFlow flow, CSOutput *out, CSMesh 
    lowest W), named in the summary (last_state_file). */
 static PetscErrorCode WriteLastState(CSWillmoreFlow flow, CSOutput *out, CSMesh mesh)
 {
-  Vec         last;
-  char        path[PETSC_MAX_PATH_LEN];
-  const char *slash, *dot;
-  size_t      stem;
+  Vec  last;
+  char path[PETSC_MAX_PATH_LEN];
   PetscFunctionBeginUser;
   PetscCall(CSWillmoreFlowGetLastSolution(flow, &last));
   if (!last || !out->has_out) PetscFunctionReturn(0);
-  slash = strrchr(out->out, '/');
-  dot   = strrchr(slash ? slash : out->out, '.');
-  stem  = dot ? (size_t)(dot - out->out) : strlen(out->out);
-  PetscCheck(snprintf(path, sizeof(path), "%.*s_last%s", (int)stem, out->out, dot ? dot : "") < (int)sizeof(path), mesh->comm, PETSC_ERR_ARG_SIZ, "-o %s: the name of the last state's file beside it is too long", out->out);
+  PetscCall(CSPathInsertSuffix(out->out, "_last", path, sizeof(path)));
   PetscCall(CSMeshWrite(mesh, last, path));
   PetscCall(PetscPrintf(mesh->comm, "wrote the last state of the run to %s (-o holds the best)\n", path));
   PetscCall(CSJSONAddString(out->json, "last_state_file", path));

@@ -9,13 +9,13 @@
 #include <strings.h>
 
 /* The names the project's readers looked up (option_read.c), given or not: the candidates of "did you mean". */
-static char  **ReadNames = NULL;
-static size_t  NRead = 0, NReadAlloc = 0;
+static char   **ReadNames = NULL;
+static PetscInt NRead = 0, NReadAlloc = 0;
 
 static PetscErrorCode ReadNamesDestroy(void)
 {
   PetscFunctionBeginUser;
-  for (size_t i = 0; i < NRead; i++) PetscCall(PetscFree(ReadNames[i]));
+  for (PetscInt i = 0; i < NRead; i++) PetscCall(PetscFree(ReadNames[i]));
   PetscCall(PetscFree(ReadNames));
   NRead = NReadAlloc = 0;
   PetscFunctionReturn(0);
@@ -24,18 +24,10 @@ static PetscErrorCode ReadNamesDestroy(void)
 PetscErrorCode CSOptionsNoteRead(const char full[])
 {
   PetscFunctionBeginUser;
-  for (size_t i = 0; i < NRead; i++)
+  for (PetscInt i = 0; i < NRead; i++)
     if (!strcasecmp(ReadNames[i], full)) PetscFunctionReturn(0);
-  if (NRead == NReadAlloc) {
-    char **grown;
-    size_t n = NReadAlloc ? 2 * NReadAlloc : 64;
-    PetscCall(PetscMalloc1(n, &grown));
-    if (NRead) PetscCall(PetscArraycpy(grown, ReadNames, NRead));
-    PetscCall(PetscFree(ReadNames));
-    if (!NReadAlloc) PetscCall(PetscRegisterFinalize(ReadNamesDestroy));
-    ReadNames  = grown;
-    NReadAlloc = n;
-  }
+  if (!NReadAlloc) PetscCall(PetscRegisterFinalize(ReadNamesDestroy));
+  PetscCall(CSArrayGrow(sizeof(char *), NRead, 64, &NReadAlloc, (void **)&ReadNames));
   PetscCall(PetscStrallocpy(full, &ReadNames[NRead++]));
   PetscFunctionReturn(0);
 }
@@ -98,7 +90,7 @@ static PetscErrorCode Suggest(const char name[], const char *const used[], Petsc
   PetscFunctionBeginUser;
   *best = NULL;
   PetscCall(PetscSNPrintf(dashed, sizeof(dashed), "-%s", name));
-  for (size_t i = 0; i < NRead; i++) {
+  for (PetscInt i = 0; i < NRead; i++) {
     int d = Distance(dashed, ReadNames[i], cap);
     if (d && d < bestd) bestd = d, *best = ReadNames[i];
   }

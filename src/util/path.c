@@ -15,6 +15,19 @@ PetscErrorCode CSPathExtension(const char path[], char ext[], size_t len)
   PetscFunctionReturn(0);
 }
 
+/* path with suffix put before its extension ("out/a.obj", "_last" -> "out/a_last.obj"; no extension: appended), the
+   extension found as CSPathExtension finds it; an error naming the path when out cannot hold the name. */
+PetscErrorCode CSPathInsertSuffix(const char path[], const char suffix[], char out[], size_t len)
+{
+  const char *dot = strrchr(path, '.'), *slash = strrchr(path, '/');
+  size_t      stem;
+  PetscFunctionBeginUser;
+  if (!dot || (slash && dot < slash)) dot = NULL;
+  stem = dot ? (size_t)(dot - path) : strlen(path);
+  PetscCheck(snprintf(out, len, "%.*s%s%s", (int)stem, path, suffix, dot ? dot : "") < (int)len, PETSC_COMM_SELF, PETSC_ERR_ARG_SIZ, "%s: the name with %s inserted is too long", path, suffix);
+  PetscFunctionReturn(0);
+}
+
 /* Creates a folder and the folders above it (as mkdir -p): output folders (-viewer_dir) and the folders of output
    files may be new, so an options file can send its results to out/... on a fresh checkout. A component that
    exists as a file is refused here, or by the open that follows. */

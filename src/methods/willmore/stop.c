@@ -132,12 +132,6 @@ PetscErrorCode CSWFCheckStationary(CSWillmoreFlow F, CSWillmoreFlowConvergedReas
   PetscFunctionReturn(0);
 }
 
-/* DIVERGED_DRIFT: over the last K = -drift_window accepted steps W changed by at most -drift_wtol per step
-   (relative) while el_residual_scaled is at least -drift_rise times its smallest value of the run, inside the class
-   (violation below -ctol). A converging run has a falling residual; a squeeze or a descent changes W faster. What
-   is left is a slide along a direction of nearly constant W away from the nearest critical point: the remeshed
-   fat torus's cos 2phi mode, a saddle of the discrete problem whose growth rate shrinks like h^2 (docs/real_meshes.md,
-   issue 35). It cannot converge at this mesh, so it stops, and -flow_keep_best returns the smallest residual. */
 /* The likely cause in the user's words: without the Moebius gauge a closed surface can slide along a Moebius orbit
    (the R/r = 1.8 torus and the genus-2 theta converge once it is fixed, docs/real_meshes.md sections 4-5); with it,
    what is left is a saddle of the discrete energy (the remeshed R/r = 2 torus). */
@@ -147,6 +141,12 @@ static const char *DriftCause(CSWillmoreFlow F)
   return "a saddle of the discrete energy, as on a remeshed torus at R/r = 2";
 }
 
+/* DIVERGED_DRIFT: over the last K = -drift_window accepted steps W changed by at most -drift_wtol per step
+   (relative) while el_residual_scaled is at least -drift_rise times its smallest value of the run, inside the class
+   (violation below -ctol). A converging run has a falling residual; a squeeze or a descent changes W faster. What
+   is left is a slide along a direction of nearly constant W away from the nearest critical point: the remeshed
+   fat torus's cos 2phi mode, a saddle of the discrete problem whose growth rate shrinks like h^2 (docs/real_meshes.md,
+   issue 35). It cannot converge at this mesh, so it stops, and -flow_keep_best returns the smallest residual. */
 PetscErrorCode CSWFCheckDrift(CSWillmoreFlow F, CSWillmoreFlowConvergedReason *reason)
 {
   PetscInt  K = F->drift_window, n = F->stat_n;
