@@ -28,7 +28,7 @@ CFLAGS   ?= -O2 -g
 CFLAGS   += -std=gnu11 -Wall -Wextra -Wno-unused-parameter $(WERROR) -MMD -MP
 LDLIBS   := $(shell pkg-config --libs slepc petsc) -lcholmod -llapack -lblas -lz -lm
 
-LIB_SRC  := $(sort $(wildcard src/*/*.c src/*/*/*.c))
+LIB_SRC  := $(sort $(wildcard src/*/*.c src/*/*/*.c src/*/*/*/*/*.c))
 LIB_SRC  := $(filter-out src/driver/%,$(LIB_SRC))
 
 # CGAL (header-only, with GMP/MPFR) for -mesh_remesh: its .pc if it ships one, else the header probe. Without it

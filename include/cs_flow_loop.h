@@ -3,7 +3,7 @@
    stepping time. A flow embeds a CSFlowLoop (member `loop`), fills its ops with its own parts and keeps only
    those: its evaluation, its step proper, its own stopping tests and the calls of its typed monitors. Used by
    the conformal flow (src/methods/conformal/) and the curve flow (src/methods/curve/). Not (yet) by the Willmore
-   flows (src/methods/willmore/solve.c keeps its own step/reject loop, which predates this one) nor by the
+   flows (src/methods/willmore/willmore_solve.c keeps its own step/reject loop, which predates this one) nor by the
    Bobenko-Schroeder flow, whose TAO scheme runs its iterations inside TaoSolve and reports them through TAO's
    monitor, which a step-by-step driver cannot call. */
 #ifndef CS_FLOW_LOOP_H

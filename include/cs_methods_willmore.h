@@ -173,12 +173,12 @@ PETSC_EXTERN PetscErrorCode CSWillmoreFlowRegister(const char name[], PetscError
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetTypeList(PetscFunctionList *list); /* the registered kinds (not to be freed) */
 /* Energies of the flow (-flow_energy), registered by name: willmore, area, fairing. create(mesh, x0, e) builds
    one at the input positions x0 with its defaults; the flow then gives it the options prefix "<flow prefix><name>_"
-   and calls CSEnergySetFromOptions (energies.c). A new energy is tested by being registered
+   and calls CSEnergySetFromOptions (willmore_energies.c). A new energy is tested by being registered
    (tests/unit/test_extension.c checks the gradient of every registered energy). */
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowEnergyRegister(const char name[], PetscErrorCode (*create)(CSMesh, Vec x0, CSEnergy *));
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowEnergyList(PetscFunctionList *list); /* the registered energies (not to be freed) */
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowSetEnergyType(CSWillmoreFlow flow, const char name[]); /* as -flow_energy */
-/* Global constraints registered by name (constraints.c): area, volume, mobius, rotation (targets: the input's
+/* Global constraints registered by name (willmore_constraints.c): area, volume, mobius, rotation (targets: the input's
    values) and any registered later. create(mesh, x0, prefix, g) builds one at the input positions x0, reading
    its options, if any, under prefix ("<flow prefix>constraint_<name>_"). AddConstraint appends one to a flow's
    constraints (before SetUp; after the ones of the -flow_constraint_* options); the vertex kinds only. A new

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Benchmark (not a test) of -flow_saddle_reuse_borders (src/methods/willmore/saddle.c): with k global constraint
+# Benchmark (not a test) of -flow_saddle_reuse_borders (src/methods/willmore/willmore_saddle.c): with k global constraint
 # rows every saddle solve is bordered, W = K^{-1} B (k solves) then a k x k system. W depends on the operators
 # only, so with reuse (the default) it is solved once per CSSaddleSetOperators and kept for the step's later
 # solves (second-order corrections, PGD's refinement); without it every solve repeats the k border solves.

@@ -4,7 +4,7 @@
 # level LEVEL). Rows:
 #   emcf   explicit mean curvature flow          ebilap explicit bi-Laplacian flow (Taubin)
 #   imcf   implicit mean curvature flow (Desbrun) ibilap implicit bi-Laplacian flow (backward Euler)
-#   cmcf   conformalized MCF (Kazhdan et al.)     (the five baselines: src/methods/willmore/fairing_baselines.c)
+#   cmcf   conformalized MCF (Kazhdan et al.)     (the five baselines: src/methods/willmore/impls/fairing/fairing_baselines.c)
 #   bs     Bobenko-Schroeder discrete Willmore flow (semi-implicit, its own step control)
 #   cgd    conformally constrained Willmore flow (soliman2021; an H^2 Willmore flow that keeps the conformal class)
 #   conformal  the conformal curvature flow of crane2013 (-flow_type conformal), when this binary has it; skipped

@@ -1,4 +1,4 @@
-# Issue 15 (soliman2021 Fig. 15): the triangle-field flow's restoration (src/methods/willmore/trianglefield_restore.c).
+# Issue 15 (soliman2021 Fig. 15): the triangle-field flow's restoration (src/methods/willmore/impls/trianglefield/trianglefield_restore.c).
 # Input: the perturbed Morin surface on 24 x 12 with the conformal rows. Its first accepted step uses ~83 % of the
 # step filter's violation ceiling -flow_vmax 1e-2; without a restoration every later trial step's violation tends to
 # the current one from above and all are rejected (docs/triangle_fields.md, "Fig. 15").

@@ -1,5 +1,5 @@
 # Issue 15, App. C.2/C.3: the triangle-field flow in the spinor variables (-flow_variables spinor, x = (u, psi),
-# omega = S_c(u, psi); src/methods/willmore/trianglefield_spinor.c). tests/unit/test_trianglefield_spinor.c: the
+# omega = S_c(u, psi); src/methods/willmore/impls/trianglefield/trianglefield_spinor.c). tests/unit/test_trianglefield_spinor.c: the
 # gradient of W~(S_c(u, psi)) + w E_tau(psi) against central differences (<= 1e-6) along u, psi and both. Then the
 # flow on the 4 x 4 square lattice (tau = i) from psi(df) (u uniform), serially and on the test's ranks: it converges
 # (el_residual < 1e-6), the class is met by construction (|C~ lambda - c0|inf < 1e-10), integrability < 1e-10, no

@@ -25,7 +25,7 @@ EXPECT="-flow_metric h1 with -flow_energy fairing" expect_fail F -gen icosphere 
 EXPECT="-flow_metric h1: -flow_type trianglefield has its own metric" expect_fail F -gen lattice -gen_tau 0,1 -gen_n 4 -gen_m 4 -flow_type trianglefield -flow_metric h1
 EXPECT="-flow_spin_weight_decay 0.1: .*not -flow_variables spinor" expect_fail F -gen lattice -gen_tau 0,1 -gen_n 4 -gen_m 4 -flow_type trianglefield -flow_variables spinor -flow_spin_weight_decay 0.1
 # numeric options that used to make do-nothing runs exiting 0 (issue 18, item 10): nan, inf, out of range
-# (the range table of src/methods/willmore/options.c, CSCheckOptionValues: every rank checks the same values in one
+# (the range table of src/methods/willmore/willmore_options.c, CSCheckOptionValues: every rank checks the same values in one
 # call, so one of them on 2 ranks shows that every rank exits; the others, and -flow_max_area_ratio, -flow_soc_max_it,
 # -flow_restore_above, -flow_fin_q of the same table, serially below)
 EXPECT="^confsurf: error: -flow_rtol nan: must" expect_fail F -gen icosphere -gen_level 1 -flow_rtol nan

@@ -1,5 +1,5 @@
 # Willmore-regularised fairing (soliman2021 Eq. 21, Fig. 20): E = 1/2 |f - f0|^2 + eps W in the input's class, CGD,
-# in the metric eps (w *0 + L *0^-1 L) + *0 that includes the fidelity's Hessian (src/methods/willmore/setup.c;
+# in the metric eps (w *0 + L *0^-1 L) + *0 that includes the fidelity's Hessian (src/methods/willmore/willmore_setup.c;
 # without it the low modes oscillated and the bunny drifted to E = 1.6e7 at eps 0.1). On a bumpy stretched icosphere
 # (level 3): eps 0.1 and 1 converge (EL < 1e-6, class to 1e-10; measured 25 and 46 iterations), the energy never
 # rises along the accepted steps, the larger eps gives the lower W and the larger displacement, and the centroid

@@ -1,4 +1,4 @@
-# The fairing baselines of crane2013 Sec. 6.4.2 (src/methods/willmore/fairing_baselines.c: emcf, ebilap, imcf,
+# The fairing baselines of crane2013 Sec. 6.4.2 (src/methods/willmore/impls/fairing/fairing_baselines.c: emcf, ebilap, imcf,
 # ibilap, cmcf) run with their default options: each fairs a bumped sphere (W falls in 5 fixed steps) and keeps the
 # input's area (each step is rescaled to it). A range check of the flow's options once refused every one of them by
 # default ("-flow_t_max 1.79769e+308"), and no case ran them.

@@ -1,5 +1,5 @@
 # soliman2021 Fig. 5 from the shipped genus 1-3 meshes (docs/real_meshes.md 0b): the runs do not converge, and a run
-# that stops unconverged says how near a critical point its path came (src/methods/willmore/path.c, the "flow path"
+# that stops unconverged says how near a critical point its path came (src/methods/willmore/willmore_path.c, the "flow path"
 # line and the summary keys el_min, it_el_min, energy_el_min).
 # (a) eight_cgal (genus 2), default CGD: stops as mesh_degenerate, not converged; el_min and it_el_min are the
 #     smallest el_residual of the per-iteration history and its iteration, energy_el_min the W there (bookkeeping

@@ -1,5 +1,5 @@
 /* Unit checks of the spinor variables of the triangle-field flow (-flow_type trianglefield -flow_variables spinor,
-   soliman2021 App. C.2/C.3; src/methods/willmore/trianglefield_spinor.c), serial and under mpirun, on the 6 x 6
+   soliman2021 App. C.2/C.3; src/methods/willmore/impls/trianglefield/trianglefield_spinor.c), serial and under mpirun, on the 6 x 6
    square lattice (tau = i) from a random start (random unit psi, uniform u), moved to a random u (|u| <= 0.1):
    - the energy W~(S_c(u, psi)) + w E_tau(psi) (w = 0.5) has the gradient J^T grad W~ + w grad E_tau: directional
      derivatives along random directions (u and psi parts together, and psi alone, and u alone) against central

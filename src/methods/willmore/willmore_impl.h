@@ -4,7 +4,7 @@
 #define CS_WILLMORE_IMPL_H
 #include "cs_methods_willmore.h"
 
-/* ---- the linear solver of every step (saddle.c) ----
+/* ---- the linear solver of every step (willmore_saddle.c) ----
    Solves, with the KSP of prefix "<flow prefix>saddle_",
      [ A00  X    0  ] [zE]   [rE]      A00 = -I_Q / t_mu   (multipliers of the conformal constraint, FIRST:
      [ X^T  H/t  B  ] [zV] = [rV]                            then selfp is the exact Schur complement)
@@ -68,7 +68,7 @@ PETSC_INTERN PetscErrorCode CSSaddleDestroy(CSSaddle *s);
 PETSC_INTERN PetscErrorCode CSSaddleGetGuess(CSSaddle *s, PetscInt j, Vec E, Vec V);
 PETSC_INTERN PetscErrorCode CSSaddleSetGuess(CSSaddle *s, PetscInt j, Vec E, Vec V);
 
-/* ---- the step size model (step_model.c) ---- */
+/* ---- the step size model (willmore_step_model.c) ---- */
 typedef enum { CS_WF_STEP_PREDICTIVE, CS_WF_STEP_HALVING } CSWFStepModel;
 PETSC_INTERN const char *const CSWFStepModels[];
 #define CS_WF_REJECT_CEILING    1 /* the filter's criteria that rejected a trial */
@@ -79,7 +79,7 @@ typedef struct {
   PetscReal t, v0, vt;   /* its step, the violation of x and of the trial point (after the corrections) */
   PetscReal dL, slope;   /* L(t) - L0 and the slope <df, H df>/t (Lagrangian rejections only) */
   PetscReal t1, d1;      /* the trial before it at this x: step and v(t1) - v0 */
-  PetscReal q;           /* the violation left by the step's first second-order correction, relative (step.c): the
+  PetscReal q;           /* the violation left by the step's first second-order correction, relative (willmore_step.c): the
                             part (1 - t t_mu s^2 / (lambda_H + t t_mu s^2)) of a violation the step's operator leaves */
 } CSWFTrialRecord;
 
@@ -112,7 +112,7 @@ struct _CSWillmoreFlowOps {
   PetscErrorCode (*operators)(CSWillmoreFlow);
   PetscErrorCode (*constraints)(CSWillmoreFlow, Vec x, Vec c, PetscReal cx[], PetscBool wantJ);
   PetscErrorCode (*positions)(CSWillmoreFlow, PetscBool initial, Vec *x);
-  /* Checkpoints of such a kind (state.c; NULL: refused): state_nreal scalars of its own after the flow's, the
+  /* Checkpoints of such a kind (willmore_state.c; NULL: refused): state_nreal scalars of its own after the flow's, the
      fields packed in natural-order-ready form (get_state; ck NULL: the fields only) and their inverse after a
      resume overwrote the fields and the scalars (set_state). */
   PetscInt state_nreal;
@@ -184,8 +184,8 @@ struct _p_CSWillmoreFlow {
   PetscInt              max_it, max_rej, proj_max_it, soc_max_it;
   PetscReal             max_seconds; /* wall-time budget (0: none); its stop is reported as DIVERGED_MAX_IT */
   PetscBool             step_control;
-  CSWFStepModel         step_model;        /* -step_model: the predictive t or halving (step_model.c) */
-  CSWFTrialRecord       trial;             /* the filter's measurements of the trials (step_model.c) */
+  CSWFStepModel         step_model;        /* -step_model: the predictive t or halving (willmore_step_model.c) */
+  CSWFTrialRecord       trial;             /* the filter's measurements of the trials (willmore_step_model.c) */
   PetscReal             step_tacc, step_dacc; /* the step model: t and the violation added by the last accepted step (checkpointed) */
   PetscReal             proj_tmu;
   PetscReal             tmu_grow, tmu_max; /* own schedule of the dual step (0: t_mu follows t) */
@@ -224,11 +224,11 @@ struct _p_CSWillmoreFlow {
   PetscReal             viol_max; /* the largest max(conf, glob) of any evaluated state (before a projection at the stop) */
   PetscReal             viol_min; /* the smallest max(conf, glob) of any evaluated state (-1: none yet) */
   PetscInt              viol_min_it, viol_max_it; /* the iterations of viol_min, viol_max */
-  PetscBool             path_set; /* path.c: the EL residual along the run (since the set-up or the resume) */
+  PetscBool             path_set; /* willmore_path.c: the EL residual along the run (since the set-up or the resume) */
   PetscReal             el_first, el_min, E_el_min;
   PetscInt              it_el_min;
 
-  /* the stopping rule (stop.c, docs/willmore_flow.md "Stopping") */
+  /* the stopping rule (willmore_stop.c, docs/willmore_flow.md "Stopping") */
   CSFlowELNormType      el_norm;   /* -flow_el_norm: what -flow_rtol tests */
   PetscBool             el_norm_set;
   PetscReal             els;       /* el_residual_scaled at x: el sqrt(A) / max(|E|, 1e-3 |E0|) */
@@ -258,7 +258,7 @@ static inline PetscReal CSWFStopResidual(CSWillmoreFlow F)
   return F->el_norm == CS_FLOW_EL_NORM_SCALED ? F->els : F->el;
 }
 
-/* evaluate.c */
+/* willmore_evaluate.c */
 PETSC_INTERN PetscErrorCode CSWFZeroFixed(CSWillmoreFlow F, Vec v);
 PETSC_INTERN PetscErrorCode CSWFEvalConstraints(CSWillmoreFlow F, Vec x, Vec c, PetscReal cx[], PetscBool wantJ);
 PETSC_INTERN PetscErrorCode CSWFViolation(CSWillmoreFlow F, Vec c, const PetscReal cx[], PetscReal *conf, PetscReal *glob);
@@ -266,33 +266,33 @@ PETSC_INTERN PetscErrorCode CSWFMerit(CSWillmoreFlow F, PetscReal E, Vec c, cons
 PETSC_INTERN PetscErrorCode CSWFResidual(CSWillmoreFlow F, PetscReal *el);
 PETSC_INTERN PetscErrorCode CSWFGlobalWeights(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFQuadDiffMetric(CSWillmoreFlow F, Vec x, PetscInt *ng);
-/* step.c */
+/* willmore_step.c */
 PETSC_INTERN PetscErrorCode CSWFSetOperators(CSWillmoreFlow F, PetscReal t, PetscReal tmu);
 PETSC_INTERN PetscErrorCode CSWFTrySolve(CSWillmoreFlow F, Vec rE, Vec rV, const PetscReal rX[], Vec zE, Vec zV, PetscReal zX[], PetscInt *its, PetscBool *ok);
 PETSC_INTERN PetscErrorCode CSWFSolveCorrection(CSWillmoreFlow F, Vec zE, Vec zV, PetscInt *its, PetscBool *ok);
 PETSC_INTERN PetscErrorCode CSWFTrialCGD(CSWillmoreFlow F, PetscBool *accept);
 PETSC_INTERN PetscErrorCode CSWFTrialPGD(CSWillmoreFlow F, PetscBool *accept);
-/* filter.c */
+/* willmore_filter.c */
 PETSC_INTERN PetscErrorCode CSWFFilterLagrangian(CSWillmoreFlow F, PetscBool *accept);
 PETSC_INTERN PetscErrorCode CSWFFilterEnergy(CSWillmoreFlow F, PetscBool *accept);
 PETSC_INTERN PetscErrorCode CSWFCheckFinite(CSWillmoreFlow F, PetscBool *accept);
-/* step_model.c */
+/* willmore_step_model.c */
 PETSC_INTERN PetscErrorCode CSWFStepModelRecord(CSWillmoreFlow F, PetscReal v0, PetscReal vt, PetscReal dL, PetscInt why);
 PETSC_INTERN PetscReal      CSWFStepModelShrink(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFStepModelGrow(CSWillmoreFlow F, PetscReal *factor);
-/* projection.c */
+/* willmore_projection.c */
 PETSC_INTERN PetscErrorCode CSWFProject(CSWillmoreFlow F, Vec x, PetscBool *ok, PetscInt *kspits);
 PETSC_INTERN PetscErrorCode CSWFProjectTo(CSWillmoreFlow F, Vec x, PetscReal vtarget, PetscBool *ok, PetscInt *kspits);
 PETSC_INTERN PetscErrorCode CSWFRestore(CSWillmoreFlow F, PetscInt *kspits);
 PETSC_INTERN PetscErrorCode CSWFRestoreTo(CSWillmoreFlow F, PetscReal v, PetscReal vtarget, PetscInt *kspits);
-/* guards.c */
+/* willmore_guards.c */
 PETSC_INTERN PetscErrorCode CSWFMeasureQuality(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFMeasureQualityOf(CSWillmoreFlow F, Vec x0, Vec x);
 PETSC_INTERN PetscErrorCode CSWFTrackPath(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFCheckResolution(CSWillmoreFlow F, CSWillmoreFlowConvergedReason *reason);
 PETSC_INTERN PetscErrorCode CSWFCheckFolds(CSWillmoreFlow F, PetscBool *folded);
 PETSC_INTERN PetscErrorCode CSWFCheckStepGeometry(CSWillmoreFlow F, PetscBool *accept);
-/* stop.c */
+/* willmore_stop.c */
 PETSC_INTERN PetscErrorCode CSWFStopOptions(CSWillmoreFlow F, PetscOptionItems *PetscOptionsObject);
 PETSC_INTERN PetscErrorCode CSWFScaledResidual(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFTrackStationarity(CSWillmoreFlow F);
@@ -302,10 +302,10 @@ PETSC_INTERN PetscErrorCode CSWFTrackBest(CSWillmoreFlow F);
 PETSC_INTERN void           CSWFStationaryGetState(CSWillmoreFlow F, PetscReal ck[]);
 PETSC_INTERN void           CSWFStationarySetState(CSWillmoreFlow F, const PetscReal ck[]);
 PETSC_INTERN PetscErrorCode CSWFStopDestroy(CSWillmoreFlow F);
-/* setup.c */
+/* willmore_setup.c */
 PETSC_INTERN PetscErrorCode CSWFSetUpBoundary(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFSetUpConstraints(CSWillmoreFlow F);
-/* constraints.c */
+/* willmore_constraints.c */
 PETSC_INTERN PetscErrorCode CSWFAddConstraint(CSWillmoreFlow F, CSGlobalConstraint g);
 PETSC_INTERN PetscErrorCode CSWFSetUpAddedConstraints(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFConstraintsDestroy(CSWillmoreFlow F);

@@ -1,6 +1,6 @@
 /* -flow_type gd: Sobolev (H^2 or L2) gradient descent, soliman2021 Eq. GD: the CGD step without the conformal
    constraint (area / volume / point constraints still allowed). */
-#include "willmore_impl.h"
+#include "../../willmore_impl.h"
 
 static PetscErrorCode SetUpGD(CSWillmoreFlow F)
 {
@@ -17,7 +17,7 @@ PetscErrorCode CSWillmoreFlowCreate_GD(CSWillmoreFlow F)
   F->ops.id        = 2;
   F->ops.conformal = PETSC_FALSE;
   F->ops.setup     = SetUpGD;
-  F->ops.max_step   = 0.5; /* the geometric step control and the fold guard (guards.c) */
+  F->ops.max_step   = 0.5; /* the geometric step control and the fold guard (willmore_guards.c) */
   F->ops.fold_guard = PETSC_TRUE;
   PetscFunctionReturn(0);
 }

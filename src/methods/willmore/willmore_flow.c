@@ -1,5 +1,5 @@
 /* The Willmore flow object: creation, kind (PetscFunctionList of strategies), prefix, monitors, getters,
-   checkpoint state, destruction. The method itself: step.c, filter.c, projection.c, guards.c, solve.c. */
+   checkpoint state, destruction. The method itself: willmore_step.c, willmore_filter.c, willmore_projection.c, willmore_guards.c, willmore_solve.c. */
 #include "willmore_impl.h"
 #include "cs_package.h"
 

@@ -1,6 +1,6 @@
 /* -flow_type pgd: projected gradient descent (soliman2021 Sec. 4.1): an explicit step in the H^2 metric
-   tangent to the constraints, then a Gauss-Newton projection back onto the constraint set (projection.c). */
-#include "willmore_impl.h"
+   tangent to the constraints, then a Gauss-Newton projection back onto the constraint set (willmore_projection.c). */
+#include "../../willmore_impl.h"
 
 static PetscErrorCode SetUpPGD(CSWillmoreFlow F)
 {

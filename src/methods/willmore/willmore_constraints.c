@@ -1,7 +1,7 @@
 /* The flow's global constraints as a growing list (CSWFAddConstraint), and the registered constraints a caller
    adds by name (CSWillmoreFlowConstraintRegister / CSWillmoreFlowAddConstraint): the built-in area, volume,
    Moebius balance and rotation gauge (src/energy/constraints_global.c) and any registered later, each built at
-   the input positions. Their rows join the saddle system's bordered rows (saddle.c) like the others. */
+   the input positions. Their rows join the saddle system's bordered rows (willmore_saddle.c) like the others. */
 #include "willmore_impl.h"
 #include "cs_util.h"
 
@@ -102,7 +102,7 @@ PetscErrorCode CSWillmoreFlowAddConstraint(CSWillmoreFlow F, const char name[])
   PetscFunctionReturn(0);
 }
 
-/* The constraints added by name, after the built-in ones of the options (setup.c). */
+/* The constraints added by name, after the built-in ones of the options (willmore_setup.c). */
 PetscErrorCode CSWFSetUpAddedConstraints(CSWillmoreFlow F)
 {
   PetscErrorCode (*create)(CSMesh, Vec, const char[], CSGlobalConstraint *);

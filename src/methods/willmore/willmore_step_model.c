@@ -1,5 +1,5 @@
 /* The predictive step size of CGD/GD and the triangle-field kind (-flow_step_model predictive, the default;
-   docs/willmore_flow.md "The step size model"). The filter (filter.c) records each trial: the violation v0 of x,
+   docs/willmore_flow.md "The step size model"). The filter (willmore_filter.c) records each trial: the violation v0 of x,
    v(t) of the trial point after its second-order corrections, and the Lagrangian's change. Two models predict t:
      violation:  v(t) = v0 + a t^p  (a, p fitted to the trials at x; p = 1 until two trials measure it)
      Lagrangian: L(tau t) = L0 - s tau + q tau^2, s = <df, H df>/t the slope of the CGD step (its first row),
@@ -132,7 +132,7 @@ static PetscReal GrowthFactor(CSWillmoreFlow F, PetscReal v, PetscReal d, PetscR
    restored and t held for three iterations, 10 iterations to convergence against 8 with the halving rule, which
    doubled t (measured v 7.0e-3; this model predicts 7.5e-3 and doubles too). Where no f fits and
    the step restores weakly (q > STEP_Q_WEAK: the violation piles up from step to step, the rejection storm of the
-   bumped torus) x is restored first (projection.c, to vmax / 100: one or two Gauss-Newton steps), and f chosen
+   bumped torus) x is restored first (willmore_projection.c, to vmax / 100: one or two Gauss-Newton steps), and f chosen
    for the restored x; with a strong restoring the larger next step brings the violation down itself (the
    figure-eight: v 8.6e-3 at t = 1, 4.1e-3 after the step at t = 2). */
 PetscErrorCode CSWFStepModelGrow(CSWillmoreFlow F, PetscReal *factor)

@@ -1,7 +1,7 @@
 /* Private to trianglefield*.c: the data of the triangle-field kind (soliman2021 Algorithm 2). */
 #ifndef CS_TRIANGLEFIELD_IMPL_H
 #define CS_TRIANGLEFIELD_IMPL_H
-#include "willmore_impl.h"
+#include "../../willmore_impl.h"
 #include "cs_operators_lens.h"
 #include "cs_operators_spinor.h"
 #include "cs_linalg.h"
@@ -85,7 +85,7 @@ PETSC_INTERN PetscErrorCode CSTFSpinorDestroy(CSTriangleField *d);
 PETSC_INTERN PetscErrorCode CSTFInitSmooth(CSWillmoreFlow F, CSTriangleField *d, PetscReal (*hash)(PetscInt, PetscInt, PetscInt, PetscInt));
 /* trianglefield_restore.c: Gauss-Newton restoration of an accepted omega onto the rows (issue 15) */
 PETSC_INTERN PetscErrorCode CSTFRestore(CSWillmoreFlow F);
-/* trianglefield_state.c: checkpoints (the hooks of state.c), at the end of the set-up */
+/* trianglefield_state.c: checkpoints (the hooks of willmore_state.c), at the end of the set-up */
 PETSC_INTERN PetscErrorCode CSTFStateSetUp(CSWillmoreFlow F, CSTriangleField *d);
 PETSC_INTERN PetscErrorCode CSTFStateDestroy(CSTriangleField *d);
 /* trianglefield_continuation.c: w <- w * decay each time a stage converges, then 0 (App. C.3) */

@@ -11,7 +11,7 @@
    tau = -flow_t h^2 (MCF kinds) or -flow_t h^4 (bi-Laplacian kinds), h the mean edge length of the input, so that
    -flow_t is in units of the explicit stability scale; the step is fixed (a non-finite step is halved). Linear
    solves: KSP prefix <flow prefix>fair_, default Cholesky (CHOLMOD) on one rank, CG + hypre on several. */
-#include "willmore_impl.h"
+#include "../../willmore_impl.h"
 #include "cs_operators.h"
 
 typedef enum { FAIR_EMCF, FAIR_EBILAP, FAIR_IMCF, FAIR_IBILAP, FAIR_CMCF } FairKind;

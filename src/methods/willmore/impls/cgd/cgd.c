@@ -1,8 +1,8 @@
 /* -flow_type cgd: competitive gradient descent (soliman2021 Sec. 4.2, Algorithm 1) with the conformal
    constraint on by default. The primal step t and the dual step t_mu are separate (docs/willmore_flow.md). */
-#include "willmore_impl.h"
+#include "../../willmore_impl.h"
 
-/* x = xt done: restoration of a stalled state (projection.c), then the multipliers mu += dmu, nu += dnu. */
+/* x = xt done: restoration of a stalled state (willmore_projection.c), then the multipliers mu += dmu, nu += dnu. */
 PetscErrorCode CSWFAcceptCGD(CSWillmoreFlow F)
 {
   PetscFunctionBeginUser;
@@ -30,7 +30,7 @@ static PetscErrorCode FinalDualStep(CSWillmoreFlow F, PetscBool *on)
   PetscFunctionReturn(0);
 }
 
-/* t after an accepted step: times the step model's factor (step_model.c; -t_grow with -step_model halving), capped
+/* t after an accepted step: times the step model's factor (willmore_step_model.c; -t_grow with -step_model halving), capped
    at -t_max (reached also when t_max is not t times a power of t_grow); *r is the factor t changed by (1 at t_max),
    which t_mu follows */
 PetscErrorCode CSWFGrowStep(CSWillmoreFlow F, PetscReal *r)
@@ -64,7 +64,7 @@ PetscErrorCode CSWFGrowCGD(CSWillmoreFlow F)
   PetscFunctionReturn(0);
 }
 
-/* A rejection shrinks t (halves it with -step_model halving; step_model.c) but not t_mu: t_mu sets how strongly
+/* A rejection shrinks t (halves it with -step_model halving; willmore_step_model.c) but not t_mu: t_mu sets how strongly
    the step restores the constraints (t t_mu X^T I_Q^-1 X against H in the Schur complement); each rejection raises
    t_mu / t for good, up to tmu_ratio_max (docs/willmore_flow.md, docs/real_meshes.md). */
 PetscErrorCode CSWFShrinkCGD(CSWillmoreFlow F)

@@ -64,7 +64,7 @@ PetscErrorCode CSWFProjectTo(CSWillmoreFlow F, Vec x, PetscReal vtarget, PetscBo
    fails from |c| = 9e-3). -flow_restore_above 1e-3 helped nowhere (measured, docs/real_meshes.md): on the area +
    volume case of tests/cases/willmore_constraints.sh one restoration at iteration 0 sent the run past the
    critical point it converges to without. With -flow_step_model predictive the step model also restores a state
-   (to vmax / 100) where no next step would stay below the ceiling (step_model.c). */
+   (to vmax / 100) where no next step would stay below the ceiling (willmore_step_model.c). */
 PetscErrorCode CSWFRestore(CSWillmoreFlow F, PetscInt *kspits)
 {
   PetscReal conf, glob, v;

@@ -1,7 +1,7 @@
 /* The energies of the flow (-flow_energy), a PetscFunctionList of constructors: a new energy is one
    registration (CSWillmoreFlowEnergyRegister) of a function that creates it from the mesh and the input
    positions. The flow gives it the prefix "<flow prefix><name>_" and calls its SetFromOptions (the fairing
-   energy's -flow_fairing_epsilon), and its metric op, if it has one, enters the step metric (setup.c). */
+   energy's -flow_fairing_epsilon), and its metric op, if it has one, enters the step metric (willmore_setup.c). */
 #include "willmore_impl.h"
 #include "cs_util.h"
 

@@ -1,8 +1,8 @@
 /* The loop state a checkpoint keeps besides its fields (the positions and mu, the edge field; a triangle field's
    own, trianglefield_state.c): [flow kind, t, t_mu, rejections, KSP its in total, KSP its of the last step, edges
    with guarded I_Q weight, seconds, whether the -t_mu_final switch fired, the step model's last accepted t and the
-   violation it added (step_model.c), nu_1..nu_k, the stationarity window and the drift test's smallest residual
-   (stop.c), the kind's own scalars]. The kept best state (-flow_keep_best) is not stored: a resumed run keeps the best
+   violation it added (willmore_step_model.c), nu_1..nu_k, the stationarity window and the drift test's smallest residual
+   (willmore_stop.c), the kind's own scalars]. The kept best state (-flow_keep_best) is not stored: a resumed run keeps the best
    of its own iterations. The rest (g, c, X, metric, residual) is
    recomputed from x at the top of the loop, so a resumed run continues exactly like the uninterrupted one. */
 #include "willmore_impl.h"
@@ -80,7 +80,7 @@ static PetscErrorCode CheckScalars(CSWillmoreFlow F, PetscInt it, const PetscRea
     if (i <= 2) ok = (PetscBool)(ok && v > 0 && v < 1e300);
     else if (i == 7) ok = (PetscBool)(ok && v >= 0);
     else if (i == 8) ok = (PetscBool)(v == 0 || v == 1);
-    else if (i >= 9) ok = (PetscBool)(ok && v >= 0 && v < 1e300); /* step_model.c: 0 before the first accepted step */
+    else if (i >= 9) ok = (PetscBool)(ok && v >= 0 && v < 1e300); /* willmore_step_model.c: 0 before the first accepted step */
     else ok = (PetscBool)(ok && v >= 0 && v <= 1e9 && v == PetscFloorReal(v));
     PetscCheck(ok, F->comm, PETSC_ERR_FILE_UNEXPECTED, "-resume: the checkpoint's %s is %g, out of range (a damaged or crafted file)", names[i - 1], (double)v);
   }

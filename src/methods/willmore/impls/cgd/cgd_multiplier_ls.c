@@ -4,12 +4,12 @@
    direction (the annulus' modulus with both boundary rings held: s ~ 3e-3) then creeps at 1 - 5e-5 per step. Every
    K iterations, with one factorisation each of the step's saddle matrix at t = 1 and t_mu = -flow_multiplier_ls_t_mu
    (t t_mu -> infinity on every direction; the exact dependencies of X stay regularised by -I_Q/t_mu):
-     1. after the accepted step, PGD's Gauss-Newton projection onto c = 0 (projection.c) with that t_mu;
+     1. after the accepted step, PGD's Gauss-Newton projection onto c = 0 (willmore_projection.c) with that t_mu;
      2. before the next step, at the projected state, [mu; nu] <- argmin || g + X^T mu + B^T nu ||_{H^-1}: the
         saddle system with right-hand side [0; -r; 0], r = g + X^T mu + B^T nu, i.e. X H^-1 X^T dmu = -X H^-1 r.
    At CGD's fixed point (c = 0, r = 0: the constrained Euler-Lagrange equation, soliman2021 Theorem 3.2) the
    projection is skipped and dmu = 0, so the fixed points, hence the converged answers, are unchanged. */
-#include "willmore_impl.h"
+#include "../../willmore_impl.h"
 #include "cs_util.h"
 
 PetscErrorCode CSWFMultiplierLSOptions(CSWillmoreFlow F, PetscOptionItems *PetscOptionsObject)
@@ -34,7 +34,7 @@ static void FreshFactorisation(CSWillmoreFlow F)
 }
 
 /* After an accepted step (x = xt), before the estimate at the next iteration: PGD's Gauss-Newton projection
-   (projection.c) with t_mu = -multiplier_ls_t_mu, strong along the nearly dependent direction too. The
+   (willmore_projection.c) with t_mu = -multiplier_ls_t_mu, strong along the nearly dependent direction too. The
    multipliers are re-estimated at the projected state before they are used (CSWFMultiplierLS). A failed
    projection leaves the state as it was. */
 PetscErrorCode CSWFMultiplierLSRestore(CSWillmoreFlow F)

@@ -1,5 +1,5 @@
 /* The restoration of the triangle-field flow (issue 15, soliman2021 Fig. 15): Algorithm 1's CGD/GD restores an
-   accepted state by PGD's Gauss-Newton projection (projection.c, CSWFRestore), which works on positions; this is
+   accepted state by PGD's Gauss-Newton projection (willmore_projection.c, CSWFRestore), which works on positions; this is
    the same projection for the omega variables of Algorithm 2, onto the rows [C~ lambda(omega) - c0; d1 omega;
    S omega] (Eq. 14 / 30, Eq. 31, face closure), <<Y_i|omega>> (Eq. 13) and App. B's, in the I_H1 metric (Eq. 32).
    Why: CGD's regularised dual block leaves each row at (I_Q / t_mu) dmu after a step, and the Morin surface's first

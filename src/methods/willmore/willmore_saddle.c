@@ -161,7 +161,7 @@ static PetscErrorCode AssembleSchur(CSSaddle *s, Vec iq, PetscReal tmu, Mat X)
 }
 
 /* bddc: S = H/t + t_mu X^T I_Q^{-1} X unassembled (MATIS) from the terms of H = scale (w *0 + L *0^{-1} L)
-   (soliman2021 Eq. 26; scale != 1 for the fairing energy's metric, setup.c) and of X, each rank's share from its owned rows (CSMatISFromSquares): d = w *0 / t, L with *0^{-1} / t,
+   (soliman2021 Eq. 26; scale != 1 for the fairing energy's metric, willmore_setup.c) and of X, each rank's share from its owned rows (CSMatISFromSquares): d = w *0 / t, L with *0^{-1} / t,
    X with t_mu / I_Q. The L2 metric (H diagonal): d = diag(H)/t, X only. Dirichlet dofs: identity rows/columns
    (1/t) as in H11. */
 static PetscErrorCode AssembleSchurIS(CSSaddle *s, Vec iq, PetscReal tmu, Mat X)

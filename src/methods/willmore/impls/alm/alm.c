@@ -15,7 +15,7 @@
    The reported Euler-Lagrange residual is |g + X^T mu~ + sum nu~_j row_j| with the first-order estimates
    mu~ = mu + rho c, nu~_j = nu_j + rho xi_j / g_j, i.e. |grad L_A|: it is the residual of soliman2021 Eq. 7 with
    the multiplier the method would take next. The saddle solver is used without the edge block (a metric solve). */
-#include "willmore_impl.h"
+#include "../../willmore_impl.h"
 
 static PetscErrorCode SetUpALM(CSWillmoreFlow F)
 {

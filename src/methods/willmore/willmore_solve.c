@@ -111,7 +111,7 @@ static PetscErrorCode ProjectAtStop(CSWillmoreFlow F)
   PetscFunctionReturn(0);
 }
 
-/* The fold guard (guards.c): a folded state is replaced by the last good one, which the monitors then show and
+/* The fold guard (willmore_guards.c): a folded state is replaced by the last good one, which the monitors then show and
    the flow returns. */
 static PetscErrorCode StopIfFolded(CSWillmoreFlow F)
 {
@@ -149,7 +149,7 @@ PetscErrorCode CSWillmoreFlowStep(CSWillmoreFlow F, CSWillmoreFlowConvergedReaso
   for (PetscInt i = 0; i < F->nmonitor; i++) PetscCall((*F->monitor[i].fn)(F, F->it, F->monitor[i].ctx));
   /* at the first state no step was taken yet: a smaller t cannot help, the start itself is degenerate */
   PetscCheck(F->E == F->E && F->el == F->el, F->comm, PETSC_ERR_FP, "flow: the energy or the residual is not a number at iteration %" PetscInt_FMT " (degenerate triangles?); %s%s%s", F->it, F->it == 0 && !F->resumed ? "the start state is degenerate: check the input mesh (or the initial field, -" : "try a smaller -", F->prefix, F->it == 0 && !F->resumed ? "init*)" : "t");
-  /* -rtol tests el_residual_scaled (or el_residual with -el_norm absolute; stop.c) */
+  /* -rtol tests el_residual_scaled (or el_residual with -el_norm absolute; willmore_stop.c) */
   if (!F->reason && CSWFStopResidual(F) < F->rtol && PetscMax(F->conf, F->glob) < F->ctol) F->reason = CS_WILLMORE_FLOW_CONVERGED_RTOL;
   if (!F->reason) PetscCall(CSWFCheckStationary(F, &F->reason));
   if (!F->reason) PetscCall(CSWFCheckDrift(F, &F->reason));

@@ -29,7 +29,7 @@ PetscErrorCode CSWFSetUpBoundary(CSWillmoreFlow F)
 
 /* The conformal constraint (target: the input's class, that of -flow_target_mesh, or the input's intrinsic
    lengths when it has them: -gen lattice) and the global ones: those of the options, then those added by name
-   (constraints.c). */
+   (willmore_constraints.c). */
 PetscErrorCode CSWFSetUpConstraints(CSWillmoreFlow F)
 {
   CSMesh             m = F->mesh;

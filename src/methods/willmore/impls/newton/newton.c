@@ -17,7 +17,7 @@
    over), doubled after an accepted step up to -flow_t_max (default 1 here). Stopping: the normal residual
    ||N^T g||_2 < -flow_rtol (or -flow_energy_target). Constraints: none (no conformal, area, volume or point
    constraint; closed surfaces only): refused with a message. */
-#include "willmore_impl.h"
+#include "../../willmore_impl.h"
 #include "cs_geometry.h"
 #include "cs_util.h"
 
@@ -437,7 +437,7 @@ PetscErrorCode CSWillmoreFlowCreate_Newton(CSWillmoreFlow F)
   F->ops.shrink     = CSWFShrinkCGD;
   F->ops.residual   = NewtonResidual;
   F->ops.destroy    = DestroyNewton;
-  F->ops.max_step   = 2; /* mean edge lengths per step (guards.c) */
+  F->ops.max_step   = 2; /* mean edge lengths per step (willmore_guards.c) */
   F->ops.fold_guard = PETSC_TRUE;
   F->ops.own_metric = PETSC_TRUE;
   F->tmax           = 1; /* the full Newton step */

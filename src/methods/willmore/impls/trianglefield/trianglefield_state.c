@@ -1,4 +1,4 @@
-/* Checkpoints of the triangle-field flow (state.c): what the loop carries from one iteration to the next besides
+/* Checkpoints of the triangle-field flow (willmore_state.c): what the loop carries from one iteration to the next besides
    the flow's scalars, in fields the checkpoint stores in natural order (src/mesh/checkpoint.c), in 1 + k slots:
    slot 0 the state (omega, the multipliers mu), slot 1 + j the initial guess W_j = [E; V] of the saddle solver's
    bordering solve j (its last solution, which the next step starts from: without it a resumed run differs at the
@@ -17,7 +17,7 @@
 #include "trianglefield_impl.h"
 #include "cs_util.h"
 
-#define TF_CK_NREAL 7 /* after the flow's own (state.c: t, t_mu, the -t_mu_final switch, ...) */
+#define TF_CK_NREAL 7 /* after the flow's own (willmore_state.c: t, t_mu, the -t_mu_final switch, ...) */
 
 /* the local array index of the first dof of point p in the global vectors of dm (owned points only) */
 typedef struct {
@@ -187,7 +187,7 @@ static PetscErrorCode SetState(CSWillmoreFlow F, const PetscReal ck[])
   d->stage_it0       = (PetscInt)ck[2];
   d->nstages         = (PetscInt)ck[3];
   F->saddle.last_its = (PetscInt)ck[4];
-  F->saddle.wait     = (PetscInt)ck[5]; /* the first step's fresh factorisation counts as one (saddle.c) */
+  F->saddle.wait     = (PetscInt)ck[5]; /* the first step's fresh factorisation counts as one (willmore_saddle.c) */
   F->saddle.backoff  = (PetscInt)ck[6];
   PetscCall(Pack(F, d, PETSC_TRUE));
   PetscFunctionReturn(0);
