@@ -361,13 +361,14 @@ PetscErrorCode CSWillmoreFlowDestroy(CSWillmoreFlow *flow)
   PetscFunctionReturn(0);
 }
 
-/* One line: the problem the flow solves. */
+/* One line: the problem the flow solves; then the kind's own lines (ops.view). */
 PetscErrorCode CSWillmoreFlowView(CSWillmoreFlow F, PetscViewer viewer)
 {
   CSMesh m = F->mesh;
   PetscFunctionBeginUser;
   if (!viewer) viewer = PETSC_VIEWER_STDOUT_(F->comm);
   PetscCall(PetscViewerASCIIPrintf(viewer, "flow %s: mesh %s V=%" PetscInt_FMT " E=%" PetscInt_FMT " F=%" PetscInt_FMT ", energy %s, metric %s, conformal %s, %" PetscInt_FMT " global constraint rows%s, t=%g t_mu=%g\n", F->type, m->name, m->Nv, m->Ne, m->Nf, F->energy_name, CSFlowMetricTypes[F->metric_type], F->conformal ? "on" : "off", F->k, F->fixedIS ? ", Dirichlet boundary" : "", (double)F->t, (double)F->tmu));
+  if (F->ops.view) PetscCall((*F->ops.view)(F, viewer));
   PetscFunctionReturn(0);
 }
 

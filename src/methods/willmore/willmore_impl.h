@@ -100,6 +100,9 @@ struct _CSWillmoreFlowOps {
   PetscErrorCode (*dual)(CSWillmoreFlow);                /* before the step, after its operators: a multiplier estimate (NULL: none) */
   PetscErrorCode (*residual)(CSWillmoreFlow, PetscReal *); /* the stopping residual at x (NULL: el_residual) */
   PetscErrorCode (*destroy)(CSWillmoreFlow);             /* the kind's own data (NULL: none) */
+  PetscErrorCode (*setfromoptions)(CSWillmoreFlow, PetscOptionItems *); /* the kind's own options, read inside the
+                                                         flow's options block after the shared ones (NULL: none) */
+  PetscErrorCode (*view)(CSWillmoreFlow, PetscViewer);   /* the kind's own lines of CSWillmoreFlowView (NULL: none) */
   PetscReal max_step;       /* default of -flow_max_step (0: off) */
   PetscBool fold_guard;     /* default of -flow_fold_guard */
   PetscBool own_metric;     /* the kind updates the metric itself, when it needs it (newton) */

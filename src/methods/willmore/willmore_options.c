@@ -171,6 +171,7 @@ PetscErrorCode CSWillmoreFlowSetFromOptions(CSWillmoreFlow F)
   PetscCall(StepOptions(F, PetscOptionsObject));
   PetscCall(CSWFStopOptions(F, PetscOptionsObject));
   PetscCall(ProblemOptions(F, energies, PetscOptionsObject));
+  if (F->ops.setfromoptions) PetscCall((*F->ops.setfromoptions)(F, PetscOptionsObject));
   PetscOptionsEnd();
   PetscCall(CheckOptions(F));
   PetscFunctionReturn(0);
