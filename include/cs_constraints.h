@@ -30,7 +30,7 @@ PETSC_EXTERN PetscErrorCode CSConformalConstraintDestroy(CSConformalConstraint *
    for every face with a boundary edge, 3 rows per face, rows owned by the face's rank (a plain MPI layout of
    3 * local boundary faces). DN has the 3x3 blocks dN_f/df_i = -(N x e_jk) N^T / (2 A_f), e_jk = f_k - f_j
    the edge opposite i (App. D prints 1/A_ijk: with A the triangle area the factor is 1/(2A), checked by
-   finite differences in tests/unit/test_conformal_operators.c). Columns of fixed vertices are dropped. */
+   finite differences in tests/unit/test_willmore_operators.c). Columns of fixed vertices are dropped. */
 typedef struct {
   CSMesh           mesh;
   const PetscBool *fixed;

@@ -4,7 +4,7 @@
 /* lambda_ij = log |f_j - f_i|, so d lambda_ij = <f_j - f_i, df_j - df_i> / l_ij^2 (Eq. 5). App. D prints
    (Dlambda)_{ij,j} = f_j - f_i, the derivative of l^2/2 rather than of log l: the 1/l^2 is needed for
    X = C Dlambda to be the derivative of the log cross ratios C lambda (checked by finite differences in
-   tests/unit/test_conformal_operators.c). Rows are set by the rank owning the edge (both vertices of an
+   tests/unit/test_willmore_operators.c). Rows are set by the rank owning the edge (both vertices of an
    edge are always in the local closure). */
 PetscErrorCode CSOperatorLogLengthDerivative(CSMesh m, Vec x, const PetscBool fixed[], MatReuse reuse, Mat *D)
 {

@@ -4,7 +4,7 @@
       ITERATING, with a monitor counting the states: converged in <= 10 steps, kappa spread < 1e-6 of its mean,
       turning number 1 to 1e-12, the lengths kept (distortion of the final state < 1e-10);
    2. with -bad_dir DIR: the curve reader and validation on every bad file the shell test wrote there
-      (tests/cases/curve_bad_input.sh), in one process: each must fail with a message naming FILE:LINE and the
+      (tests/cases/curve_api.sh), in one process: each must fail with a message naming FILE:LINE and the
       reason. Exit status = number of failures. Run: build/tests/test_curve_api [-bad_dir DIR] (also mpirun -n 2) */
 #include <petscsys.h>
 #include <string.h>
