@@ -1,4 +1,4 @@
-# The extension points (issue 37, point 3; docs/DESIGN.md "How to add ..."): tests/unit/test_extension.c registers
+# The extension points (issue 37, point 3; docs/DESIGN.md "Extending confsurf"): tests/unit/test_extension.c registers
 # a toy energy (with its own option -flow_toy_weight) and a toy constraint through the public registration alone,
 # runs CGD with them, and checks the gradient of every registered energy and the rows of every registered
 # constraint against central differences. No leak: -malloc_dump lists unfreed blocks at PetscFinalize (and
