@@ -49,6 +49,27 @@ static PetscErrorCode ReadField(CSMesh mesh, const char option[], const char pat
   PetscFunctionReturn(0);
 }
 
+/* rho += height exp(-|f - c|^2 / radius^2) for each of the nb centres c (crane2011 Fig. 1: a painted rho) */
+static PetscErrorCode PaintBumps(Vec x, PetscInt nb, const PetscReal centers[], PetscReal radius, PetscReal height, Vec rho)
+{
+  const PetscScalar *p;
+  PetscScalar       *r;
+  PetscInt           n;
+  PetscFunctionBeginUser;
+  PetscCall(VecGetLocalSize(rho, &n));
+  PetscCall(VecGetArrayRead(x, &p));
+  PetscCall(VecGetArray(rho, &r));
+  for (PetscInt i = 0; i < n; i++)
+    for (PetscInt b = 0; b < nb; b++) {
+      PetscReal d2 = 0;
+      for (int d = 0; d < 3; d++) d2 += PetscSqr(PetscRealPart(p[3 * i + d]) - centers[3 * b + d]);
+      r[i] += height * PetscExpReal(-d2 / (radius * radius));
+    }
+  PetscCall(VecRestoreArray(rho, &r));
+  PetscCall(VecRestoreArrayRead(x, &p));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode CSDriverSpinRhoFromOptions(CSSpin spin, Vec x, CSRhoLocation *loc, Vec *rho, Vec *xtarget, Vec *mu)
 {
   CSMesh      mesh;
@@ -56,7 +77,7 @@ PetscErrorCode CSDriverSpinRhoFromOptions(CSSpin spin, Vec x, CSRhoLocation *loc
   char        file[PETSC_MAX_PATH_LEN] = "", target[PETSC_MAX_PATH_LEN] = "";
   const char *locs[]                   = {"vertex", "face"};
   PetscInt    iloc = 0, nc = 30;
-  PetscReal   scale = 1, centers[30], radius = 0.3, height = 1, hs = 0, smooth = 0;
+  PetscReal   scale = 1, centers[30] = {0}, radius = 0.3, height = 1, hs = 0, smooth = 0;
   PetscBool   hasfile, hastarget, hasbump, hash, hasdisp, hassmooth;
   char        disp[PETSC_MAX_PATH_LEN] = "";
   PetscFunctionBeginUser;
@@ -113,22 +134,7 @@ PetscErrorCode CSDriverSpinRhoFromOptions(CSSpin spin, Vec x, CSRhoLocation *loc
     PetscCall(DMCreateGlobalVector(mesh->dmV1, rho));
     if (hasfile) PetscCall(ReadField(mesh, "-rho", file, 0, 1, "one per vertex in file order; -rho_location face for one per face", *rho));
     else PetscCall(VecSet(*rho, 0));
-    if (nc) {
-      const PetscScalar *p;
-      PetscScalar       *r;
-      PetscInt           n;
-      PetscCall(VecGetLocalSize(*rho, &n));
-      PetscCall(VecGetArrayRead(x, &p));
-      PetscCall(VecGetArray(*rho, &r));
-      for (PetscInt i = 0; i < n; i++)
-        for (PetscInt b = 0; b < nc / 3; b++) {
-          PetscReal d2 = 0;
-          for (int d = 0; d < 3; d++) d2 += PetscSqr(PetscRealPart(p[3 * i + d]) - centers[3 * b + d]);
-          r[i] += height * PetscExpReal(-d2 / (radius * radius));
-        }
-      PetscCall(VecRestoreArray(*rho, &r));
-      PetscCall(VecRestoreArrayRead(x, &p));
-    }
+    if (nc) PetscCall(PaintBumps(x, nc / 3, centers, radius, height, *rho));
     if (hash) PetscCall(CSSpinRhoAddMeanCurvature(mesh, x, hs, *rho));
     if (hasdisp) {
       Vec g;
