@@ -1,7 +1,7 @@
 /* Spin transformations (crane2011): prescribe a change rho of mean curvature half-density, solve the
    eigenvalue problem (D - rho) lambda = gamma lambda for the smallest eigenpair (Sec. 5.5, Eq. 6 or 7; SLEPc
-   EPS with prefix spin_, or inverse iteration with a kept factorisation, KSP prefix spin_inverse_), then the
-   Poisson problem Delta f~ = div e~ for the new positions (Sec. 5.6, KSP prefix spin_poisson_).
+   EPS with the object's prefix spin_, or inverse iteration with a kept factorisation, KSP prefix spin_inverse_),
+   then the Poisson problem Delta f~ = div e~ for the new positions (Sec. 5.6, KSP prefix spin_poisson_).
    Boundary conditions of Sec. 5.7 (prescribed tangent directions) and the nearest spin transformation of an
    arbitrary deformation (Sec. 7.2). bin/confsurf -task spin and -task spectrum (Fig. 8, src/driver/task_spin.c, task_spectrum.c). */
 #ifndef CS_METHODS_SPIN_H
@@ -65,6 +65,7 @@ PETSC_EXTERN PetscErrorCode CSSpinGetSolution(CSSpin spin, Vec *xnew);
 /* its eigenvector lambda (global on the object's DM, owned by the object) */
 PETSC_EXTERN PetscErrorCode CSSpinGetSpinor(CSSpin spin, Vec *lambda);
 PETSC_EXTERN PetscErrorCode CSSpinMonitorSet(CSSpin spin, CSSpinMonitorFn fn, void *ctx, PetscErrorCode (*destroy)(void **));
+PETSC_EXTERN PetscErrorCode CSSpinDestroy(CSSpin *spin);
 
 /* Setters (before CSSpinSetFromOptions; the options given override those that are options) */
 PETSC_EXTERN PetscErrorCode CSSpinSetRhoLocation(CSSpin spin, CSRhoLocation loc);
@@ -95,6 +96,8 @@ PETSC_EXTERN PetscErrorCode CSSpinGetIterationNumbers(CSSpin spin, PetscInt *eps
 /* seconds of set-up, eigen solve and Poisson: wall clock and this process's CPU time (NULL: not wanted) */
 PETSC_EXTERN PetscErrorCode CSSpinGetTimes(CSSpin spin, PetscLogDouble wall[3], PetscLogDouble cpu[3]);
 
+/* The solver's steps, one by one (the conformal flow, crane2013 Sec. 6: its own rho, boundary directions and
+   area rule each step; -task spectrum). The factorisations are kept in the object between calls. */
 /* Boundary tangents (Sec. 5.7): Ttarget is a dmV3 global vector (read on boundary vertices), NULL for "keep". */
 PETSC_EXTERN PetscErrorCode CSSpinSetBoundaryTangents(CSSpin spin, Vec Ttarget);
 /* crane2013 Sec. 6.3.1: boundary lambda = (cos th/2 - w sin th/2)(a - b V~) maps the unit direction V (dmV3, on
@@ -111,8 +114,8 @@ PETSC_EXTERN PetscErrorCode CSSpinResetStart(CSSpin spin);
 PETSC_EXTERN PetscErrorCode CSSpinSpectrum(CSSpin spin, Vec x, CSRhoLocation loc, Vec rho, PetscInt nev, PetscReal eig[], PetscInt *nconv);
 /* The signed spectrum of Eq. 6 with rho = 0 (Sec. 6.2, Fig. 8; spin_signed.c): the nev eigenvalues of smallest
    |gamma| (ties ascending), the kernel of A (gamma = 0) first; *nkernel its dimension. With nvec > 0 the first
-   nvec eigenvectors are created in vecs[] (global on the object's DM; the caller destroys them). EPS prefixes
-   spin_kernel_ and spin_signed_. */
+   nvec eigenvectors are created in vecs[] (global on the object's DM; the caller destroys them). EPS prefixes:
+   the object's followed by kernel_ and signed_ (spin_kernel_, spin_signed_). */
 PETSC_EXTERN PetscErrorCode CSSpinSpectrumSigned(CSSpin spin, Vec x, PetscInt nev, PetscReal eig[], PetscInt nvec, Vec vecs[], PetscInt *nkernel);
 /* A Dirac sphere (Sec. 6.2, Fig. 9, 11): the surface of the eigenvector lambda (changed in place: its constant
    component removed unless it lies in the kernel, then normalised), scaled to the area of x. */
@@ -126,10 +129,10 @@ PETSC_EXTERN PetscErrorCode CSSpinNormalize(CSSpin spin, Vec lambda, Vec mu, Pet
 PETSC_EXTERN PetscErrorCode CSSpinReconstruct(CSSpin spin, Vec x, Vec lambda, Vec xcenter, Vec xnew);
 /* Scale xnew about its vertex mean to the area of xref (a painted rho fixes the shape, not its size). */
 PETSC_EXTERN PetscErrorCode CSSpinRestoreArea(CSSpin spin, Vec xref, Vec xnew);
-PETSC_EXTERN PetscErrorCode CSSpinDestroy(CSSpin *spin);
 
+/* rho and the deformations of crane2011 Sec. 7 (the driver's -rho_* and -spin_target_mesh inputs) */
 /* rho += (L g) / (2 M) for a normal displacement g (dmV1; Sec. 7.1, Fig. 20), and the heat filter
-   (M + t L) rho~ = M rho of a per-vertex rho (Fig. 13; KSP prefix spin_smooth_). spin_rho_filters.c. */
+   (M + t L) rho~ = M rho of a per-vertex rho (Fig. 13; KSP prefix: the object's followed by smooth_). spin_rho_filters.c. */
 PETSC_EXTERN PetscErrorCode CSSpinRhoFromDisplacement(CSSpin spin, Vec x, Vec g, Vec rho);
 PETSC_EXTERN PetscErrorCode CSSpinRhoSmooth(CSSpin spin, Vec x, PetscReal t, Vec rho);
 /* Sec. 7.2 / Fig. 21 (spin_interpolate.c): the surface f_t of the similarities lambda_t = exp(t log mu) between x
@@ -144,7 +147,8 @@ PETSC_EXTERN PetscErrorCode CSSpinBestFitSimilarities(CSSpin spin, Vec x, Vec xt
 /* Optimal per-face rho for mu (Sec. 7.2): rho_k = Re(conj(B mu)_k (D mu)_k) / |(B mu)_k|^2, dmF1 global. */
 PETSC_EXTERN PetscErrorCode CSSpinOptimalRho(CSSpin spin, Vec x, Vec mu, Vec rho);
 
-/* PC type "csspinlap" (spin_precond.c): the scalar preconditioner of -spin_solver precond; registered by CSInitializePackage */
+/* PC type "csspinlap" (spin_precond.c): the scalar preconditioner of -spin_solver precond; registered by
+   CSInitializePackage */
 #define PCCSSPINLAP "csspinlap"
 PETSC_EXTERN PetscErrorCode PCCreate_CSSpinLap(PC);
 
