@@ -1,109 +1,30 @@
-/* -task spin (crane2011): paint rho / nearest spin transformation / boundary edit. The driver reads the mesh
-   and the output from the options and hands the mesh to the CSSpin object. */
+/* -task spin (crane2011): paint rho / nearest spin transformation / boundary edit. The driver reads the mesh,
+   the inputs (rho, the target, the boundary tangents: spin_input.c) and the output from the options, hands them
+   to the CSSpin object, solves and reports (src/output/spin_report.c). */
 #include "cs_driver.h"
 #include "cs_geometry.h"
-#include "cs_methods_spin.h"
-#include "cs_linalg.h"
+#include "cs_output_spin.h"
 #include "cs_util.h"
+#include "spin_input.h"
 
-/* Inputs and results of one spin transformation. */
+/* The inputs of one spin transformation, read by spin_input.c. */
 typedef struct {
   CSRhoLocation loc;
-  Vec           rho, xt, mu, Tt, lambda, xnew;
+  Vec           rho, xt, mu, Tt;
+  Vec           xlsq; /* the positions of -spin_least_squares */
 } SpinRun;
 
-/* With rho (Sec. 5.5) and the boundary tangents (Sec. 5.7) read: the eigenproblem, the similarity and Eq. 8 +
-   Poisson. */
-static PetscErrorCode SpinSolve(CSSpin spin, CSMesh mesh, SpinRun *r)
+/* A spin transformation (crane2011 Sec. 5): the inputs handed to the object, its Solve, the report */
+static PetscErrorCode SpinTransform(CSSpin spin, CSMesh mesh, const SpinRun *r, CSOutput *out)
 {
+  CSSpinBoundary b;
   PetscFunctionBeginUser;
-  if (spin->boundary != CS_SPIN_BOUNDARY_NONE) PetscCall(CSSpinSetBoundaryTangents(spin, mesh->x, r->Tt));
-  PetscCall(DMCreateGlobalVector(spin->dm, &r->lambda));
-  PetscCall(CSSpinSolveEigen(spin, mesh->x, r->loc, r->rho, r->lambda));
-  /* the global similarity: fit mu (Sec. 7.2) or the identity; with prescribed boundary tangents only a scale,
-     since a rotation would turn the prescribed tangents */
-  PetscCall(CSSpinNormalize(spin, r->lambda, r->mu, (PetscBool)(spin->boundary == CS_SPIN_BOUNDARY_NONE)));
-  PetscCall(VecDuplicate(mesh->x, &r->xnew));
-  PetscCall(CSSpinReconstruct(spin, mesh->x, r->lambda, r->xt ? r->xt : mesh->x, r->xnew));
-  if (!r->xt) PetscCall(CSSpinRestoreArea(spin, mesh->x, r->xnew));
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode SpinReport(CSSpin spin, CSMesh mesh, const SpinRun *r, CSOutput *out)
-{
-  const char *bnames[] = {"none", "keep", "file", "target"};
-  MPI_Comm    comm     = mesh->comm;
-  PetscFunctionBeginUser;
-  PetscCall(PetscPrintf(comm, "spin: gamma=%.10g (%s problem, residual %.2e) eigensolver its=%" PetscInt_FMT " inner its=%" PetscInt_FMT "; poisson its=%" PetscInt_FMT "\n", (double)spin->gamma, spin->generalized ? "generalized Eq. 6" : "standard Eq. 7", (double)spin->residual, spin->eps_its, spin->inner_its, spin->poisson_its));
-  PetscCall(PetscPrintf(comm, "spin: seconds setup=%.4f eigen=%.4f poisson=%.4f (cpu %.4f %.4f %.4f)\n", spin->t_setup, spin->t_eigen, spin->t_poisson, spin->c_setup, spin->c_eigen, spin->c_poisson));
-  PetscCall(CSJSONAddReal(out->json, "eigenvalue", spin->gamma));
-  PetscCall(CSJSONAddReal(out->json, "eigen_residual", spin->residual));
-  PetscCall(CSJSONAddInt(out->json, "eps_its", spin->eps_its));
-  PetscCall(CSJSONAddInt(out->json, "inner_its", spin->inner_its));
-  PetscCall(CSJSONAddInt(out->json, "poisson_its", spin->poisson_its));
-  PetscCall(CSJSONAddReal(out->json, "seconds_setup", (PetscReal)spin->t_setup));
-  PetscCall(CSJSONAddReal(out->json, "seconds_eigen", (PetscReal)spin->t_eigen));
-  PetscCall(CSJSONAddReal(out->json, "seconds_poisson", (PetscReal)spin->t_poisson));
-  PetscCall(CSJSONAddReal(out->json, "cpu_seconds_setup", (PetscReal)spin->c_setup));
-  PetscCall(CSJSONAddReal(out->json, "cpu_seconds_eigen", (PetscReal)spin->c_eigen));
-  PetscCall(CSJSONAddReal(out->json, "cpu_seconds_poisson", (PetscReal)spin->c_poisson));
-  PetscCall(CSJSONAddString(out->json, "problem", spin->generalized ? "generalized" : "standard"));
-  PetscCall(CSJSONAddString(out->json, "dirac_type", spin->shell ? "shell" : "aij"));
-  PetscCall(CSJSONAddString(out->json, "boundary", bnames[spin->boundary]));
-  PetscCall(CSJSONAddString(out->json, "rho_location", r->loc == CS_RHO_NONE ? "none" : (r->loc == CS_RHO_VERTEX ? "vertex" : "face")));
-  if (r->rho) {
-    PetscReal rmin, rmax;
-    PetscCall(VecMin(r->rho, NULL, &rmin));
-    PetscCall(VecMax(r->rho, NULL, &rmax));
-    PetscCall(CSJSONAddReal(out->json, "rho_min", rmin));
-    PetscCall(CSJSONAddReal(out->json, "rho_max", rmax));
-  }
-  if (r->xt) { /* distance to the target, relative to the target's size (sqrt of its area) */
-    Vec       d;
-    PetscReal nd, area, vol;
-    PetscCall(VecDuplicate(r->xnew, &d));
-    PetscCall(VecWAXPY(d, -1, r->xt, r->xnew));
-    PetscCall(VecNorm(d, NORM_INFINITY, &nd));
-    PetscCall(CSGeometryAreaVolume(mesh, r->xt, &area, &vol));
-    PetscCall(CSJSONAddReal(out->json, "target_distance_max", nd / PetscSqrtReal(area)));
-    PetscCall(PetscPrintf(comm, "spin: max distance to -spin_target_mesh %.3e (relative to sqrt(area))\n", (double)(nd / PetscSqrtReal(area))));
-    PetscCall(VecDestroy(&d));
-  }
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode ViewerAddRho(CSViewer v, const SpinRun *r)
-{
-  PetscFunctionBeginUser;
-  if (r->rho && r->loc == CS_RHO_VERTEX) PetscCall(CSViewerAddVertexField(v, "rho", r->rho));
-  if (r->rho && r->loc == CS_RHO_FACE) PetscCall(CSViewerAddFaceField(v, "rho", r->rho));
-  PetscFunctionReturn(0);
-}
-
-/* step 0: the input with rho; step 1: the result with rho, |lambda| and Q */
-static PetscErrorCode SpinView(CSSpin spin, CSMesh mesh, const SpinRun *r, const char dir[])
-{
-  CSViewer v;
-  Vec      la, q, la0;
-  PetscFunctionBeginUser;
-  PetscCall(DMCreateGlobalVector(mesh->dmV1, &la));
-  PetscCall(DMCreateGlobalVector(mesh->dmF1, &q));
-  PetscCall(CSVecBlockNorms(r->lambda, 4, la)); /* |lambda| per vertex */
-  PetscCall(CSGeometryQuasiConformal(mesh, mesh->x, r->xnew, q, NULL, NULL));
-  PetscCall(CSViewerCreate(mesh, dir, &v));
-  PetscCall(VecDuplicate(la, &la0));
-  PetscCall(VecSet(la0, 1));
-  PetscCall(ViewerAddRho(v, r));
-  PetscCall(CSViewerAddVertexField(v, "lambda_abs", la0));
-  PetscCall(CSViewerWriteStep(v, mesh->x, 0));
-  PetscCall(ViewerAddRho(v, r));
-  PetscCall(CSViewerAddVertexField(v, "lambda_abs", la));
-  PetscCall(CSViewerAddFaceField(v, "Q", q));
-  PetscCall(CSViewerWriteStep(v, r->xnew, 1));
-  PetscCall(CSViewerDestroy(&v));
-  PetscCall(VecDestroy(&la));
-  PetscCall(VecDestroy(&la0));
-  PetscCall(VecDestroy(&q));
+  PetscCall(CSSpinSetRhoLocation(spin, r->loc));
+  PetscCall(CSSpinSetTarget(spin, r->xt, r->mu));
+  PetscCall(CSSpinGetBoundaryType(spin, &b));
+  if (b != CS_SPIN_BOUNDARY_NONE) PetscCall(CSSpinSetBoundaryTangents(spin, r->Tt));
+  PetscCall(CSSpinSolve(spin, mesh->x, r->rho));
+  PetscCall(CSSpinReport(spin, mesh->x, r->rho, r->xt, out));
   PetscFunctionReturn(0);
 }
 
@@ -164,17 +85,17 @@ static PetscErrorCode SpinLeastSquares(CSSpin spin, CSMesh mesh, SpinRun *r, CSO
   PetscReal nd, area, vol;
   PetscFunctionBeginUser;
   PetscCheck(r->xt, mesh->comm, PETSC_ERR_ARG_WRONG, "-spin_least_squares needs -spin_target_mesh FILE");
-  PetscCall(VecDuplicate(mesh->x, &r->xnew));
-  PetscCall(CSSpinReconstruct(spin, mesh->x, r->mu, r->xt, r->xnew));
-  PetscCall(VecDuplicate(r->xnew, &d));
-  PetscCall(VecWAXPY(d, -1, r->xt, r->xnew));
+  PetscCall(VecDuplicate(mesh->x, &r->xlsq));
+  PetscCall(CSSpinReconstruct(spin, mesh->x, r->mu, r->xt, r->xlsq));
+  PetscCall(VecDuplicate(r->xlsq, &d));
+  PetscCall(VecWAXPY(d, -1, r->xt, r->xlsq));
   PetscCall(VecNorm(d, NORM_INFINITY, &nd));
   PetscCall(CSGeometryAreaVolume(mesh, r->xt, &area, &vol));
   PetscCall(CSJSONAddReal(out->json, "target_distance_max", nd / PetscSqrtReal(area)));
   PetscCall(CSJSONAddString(out->json, "method", "least_squares"));
   PetscCall(PetscPrintf(mesh->comm, "least squares from mu (Fig. 22): max distance to -spin_target_mesh %.3e (relative to sqrt(area))\n", (double)(nd / PetscSqrtReal(area))));
-  PetscCall(CSOutputAddMeshFacts(out, mesh, r->xnew, mesh->x));
-  PetscCall(CSOutputFinish(out, mesh, r->xnew));
+  PetscCall(CSOutputAddMeshFacts(out, mesh, r->xlsq, mesh->x));
+  PetscCall(CSOutputFinish(out, mesh, r->xlsq));
   PetscCall(VecDestroy(&d));
   PetscFunctionReturn(0);
 }
@@ -185,16 +106,16 @@ static PetscErrorCode SpinLeastSquares(CSSpin spin, CSMesh mesh, SpinRun *r, CSO
    area / length^2 (1/(4 pi) for a flat disk bounded by a circle), q_mean against the input. */
 static PetscErrorCode SpinFlow(CSSpin spin, CSMesh mesh, PetscInt N, PetscReal tau, CSOutput *out)
 {
-  Vec       x, rho, lambda, xnew;
+  Vec       x, rho, xnew;
   CSHistory hist = NULL;
   PetscReal area, vol, len, qmean = 1, qmax;
   PetscFunctionBeginUser;
   PetscCheck(mesh->topo.boundary_loops > 0, mesh->comm, PETSC_ERR_ARG_WRONG, "-spin_flow_steps: mesh %s has no boundary (the flow rho = -t H is the closed form on disks, Sec. 7.3)", mesh->name);
   PetscCall(VecDuplicate(mesh->x, &x));
-  PetscCall(VecDuplicate(mesh->x, &xnew));
   PetscCall(VecCopy(mesh->x, x));
   PetscCall(DMCreateGlobalVector(mesh->dmV1, &rho));
-  PetscCall(DMCreateGlobalVector(spin->dm, &lambda));
+  PetscCall(CSSpinSetRhoLocation(spin, CS_RHO_VERTEX));
+  PetscCall(CSSpinSetRestoreArea(spin, PETSC_FALSE)); /* the area changes: area / length^2 is the result */
   PetscCall(CSOutputHistoryCreate(out, mesh->comm, "it,area,boundary_length,area_over_length2,q_mean", 0, &hist));
   for (PetscInt k = 0; k <= N; k++) {
     PetscReal row[5];
@@ -207,9 +128,8 @@ static PetscErrorCode SpinFlow(CSSpin spin, CSMesh mesh, PetscInt N, PetscReal t
     if (k == N) break;
     PetscCall(VecSet(rho, 0));
     PetscCall(CSSpinRhoAddMeanCurvature(mesh, x, -tau, rho));
-    PetscCall(CSSpinSolveEigen(spin, x, CS_RHO_VERTEX, rho, lambda));
-    PetscCall(CSSpinNormalize(spin, lambda, NULL, (PetscBool)(spin->boundary == CS_SPIN_BOUNDARY_NONE)));
-    PetscCall(CSSpinReconstruct(spin, x, lambda, x, xnew));
+    PetscCall(CSSpinSolve(spin, x, rho));
+    PetscCall(CSSpinGetSolution(spin, &xnew));
     PetscCall(VecCopy(xnew, x));
   }
   PetscCall(CSJSONAddReal(out->json, "flow_area_over_length2", area / (len * len)));
@@ -218,9 +138,7 @@ static PetscErrorCode SpinFlow(CSSpin spin, CSMesh mesh, PetscInt N, PetscReal t
   PetscCall(CSOutputFinish(out, mesh, x));
   PetscCall(CSHistoryDestroy(&hist));
   PetscCall(VecDestroy(&x));
-  PetscCall(VecDestroy(&xnew));
   PetscCall(VecDestroy(&rho));
-  PetscCall(VecDestroy(&lambda));
   PetscFunctionReturn(0);
 }
 
@@ -249,19 +167,13 @@ static PetscErrorCode RunSpin(CSSpin spin, CSMesh mesh, SpinRun *r, CSOutput *ou
   /* before anything is allocated: a refused size names it */
   if (interp) PetscCall(CSCheckAllocation("-spin_interpolate: q_mean of N + 1 meshes, twice", 2 * ((PetscInt64)ninterp + 1), sizeof(PetscReal)));
   /* rho and the boundary tangents are read (and rho made) before the check of unused options, the eigensolves after */
-  if (!flow) PetscCall(CSSpinRhoFromOptions(spin, mesh->x, &r->loc, &r->rho, &r->xt, &r->mu));
-  if (!interp && !flow && !lsq) PetscCall(CSSpinBoundaryFromOptions(spin, r->xt, &r->Tt));
+  if (!flow) PetscCall(CSDriverSpinRhoFromOptions(spin, mesh->x, &r->loc, &r->rho, &r->xt, &r->mu));
+  if (!interp && !flow && !lsq) PetscCall(CSDriverSpinBoundaryFromOptions(spin, r->xt, &r->Tt));
   PetscCall(CSOptionsCheckUnused(comm, "-task spin"));
   if (interp) PetscCall(SpinInterpolate(spin, mesh, ninterp, iprefix, r, out));
   else if (flow) PetscCall(SpinFlow(spin, mesh, nflow, tau, out));
   else if (lsq) PetscCall(SpinLeastSquares(spin, mesh, r, out));
-  else {
-    PetscCall(SpinSolve(spin, mesh, r));
-    PetscCall(SpinReport(spin, mesh, r, out));
-    PetscCall(CSOutputAddMeshFacts(out, mesh, r->xnew, mesh->x));
-    if (out->has_viewer) PetscCall(SpinView(spin, mesh, r, out->viewer_dir));
-    PetscCall(CSOutputFinish(out, mesh, r->xnew));
-  }
+  else PetscCall(SpinTransform(spin, mesh, r, out));
   PetscFunctionReturn(0);
 }
 
@@ -280,8 +192,7 @@ PetscErrorCode CSTaskSpin(MPI_Comm comm)
   if (!ierr) ierr = CSSpinCreate(mesh, &spin);
   if (!ierr) ierr = RunSpin(spin, mesh, &r, &out);
   /* on every path: no leak after an error (a bad -rho file) */
-  PetscCall(VecDestroy(&r.xnew));
-  PetscCall(VecDestroy(&r.lambda));
+  PetscCall(VecDestroy(&r.xlsq));
   PetscCall(VecDestroy(&r.rho));
   PetscCall(VecDestroy(&r.xt));
   PetscCall(VecDestroy(&r.mu));

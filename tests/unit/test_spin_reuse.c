@@ -31,19 +31,21 @@ static PetscErrorCode TwoSolves(CSMesh mesh, const char opts[], PetscReal h1, Pe
 {
   CSSpin spin;
   Vec    rho, lambda;
+  DM     dm;
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsInsertString(NULL, opts));
   PetscCall(CSSpinCreate(mesh, &spin));
   PetscCall(CSSpinSetFromOptions(spin));
   PetscCall(DMCreateGlobalVector(mesh->dmV1, &rho));
-  PetscCall(DMCreateGlobalVector(spin->dm, &lambda));
+  PetscCall(CSSpinGetDM(spin, &dm));
+  PetscCall(DMCreateGlobalVector(dm, &lambda));
   if (h1 != 0) {
     PetscCall(Bump(mesh, h1, rho));
     PetscCall(CSSpinSolveEigen(spin, mesh->x, CS_RHO_VERTEX, rho, lambda));
   }
   PetscCall(Bump(mesh, h2, rho));
   PetscCall(CSSpinSolveEigen(spin, mesh->x, CS_RHO_VERTEX, rho, lambda));
-  *g2 = spin->gamma;
+  PetscCall(CSSpinGetEigenvalue(spin, g2, NULL));
   PetscCall(VecDestroy(&rho));
   PetscCall(VecDestroy(&lambda));
   PetscCall(CSSpinDestroy(&spin));

@@ -65,7 +65,7 @@ PetscErrorCode CSConformalFlowBoundarySetUp(CSConformalFlow F)
   F->inversion = PETSC_FALSE; /* App. D's inversions move the boundary: not a symmetry of the boundary problem */
   /* the balancing adds an inversion direction rho = -2 <a, N> (App. E): the same reason */
   PetscCheck(!F->mobius, m->comm, PETSC_ERR_ARG_INCOMP, "-%smobius with -%sboundary %s: Moebius balancing moves the boundary (it adds an inversion), so it is for closed surfaces only", p, p, CSConformalBoundaries[F->bmode]);
-  F->spin->boundary = CS_SPIN_BOUNDARY_KEEP;
+  PetscCall(CSSpinSetBoundaryType(F->spin, CS_SPIN_BOUNDARY_KEEP));
   PetscFunctionReturn(0);
 }
 

@@ -16,6 +16,7 @@ PetscErrorCode CSConformalFlowExactnessSetUp(CSConformalFlow F)
   CSMesh      m = F->mesh;
   PetscMPIInt size;
   PC          pc;
+  DM          dm4;
   PetscFunctionBeginUser;
   if (m->topo.genus == 0) PetscFunctionReturn(0);
   PetscCall(CSHarmonicBasisCreate(m, F->x, &F->hb));
@@ -23,8 +24,9 @@ PetscErrorCode CSConformalFlowExactnessSetUp(CSConformalFlow F)
   PetscCall(CSHarmonicBasisGetSize(F->hb, &F->ng));
   if (!F->exactness) PetscFunctionReturn(0); /* the basis still measures the closing error */
   PetscCall(PetscMalloc1(F->ng, &F->Z));
-  for (PetscInt i = 0; i < F->ng; i++) PetscCall(DMCreateGlobalVector(F->spin->dm, &F->Z[i]));
-  PetscCall(DMCreateGlobalVector(F->spin->dm, &F->zr));
+  PetscCall(CSSpinGetDM(F->spin, &dm4));
+  for (PetscInt i = 0; i < F->ng; i++) PetscCall(DMCreateGlobalVector(dm4, &F->Z[i]));
+  PetscCall(DMCreateGlobalVector(dm4, &F->zr));
   PetscCall(VecDuplicate(F->zr, &F->zt));
   PetscCall(VecDuplicate(F->zr, &F->zb));
   PetscCall(VecDuplicate(F->zr, &F->M4));
@@ -48,18 +50,21 @@ PetscErrorCode CSConformalFlowExactnessSetUp(CSConformalFlow F)
    with Xs is the linearisation of the step the flow takes (SolveZ). */
 static PetscErrorCode Operators(CSConformalFlow F)
 {
-  PetscReal          A, s;
+  PetscReal          A, s, shift;
   const PetscScalar *a;
   PetscScalar       *m4;
   PetscInt           n;
+  DM                 dm4;
   PetscFunctionBeginUser;
-  PetscCall(CSDiracAssemble(F->mesh, F->spin->dm, F->x, CS_RHO_NONE, NULL, F->X0 ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX, &F->X0));
+  PetscCall(CSSpinGetDM(F->spin, &dm4));
+  PetscCall(CSSpinGetShift(F->spin, &shift)); /* -spin_shift, in units of 4 pi / area */
+  PetscCall(CSDiracAssemble(F->mesh, dm4, F->x, CS_RHO_NONE, NULL, F->X0 ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX, &F->X0));
   PetscCall(MatDestroy(&F->Dface));
   PetscCall(VecDestroy(&F->MF));
-  PetscCall(CSDiracCreateFaceOperators(F->mesh, F->spin->dm, F->x, CS_RHO_NONE, NULL, &F->Dface, NULL, NULL, &F->MF));
+  PetscCall(CSDiracCreateFaceOperators(F->mesh, dm4, F->x, CS_RHO_NONE, NULL, &F->Dface, NULL, NULL, &F->MF));
   PetscCall(CSGeometryVertexAreas(F->mesh, F->x, F->work)); /* the spin's mass: barycentric areas (so is F->area, in both -curvature modes) */
   PetscCall(VecSum(F->work, &A));
-  s   = F->spin->target * 4 * PETSC_PI / A;
+  s   = shift * 4 * PETSC_PI / A;
   PetscCall(VecGetLocalSize(F->work, &n));
   PetscCall(VecGetArrayRead(F->work, &a));
   PetscCall(VecGetArray(F->M4, &m4));
@@ -108,9 +113,12 @@ static PetscErrorCode RightHandSide(CSConformalFlow F, Vec vf, Vec b)
 static PetscErrorCode SolveZ(CSConformalFlow F, Vec b, Vec Z)
 {
   KSPConvergedReason r;
-  PetscBool          shifted = (PetscBool)(F->spin->inverse && F->spin->inverse_its == 1 && !F->exactness_paper);
+  PetscBool          shifted, inverse;
+  PetscInt           its;
   PetscReal          nb, nr;
   PetscFunctionBeginUser;
+  PetscCall(CSSpinGetInverseIteration(F->spin, &inverse, &its));
+  shifted = (PetscBool)(inverse && its == 1 && !F->exactness_paper);
   PetscCall(VecSet(Z, 0));
   PetscCall(VecCopy(b, F->zr));
   PetscCall(VecNorm(b, NORM_2, &nb));
@@ -138,6 +146,7 @@ static PetscErrorCode FunctionalGradient(CSConformalFlow F, Vec omega, Vec star1
   const PetscReal   *p;
   const PetscScalar *w, *st;
   CSLocalSum         ls;
+  DM                 dm4;
   PetscFunctionBeginUser;
   PetscCall(CSMeshGetLocalPositions(m, F->x, &xl, &p));
   PetscCall(DMGetLocalVector(m->dmE1, &wl));
@@ -146,7 +155,8 @@ static PetscErrorCode FunctionalGradient(CSConformalFlow F, Vec omega, Vec star1
   PetscCall(DMGlobalToLocal(m->dmE1, star1, INSERT_VALUES, sl));
   PetscCall(VecGetArrayRead(wl, &w));
   PetscCall(VecGetArrayRead(sl, &st));
-  PetscCall(CSLocalSumBegin(F->spin->dm, &ls));
+  PetscCall(CSSpinGetDM(F->spin, &dm4));
+  PetscCall(CSLocalSumBegin(dm4, &ls));
   for (PetscInt e = 0; e < m->ne; e++) {
     PetscInt  v[2] = {m->edgeVert[2 * e], m->edgeVert[2 * e + 1]};
     PetscReal ev[3], ed[3] = {0, 0, 0}, cr[3], se = PetscRealPart(st[e] * w[e]);
@@ -253,10 +263,12 @@ static PetscErrorCode TransformedEdges(CSConformalFlow F, Vec beta[3])
   const PetscReal   *p;
   const PetscScalar *l;
   PetscScalar       *b[3];
+  DM                 dm4;
   PetscFunctionBeginUser;
   PetscCall(CSMeshGetLocalPositions(m, F->x, &xl, &p));
-  PetscCall(DMGetLocalVector(F->spin->dm, &ll));
-  PetscCall(DMGlobalToLocal(F->spin->dm, F->lambda, INSERT_VALUES, ll));
+  PetscCall(CSSpinGetDM(F->spin, &dm4));
+  PetscCall(DMGetLocalVector(dm4, &ll));
+  PetscCall(DMGlobalToLocal(dm4, F->lambda, INSERT_VALUES, ll));
   PetscCall(VecGetArrayRead(ll, &l));
   for (int d = 0; d < 3; d++) {
     PetscCall(DMGetLocalVector(m->dmE1, &bl[d]));
@@ -279,7 +291,7 @@ static PetscErrorCode TransformedEdges(CSConformalFlow F, Vec beta[3])
     PetscCall(DMRestoreLocalVector(m->dmE1, &bl[d]));
   }
   PetscCall(VecRestoreArrayRead(ll, &l));
-  PetscCall(DMRestoreLocalVector(F->spin->dm, &ll));
+  PetscCall(DMRestoreLocalVector(dm4, &ll));
   PetscCall(CSMeshRestoreLocalPositions(m, F->x, &xl, &p));
   PetscFunctionReturn(0);
 }

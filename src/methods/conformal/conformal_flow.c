@@ -164,13 +164,14 @@ static PetscErrorCode CheckMesh(CSConformalFlow F)
    default (symbolic analysis kept), -spin_* options still apply */
 static PetscErrorCode SetUpSpin(CSConformalFlow F)
 {
+  DM dm;
   PetscFunctionBeginUser;
   PetscCall(CSSpinCreate(F->mesh, &F->spin));
-  F->spin->inverse     = (PetscBool)(F->eigensolver == CS_CONFORMAL_EIGEN_INVERSE);
-  F->spin->inverse_its = 1;
-  F->spin->boundary    = CS_SPIN_BOUNDARY_NONE;
+  PetscCall(CSSpinSetInverseIteration(F->spin, (PetscBool)(F->eigensolver == CS_CONFORMAL_EIGEN_INVERSE), 1));
+  PetscCall(CSSpinSetBoundaryType(F->spin, CS_SPIN_BOUNDARY_NONE));
   PetscCall(CSSpinSetFromOptions(F->spin));
-  PetscCall(DMCreateGlobalVector(F->spin->dm, &F->lambda));
+  PetscCall(CSSpinGetDM(F->spin, &dm));
+  PetscCall(DMCreateGlobalVector(dm, &F->lambda));
   PetscFunctionReturn(0);
 }
 

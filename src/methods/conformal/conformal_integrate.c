@@ -15,7 +15,7 @@ static PetscErrorCode Attempt(CSConformalFlow F, PetscReal tau)
   PetscCall(CSConformalFlowBoundaryPrepare(F)); /* Sec. 6.3: V -> V~ on the boundary */
   PetscCall(CSSpinResetStart(F->spin));         /* lambda = 1 on the current surface */
   PetscCall(CSSpinSolveEigen(F->spin, F->x, CS_RHO_VERTEX, F->rho, F->lambda)); /* VI */
-  F->s.gamma = F->spin->gamma;
+  PetscCall(CSSpinGetEigenvalue(F->spin, &F->s.gamma, NULL));
   /* with a boundary condition only a positive scale: a rotation would turn the prescribed directions */
   PetscCall(CSSpinNormalize(F->spin, F->lambda, NULL, (PetscBool)(F->bmode == CS_CONFORMAL_BOUNDARY_NONE)));
   PetscCall(CSConformalFlowClosingError(F, &F->s.closing)); /* genus >= 1: the harmonic part of conj(lambda) df lambda */

@@ -17,13 +17,15 @@ PetscErrorCode CSConformalFlowNonExactResidual(CSConformalFlow F, Vec xnew, Pets
   const PetscReal   *p, *pn;
   const PetscScalar *l;
   PetscReal          loc[2] = {0, 0}, glob[2];
+  DM                 dm4;
   PetscFunctionBeginUser;
+  PetscCall(CSSpinGetDM(F->spin, &dm4));
   PetscCall(DMCreateGlobalVector(m->dmE1, &st));
   PetscCall(CSOperatorHodgeStar1(m, F->x, st));
   PetscCall(CSMeshGetLocalPositions(m, F->x, &xl, &p));
   PetscCall(CSMeshGetLocalPositions(m, xnew, &nl, &pn));
-  PetscCall(DMGetLocalVector(F->spin->dm, &ll));
-  PetscCall(DMGlobalToLocal(F->spin->dm, F->lambda, INSERT_VALUES, ll));
+  PetscCall(DMGetLocalVector(dm4, &ll));
+  PetscCall(DMGlobalToLocal(dm4, F->lambda, INSERT_VALUES, ll));
   PetscCall(VecGetArrayRead(ll, &l));
   {
     Vec                sl;
@@ -52,7 +54,7 @@ PetscErrorCode CSConformalFlowNonExactResidual(CSConformalFlow F, Vec xnew, Pets
     PetscCall(DMRestoreLocalVector(m->dmE1, &sl));
   }
   PetscCall(VecRestoreArrayRead(ll, &l));
-  PetscCall(DMRestoreLocalVector(F->spin->dm, &ll));
+  PetscCall(DMRestoreLocalVector(dm4, &ll));
   PetscCall(CSMeshRestoreLocalPositions(m, xnew, &nl, &pn));
   PetscCall(CSMeshRestoreLocalPositions(m, F->x, &xl, &p));
   PetscCall(MPIU_Allreduce(loc, glob, 2, MPIU_REAL, MPIU_SUM, m->comm));

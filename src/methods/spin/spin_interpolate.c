@@ -6,7 +6,7 @@
    surface by Eq. 8 and the Poisson step. The reconstruction residuals of the two ends (r_0 = x - R(1), r_1 = xt -
    R(mu); R(1) = x up to rounding) are blended linearly, so that t = 0 and t = 1 give x and xt exactly:
      f_t = R(lambda_t) + (1 - t) r_0 + t r_1. */
-#include "cs_methods_spin.h"
+#include "spin_impl.h"
 
 /* lt = exp(t log mu) per vertex */
 static PetscErrorCode PowerSimilarity(Vec mu, PetscReal t, Vec lt)

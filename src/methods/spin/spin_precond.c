@@ -9,7 +9,7 @@
    factorisation of K; it never factors the 4V x 4V matrix (iteration counts and times: docs/solvers.md). Inner solver: KSP prefix spin_lap_ (Cholesky: CHOLMOD serially,
    MUMPS-AMD in parallel, by default). */
 #include <petsc/private/pcimpl.h> /* a PC type of our own (PCRegister) */
-#include "cs_methods_spin.h"
+#include "spin_impl.h"
 
 /* Ls = L + M diag(c + rho_i^2) on dmV1 (rho per face: the area-weighted mean of the faces around i). */
 static PetscErrorCode AssembleScalarOperator(CSSpin s, Vec x, CSRhoLocation loc, Vec rho)
@@ -85,10 +85,13 @@ static PetscErrorCode PCApply_CSSpinLap(PC pc, Vec x, Vec y)
 
 static PetscErrorCode PCView_CSSpinLap(PC pc, PetscViewer viewer)
 {
-  PetscBool ascii;
+  CSSpin      s      = (CSSpin)pc->data;
+  const char *prefix = NULL;
+  PetscBool   ascii;
   PetscFunctionBeginUser;
   PetscCall(PetscObjectTypeCompare((PetscObject)viewer, PETSCVIEWERASCII, &ascii));
-  if (ascii) PetscCall(PetscViewerASCIIPrintf(viewer, "  scalar Laplacian (L + c M)^{-1} per quaternion component (KSP prefix spin_lap_)\n"));
+  if (s && s->klap) PetscCall(KSPGetOptionsPrefix(s->klap, &prefix));
+  if (ascii) PetscCall(PetscViewerASCIIPrintf(viewer, "  scalar Laplacian (L + c M)^{-1} per quaternion component (KSP prefix %s)\n", prefix ? prefix : "spin_lap_"));
   PetscFunctionReturn(0);
 }
 
@@ -126,9 +129,11 @@ PetscErrorCode CSSpinSetUpScalarPC(CSSpin s, Vec x, CSRhoLocation loc, Vec rho, 
   PetscFunctionBeginUser;
   PetscCall(AssembleScalarOperator(s, x, loc, rho));
   if (!s->klap) {
-    PC lpc;
+    PC   lpc;
+    char prefix[256];
+    PetscCall(CSSpinSubPrefix(s, "lap_", prefix, sizeof(prefix)));
     PetscCall(KSPCreate(s->mesh->comm, &s->klap));
-    PetscCall(KSPSetOptionsPrefix(s->klap, "spin_lap_"));
+    PetscCall(KSPSetOptionsPrefix(s->klap, prefix));
     PetscCall(KSPSetType(s->klap, KSPPREONLY));
     PetscCall(KSPGetPC(s->klap, &lpc));
     PetscCall(CSSetDefaultCholesky(lpc));

@@ -2,7 +2,7 @@
    the least-squares Poisson problem L f~ = div e~ with the cotan Laplacian, per coordinate, KSP prefix
    spin_poisson_ (CHOLMOD Cholesky serially, the substructured CHOLMOD factorisation cssubchol in parallel, by
    default). */
-#include "cs_methods_spin.h"
+#include "spin_impl.h"
 
 /* b = -sum_j w_ij e~_ij: the gradient of sum_edges w_ij |f_j - f_i - e~_ij|^2 is 2 (L f + sum_j w_ij e~_ij), with
    (L f)_i = sum_j w_ij (f_i - f_j) the positive cotan Laplacian (cs_operators.h). For e~_ij = f_j - f_i this is
@@ -70,9 +70,11 @@ PetscErrorCode CSSpinReconstruct(CSSpin s, Vec x, Vec lambda, Vec xcenter, Vec x
   PetscCall(CSOperatorLaplacian(mesh, x, s->L ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX, &s->L));
   PetscCall(MatZeroRowsColumns(s->L, rank ? 0 : 1, &row, 1.0, NULL, NULL));
   if (!s->kpois) {
-    PC pc;
+    PC   pc;
+    char prefix[256];
+    PetscCall(CSSpinSubPrefix(s, "poisson_", prefix, sizeof(prefix)));
     PetscCall(KSPCreate(mesh->comm, &s->kpois));
-    PetscCall(KSPSetOptionsPrefix(s->kpois, "spin_poisson_"));
+    PetscCall(KSPSetOptionsPrefix(s->kpois, prefix));
     PetscCall(KSPGetPC(s->kpois, &pc));
     /* a Cholesky factorisation (CHOLMOD; the substructured cssubchol on several ranks): serially 2-3x faster than
        CG + GAMG at 4k-38k vertices (runs/bench_spin.sh) */
@@ -95,7 +97,7 @@ PetscErrorCode CSSpinReconstruct(CSSpin s, Vec x, Vec lambda, Vec xcenter, Vec x
     PetscCall(VecSet(u1, 0));
     PetscCall(KSPSolve(s->kpois, b1, u1));
     PetscCall(KSPGetConvergedReason(s->kpois, &reason));
-    PetscCheck(reason > 0, mesh->comm, PETSC_ERR_NOT_CONVERGED, "spin: the Poisson solve (coordinate %" PetscInt_FMT ") did not converge (KSP reason %s; options -spin_poisson_ksp_*, -spin_poisson_pc_*). Nothing was written.", d, KSPConvergedReasons[reason]);
+    PetscCheck(reason > 0, mesh->comm, PETSC_ERR_NOT_CONVERGED, "spin: the Poisson solve (coordinate %" PetscInt_FMT ") did not converge (KSP reason %s; options -%spoisson_ksp_*, -%spoisson_pc_*). Nothing was written.", d, KSPConvergedReasons[reason], s->hdr.prefix, s->hdr.prefix);
     PetscCall(KSPGetIterationNumber(s->kpois, &its));
     s->poisson_its += its;
     PetscCall(VecStrideScatter(u1, d, xnew, INSERT_VALUES));

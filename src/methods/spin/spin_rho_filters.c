@@ -1,5 +1,5 @@
 /* rho from a normal displacement (crane2011 Sec. 7.1, Fig. 20) and a heat-diffusion filter of rho (Fig. 13). */
-#include "cs_methods_spin.h"
+#include "spin_impl.h"
 
 /* Sec. 7.1: "for a flat surface undergoing a normal deformation f~(t) = f + t g N, the change in H~|df~| at t = 0
    equals Delta g". In this code's units of rho (rho = -H makes a minimal surface with H = (L f).N / (2 M), the
@@ -31,8 +31,9 @@ PetscErrorCode CSSpinRhoSmooth(CSSpin s, Vec x, PetscReal t, Vec rho)
   Mat L;
   Vec M, b;
   KSP ksp;
-  PC  pc;
+  PC       pc;
   PetscInt its = 0;
+  char     prefix[256];
   PetscFunctionBeginUser;
   PetscCall(CSOperatorLaplacian(s->mesh, x, MAT_INITIAL_MATRIX, &L));
   PetscCall(VecDuplicate(rho, &M));
@@ -42,7 +43,8 @@ PetscErrorCode CSSpinRhoSmooth(CSSpin s, Vec x, PetscReal t, Vec rho)
   PetscCall(MatDiagonalSet(L, M, ADD_VALUES));
   PetscCall(VecPointwiseMult(b, M, rho));
   PetscCall(KSPCreate(s->mesh->comm, &ksp));
-  PetscCall(KSPSetOptionsPrefix(ksp, "spin_smooth_"));
+  PetscCall(CSSpinSubPrefix(s, "smooth_", prefix, sizeof(prefix)));
+  PetscCall(KSPSetOptionsPrefix(ksp, prefix));
   PetscCall(KSPSetType(ksp, KSPPREONLY));
   PetscCall(KSPGetPC(ksp, &pc));
   PetscCall(CSSetDefaultCholesky(pc));

@@ -9,7 +9,7 @@
    2. the rest from the Hermitian-definite pencil Y lam = theta (X + eps M_V) lam, theta = 1/gamma, largest
       |theta| (Krylov-Schur, B-inner product; prefix spin_signed_). eps = 1e-10 (4 pi / area) sends the
       constants to theta = 0 and moves the other eigenvalues by ~eps / gamma (relative 1e-10). */
-#include "cs_methods_spin.h"
+#include "spin_impl.h"
 
 /* one eigenpair of the combined list */
 typedef struct {
@@ -48,12 +48,15 @@ static PetscErrorCode MassMatrix(CSSpin s, Vec x, Mat X, Vec m4, Mat *M)
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode CreateEPS(CSSpin s, const char prefix[], Mat A, Mat B, PetscInt nev, EPS *eps)
+/* suffix: "kernel_" or "signed_" after the object's prefix */
+static PetscErrorCode CreateEPS(CSSpin s, const char suffix[], Mat A, Mat B, PetscInt nev, EPS *eps)
 {
-  ST  st;
-  KSP ksp;
-  PC  pc;
+  ST   st;
+  KSP  ksp;
+  PC   pc;
+  char prefix[256];
   PetscFunctionBeginUser;
+  PetscCall(CSSpinSubPrefix(s, suffix, prefix, sizeof(prefix)));
   PetscCall(EPSCreate(s->mesh->comm, eps));
   PetscCall(EPSSetOptionsPrefix(*eps, prefix));
   PetscCall(EPSSetOperators(*eps, A, B));
@@ -68,11 +71,13 @@ static PetscErrorCode CreateEPS(CSSpin s, const char prefix[], Mat A, Mat B, Pet
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode CheckConverged(CSSpin s, EPS eps, PetscInt need, const char prefix[], PetscInt *nconv)
+static PetscErrorCode CheckConverged(CSSpin s, EPS eps, PetscInt need, PetscInt *nconv)
 {
   EPSConvergedReason reason;
   PetscInt           its;
+  const char        *prefix;
   PetscFunctionBeginUser;
+  PetscCall(EPSGetOptionsPrefix(eps, &prefix));
   PetscCall(EPSGetConverged(eps, nconv));
   PetscCall(EPSGetConvergedReason(eps, &reason));
   PetscCall(EPSGetIterationNumber(eps, &its));
@@ -87,7 +92,7 @@ static PetscErrorCode KernelSolve(CSSpin s, Mat X, Mat M, PetscReal unit, EPS *e
 {
   PetscInt nconv;
   PetscFunctionBeginUser;
-  PetscCall(CreateEPS(s, "spin_kernel_", X, M, 8, eps));
+  PetscCall(CreateEPS(s, "kernel_", X, M, 8, eps));
   PetscCall(EPSSetWhichEigenpairs(*eps, EPS_TARGET_MAGNITUDE));
   PetscCall(EPSSetTarget(*eps, -s->target * unit));
   {
@@ -97,14 +102,14 @@ static PetscErrorCode KernelSolve(CSSpin s, Mat X, Mat M, PetscReal unit, EPS *e
   }
   PetscCall(EPSSetFromOptions(*eps));
   PetscCall(EPSSolve(*eps));
-  PetscCall(CheckConverged(s, *eps, 8, "spin_kernel_", &nconv));
+  PetscCall(CheckConverged(s, *eps, 8, &nconv));
   *nker = 0;
   for (PetscInt i = 0; i < nconv; i++) {
     PetscScalar kr;
     PetscCall(EPSGetEigenvalue(*eps, i, &kr, NULL));
     if (PetscAbsReal(PetscRealPart(kr)) < 1e-6 * unit) (*nker)++;
   }
-  PetscCheck(*nker < nconv, s->mesh->comm, PETSC_ERR_NOT_CONVERGED, "spectrum: the kernel of the Dirac operator has %" PetscInt_FMT " or more dimensions; raise -spin_kernel_eps_nev", nconv);
+  PetscCheck(*nker < nconv, s->mesh->comm, PETSC_ERR_NOT_CONVERGED, "spectrum: the kernel of the Dirac operator has %" PetscInt_FMT " or more dimensions; raise -%skernel_eps_nev", nconv, s->hdr.prefix);
   PetscFunctionReturn(0);
 }
 
@@ -131,11 +136,11 @@ PetscErrorCode CSSpinSpectrumSigned(CSSpin s, Vec x, PetscInt nev, PetscReal eig
   /* step 2 on X + eps M; Krylov methods can miss copies of a multiple eigenvalue at the end of the range */
   PetscCall(MatAXPY(X, 1e-10 * unit, M, SAME_NONZERO_PATTERN));
   want = PetscMax(nev - nker, 1);
-  PetscCall(CreateEPS(s, "spin_signed_", Y, X, PetscMin(want + PetscMax(8, want / 4), 4 * s->mesh->Nv - nker - 1), &es));
+  PetscCall(CreateEPS(s, "signed_", Y, X, PetscMin(want + PetscMax(8, want / 4), 4 * s->mesh->Nv - nker - 1), &es));
   PetscCall(EPSSetWhichEigenpairs(es, EPS_LARGEST_MAGNITUDE));
   PetscCall(EPSSetFromOptions(es));
   PetscCall(EPSSolve(es));
-  PetscCall(CheckConverged(s, es, want, "spin_signed_", &nconv));
+  PetscCall(CheckConverged(s, es, want, &nconv));
   PetscCall(PetscMalloc1(nker + nconv, &all));
   for (PetscInt i = 0; i < nker; i++) all[i] = (SignedPair){0, 0, i};
   for (PetscInt i = 0; i < nconv; i++) {

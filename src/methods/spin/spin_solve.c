@@ -7,75 +7,10 @@
    -spin_st_pc_factor_mat_solver_type csquat|cscholmod|cholmod|mumps) or by inverse iteration with a kept
    factorisation (-spin_solver inverse, KSP prefix spin_inverse_; crane2013 Sec. 6.4.2). The default solvers and
    why: docs/solvers.md. */
-#include "cs_methods_spin.h"
+#include "spin_impl.h"
 #include "cs_linalg.h"
 #include "cs_package.h"
 #include "cs_util.h"
-
-PetscErrorCode CSSpinCreate(CSMesh mesh, CSSpin *spin)
-{
-  CSSpin s;
-  PetscFunctionBeginUser;
-  PetscCall(CSInitializePackage());
-  PetscCall(PetscNew(&s));
-  s->mesh        = mesh;
-  s->inverse_its = 1;
-  s->target      = 1e-2;
-  s->scalar_pc    = PETSC_FALSE;
-  s->lap_shift    = 1;
-  PetscCall(CSDiracCreateDM(mesh, NULL, &s->dm));
-  *spin = s;
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSSpinSetFromOptions(CSSpin s)
-{
-  const char *problems[] = {"standard", "generalized"}, *types[] = {"aij", "shell"}, *solvers[] = {"precond", "sinvert", "inverse"};
-  const char *bnames[] = {"none", "keep", "file", "target"};
-  PetscInt    ip = s->generalized, it = s->shell, is = s->inverse ? 2 : (s->scalar_pc ? 0 : 1), ib = (PetscInt)s->boundary;
-  PetscBool   solver_set;
-  PetscMPIInt size;
-  /* crane2011 Sec. 4.3: with a boundary, (D - rho) lambda = 0 needs boundary conditions; with a free boundary
-     the kernel of D holds every discrete conformal-affine map (rho = 0 is then not the identity). So an open
-     mesh keeps its boundary tangents unless told otherwise. */
-  if (s->mesh->topo.boundary_loops > 0 && s->boundary == CS_SPIN_BOUNDARY_NONE) ib = CS_SPIN_BOUNDARY_KEEP;
-  PetscFunctionBeginUser;
-  PetscOptionsBegin(s->mesh->comm, NULL, "Spin transformations (crane2011)", NULL);
-  PetscCall(CSOptionsEList("-spin_problem", "Eigenvalue problem: standard (Eq. 7) or generalized (Eq. 6)", NULL, problems, 2, problems[ip], &ip, NULL));
-  PetscCall(CSOptionsEList("-spin_dirac_type", "Dirac operator: assembled AIJ (block size 4) or matrix-free shell", NULL, types, 2, types[it], &it, NULL));
-  PetscCall(CSOptionsEList("-spin_solver", "Smallest eigenpair: EPS preconditioned by the scalar Laplacian (Davidson), EPS with shift-and-invert (a factorisation of K - sigma), or inverse iteration", NULL, solvers, 3, solvers[is], &is, &solver_set));
-  PetscCall(CSOptionsInt("-spin_iterations", "Inverse iteration steps", NULL, s->inverse_its, &s->inverse_its, NULL));
-  PetscCall(PetscOptionsBool("-spin_keep_inverse_factor", "Inverse iteration: keep the first factorisation as preconditioner for later solves", NULL, s->keep_factor, &s->keep_factor, NULL));
-  PetscCall(CSOptionsReal("-spin_shift", "Shift toward 0 (negative target), in units of the unit sphere's spectrum", NULL, s->target, &s->target, &s->target_set));
-  PetscCall(CSOptionsReal("-spin_lap_shift", "-spin_solver precond: the mass shift c of L + c M, in units of 4 pi / area", NULL, s->lap_shift, &s->lap_shift, NULL));
-  PetscCall(PetscOptionsBool("-spin_pin_vertex", "Fix the translation by pinning the first vertex instead of matching the mean", NULL, s->pin, &s->pin, NULL));
-  PetscCall(CSOptionsEList("-spin_boundary", "Boundary condition (Sec. 5.7): none (free), keep tangents, tangents from -spin_boundary_file, or from -spin_target_mesh", NULL, bnames, 4, bnames[ib], &ib, NULL));
-  PetscOptionsEnd();
-  s->generalized = (PetscBool)(ip == 1);
-  s->shell       = (PetscBool)(it == 1);
-  s->inverse     = (PetscBool)(is == 2);
-  s->boundary    = (CSSpinBoundary)ib;
-  PetscCheck(s->lap_shift > 0, s->mesh->comm, PETSC_ERR_ARG_OUTOFRANGE, "-spin_lap_shift %g: must be positive (L + c M must be definite)", (double)s->lap_shift);
-  /* the scalar preconditioner (spin_precond.c) is made for the standard problem on the full space: elsewhere
-     the default stays shift-and-invert */
-  s->scalar_pc  = (PetscBool)(is == 0);
-  s->solver_set = solver_set;
-  /* the default factorisation of K - sigma is the quaternion Cholesky (csquat) where K has quaternionic blocks (not
-     the reduced boundary space, not Eq. 6's non-Hermitian pencil), is assembled, and lives on one rank */
-  PetscCallMPI(MPI_Comm_size(s->mesh->comm, &size));
-  s->quat_factor = (PetscBool)(size == 1 && !s->generalized && s->boundary == CS_SPIN_BOUNDARY_NONE && !s->shell);
-  PetscCheck(!(s->scalar_pc && s->generalized), s->mesh->comm, PETSC_ERR_SUP, "-spin_solver precond supports only -spin_problem standard");
-  PetscCheck(!(s->scalar_pc && s->boundary != CS_SPIN_BOUNDARY_NONE), s->mesh->comm, PETSC_ERR_SUP, "-spin_solver precond does not support -spin_boundary (use -spin_solver sinvert)");
-  PetscCheck(s->inverse_its >= 1, s->mesh->comm, PETSC_ERR_ARG_OUTOFRANGE, "-spin_iterations %" PetscInt_FMT ": need at least 1", s->inverse_its);
-  PetscCheck(s->target > 0, s->mesh->comm, PETSC_ERR_ARG_OUTOFRANGE, "-spin_shift %g: must be positive (the target is -shift)", (double)s->target);
-  PetscCheck(!(s->shell && s->generalized), s->mesh->comm, PETSC_ERR_SUP, "-spin_dirac_type shell supports only -spin_problem standard");
-  PetscCheck(!(s->shell && s->inverse), s->mesh->comm, PETSC_ERR_SUP, "-spin_dirac_type shell needs -spin_solver eps (inverse iteration factors the assembled matrix)");
-  if (s->boundary != CS_SPIN_BOUNDARY_NONE) {
-    PetscCheck(s->mesh->topo.boundary_loops > 0, s->mesh->comm, PETSC_ERR_ARG_WRONG, "-spin_boundary %s: mesh %s has no boundary", bnames[ib], s->mesh->name);
-    PetscCheck(!s->shell, s->mesh->comm, PETSC_ERR_SUP, "-spin_boundary %s needs -spin_dirac_type aij (the reduced operator is a Galerkin product)", bnames[ib]);
-  }
-  PetscFunctionReturn(0);
-}
 
 /* M_V and V = M_V^{-1/2} divided by its mean (Sec. 5.5: "improved numerics if the entries of V are rescaled to
    have mean value 1"). */
@@ -172,7 +107,7 @@ static PetscErrorCode BuildBoundaryMap(CSSpin s, Vec x)
       nt0 = CSVecNorm(T0);
       nt1 = CSVecNorm(T1);
       PetscCheck(nt0 > 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "boundary vertex %" PetscInt_FMT " without outgoing boundary edge", mesh->vertNatural[i]);
-      PetscCheck(nt1 > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "-spin_boundary: zero target tangent at boundary vertex %" PetscInt_FMT " (file order)", mesh->vertNatural[i]);
+      PetscCheck(nt1 > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "-%sboundary: zero target tangent at boundary vertex %" PetscInt_FMT " (file order)", s->hdr.prefix, mesh->vertNatural[i]);
       for (int d = 0; d < 3; d++) {
         T0[d] /= nt0;
         T1[d] /= nt1;
@@ -232,11 +167,11 @@ PetscErrorCode CSSpinSetBoundaryDirections(CSSpin s, Vec V, Vec Vt)
     PetscCall(VecDuplicate(V, &s->Vcur));
     PetscCall(VecCopy(V, s->Vcur));
   }
-  PetscCall(CSSpinSetBoundaryTangents(s, NULL, Vt ? Vt : V));
+  PetscCall(CSSpinSetBoundaryTangents(s, Vt ? Vt : V));
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CSSpinSetBoundaryTangents(CSSpin s, Vec x, Vec Ttarget)
+PetscErrorCode CSSpinSetBoundaryTangents(CSSpin s, Vec Ttarget)
 {
   PetscFunctionBeginUser;
   PetscCall(VecDestroy(&s->Ttarget));
@@ -385,7 +320,7 @@ static PetscErrorCode SetupEPS(CSSpin s, Vec x, CSRhoLocation loc, Vec rho, Pets
   PetscCall(DefaultTarget(s, &sigma));
   if (!s->eps) {
     PetscCall(EPSCreate(s->mesh->comm, &s->eps));
-    PetscCall(EPSSetOptionsPrefix(s->eps, "spin_"));
+    PetscCall(EPSSetOptionsPrefix(s->eps, s->hdr.prefix));
     PetscCall(EPSGetST(s->eps, &st));
     PetscCall(STGetKSP(st, &ksp));
     PetscCall(KSPGetPC(ksp, &pc));
@@ -499,12 +434,14 @@ static PetscErrorCode InverseIteration(CSSpin s, Vec xr, PetscReal *kr)
   PetscReal sigma, nrm, xKx;
   Vec       y;
   PetscFunctionBeginUser;
-  PetscCheck(!s->generalized, s->mesh->comm, PETSC_ERR_SUP, "-spin_solver inverse supports -spin_problem standard only");
+  PetscCheck(!s->generalized, s->mesh->comm, PETSC_ERR_SUP, "-%ssolver inverse supports -%sproblem standard only", s->hdr.prefix, s->hdr.prefix);
   PetscCall(DefaultTarget(s, &sigma));
   if (!s->kinv) {
-    PC pc;
+    PC   pc;
+    char prefix[256];
+    PetscCall(CSSpinSubPrefix(s, "inverse_", prefix, sizeof(prefix)));
     PetscCall(KSPCreate(s->mesh->comm, &s->kinv));
-    PetscCall(KSPSetOptionsPrefix(s->kinv, "spin_inverse_"));
+    PetscCall(KSPSetOptionsPrefix(s->kinv, prefix));
     PetscCall(KSPSetType(s->kinv, s->keep_factor ? KSPGMRES : KSPPREONLY));
     PetscCall(KSPSetTolerances(s->kinv, 1e-12, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
     PetscCall(KSPGetPC(s->kinv, &pc));
@@ -573,8 +510,8 @@ static PetscErrorCode CheckEPSConverged(CSSpin s, PetscInt need, PetscInt *nconv
   PetscCall(STGetType(st, &sttype));
   PetscCall(EPSGetTolerances(s->eps, &tol, &maxit));
   PetscCheck(*nconv >= need, s->mesh->comm, PETSC_ERR_NOT_CONVERGED,
-             "spin: the eigensolver did not converge: %" PetscInt_FMT " of %" PetscInt_FMT " eigenpairs after %" PetscInt_FMT " iterations (reason %s; -spin_eps_type %s -spin_st_type %s -spin_eps_max_it %" PetscInt_FMT " -spin_eps_tol %g). Nothing was written.",
-             *nconv, need, its, EPSConvergedReasons[reason], type, sttype, maxit, (double)tol);
+             "spin: the eigensolver did not converge: %" PetscInt_FMT " of %" PetscInt_FMT " eigenpairs after %" PetscInt_FMT " iterations (reason %s; -%seps_type %s -%sst_type %s -%seps_max_it %" PetscInt_FMT " -%seps_tol %g). Nothing was written.",
+             *nconv, need, its, EPSConvergedReasons[reason], s->hdr.prefix, type, s->hdr.prefix, sttype, s->hdr.prefix, maxit, s->hdr.prefix, (double)tol);
   s->eps_its = its;
   PetscFunctionReturn(0);
 }
@@ -646,7 +583,7 @@ PetscErrorCode CSSpinSpectrum(CSSpin s, Vec x, CSRhoLocation loc, Vec rho, Petsc
   PetscInt   nconv;
   PetscReal *all;
   PetscFunctionBeginUser;
-  PetscCheck(!s->generalized && !s->inverse, s->mesh->comm, PETSC_ERR_SUP, "-task spectrum solves the standard problem (Eq. 7) with EPS: drop -spin_problem/-spin_solver");
+  PetscCheck(!s->generalized && !s->inverse, s->mesh->comm, PETSC_ERR_SUP, "-task spectrum solves the standard problem (Eq. 7) with EPS: drop -%sproblem/-%ssolver", s->hdr.prefix, s->hdr.prefix);
   PetscCall(BuildOperators(s, x, loc, rho));
   /* Krylov methods can miss copies of a multiple eigenvalue at the end of the wanted range (every eigenvalue
      is at least 4-fold here): ask for a margin more and keep the nev smallest */
@@ -709,7 +646,7 @@ PetscErrorCode CSSpinNormalize(CSSpin s, Vec lambda, Vec mu, PetscBool rotation_
   }
   /* |lambda c|^2 would be ~0: the eigenvector is (nearly) orthogonal to the target similarities mu */
   PetscCheck(CSQuatNorm2(c) * buf[4] > 1e-8 * buf[5], s->mesh->comm, PETSC_ERR_NOT_CONVERGED,
-             "spin: the eigenvector found does not resemble the target similarities (|fit| = %g); it is not the wanted mode (with -spin_problem generalized try -spin_problem standard). Nothing was written.", (double)PetscSqrtReal(CSQuatNorm2(c) * buf[4] / buf[5]));
+             "spin: the eigenvector found does not resemble the target similarities (|fit| = %g); it is not the wanted mode (with -%sproblem generalized try -%sproblem standard). Nothing was written.", (double)PetscSqrtReal(CSQuatNorm2(c) * buf[4] / buf[5]), s->hdr.prefix, s->hdr.prefix);
   PetscCall(VecGetArray(lambda, &lw));
   for (PetscInt i = 0; i < n; i++) {
     PetscReal li[4], t[4];
@@ -718,35 +655,6 @@ PetscErrorCode CSSpinNormalize(CSSpin s, Vec lambda, Vec mu, PetscBool rotation_
     for (int k = 0; k < 4; k++) lw[4 * i + k] = t[k];
   }
   PetscCall(VecRestoreArray(lambda, &lw));
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSSpinDestroy(CSSpin *spin)
-{
-  CSSpin s = *spin;
-  PetscFunctionBeginUser;
-  if (!s) PetscFunctionReturn(0);
-  PetscCall(EPSDestroy(&s->eps));
-  PetscCall(KSPDestroy(&s->kinv));
-  PetscCall(KSPDestroy(&s->klap));
-  PetscCall(MatDestroy(&s->Ls));
-  PetscCall(KSPDestroy(&s->kpois));
-  PetscCall(MatDestroy(&s->Kinv));
-  PetscCall(MatDestroy(&s->Ks));
-  PetscCall(MatDestroy(&s->L));
-  PetscCall(MatDestroy(&s->X));
-  PetscCall(MatDestroy(&s->K));
-  PetscCall(MatDestroy(&s->Y));
-  PetscCall(MatDestroy(&s->P));
-  PetscCall(VecDestroy(&s->mass));
-  PetscCall(VecDestroy(&s->v4));
-  PetscCall(VecDestroy(&s->Ttarget));
-  PetscCall(VecDestroy(&s->Vcur));
-  PetscCall(VecDestroy(&s->start));
-  PetscCall(DMDestroy(&s->dm));
-  PetscCall(DMDestroy(&s->dmr));
-  PetscCall(PetscFree(s));
-  *spin = NULL;
   PetscFunctionReturn(0);
 }
 
