@@ -90,7 +90,7 @@ static PetscErrorCode SpinView(CSSpin spin, CSMesh mesh, const SpinRun *r, const
   PetscCall(DMCreateGlobalVector(mesh->dmF1, &q));
   PetscCall(CSVecBlockNorms(r->lambda, 4, la)); /* |lambda| per vertex */
   PetscCall(CSGeometryQuasiConformal(mesh, mesh->x, r->xnew, q, NULL, NULL));
-  PetscCall(CSViewerCreate(mesh, dir, &v));
+  PetscCall(CSViewerCreate(mesh, NULL, dir, &v));
   PetscCall(VecDuplicate(la, &la0));
   PetscCall(VecSet(la0, 1));
   PetscCall(ViewerAddRho(v, r));
