@@ -138,8 +138,9 @@ PETSC_EXTERN PetscErrorCode CSMeshReadVertexValues(CSMesh mesh, const char optio
 PETSC_EXTERN PetscErrorCode CSMeshWrite(CSMesh mesh, Vec x, const char path[]);
 /* Before a flow: faces with a relative area below -mesh_quality_min_area (1e-8) or an angle below
    -mesh_quality_min_angle (1e-5 degrees) are reported (the worst, in file numbering) and the run refused, or warned
-   about with -mesh_quality_action warn (off: no check). Collective. */
-PETSC_EXTERN PetscErrorCode CSMeshQualityCheck(CSMesh mesh, Vec x);
+   about with -mesh_quality_action warn (off: no check). The options under the caller's prefix (the tasks: none).
+   Collective. */
+PETSC_EXTERN PetscErrorCode CSMeshQualityCheck(CSMesh mesh, const char prefix[], Vec x);
 
 /* ParaView output: one .pvtu per step (a piece per rank, with named per-vertex and per-face fields) plus a
    .pvd series index in dir. Fields are global Vecs of dmV1/dmV3 (vertex) or dmF1 (face). The pieces' data arrays
@@ -153,11 +154,12 @@ typedef enum {
   CS_VIEWER_ZLIB
 } CSViewerFormat;
 PETSC_EXTERN const char *const CSViewerFormats[];
-PETSC_EXTERN PetscErrorCode    CSViewerCreate(CSMesh mesh, const char dir[], CSViewer *v);
+/* -<prefix>viewer_format and -<prefix>viewer_precision are read under the caller's prefix (the tasks' output: none) */
+PETSC_EXTERN PetscErrorCode    CSViewerCreate(CSMesh mesh, const char prefix[], const char dir[], CSViewer *v);
 PETSC_EXTERN PetscErrorCode    CSViewerSetFormat(CSViewer v, CSViewerFormat format, PetscBool single);
-/* -viewer_format and -viewer_precision alone (CSViewerCreate reads them this way; the output reads them with
-   -viewer_dir before the work, so the check of unused options finds them read) */
-PETSC_EXTERN PetscErrorCode    CSViewerFormatFromOptions(MPI_Comm comm, CSViewerFormat *format, PetscBool *single);
+/* -<prefix>viewer_format and -<prefix>viewer_precision alone (CSViewerCreate reads them this way; the output reads
+   them with -viewer_dir before the work, so the check of unused options finds them read) */
+PETSC_EXTERN PetscErrorCode    CSViewerFormatFromOptions(MPI_Comm comm, const char prefix[], CSViewerFormat *format, PetscBool *single);
 PETSC_EXTERN PetscErrorCode CSViewerAddVertexField(CSViewer v, const char name[], Vec g);
 PETSC_EXTERN PetscErrorCode CSViewerAddFaceField(CSViewer v, const char name[], Vec g);
 PETSC_EXTERN PetscErrorCode CSViewerWriteStep(CSViewer v, Vec x, PetscReal time); /* writes and clears the fields */

@@ -74,8 +74,8 @@ PETSC_EXTERN PetscErrorCode CSOperatorLensFaceClosure(CSMesh mesh, DM dmH, Mat *
 PETSC_EXTERN PetscErrorCode CSTriangleFieldReconstruct(CSMesh mesh, DM dmH1, DM dmH3, Vec omega, Vec xref, Vec x);
 /* The same reconstruction kept alive across calls (the flow measures its surface at every evaluation): the KSP, d0,
    L, B and the work vectors are made at the first set-up; a new (or changed) omega refills L and B in place (same
-   nonzero pattern: one numeric factorisation, the symbolic one kept), an unchanged omega (same vector, same state)
-   reuses everything. Solve sets up at omega itself; its answer is CSTriangleFieldReconstruct's. */
+   nonzero pattern: one numeric factorisation, the symbolic one kept), an omega equal to the last one (value for
+   value, kept as a copy) reuses everything. Solve sets up at omega itself; its answer is CSTriangleFieldReconstruct's. */
 typedef struct _p_CSTriangleFieldReconstruction *CSTriangleFieldReconstruction;
 PETSC_EXTERN PetscErrorCode CSTriangleFieldReconstructionCreate(CSMesh mesh, DM dmH1, DM dmH3, CSTriangleFieldReconstruction *R);
 PETSC_EXTERN PetscErrorCode CSTriangleFieldReconstructionSetUp(CSTriangleFieldReconstruction R, Vec omega);

@@ -96,24 +96,45 @@ static PetscErrorCode HelpTaskList(void)
   PetscFunctionReturn(0);
 }
 
-/* -task NAME -help: run the task on a small mesh for zero iterations with the option blocks filtered. */
-static PetscErrorCode HelpTaskSetUp(void)
+/* -task NAME -help: the task runs on a private options database, pushed as the default for the pass (PetscOptionsPush)
+   and popped after it, so the global database is never written: the user's options, -help, a small generated mesh
+   and curve unless one is given, and zero iterations. PETSc's help hooks filter what is printed: PetscHelpPrintf
+   keeps confsurf's option blocks, PetscVFPrintf drops the task's own output (and keeps the lines of an enumerated
+   option's list, which PETSc prints with PetscFPrintf on stdout). */
+static PetscErrorCode HelpTaskSetUp(PetscOptions *help)
 {
   PetscBool mesh, gen, curve, gencurve;
+  char     *all;
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsHasName(NULL, NULL, "-mesh", &mesh));
   PetscCall(PetscOptionsHasName(NULL, NULL, "-gen", &gen));
   PetscCall(PetscOptionsHasName(NULL, NULL, "-curve", &curve));
   PetscCall(PetscOptionsHasName(NULL, NULL, "-gen_curve", &gencurve));
-  if (!mesh && !gen) PetscCall(PetscOptionsSetValue(NULL, "-gen", "icosphere"));
-  if (!curve && !gencurve) PetscCall(PetscOptionsSetValue(NULL, "-gen_curve", "circle"));
-  PetscCall(PetscOptionsSetValue(NULL, "-flow_max_it", "0"));
-  PetscCall(PetscOptionsSetValue(NULL, "-bs_max_it", "0"));
-  PetscCall(PetscOptionsSetValue(NULL, "-curve_max_it", "0"));
-  PetscCall(PetscOptionsSetValue(NULL, "-help", NULL));
+  PetscCall(PetscOptionsGetAll(NULL, &all));
+  PetscCall(PetscOptionsCreate(help));
+  PetscCall(PetscOptionsInsertString(*help, all));
+  PetscCall(PetscFree(all));
+  if (!mesh && !gen) PetscCall(PetscOptionsSetValue(*help, "-gen", "icosphere"));
+  if (!curve && !gencurve) PetscCall(PetscOptionsSetValue(*help, "-gen_curve", "circle"));
+  PetscCall(PetscOptionsSetValue(*help, "-flow_max_it", "0"));
+  PetscCall(PetscOptionsSetValue(*help, "-bs_max_it", "0"));
+  PetscCall(PetscOptionsSetValue(*help, "-curve_max_it", "0"));
+  PetscCall(PetscOptionsSetValue(*help, "-help", NULL));
+  PetscCall(PetscOptionsPush(*help));
   PetscHelpPrintf   = HelpFilter;
   HelpSavedVFPrintf = PetscVFPrintf;
   PetscVFPrintf     = HelpDiscard;
+  PetscFunctionReturn(0);
+}
+
+/* The end of the help pass: PETSc's printing and the global options database back as they were. */
+static PetscErrorCode HelpTaskEnd(PetscOptions *help)
+{
+  PetscFunctionBeginUser;
+  PetscVFPrintf = HelpSavedVFPrintf;
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "\n(<now V : formerly D>: D is the default; -flow_max_it, -bs_max_it and -curve_max_it are 0 here only to list the options. Solver objects take PETSc's options under their prefixes, e.g. -flow_saddle_ksp_*, -bs_semi_*, -spin_st_*: listed by -help all.)\n"));
+  PetscCall(PetscOptionsPop());
+  PetscCall(PetscOptionsDestroy(help));
   PetscFunctionReturn(0);
 }
 
@@ -196,6 +217,7 @@ int main(int argc, char **argv)
 {
   PetscErrorCode ierr;
   PetscBool      bad = PETSC_FALSE, traceback = PETSC_FALSE, helpmode, task;
+  PetscOptions   helpdb = NULL; /* the help pass's options */
 
   helpmode = HelpFromArgs(&argc, argv);
   if (!CSStartupFilesUsable(argc, argv)) return 1;
@@ -208,7 +230,7 @@ int main(int argc, char **argv)
       PetscCall(SlepcFinalize());
       return 0;
     }
-    PetscCall(HelpTaskSetUp());
+    PetscCall(HelpTaskSetUp(&helpdb));
   }
   /* output into a closed pipe (| head -1) is dropped, not a crash dump from PETSc's signal handler: the writes fail
      with EPIPE and the run ends as it would, its files written (issue 36, item 19) */
@@ -220,11 +242,7 @@ int main(int argc, char **argv)
   ierr = Run(PETSC_COMM_WORLD);
   if (!traceback) PetscCall(PetscPopErrorHandler());
   if (!ierr && !helpmode) PetscCall(CheckUnusedOptions(PETSC_COMM_WORLD, &bad));
-  if (helpmode) {
-    PetscVFPrintf = HelpSavedVFPrintf;
-    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "\n(<now V : formerly D>: D is the default; -flow_max_it, -bs_max_it and -curve_max_it are 0 here only to list the options. Solver objects take PETSc's options under their prefixes, e.g. -flow_saddle_ksp_*, -bs_semi_*, -spin_st_*: listed by -help all.)\n"));
-    PetscCall(PetscOptionsClearValue(NULL, "-help")); /* PetscFinalize would print its own help lines */
-  }
+  if (helpmode) PetscCall(HelpTaskEnd(&helpdb));
   /* finalize also after an error so -malloc_debug/valgrind see a clean exit */
   PetscCall(SlepcFinalize());
   return ierr ? (int)ierr : (bad ? 2 : 0);

@@ -92,7 +92,7 @@ static PetscErrorCode CSFlowWillmore(MPI_Comm comm, CSOutput *out)
   PetscErrorCode ierr;
   PetscFunctionBeginUser;
   PetscCall(CSMeshCreateFromOptions(comm, NULL, &mesh));
-  ierr = CSMeshQualityCheck(mesh, mesh->x);
+  ierr = CSMeshQualityCheck(mesh, NULL, mesh->x);
   if (!ierr) ierr = CSTriangleQualityWarnStall(mesh, mesh->x); /* issue 35: slivers stall the flow at its start */
   if (!ierr) ierr = CSFlowWillmoreRun(mesh, out);
   if (ierr) PetscCall(CSMeshDestroy(&mesh)); /* no leak on the error path */

@@ -100,7 +100,7 @@ PetscErrorCode CSFlowBS(MPI_Comm comm, CSOutput *out)
   PetscFunctionBeginUser;
   PetscCall(CSMeshDataRefuseTargetClass(comm, NULL, "-flow_type bs"));
   PetscCall(CSMeshCreateFromOptions(comm, NULL, &mesh));
-  ierr = CSMeshQualityCheck(mesh, mesh->x);
+  ierr = CSMeshQualityCheck(mesh, NULL, mesh->x);
   if (!ierr) ierr = RunFlow(mesh, out);
   PetscCall(CSMeshDestroy(&mesh));
   PetscCall(ierr);

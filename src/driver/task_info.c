@@ -18,7 +18,7 @@ static PetscErrorCode WriteInfoFields(CSMesh mesh, const char dir[])
   PetscCall(CSGeometryVertexAreas(mesh, mesh->x, area));
   PetscCall(CSGeometryFaceAreas(mesh, mesh->x, farea));
   PetscCall(CSVecBlockNorms(h, 3, hn));
-  ierr = CSViewerCreate(mesh, dir, &v);
+  ierr = CSViewerCreate(mesh, NULL, dir, &v);
   if (!ierr) ierr = CSViewerAddVertexField(v, "mean_curvature_vector", h);
   if (!ierr) ierr = CSViewerAddVertexField(v, "mean_curvature", hn);
   if (!ierr) ierr = CSViewerAddVertexField(v, "vertex_area", area);

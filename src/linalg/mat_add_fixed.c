@@ -1,6 +1,5 @@
 /* Y += a X with fixed nonzero patterns (include/cs_linalg.h): the flow's Schur complement
    S = H/t + X^T D X is refilled from its two terms at every refactorisation. */
-#include <petsc/private/petscimpl.h> /* PetscObjectStateIncrease */
 #include "cs_linalg.h"
 
 struct _p_CSMatAddMap {
@@ -66,6 +65,23 @@ static PetscErrorCode BuildBlockMap(Mat Yb, const PetscInt *yg, Mat Xb, const Pe
   PetscFunctionReturn(0);
 }
 
+/* The values were written into Y's blocks, whose states rose; Y's own state must rise too, or a PC built on Y
+   would not see the new values (PCSetUp compares the state). A final assembly does it with public calls: the pattern
+   is unchanged, so AIJ's assembly returns at once on each block and Y's nonzero state stays; it forgets the
+   symmetry/SPD flags the caller set, which are restored. */
+static PetscErrorCode BumpState(Mat Y)
+{
+  PetscBool sym_set, sym, spd_set, spd;
+  PetscFunctionBeginUser;
+  PetscCall(MatIsSymmetricKnown(Y, &sym_set, &sym));
+  PetscCall(MatIsSPDKnown(Y, &spd_set, &spd));
+  PetscCall(MatAssemblyBegin(Y, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(Y, MAT_FINAL_ASSEMBLY));
+  if (sym_set) PetscCall(MatSetOption(Y, MAT_SYMMETRIC, sym));
+  if (spd_set) PetscCall(MatSetOption(Y, MAT_SPD, spd));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode CSMatAddFixedPattern(Mat Y, PetscScalar a, Mat X, CSMatAddMap *map)
 {
   Mat              yb[2], xb[2];
@@ -103,7 +119,7 @@ PetscErrorCode CSMatAddFixedPattern(Mat Y, PetscScalar a, Mat X, CSMatAddMap *ma
     PetscCall(MatSeqAIJRestoreArrayRead(xb[b], &xa));
     PetscCall(MatSeqAIJRestoreArray(yb[b], &ya));
   }
-  PetscCall(PetscObjectStateIncrease((PetscObject)Y)); /* the blocks' states rose; Y's must too (PC reuse checks) */
+  PetscCall(BumpState(Y));
   PetscFunctionReturn(0);
 }
 

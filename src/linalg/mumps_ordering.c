@@ -8,14 +8,17 @@ PetscErrorCode CSMumpsDefaultOrdering(PC pc, Mat A)
   PetscBool     isfactor, set, has_op;
   MatSolverType st = NULL;
   const char   *prefix;
+  PetscOptions  options;
   Mat           F;
   PetscFunctionBeginUser;
   PetscCall(PetscObjectTypeCompareAny((PetscObject)pc, &isfactor, PCLU, PCCHOLESKY, ""));
   if (!isfactor) PetscFunctionReturn(0);
   PetscCall(PCFactorGetMatSolverType(pc, &st));
   if (!st || strcmp(st, MATSOLVERMUMPS)) PetscFunctionReturn(0);
+  /* the user's ordering wins: asked of the PC's own options database under its prefix, where MUMPS reads it */
   PetscCall(PCGetOptionsPrefix(pc, &prefix));
-  PetscCall(PetscOptionsHasName(NULL, prefix, "-mat_mumps_icntl_7", &set));
+  PetscCall(PetscObjectGetOptions((PetscObject)pc, &options));
+  PetscCall(PetscOptionsHasName(options, prefix, "-mat_mumps_icntl_7", &set));
   if (set) PetscFunctionReturn(0);
   PetscCall(PCGetOperatorsSet(pc, NULL, &has_op));
   if (!has_op) PetscCall(PCSetOperators(pc, A, A));

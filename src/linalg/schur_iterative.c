@@ -20,7 +20,7 @@
      user Schur preconditioner, with deluxe scaling and the adaptive coarse space (threshold 2) by default: measured
      on the level-4 bumpy sphere at c = 800, plain BDDC (vertices, edges) needs 500-1300 CG iterations on 2-4 ranks,
      deluxe alone is exact on 2 ranks (1 iteration) but not on 4 (570-690), deluxe + adaptive 5-6 on 4 ranks
-     (docs/scaling.md). The options -<prefix>fieldsplit_1_pc_bddc_* override.
+     (docs/scaling.md). The options -<prefix>fieldsplit_1_pc_bddc_* override (SetBDDCDefaults).
    Every choice is a default set in code before the sub-solvers' SetFromOptions: -<prefix>fieldsplit_{0,1}_*
    options still override it. */
 #include "cs_linalg.h"
@@ -39,19 +39,27 @@ static PetscErrorCode SetCGH2(KSP ksp, PetscReal rtol)
   PetscFunctionReturn(0);
 }
 
-/* A default for one of PCBDDC's options, which have no setters in 3.18 (deluxe scaling, adaptive threshold): written
-   into the options database under the PC's prefix unless the user gave it, so that -<prefix>pc_bddc_* still wins and
-   no private PETSc struct is touched */
-static PetscErrorCode SetBDDCDefault(PC bddc, const char *option, const char *value)
+/* PCBDDC's defaults of the project, deluxe scaling and the adaptive coarse space (threshold 2), which have no setters
+   in 3.18: a SetFromOptions pass of the PC reads them from a private options database that holds only them (every
+   other BDDC option's default is its current value, so nothing else changes), before the KSP's SetFromOptions reads
+   the user's -<prefix>pc_bddc_* over them. The global options database is not written, and no private PETSc struct
+   is touched. */
+static PetscErrorCode SetBDDCDefaults(PC bddc)
 {
-  const char *prefix;
-  char        name[256];
-  PetscBool   set;
+  PetscOptions defaults, user;
+  const char  *prefix;
   PetscFunctionBeginUser;
   PetscCall(PCGetOptionsPrefix(bddc, &prefix));
-  PetscCall(PetscSNPrintf(name, sizeof(name), "-%s%s", prefix ? prefix : "", option));
-  PetscCall(PetscOptionsHasName(NULL, NULL, name, &set));
-  if (!set) PetscCall(PetscOptionsSetValue(NULL, name, value));
+  PetscCall(PetscObjectGetOptions((PetscObject)bddc, &user));
+  PetscCall(PetscOptionsCreate(&defaults));
+  if (prefix) PetscCall(PetscOptionsPrefixPush(defaults, prefix));
+  PetscCall(PetscOptionsSetValue(defaults, "-pc_bddc_use_deluxe_scaling", "true"));
+  PetscCall(PetscOptionsSetValue(defaults, "-pc_bddc_adaptive_threshold", "2.0"));
+  if (prefix) PetscCall(PetscOptionsPrefixPop(defaults));
+  PetscCall(PetscObjectSetOptions((PetscObject)bddc, defaults));
+  PetscCall(PCSetFromOptions(bddc));
+  PetscCall(PetscObjectSetOptions((PetscObject)bddc, user));
+  PetscCall(PetscOptionsDestroy(&defaults));
   PetscFunctionReturn(0);
 }
 
@@ -107,8 +115,7 @@ PetscErrorCode CSSchurIterativeSetSubSolvers(PC pc, CSSchurSolveType type, Petsc
     PetscCall(KSPSetTolerances(sub[1], schur_rtol, PETSC_DEFAULT, PETSC_DEFAULT, 10000));
     PetscCall(KSPGetPC(sub[1], &bddc));
     PetscCall(PCSetType(bddc, PCBDDC));
-    PetscCall(SetBDDCDefault(bddc, "pc_bddc_use_deluxe_scaling", "true"));
-    PetscCall(SetBDDCDefault(bddc, "pc_bddc_adaptive_threshold", "2.0"));
+    PetscCall(SetBDDCDefaults(bddc));
   } else {
     /* the inner H solve sits inside every application of S_mu: it must be much tighter than the outer one */
     PetscCall(SetCGH2(sub[0], 1e-3 * schur_rtol));

@@ -88,13 +88,13 @@ static PetscErrorCode CheckRoot(CSMesh m, Vec nat, Quality *q, CSMeshQualityActi
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CSMeshQualityCheck(CSMesh m, Vec x)
+PetscErrorCode CSMeshQualityCheck(CSMesh m, const char prefix[], Vec x)
 {
   Quality             q      = {1e-8, 1e-5, 0, 0, 0, 0, 0}; /* the real meshes pass: triceratops_cgal has 1.7e-6 and 2e-4 deg */
   CSMeshQualityAction action = CS_MESH_QUALITY_REFUSE;
   Vec                 nat;
   PetscFunctionBeginUser;
-  PetscOptionsBegin(m->comm, NULL, "Mesh quality before a flow", NULL);
+  PetscOptionsBegin(m->comm, prefix, "Mesh quality before a flow", NULL);
   PetscCall(CSOptionsEnum("-mesh_quality_action", "Faces below the thresholds: refuse the run, warn, or no check", "CSMeshQualityCheck", CSMeshQualityActions, (PetscEnum)action, (PetscEnum *)&action, NULL));
   PetscCall(CSOptionsReal("-mesh_quality_min_area", "Smallest accepted face area relative to the mean face area", "CSMeshQualityCheck", q.min_area, &q.min_area, NULL));
   PetscCall(CSOptionsReal("-mesh_quality_min_angle", "Smallest accepted face angle (degrees)", "CSMeshQualityCheck", q.min_angle, &q.min_angle, NULL));
@@ -104,7 +104,7 @@ PetscErrorCode CSMeshQualityCheck(CSMesh m, Vec x)
       {"mesh_quality_min_area",  q.min_area,  (PetscBool)(q.min_area >= 0 && q.min_area < 1),    "must be in [0, 1)"  },
       {"mesh_quality_min_angle", q.min_angle, (PetscBool)(q.min_angle >= 0 && q.min_angle < 60), "must be in [0, 60)"}
     };
-    PetscCall(CSCheckOptionValues(m->comm, NULL, 2, checks));
+    PetscCall(CSCheckOptionValues(m->comm, prefix, 2, checks));
   }
   if (action == CS_MESH_QUALITY_OFF) PetscFunctionReturn(0);
   PetscCall(CSMeshGather(&m->natV3, x, &nat));

@@ -27,24 +27,24 @@ struct _p_CSViewer {
   PetscInt      ntimes_alloc;
 };
 
-PetscErrorCode CSViewerCreate(CSMesh mesh, const char dir[], CSViewer *v)
+PetscErrorCode CSViewerCreate(CSMesh mesh, const char prefix[], const char dir[], CSViewer *v)
 {
   PetscFunctionBeginUser;
   CSRootCall(mesh->comm, CSPathMakeDir(dir)); /* before anything is allocated: no leak when it fails */
   PetscCall(PetscNew(v));
   (*v)->mesh = mesh;
   PetscCall(PetscStrncpy((*v)->dir, dir, sizeof((*v)->dir)));
-  PetscCall(CSViewerFormatFromOptions(mesh->comm, &(*v)->format, &(*v)->single));
+  PetscCall(CSViewerFormatFromOptions(mesh->comm, prefix, &(*v)->format, &(*v)->single));
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CSViewerFormatFromOptions(MPI_Comm comm, CSViewerFormat *format, PetscBool *single)
+PetscErrorCode CSViewerFormatFromOptions(MPI_Comm comm, const char prefix[], CSViewerFormat *format, PetscBool *single)
 {
   const char *prec[] = {"double", "single"};
   PetscInt    ip     = 0;
   PetscFunctionBeginUser;
   *format = CS_VIEWER_BINARY;
-  PetscOptionsBegin(comm, NULL, "ParaView output (-viewer_dir)", NULL);
+  PetscOptionsBegin(comm, prefix, "ParaView output (-viewer_dir)", NULL);
   PetscCall(CSOptionsEnum("-viewer_format", "Data arrays of the .vtu pieces: appended raw binary, the same zlib-compressed, or ascii", "CSViewerSetFormat", CSViewerFormats, (PetscEnum)*format, (PetscEnum *)format, NULL));
   PetscCall(CSOptionsEList("-viewer_precision", "Positions and fields as Float64 (double) or Float32 (single: 7 digits, half the bytes)", "CSViewerSetFormat", prec, 2, prec[0], &ip, NULL));
   PetscOptionsEnd();

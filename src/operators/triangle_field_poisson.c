@@ -4,7 +4,6 @@
    translation, which is fixed by the centroid of xref. */
 #include "triangle_field_poisson_impl.h"
 #include "cs_cholmod.h"
-#include <petsc/private/petscimpl.h> /* PetscObjectStateGet: an unchanged omega keeps the factorisation */
 
 /* L = d0^T *1 d0 (the cotan Laplacian of omega's triangles, PSD as a sum of P1 stiffness matrices) with vertex 0
    grounded (its row and column the identity), and B = *1 d0, from the lens d0; with MAT_REUSE_MATRIX L and B (of an
@@ -66,8 +65,8 @@ struct _p_CSTriangleFieldReconstruction {
   Mat              d0, L, B;
   KSP              ksp;
   Vec              star1, star0, wc, b, f;
-  PetscObjectId    omega_id;    /* the omega of the current operator (0: none) */
-  PetscObjectState omega_state; /* and its state: an unchanged omega keeps the factorisation */
+  Vec              omega_op;    /* a copy of the omega of the current operator: an equal omega keeps the factorisation */
+  PetscBool        have_op;     /* the operators and the KSP are those of omega_op */
 };
 
 PetscErrorCode CSTriangleFieldReconstructionCreate(CSMesh m, DM dmH1, DM dmH3, CSTriangleFieldReconstruction *R)
@@ -114,33 +113,28 @@ static PetscErrorCode ReconstructionReset(CSTriangleFieldReconstruction R)
   PetscCall(VecDestroy(&R->wc));
   PetscCall(VecDestroy(&R->b));
   PetscCall(VecDestroy(&R->f));
-  R->omega_id    = 0;
-  R->omega_state = 0;
+  R->have_op = PETSC_FALSE;
   PetscFunctionReturn(0);
 }
 
-/* The operators at omega's *1: B = *1 d0 and L = d0^T B (grounded) refilled in place; nothing is done if omega is
-   the vector of the last set-up, unchanged (its id and state). */
+/* The operators at omega's *1: B = *1 d0 and L = d0^T B (grounded) refilled in place; nothing is done if omega
+   equals (value for value) the omega of the last set-up: the operators depend on omega's values only. */
 PetscErrorCode CSTriangleFieldReconstructionSetUp(CSTriangleFieldReconstruction R, Vec omega)
 {
-  PetscObjectId    id;
-  PetscObjectState st;
-  PetscBool        changed;
+  PetscBool same = PETSC_FALSE;
   PetscFunctionBeginUser;
-  PetscCall(PetscObjectGetId((PetscObject)omega, &id));
-  PetscCall(PetscObjectStateGet((PetscObject)omega, &st));
-  changed = (PetscBool)(R->omega_id != id || R->omega_state != st);
-  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &changed, 1, MPIU_BOOL, MPI_LOR, R->m->comm)); /* every rank sets up, or none */
-  if (!changed) PetscFunctionReturn(0);
+  if (R->have_op) PetscCall(VecEqual(R->omega_op, omega, &same)); /* collective: every rank sets up, or none */
+  if (same) PetscFunctionReturn(0);
   if (!R->star1) {
     PetscCall(DMCreateGlobalVector(R->dmH1, &R->star1));
     PetscCall(DMCreateGlobalVector(R->m->dmV1, &R->star0));
+    PetscCall(VecDuplicate(omega, &R->omega_op));
   }
   PetscCall(CSTriangleFieldStars(R->m, R->dmH3, omega, R->dmH1, R->star1, R->star0));
   if (!R->ksp) PetscCall(ReconstructionSetUpFirst(R));
   else PetscCall(PoissonOperatorFromD0(R->d0, R->star1, MAT_REUSE_MATRIX, &R->L, &R->B));
-  R->omega_id    = id;
-  R->omega_state = st;
+  PetscCall(VecCopy(omega, R->omega_op));
+  R->have_op = PETSC_TRUE;
   PetscFunctionReturn(0);
 }
 
@@ -187,6 +181,7 @@ PetscErrorCode CSTriangleFieldReconstructionDestroy(CSTriangleFieldReconstructio
   PetscCall(MatDestroy(&(*R)->B));
   PetscCall(VecDestroy(&(*R)->star1));
   PetscCall(VecDestroy(&(*R)->star0));
+  PetscCall(VecDestroy(&(*R)->omega_op));
   PetscCall(VecDestroy(&(*R)->wc));
   PetscCall(VecDestroy(&(*R)->b));
   PetscCall(VecDestroy(&(*R)->f));

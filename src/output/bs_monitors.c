@@ -128,7 +128,7 @@ PetscErrorCode CSBSFlowMonitorSetViewer(CSBSFlow flow, CSOutput *out, PetscInt e
   PetscCall(CSBSFlowGetMesh(flow, &mesh));
   PetscCall(PetscNew(&V));
   V->every = every;
-  PetscCall(CSViewerCreate(mesh, out->viewer_dir, &V->v));
+  PetscCall(CSViewerCreate(mesh, NULL, out->viewer_dir, &V->v));
   PetscCall(DMCreateGlobalVector(mesh->dmV1, &V->Wv));
   PetscCall(DMCreateGlobalVector(mesh->dmV1, &V->WK));
   PetscCall(CSBSFlowMonitorSet(flow, MonitorViewer, V, ViewerDestroy));

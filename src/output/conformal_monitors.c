@@ -120,7 +120,7 @@ PetscErrorCode CSConformalFlowMonitorSetViewer(CSConformalFlow flow, CSOutput *o
   PetscCall(CSConformalFlowGetMesh(flow, &mesh));
   PetscCall(PetscNew(&V));
   V->every = every;
-  PetscCall(CSViewerCreate(mesh, out->viewer_dir, &V->v));
+  PetscCall(CSViewerCreate(mesh, NULL, out->viewer_dir, &V->v));
   PetscCall(DMCreateGlobalVector(mesh->dmF1, &V->q));
   PetscCall(CSConformalFlowMonitorSet(flow, MonitorViewer, V, ViewerDestroy));
   PetscFunctionReturn(0);

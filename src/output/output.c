@@ -80,7 +80,7 @@ PetscErrorCode CSOutputFromOptionsFormats(MPI_Comm comm, const char *const exts[
   if (o->has_viewer) { /* read (and checked) now, as every option before the work; the viewer reads them again */
     CSViewerFormat format;
     PetscBool      single;
-    PetscCall(CSViewerFormatFromOptions(comm, &format, &single));
+    PetscCall(CSViewerFormatFromOptions(comm, NULL, &format, &single));
   }
   CSRootCall(comm, CheckOutputsLocal(o));
   PetscCall(CSJSONCreate(comm, &o->json));

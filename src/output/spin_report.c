@@ -101,7 +101,7 @@ static PetscErrorCode SpinView(CSSpin spin, CSMesh mesh, Vec x, Vec rho, Vec xne
   PetscCall(DMCreateGlobalVector(mesh->dmF1, &q));
   PetscCall(CSVecBlockNorms(lambda, 4, la)); /* |lambda| per vertex */
   PetscCall(CSGeometryQuasiConformal(mesh, x, xnew, q, NULL, NULL));
-  PetscCall(CSViewerCreate(mesh, dir, &v));
+  PetscCall(CSViewerCreate(mesh, NULL, dir, &v));
   PetscCall(VecDuplicate(la, &la0));
   PetscCall(VecSet(la0, 1));
   PetscCall(ViewerAddRho(v, loc, rho));

@@ -145,7 +145,7 @@ PetscErrorCode CSWillmoreFlowMonitorViewerSet(CSWillmoreFlow flow, CSOutput *out
   (*wv)->last  = -1;
   (*wv)->nits  = nits;
   PetscCall(PetscArraycpy((*wv)->its, its, nits));
-  PetscCall(CSViewerCreate(mesh, out->viewer_dir, &(*wv)->v));
+  PetscCall(CSViewerCreate(mesh, NULL, out->viewer_dir, &(*wv)->v));
   /* the context belongs to the caller (CSWillmoreFlowViewerFinish writes the final state with it) */
   if (every > 0 || (*wv)->nits) PetscCall(CSWillmoreFlowMonitorSet(flow, MonitorViewer, *wv, NULL));
   PetscFunctionReturn(0);

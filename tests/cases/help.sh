@@ -22,5 +22,12 @@ check "-task flow -flow_energy fairing" "-flow_fairing_epsilon -flow_energy" "^ 
 check "-task flow -flow_type bs" "-bs_max_it -bs_scheme -o" "^  -(spin_|flow_rtol)|_ksp_|_pc_"
 check "-task spin" "-spin_solver -spin_boundary -o" "^  -(flow_|bs_)|_ksp_|_eps_|_st_"
 check "-task info" "-mesh -gen -o -mesh_remesh -mesh_remesh_edge_length -mesh_remesh_iterations -o_input" "^  -(flow_|bs_|spin_)"
+# the help pass runs on its own options database: PETSc's table of the global one (-options_left, printed at the end)
+# holds only what was given, not the pass's -gen, -flow_max_it ... or -help
+$CS_BIN -task flow -help -options_left > "$TMP/left.txt" 2>&1 || { cat "$TMP/left.txt"; echo "BAD: -help -options_left failed"; exit 1; }
+table=$(sed -n '/Option Table entries/,/End of PETSc Option Table/p' "$TMP/left.txt")
+[ -n "$table" ] || { echo "BAD: no options table"; exit 1; }
+! grep -qE -- "^-(gen|gen_curve|flow_max_it|bs_max_it|curve_max_it|help)( |$)" <<< "$table" || { echo "BAD: the help pass wrote into the global options database: $table"; exit 1; }
+echo "ok  -help leaves the global options database as given"
 EXPECT="-flow_rtoll" expect_fail "$CS_BIN" -task flow -gen icosphere -gen_level 1 -flow_max_it 1 -flow_rtoll 1
 check "-task curveflow" "-curve_tau -curve -gen_curve -o" "^  -(flow_|bs_|spin_|gen_level)|_ksp_|_pc_"

@@ -13,7 +13,8 @@
 # Also: the multiplier path (GMRES + I_Q/t_mu on S_mu, inner CG + csh2) gives the direct flow for 5 level-3 steps
 # serially (it nests an H solve in every Schur iteration: minutes at level 4); the primal path's first Schur solve
 # at t t_mu = 1 takes few CG iterations (the csh2 bound: condition <= 2); on 4 ranks the default is cssubchol;
-# a bad value fails naming the option.
+# a bad value fails naming the option; BDDC's defaults are set on the PC (not in the options database) and the
+# user's -flow_saddle_fieldsplit_1_pc_bddc_* options win.
 # nprocs: 1 2 4
 source tests/lib.sh
 G4="-task flow -gen icosphere -gen_level 4 -gen_deform_bump 0.2 -gen_deform_stretch 1.5,1,0.8 -flow_max_it 20 -flow_rtol 0"
@@ -67,6 +68,18 @@ echo "BDDC on $NP ranks: $n Schur solves, $total CG iterations, largest $its"
 # deluxe scaling is exact on two subdomains; on 4 the adaptive coarse space (threshold 2) bounds the condition
 lim=3; [ "$NP" -gt 2 ] && lim=12
 [ "$its" -ge 1 ] && [ "$its" -le "$lim" ] || { echo "BAD: expected 1-$lim CG iterations per BDDC Schur solve on $NP ranks"; exit 1; }
+# BDDC's defaults (deluxe scaling, adaptive threshold 2) are set on the PC, not written into the options database
+# (PETSc's table at -options_left lists only the given options), and the user's -..._pc_bddc_* options win over them
+bddc_view() { # name -> "deluxe threshold" of the first BDDC view
+  echo "$(grep -m1 -o "Use deluxe scaling: [0-9]" "$TMP/$1.log" | awk '{print $NF}') $(grep -m1 -oE "selection thresholds? \(active [0-9], userdefined [0-9]\): [0-9.e+-]+" "$TMP/$1.log" | awk '{v = $NF; sub(/\.$/, "", v); print v}')"
+}
+B3="$G3 -flow_max_it 1 -flow_saddle_schur_solver bddc -flow_saddle_fieldsplit_1_ksp_view"
+run par bddcdef $B3 -options_left
+[ "$(bddc_view bddcdef)" = "1 2" ] || { echo "BAD: BDDC defaults (deluxe, threshold) are '$(bddc_view bddcdef)', not '1 2'"; exit 1; }
+! sed -n '/Option Table entries/,/End of PETSc Option Table/p' "$TMP/bddcdef.log" | grep -q pc_bddc || { echo "BAD: BDDC defaults written into the options database"; exit 1; }
+run par bddcuser $B3 -flow_saddle_fieldsplit_1_pc_bddc_use_deluxe_scaling false -flow_saddle_fieldsplit_1_pc_bddc_adaptive_threshold 3
+[ "$(bddc_view bddcuser)" = "0 3" ] || { echo "BAD: the user's BDDC options give '$(bddc_view bddcuser)', not '0 3'"; exit 1; }
+echo "ok  BDDC defaults on the PC (deluxe 1, threshold 2), the user's options win (0, 3), the database unwritten"
 if [ "$NP" = 4 ]; then # the many-rank default factors S by substructuring (cssubchol), not MUMPS, at this size
   run par l4 $G4 -flow_max_it 2 -flow_saddle_fieldsplit_1_ksp_view
   grep -m1 -o "interface [0-9]* dofs" "$TMP/l4.log" || { echo "BAD: the 4-rank default is not cssubchol"; exit 1; }

@@ -291,13 +291,28 @@ static PetscErrorCode ConfigureFieldSplit(CSSaddle *s, PC pc, PetscBool chosen, 
   PetscFunctionReturn(0);
 }
 
+/* A -<prefix>pc_type among the KSP's own options (its database and prefix, where its PC's SetFromOptions will read
+   it): the user chose the whole solver, and none of the defaults apply. Asked before the SetFromOptions because the
+   PC's type after it cannot tell a user's -pc_type fieldsplit or cholesky from the defaults, and the defaults of
+   the outer KSP (FGMRES, rtol 1e-6) must not be imposed on a solver the user chose (docs/willmore_flow.md). */
+static PetscErrorCode UserChoseSolver(KSP ksp, PetscBool *chosen)
+{
+  PetscOptions options;
+  const char  *prefix;
+  PetscFunctionBeginUser;
+  PetscCall(PetscObjectGetOptions((PetscObject)ksp, &options));
+  PetscCall(KSPGetOptionsPrefix(ksp, &prefix));
+  PetscCall(PetscOptionsHasName(options, prefix, "-pc_type", chosen));
+  PetscFunctionReturn(0);
+}
+
 /* First configuration of a (new) KSP: the defaults unless the user chose a solver, the options, the splits. */
 static PetscErrorCode ConfigureKSP(CSSaddle *s, Vec iq, PetscReal tmu, Mat X)
 {
   PC        pc;
   PetscBool chosen, fs = PETSC_FALSE, preonly;
   PetscFunctionBeginUser;
-  PetscCall(PetscOptionsHasName(NULL, s->prefix, "-pc_type", &chosen)); /* the user chose the whole solver */
+  PetscCall(UserChoseSolver(s->ksp, &chosen));
   if (!chosen) PetscCall(SetDefaultSolver(s));
   PetscCall(KSPSetFromOptions(s->ksp));
   PetscCall(KSPGetPC(s->ksp, &pc));
