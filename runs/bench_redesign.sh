@@ -13,13 +13,15 @@
 # The options were renamed by the redesign; each case lists both spellings. Writes runs/results/bench_redesign.md.
 #   git worktree add /tmp/pre b83cb41 && make -C /tmp/pre -j2
 #   OLD=/tmp/pre/bin/confsurf bash runs/bench_redesign.sh
+# A later redesign step compares two builds that share the option names: OLD_OPTIONS=new gives OLD the new
+# spellings (issue 37: OLD=<build of 7d1ad92> OLD_OPTIONS=new OUT=runs/results/bench_redesign2.md).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 OLD=${OLD:?set OLD to the binary from before the redesign}
 NEW=${NEW:-$PWD/bin/confsurf}
 REPEAT=${REPEAT:-5}
-OUT=runs/results/bench_redesign.md
+OUT=${OUT:-runs/results/bench_redesign.md}
 mkdir -p runs/results
 T=$(mktemp -d)
 trap 'rm -rf "$T"' EXIT
@@ -29,6 +31,7 @@ CGD_NEW="-task flow -gen icosphere -gen_level 5 -gen_deform_bump 0.2 -gen_deform
 SPIN="-task spin -gen torus -gen_n 64 -gen_m 64 -rho_bump_center 1.4,0,0 -rho_bump_radius 0.3 -rho_bump_height 3"
 BS="-task flow -flow_type bs -mesh meshes/bunny_closed_cgal.obj -bs_max_it 3"
 INFO="-task info -mesh meshes/bunny_closed_cgal.obj"
+[ "${OLD_OPTIONS:-old}" = new ] && CGD_OLD=$CGD_NEW
 
 # run LABEL NP BIN ARGS...: appends "LABEL value" to $T/times
 run() {
