@@ -108,9 +108,6 @@ static void SetDefaults(CSWillmoreFlow F)
   F->metric_type     = CS_FLOW_METRIC_H2;
   F->boundary        = CS_FLOW_BOUNDARY_DIRICHLET;
   F->saddle_mat      = CS_SADDLE_MAT_NEST;
-  F->integ           = -1;
-  F->immersion_tol   = 1e-6;
-  F->pinch           = -1;
   F->viol_min        = -1; /* none evaluated yet */
 }
 
@@ -304,10 +301,6 @@ PetscErrorCode CSWillmoreFlowGetInfo(CSWillmoreFlow F, CSWillmoreFlowInfo *info)
   info->q_max                = F->qmax;
   info->degeneration         = F->degeneration;
   info->seconds              = now - F->t0;
-  info->integrability_violation = F->integ;
-  info->immersion_tol           = F->immersion_tol;
-  info->pinch_edges          = F->pinch;
-  info->spin_energy          = F->espin;
   info->k                    = F->k;
   info->constraint_values    = F->cx;
   PetscFunctionReturn(0);

@@ -181,6 +181,7 @@ struct _p_CSWillmoreFlow {
   Vec                   area0, areat; /* barycentric vertex areas of the input and of the current state */
   PetscReal             area0_total;  /* total area of the input */
   PetscReal             max_area_ratio;
+  PetscBool             max_area_ratio_set; /* given as an option (a kind may default to 0 otherwise: trianglefield) */
   PetscBool             project_at_stop; /* project the state the guard stopped at onto the constraints */
   PetscReal             fin_q;        /* q_max above which the guard reports fins rather than a smooth concentration */
   CSWillmoreFlowDegeneration degeneration;
@@ -220,10 +221,6 @@ struct _p_CSWillmoreFlow {
   PetscBool             resumed, started;
   PetscLogDouble        t0;
   PetscReal             E, el, conf, glob, A, V, area_ratio, spread, qmax; /* at x, from the last evaluation */
-  PetscReal             integ; /* integrability violation of a triangle field (-1: not a triangle-field kind) */
-  PetscReal             immersion_tol; /* -flow_immersion_tol: the largest integ at which -o writes the reconstruction */
-  PetscReal             espin; /* E_tau(psi(omega)) of a triangle field (App. C.3), whatever its weight */
-  PetscInt              pinch; /* edges failing the spinor pinch test (soliman2021 App. C.1; -1: not a triangle-field kind) */
   PetscReal             viol_max; /* the largest max(conf, glob) of any evaluated state (before a projection at the stop) */
   PetscReal             viol_min; /* the smallest max(conf, glob) of any evaluated state (-1: none yet) */
   PetscInt              viol_min_it, viol_max_it; /* the iterations of viol_min, viol_max */
