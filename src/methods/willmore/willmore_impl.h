@@ -83,13 +83,13 @@ typedef struct {
                             part (1 - t t_mu s^2 / (lambda_H + t t_mu s^2)) of a violation the step's operator leaves */
 } CSWFTrialRecord;
 
-/* ---- the flow kind: a strategy struct (cgd.c, pgd.c, gd.c) ---- */
+/* ---- the flow kind: a strategy struct (impls/<kind>/: cgd, pgd, gd, newton, alm, fairing, trianglefield) ----
+   Its data live in F->data (created by CSWillmoreFlowCreate_<Kind>, freed by ops.destroy); no shared file tests a
+   kind's name: what differs between kinds is one of these slots (NULL: the shared default named beside it). */
 struct _CSWillmoreFlowOps {
   PetscInt  id;             /* stored in checkpoints (a resume must use the same kind) */
   PetscBool conformal;      /* default of -flow_conformal */
   PetscBool step_halving;   /* default of -flow_step_model is halving (trianglefield: the model fell behind, docs/willmore_flow.md) */
-  PetscBool projected;      /* PGD: the constraint set is kept by projection, not by the step's filter */
-  PetscBool penalty;        /* ALM: the constraints enter L_A as penalty terms; the saddle solve is the metric alone */
   PetscErrorCode (*setup)(CSWillmoreFlow);               /* checks of the options against the kind */
   PetscErrorCode (*start)(CSWillmoreFlow);               /* before the first iteration (not after a resume) */
   PetscErrorCode (*trial)(CSWillmoreFlow, PetscBool *);  /* the trial point xt of step t (false: rejected) */
@@ -98,7 +98,15 @@ struct _CSWillmoreFlowOps {
   PetscErrorCode (*grow)(CSWillmoreFlow);                /* step sizes after an accepted step */
   PetscErrorCode (*shrink)(CSWillmoreFlow);              /* step sizes after a rejected step */
   PetscErrorCode (*dual)(CSWillmoreFlow);                /* before the step, after its operators: a multiplier estimate (NULL: none) */
-  PetscErrorCode (*residual)(CSWillmoreFlow, PetscReal *); /* the stopping residual at x (NULL: el_residual) */
+  PetscErrorCode (*residual)(CSWillmoreFlow, PetscReal *); /* the stopping residual at x (NULL: CSWFResidual, el_residual) */
+  PetscErrorCode (*multipliers)(CSWillmoreFlow, Vec *);  /* the conformal multiplier reported at x (NULL: mu; ALM: its estimate) */
+  PetscErrorCode (*weights)(CSWillmoreFlow);             /* the metric of the conformal rows at x (NULL: I_Q, CSWFQuadDiffMetric) */
+  PetscErrorCode (*scale)(CSWillmoreFlow, PetscReal sc, PetscReal E0); /* size scaling of the kind's parameters (s^2 = sc, |E(input)| = E0) */
+  PetscErrorCode (*saddle_blocks)(CSWillmoreFlow, PetscBool *edges, PetscInt *k); /* blocks of the saddle solver
+                                                         (NULL: the conformal rows if on, and the k global rows) */
+  PetscErrorCode (*storable)(CSWillmoreFlow);            /* refuses -checkpoint/-resume when its state is not stored (NULL: stored) */
+  PetscErrorCode (*get_switch)(CSWillmoreFlow, PetscBool *); /* the kind's one stored switch, ck[8] of a checkpoint */
+  PetscErrorCode (*set_switch)(CSWillmoreFlow, PetscBool);   /* (CGD: -t_mu_final fired; NULL: none, 0 stored) */
   PetscErrorCode (*destroy)(CSWillmoreFlow);             /* the kind's own data (NULL: none) */
   PetscErrorCode (*setfromoptions)(CSWillmoreFlow, PetscOptionItems *); /* the kind's own options, read inside the
                                                          flow's options block after the shared ones (NULL: none) */
@@ -194,16 +202,6 @@ struct _p_CSWillmoreFlow {
   PetscReal             proj_tmu;
   PetscReal             tmu_grow, tmu_max; /* own schedule of the dual step (0: t_mu follows t) */
   PetscReal             tmu_ratio_max;     /* following t: t_mu <= this * t (1e3 times the initial t_mu / t) */
-  PetscReal             tmu_final, tmu_final_el; /* -t_mu_final: a fixed dual step once el < tmu_final_el (cgd.c) */
-  PetscBool             tmu_final_on;
-  PetscInt              tmu_final_from;    /* the switch is armed from this iteration on (a kind's relaxed phase before) */
-  PetscInt              mu_ls_every, mu_ls_count; /* CGD: least-squares multiplier estimate every mu_ls_every its (cgd_multiplier_ls.c), estimates made */
-  PetscReal             mu_ls_tmu;         /* t_mu (with t = 1) of its projection and least-squares solve */
-  PetscReal             alm_rho, alm_grow, alm_rho_max; /* ALM penalty (relative to |E(input)|), its growth, ceiling */
-  PetscInt              alm_inner_it;      /* ALM: accepted steps per inner loop */
-  CSALMMetricType       alm_metric;        /* ALM: metric of the inner steps */
-  PetscInt              alm_inner, alm_update, alm_updates; /* ALM loop state: steps in this inner loop, iteration of the last update, updates */
-  PetscReal             alm_vlast;         /* ALM: violation at the last multiplier update */
 
   /* geometric step control and guards (gd, newton: docs/willmore_flow.md "Unconstrained descent") */
   PetscReal             max_step;      /* reject a trial step moving a vertex by more than this times the mean edge length */
@@ -264,14 +262,14 @@ PETSC_INTERN PetscErrorCode CSWFEvalConstraints(CSWillmoreFlow F, Vec x, Vec c, 
 PETSC_INTERN PetscErrorCode CSWFViolation(CSWillmoreFlow F, Vec c, const PetscReal cx[], PetscReal *conf, PetscReal *glob);
 PETSC_INTERN PetscErrorCode CSWFMerit(CSWillmoreFlow F, PetscReal E, Vec c, const PetscReal cx[], const PetscReal nun[], PetscReal *phi);
 PETSC_INTERN PetscErrorCode CSWFResidual(CSWillmoreFlow F, PetscReal *el);
+PETSC_INTERN PetscErrorCode CSWFResidualWith(CSWillmoreFlow F, Vec mu, const PetscReal nu[], PetscReal *el);
 PETSC_INTERN PetscErrorCode CSWFGlobalWeights(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFQuadDiffMetric(CSWillmoreFlow F, Vec x, PetscInt *ng);
 /* willmore_step.c */
 PETSC_INTERN PetscErrorCode CSWFSetOperators(CSWillmoreFlow F, PetscReal t, PetscReal tmu);
 PETSC_INTERN PetscErrorCode CSWFTrySolve(CSWillmoreFlow F, Vec rE, Vec rV, const PetscReal rX[], Vec zE, Vec zV, PetscReal zX[], PetscInt *its, PetscBool *ok);
 PETSC_INTERN PetscErrorCode CSWFSolveCorrection(CSWillmoreFlow F, Vec zE, Vec zV, PetscInt *its, PetscBool *ok);
-PETSC_INTERN PetscErrorCode CSWFTrialCGD(CSWillmoreFlow F, PetscBool *accept);
-PETSC_INTERN PetscErrorCode CSWFTrialPGD(CSWillmoreFlow F, PetscBool *accept);
+PETSC_INTERN PetscErrorCode CSWFRejected(CSWillmoreFlow F, const char what[]);
 /* willmore_filter.c */
 PETSC_INTERN PetscErrorCode CSWFFilterLagrangian(CSWillmoreFlow F, PetscBool *accept);
 PETSC_INTERN PetscErrorCode CSWFFilterEnergy(CSWillmoreFlow F, PetscBool *accept);
@@ -322,15 +320,8 @@ PETSC_INTERN PetscErrorCode CSWillmoreFlowCreate_Newton(CSWillmoreFlow);
 PETSC_INTERN PetscErrorCode CSWillmoreFlowCreate_ALM(CSWillmoreFlow);
 PETSC_INTERN PetscErrorCode CSWillmoreFlowCreate_Fairing(CSWillmoreFlow); /* the kind named by F->type */
 PETSC_INTERN PetscErrorCode CSWillmoreFlowCreate_TriangleField(CSWillmoreFlow);
-PETSC_INTERN PetscErrorCode CSWFMultiplierEstimate(CSWillmoreFlow F, Vec c, const PetscReal cx[]);
-/* cgd_multiplier_ls.c */
-PETSC_INTERN PetscErrorCode CSWFMultiplierLSOptions(CSWillmoreFlow F, PetscOptionItems *PetscOptionsObject);
-PETSC_INTERN PetscErrorCode CSWFMultiplierLS(CSWillmoreFlow F);
-PETSC_INTERN PetscErrorCode CSWFMultiplierLSRestore(CSWillmoreFlow F);
-PETSC_INTERN PetscErrorCode CSWFAcceptCGD(CSWillmoreFlow F);
-PETSC_INTERN PetscErrorCode CSWFGrowCGD(CSWillmoreFlow F);
+/* step sizes shared by the kinds (impls/pgd/pgd.c, impls/cgd/cgd.c) */
 PETSC_INTERN PetscErrorCode CSWFGrowStep(CSWillmoreFlow F, PetscReal *r);
-PETSC_INTERN PetscErrorCode CSWFShrinkCGD(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFGrowPrimal(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFShrinkPrimal(CSWillmoreFlow F);
 

@@ -78,7 +78,6 @@ PetscErrorCode CSWFSetUpConstraints(CSWillmoreFlow F)
   }
   PetscCall(CSWFSetUpAddedConstraints(F));
   for (PetscInt j = 0; j < F->ng; j++) F->k += F->gc[j]->k;
-  PetscCheck(F->conformal || F->k == 0 || !F->ops.projected, F->comm, PETSC_ERR_ARG_INCOMP, "pgd without the conformal constraint is not supported");
   PetscFunctionReturn(0);
 }
 
@@ -163,13 +162,12 @@ PetscErrorCode CSWFSetUpScaling(CSWillmoreFlow F)
      raises t_mu / t twofold for good, up to 1e3 times its initial value, see the step control) */
   if (F->tmu_max <= 0) F->tmu_max = F->tmu_grow > 0 ? 1e3 * F->tmax : PETSC_MAX_REAL;
   F->tmu /= sc;
-  F->tmu_final /= sc;
   if (F->tmu_max < PETSC_MAX_REAL) F->tmu_max /= sc;
   F->tmu_ratio_max = 1e3 * F->tmu / F->t;
   /* merit weight relative to the size of the energy (W ~ 4 pi and a fairing energy eps W differ by orders) */
   PetscCall(CSEnergyValue(F->energy, F->x0, &E0));
   F->rho *= PetscMax(PetscAbsReal(E0), PETSC_SMALL);
-  if (F->ops.penalty) F->alm_rho_max *= PetscMax(PetscAbsReal(E0), PETSC_SMALL);
+  if (F->ops.scale) PetscCall((*F->ops.scale)(F, sc, E0)); /* the kind's own parameters (CGD: its final dual step; ALM: its largest penalty) */
   PetscFunctionReturn(0);
 }
 
@@ -212,13 +210,12 @@ static PetscErrorCode CheckMemory(CSWillmoreFlow F)
 PetscErrorCode CSWillmoreFlowSetUp(CSWillmoreFlow F)
 {
   char      prefix[80];
-  PetscBool plain;
+  PetscBool edges = F->conformal;
+  PetscInt  k;
   PetscFunctionBeginUser;
   if (F->setupcalled) PetscFunctionReturn(0);
   PetscCall(PetscTime(&F->t0));
   PetscCall(CheckMemory(F));
-  /* rather refused than ignored: the least-squares multipliers are CGD's dual step on the conformal rows */
-  PetscCheck(!F->mu_ls_every || (F->ops.dual == CSWFMultiplierLS && F->conformal), F->comm, PETSC_ERR_SUP, "-%smultiplier_ls_every %" PetscInt_FMT ": only for -%stype cgd with the conformal constraint", F->prefix, F->mu_ls_every, F->prefix);
   PetscCheck(!F->nadded || !F->ops.setup_problem, F->comm, PETSC_ERR_SUP, "CSWillmoreFlowAddConstraint(%s): the registered constraints act on vertex positions, not on the variables of -%stype %s", F->nadded ? F->added[0] : "", F->prefix, F->type);
   if (F->ops.setup_problem) { /* a kind with its own variables (trianglefield) */
     PetscCall((*F->ops.setup_problem)(F));
@@ -234,9 +231,9 @@ PetscErrorCode CSWillmoreFlowSetUp(CSWillmoreFlow F)
   F->metric.h1 = (PetscBool)(F->metric_type == CS_FLOW_METRIC_H1);
   PetscCall(CSWFSetUpScaling(F));
   PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "%ssaddle_", F->prefix));
-  /* ALM with the plain metric: the metric solve alone, no multiplier block and no bordering */
-  plain = (PetscBool)(F->ops.penalty && F->alm_metric == CS_ALM_METRIC_PLAIN);
-  PetscCall(CSSaddleCreate(F->mesh, prefix, (PetscBool)(F->conformal && !plain), (PetscBool)(F->metric_type == CS_FLOW_METRIC_H2), (PetscBool)(F->saddle_mat == CS_SADDLE_MAT_AIJ), F->reuse_its, plain ? 0 : F->k, &F->saddle));
+  k = F->k;
+  if (F->ops.saddle_blocks) PetscCall((*F->ops.saddle_blocks)(F, &edges, &k)); /* ALM's plain metric: the metric solve alone */
+  PetscCall(CSSaddleCreate(F->mesh, prefix, edges, (PetscBool)(F->metric_type == CS_FLOW_METRIC_H2), (PetscBool)(F->saddle_mat == CS_SADDLE_MAT_AIJ), F->reuse_its, k, &F->saddle));
   F->saddle.fixed = F->fixedIS;
   F->saddle.metric = &F->metric;
   F->setupcalled  = PETSC_TRUE;

@@ -1,15 +1,16 @@
 /* -flow_type gd: Sobolev (H^2 or L2) gradient descent, soliman2021 Eq. GD: the CGD step without the conformal
    constraint (area / volume / point constraints still allowed). */
-#include "../../willmore_impl.h"
+#include "../cgd/cgd_impl.h"
 
 static PetscErrorCode SetUpGD(CSWillmoreFlow F)
 {
   PetscFunctionBeginUser;
   PetscCheck(!F->conformal, F->comm, PETSC_ERR_ARG_INCOMP, "-%stype gd is unconstrained Sobolev gradient descent: -%sconformal true is not allowed (use cgd or pgd)", F->prefix, F->prefix);
+  PetscCall(CSWFSetUpCGD(F));
   PetscFunctionReturn(0);
 }
 
-/* The CGD step and its step control, without the conformal constraint. */
+/* The CGD step and its step control (and CGD's data, cgd_impl.h), without the conformal constraint. */
 PetscErrorCode CSWillmoreFlowCreate_GD(CSWillmoreFlow F)
 {
   PetscFunctionBeginUser;

@@ -255,7 +255,7 @@ static PetscErrorCode SetUpScaling(CSWillmoreFlow F, CSTriangleField *d)
   d->sc = A / (4 * PETSC_PI);
   if (F->tmu_max <= 0) F->tmu_max = F->tmu_grow > 0 ? 1e3 * F->tmax : PETSC_MAX_REAL;
   F->tmu /= d->sc;
-  F->tmu_final /= d->sc;
+  CSWFDualStepScale(&d->ds, d->sc);
   if (F->tmu_max < PETSC_MAX_REAL) F->tmu_max /= d->sc;
   F->tmu_ratio_max = 1e3 * F->tmu / F->t;
   PetscCall(CSEnergyValue(F->energy, F->x0, &E0));
@@ -287,9 +287,7 @@ static PetscErrorCode SetUpTriangleField(CSWillmoreFlow F)
   PetscFunctionBeginUser;
   PetscCheck(m->topo.boundary_loops == 0, F->comm, PETSC_ERR_SUP, "-%stype trianglefield: the mesh %s has %" PetscInt_FMT " boundary loop(s); triangle-field flows are built for closed surfaces", F->prefix, m->name, m->topo.boundary_loops);
   PetscCall(CheckOptions(F));
-  /* -flow_t_mu_final (cgd.c): armed once the rows are enforced; a continuation's stages end at small EL residuals */
-  F->tmu_final_from = d->istart;
-  PetscCheck(F->tmu_final == 0 || d->wdecay == 1, F->comm, PETSC_ERR_SUP, "-%st_mu_final with -%sspin_weight_decay %g: the switch would fire at the end of the first stage of the continuation; use one or the other", F->prefix, F->prefix, (double)d->wdecay);
+  d->ds.final_from = d->istart; /* -flow_t_mu_final (cgd.c): armed once the rows are enforced (the relaxed phase before) */
   d->noconf    = (PetscBool)!F->conformal; /* unconstrained W~ (Fig. 8): integrability rows only */
   F->conformal = PETSC_TRUE;               /* the multiplier block holds the integrability rows either way */
   PetscCall(CSLensCreateHalfedgeDM(m, 1, &d->dmH1));
@@ -472,6 +470,8 @@ PetscErrorCode CSWillmoreFlowCreate_TriangleField(CSWillmoreFlow F)
   F->ops.accept        = Accept;
   F->ops.grow          = CSWFGrowCGD;
   F->ops.shrink        = CSWFShrinkCGD;
+  F->ops.get_switch    = CSWFDualStepGetSwitch;
+  F->ops.set_switch    = CSWFDualStepSetSwitch;
   /* the predictive step model was fitted on the vertex kinds; on triangle fields it fell behind (Morin 24 x 12, 7
      iterations: W 165.59 against 150.73 halving; Fig. 8's spiky sphere did not reach 1 % of the round icosphere's W
      in 40), so halving stays this kind's default until the model knows the integrability rows */
@@ -485,6 +485,7 @@ PetscErrorCode CSWillmoreFlowCreate_TriangleField(CSWillmoreFlow F)
   F->ops.setfromoptions = CSTFSetFromOptions;
   F->ops.setup         = CSTFCheckOptions;
   F->ops.view          = CSTFView;
+  CSWFDualStepInitialize(&d->ds);
   d->wint              = 1e-4;
   d->restore_near      = 0.5;
   d->init              = CS_TF_INIT_DF;

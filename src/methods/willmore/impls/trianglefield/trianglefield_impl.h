@@ -1,7 +1,7 @@
 /* Private to trianglefield*.c: the data of the triangle-field kind (soliman2021 Algorithm 2). */
 #ifndef CS_TRIANGLEFIELD_IMPL_H
 #define CS_TRIANGLEFIELD_IMPL_H
-#include "../../willmore_impl.h"
+#include "../cgd/cgd_impl.h"
 #include "cs_operators_lens.h"
 #include "cs_operators_spinor.h"
 #include "cs_linalg.h"
@@ -10,6 +10,7 @@ typedef enum { CS_TF_INIT_DF, CS_TF_INIT_RANDOM, CS_TF_INIT_RANDOM_SPINOR, CS_TF
 PETSC_INTERN const char *const CSTriangleFieldInits[];
 
 typedef struct {
+  CSWFDualStep ds;          /* first: CGD's dual step (-t_mu_final), found there by CGD's grow/shrink (cgd_impl.h) */
   CSTriangleFieldInit init; /* -flow_init df | random | random_spinor | smooth */
   PetscInt  modes;         /* -flow_init_modes: plane waves of -flow_init smooth */
   PetscInt  seed;          /* -flow_seed */

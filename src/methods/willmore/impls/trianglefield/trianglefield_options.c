@@ -39,6 +39,7 @@ PetscErrorCode CSTFSetFromOptions(CSWillmoreFlow F, PetscOptionItems *PetscOptio
      (CSTFEvaluate): opt-in for this kind, since a change of class (Fig. 8's spiky sphere to the round class)
      squeezes on purpose */
   if (!F->max_area_ratio_set) F->max_area_ratio = 0;
+  PetscCall(CSWFDualStepSetFromOptions(F, &d->ds, PetscOptionsObject)); /* CGD's -t_mu_final (cgd_impl.h) */
   PetscOptionsHeadBegin(PetscOptionsObject, "Triangle-field flow (soliman2021 Algorithm 2)");
   PetscCall(FieldOptions(F, d, PetscOptionsObject));
   PetscOptionsHeadEnd();
@@ -53,8 +54,11 @@ PetscErrorCode CSTFCheckOptions(CSWillmoreFlow F)
   CSTriangleField *d = (CSTriangleField *)F->data;
   const char      *p = F->prefix;
   PetscFunctionBeginUser;
+  PetscCall(CSWFDualStepCheck(F, &d->ds));
   PetscCall(CSTFScheduleCheck(F, d));
   PetscCall(CSTFContinuationCheck(F, d));
+  /* -flow_t_mu_final is armed once the rows are enforced (SetUp); a continuation's stages end at small EL residuals */
+  PetscCheck(d->ds.final == 0 || d->wdecay == 1, F->comm, PETSC_ERR_SUP, "-%st_mu_final with -%sspin_weight_decay %g: the switch would fire at the end of the first stage of the continuation; use one or the other", p, p, (double)d->wdecay);
   PetscCheck(d->restore_near >= 0 && !PetscIsInfOrNanReal(d->restore_near), F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%srestore_near_ceiling %g: must be >= 0", p, (double)d->restore_near);
   PetscCheck(d->wint > 0 && !PetscIsInfOrNanReal(d->wint), F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sintegrability_weight %g: must be > 0", p, (double)d->wint);
   PetscCheck(d->mshift >= 0 && !PetscIsInfOrNanReal(d->mshift), F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sspinor_metric_shift %g: must be >= 0", p, (double)d->mshift);
@@ -79,5 +83,6 @@ PetscErrorCode CSTFView(CSWillmoreFlow F, PetscViewer viewer)
   PetscCall(PetscViewerASCIIPrintf(viewer, "triangle field: variables %s, start %s (seed %" PetscInt_FMT ", amplitude %g), %" PetscInt_FMT " period rows, conformal rows %s\n", CSTriangleFieldVariables[d->spinor ? 1 : 0], CSTriangleFieldInits[d->init], d->seed, (double)d->amp, 3 * d->nforms, d->noconf ? "off" : "on"));
   PetscCall(PetscViewerASCIIPrintf(viewer, "integrability weight %g from iteration %" PetscInt_FMT " (%g before), spin weight %g (decay %g), restore near %g vmax, immersion tol %g, max area ratio %g\n", (double)d->wint, d->istart, (double)d->wrelax, (double)d->wspin, (double)d->wdecay, (double)d->restore_near, (double)d->immersion_tol, (double)F->max_area_ratio));
   PetscCall(PetscViewerASCIIPopTab(viewer));
+  PetscCall(CSWFDualStepView(F, &d->ds, viewer));
   PetscFunctionReturn(0);
 }
