@@ -73,7 +73,7 @@ void CSWFDualStepScale(CSWFDualStep *ds, PetscReal sc)
 PetscErrorCode CSWFDualStepView(CSWillmoreFlow F, CSWFDualStep *ds, PetscViewer viewer)
 {
   PetscFunctionBeginUser;
-  if (ds->final > 0) PetscCall(PetscViewerASCIIPrintf(viewer, "  dual step: t_mu fixed at max(t_mu, %g) once EL < %g (from iteration %" PetscInt_FMT ")%s\n", (double)ds->final, (double)ds->final_el, ds->final_from, ds->final_on ? ", switched on" : ""));
+  if (ds->final > 0) PetscCall(PetscViewerASCIIPrintf(viewer, "  dual step: t_mu fixed at max(t_mu, %g) once EL < %g (from iteration %" PetscInt_FMT ")\n", (double)ds->final, (double)ds->final_el, ds->final_from));
   PetscFunctionReturn(0);
 }
 
@@ -166,7 +166,7 @@ static PetscErrorCode ViewCGD(CSWillmoreFlow F, PetscViewer viewer)
   CSWF_CGD *cgd = (CSWF_CGD *)F->data;
   PetscFunctionBeginUser;
   PetscCall(CSWFDualStepView(F, &cgd->ds, viewer));
-  if (cgd->ls_every > 0) PetscCall(PetscViewerASCIIPrintf(viewer, "  least-squares multipliers every %" PetscInt_FMT " iterations (t_mu %g), %" PetscInt_FMT " made\n", cgd->ls_every, (double)cgd->ls_tmu, cgd->ls_count));
+  if (cgd->ls_every > 0) PetscCall(PetscViewerASCIIPrintf(viewer, "  least-squares multipliers every %" PetscInt_FMT " iterations (t_mu %g)\n", cgd->ls_every, (double)cgd->ls_tmu));
   PetscFunctionReturn(0);
 }
 
