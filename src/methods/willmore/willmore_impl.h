@@ -250,6 +250,13 @@ struct _p_CSWillmoreFlow {
   Vec                   last_x;               /* the last state's variables once the best replaced them (written beside -o) */
 };
 
+/* A kind with its own variables (ops.setup_problem: trianglefield's triangle field), not vertex positions: the shared
+   code asks this capability, never the kind's name. */
+static inline PetscBool CSWFOwnVariables(CSWillmoreFlow F)
+{
+  return F->ops.setup_problem ? PETSC_TRUE : PETSC_FALSE;
+}
+
 /* the residual -flow_rtol tests (-flow_el_norm) */
 static inline PetscReal CSWFStopResidual(CSWillmoreFlow F)
 {

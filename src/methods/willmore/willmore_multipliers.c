@@ -13,7 +13,7 @@ PetscErrorCode CSWillmoreFlowGetConformalMultiplier(CSWillmoreFlow F, Vec q, Vec
   Vec mu = F->mu, muE;
   PetscFunctionBeginUser;
   PetscCheck(F->setupcalled && F->started, F->comm, PETSC_ERR_ORDER, "CSWillmoreFlowGetConformalMultiplier before the first CSWillmoreFlowStep");
-  PetscCheck(!F->ops.setup_problem, F->comm, PETSC_ERR_SUP, "-%stype %s: the multipliers live on halfedges; the vertex force and edge q are not defined", F->prefix, F->type);
+  PetscCheck(!CSWFOwnVariables(F), F->comm, PETSC_ERR_SUP, "-%stype %s: the multipliers live on halfedges; the vertex force and edge q are not defined", F->prefix, F->type);
   if (!F->conformal) {
     if (q) PetscCall(VecSet(q, 0));
     if (force) PetscCall(VecSet(force, 0));
@@ -38,7 +38,7 @@ PetscErrorCode CSWillmoreFlowGetResidual(CSWillmoreFlow F, Vec *r)
 {
   PetscFunctionBeginUser;
   PetscCheck(F->setupcalled && F->started, F->comm, PETSC_ERR_ORDER, "CSWillmoreFlowGetResidual before the first CSWillmoreFlowStep");
-  PetscCheck(!F->ops.setup_problem, F->comm, PETSC_ERR_SUP, "-%stype %s: the residual lives on halfedges, not vertices", F->prefix, F->type);
+  PetscCheck(!CSWFOwnVariables(F), F->comm, PETSC_ERR_SUP, "-%stype %s: the residual lives on halfedges, not vertices", F->prefix, F->type);
   *r = F->r;
   PetscFunctionReturn(0);
 }

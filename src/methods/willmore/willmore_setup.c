@@ -200,7 +200,7 @@ static PetscErrorCode SetUpPositions(CSWillmoreFlow F)
 static PetscErrorCode CheckMemory(CSWillmoreFlow F)
 {
   char   what[256];
-  size_t per = F->ops.setup_problem ? CS_TF_FLOW_BYTES_PER_VERTEX : CS_FLOW_BYTES_PER_VERTEX;
+  size_t per = CSWFOwnVariables(F) ? CS_TF_FLOW_BYTES_PER_VERTEX : CS_FLOW_BYTES_PER_VERTEX;
   PetscFunctionBeginUser;
   PetscCall(PetscSNPrintf(what, sizeof(what), "-%stype %s on %s: %" PetscInt_FMT " vertices at about %d KB per vertex for the run", F->prefix, F->type, F->mesh->name, F->mesh->Nv, (int)(per / 1000)));
   CSRootCall(F->comm, CSCheckAllocation(what, (PetscInt64)F->mesh->Nv, per));
@@ -216,7 +216,7 @@ PetscErrorCode CSWillmoreFlowSetUp(CSWillmoreFlow F)
   if (F->setupcalled) PetscFunctionReturn(0);
   PetscCall(PetscTime(&F->t0));
   PetscCall(CheckMemory(F));
-  PetscCheck(!F->nadded || !F->ops.setup_problem, F->comm, PETSC_ERR_SUP, "CSWillmoreFlowAddConstraint(%s): the registered constraints act on vertex positions, not on the variables of -%stype %s", F->nadded ? F->added[0] : "", F->prefix, F->type);
+  PetscCheck(!F->nadded || !CSWFOwnVariables(F), F->comm, PETSC_ERR_SUP, "CSWillmoreFlowAddConstraint(%s): the registered constraints act on vertex positions, not on the variables of -%stype %s", F->nadded ? F->added[0] : "", F->prefix, F->type);
   if (F->ops.setup_problem) { /* a kind with its own variables (trianglefield) */
     PetscCall((*F->ops.setup_problem)(F));
     F->setupcalled = PETSC_TRUE;

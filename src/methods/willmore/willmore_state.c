@@ -21,7 +21,7 @@ PetscErrorCode CSWillmoreFlowGetStateSize(CSWillmoreFlow F, PetscInt *nreal)
 static PetscErrorCode CheckStorable(CSWillmoreFlow F)
 {
   PetscFunctionBeginUser;
-  PetscCheck(!F->ops.setup_problem || F->ops.get_state, F->comm, PETSC_ERR_SUP, "-checkpoint/-resume with -%stype %s: its variables are not stored in checkpoints", F->prefix, F->type);
+  PetscCheck(!CSWFOwnVariables(F) || F->ops.get_state, F->comm, PETSC_ERR_SUP, "-checkpoint/-resume with -%stype %s: its variables are not stored in checkpoints", F->prefix, F->type);
   PetscCheck(!F->normals, F->comm, PETSC_ERR_SUP, "-checkpoint/-resume with -%sboundary normals: the multipliers of the normal constraint are not stored in checkpoints", F->prefix);
   if (F->ops.storable) PetscCall((*F->ops.storable)(F)); /* a kind whose state is not stored refuses (ALM) */
   PetscFunctionReturn(0);

@@ -152,7 +152,7 @@ PetscErrorCode CSWFStepModelGrow(CSWillmoreFlow F, PetscReal *factor)
   PetscCall(CSWFViolation(F, F->ct, F->cxt, &conf, &glob));
   v       = PetscMax(conf, glob);
   *factor = GrowthFactor(F, v, d, p);
-  if (*factor == 0 && r->q > STEP_Q_WEAK && v > 0.1 * F->vmax && F->restore_stalled && !F->restore_failed && !F->ops.setup_problem && (F->conformal || F->k)) {
+  if (*factor == 0 && r->q > STEP_Q_WEAK && v > 0.1 * F->vmax && F->restore_stalled && !F->restore_failed && !CSWFOwnVariables(F) && (F->conformal || F->k)) {
     PetscInt its = 0;
     PetscCall(CSWFRestoreTo(F, v, 1e-2 * F->vmax, &its)); /* positions only: not a kind with its own variables */
     F->kspits_total += its;

@@ -143,7 +143,7 @@ static PetscErrorCode ViewALM(CSWillmoreFlow F, PetscViewer viewer)
 {
   ALM *alm = (ALM *)F->data;
   PetscFunctionBeginUser;
-  PetscCall(PetscViewerASCIIPrintf(viewer, "  augmented Lagrangian: rho %g (growth %g, at most %g), %" PetscInt_FMT " steps per inner loop, metric %s, %" PetscInt_FMT " multiplier updates\n", (double)F->rho, (double)alm->grow, (double)alm->rho_max, alm->inner_it, CSALMMetricTypes[alm->metric], alm->updates));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "  augmented Lagrangian: rho %g (growth %g, at most %g), %" PetscInt_FMT " steps per inner loop, metric %s\n", (double)F->rho, (double)alm->grow, (double)alm->rho_max, alm->inner_it, CSALMMetricTypes[alm->metric]));
   PetscFunctionReturn(0);
 }
 
