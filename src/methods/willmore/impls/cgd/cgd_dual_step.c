@@ -31,19 +31,24 @@ void CSWFDualStepInitialize(CSWFDualStep *ds)
   ds->final_from = 0;
 }
 
+static PetscErrorCode CheckValues(CSWillmoreFlow F, const CSWFDualStep *ds)
+{
+  const CSOptionCheck checks[] = {
+    {"t_mu_final", ds->final, ds->final >= 0, "use 0 (off) or a positive dual step"},
+    {"t_mu_final_el", ds->final_el, ds->final_el > 0, "must be > 0"},
+  };
+  PetscFunctionBeginUser;
+  PetscCall(CSCheckOptionValues(F->comm, F->prefix, sizeof(checks) / sizeof(checks[0]), checks));
+  PetscFunctionReturn(0);
+}
+
 /* -t_mu_final, -t_mu_final_el (inside the flow's options block), in range */
 PetscErrorCode CSWFDualStepSetFromOptions(CSWillmoreFlow F, CSWFDualStep *ds, PetscOptionItems *PetscOptionsObject)
 {
   PetscFunctionBeginUser;
   PetscCall(CSOptionsReal("-t_mu_final", "CGD: once an iterate's EL residual is below -t_mu_final_el, the dual step t_mu is max(t_mu, this), fixed (0: off; in the units of t_mu; docs/triangle_fields.md, \"The class floor\")", NULL, ds->final, &ds->final, NULL));
   PetscCall(CSOptionsReal("-t_mu_final_el", "CGD: the EL residual below which -t_mu_final takes over", NULL, ds->final_el, &ds->final_el, NULL));
-  { /* after the reads: the initialiser takes the values where it is declared */
-    const CSOptionCheck checks[] = {
-      {"t_mu_final", ds->final, ds->final >= 0, "use 0 (off) or a positive dual step"},
-      {"t_mu_final_el", ds->final_el, ds->final_el > 0, "must be > 0"},
-    };
-    PetscCall(CSCheckOptionValues(F->comm, F->prefix, sizeof(checks) / sizeof(checks[0]), checks));
-  }
+  PetscCall(CheckValues(F, ds));
   PetscFunctionReturn(0);
 }
 

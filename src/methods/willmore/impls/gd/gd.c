@@ -15,9 +15,9 @@ PetscErrorCode CSWillmoreFlowCreate_GD(CSWillmoreFlow F)
 {
   PetscFunctionBeginUser;
   PetscCall(CSWillmoreFlowCreate_CGD(F));
-  F->ops.id        = 2;
-  F->ops.conformal = PETSC_FALSE;
-  F->ops.setup     = SetUpGD;
+  F->ops.id         = 2;
+  F->ops.conformal  = PETSC_FALSE;
+  F->ops.setup      = SetUpGD;
   F->ops.max_step   = 0.5; /* the geometric step control and the fold guard (willmore_guards.c) */
   F->ops.fold_guard = PETSC_TRUE;
   PetscFunctionReturn(0);

@@ -447,19 +447,19 @@ PetscErrorCode CSWillmoreFlowCreate_Newton(CSWillmoreFlow F)
   F->data               = d;
   F->ops.setfromoptions = SetFromOptionsNewton;
   F->ops.view           = ViewNewton;
-  F->ops.id         = 3;
-  F->ops.conformal  = PETSC_FALSE;
-  F->ops.setup      = SetUpNewton;
-  F->ops.trial      = TrialNewton;
-  F->ops.filter     = CSWFFilterEnergy;
-  F->ops.accept     = AcceptNewton;
-  F->ops.grow       = GrowNewton;
-  F->ops.shrink     = ShrinkNewton;
-  F->ops.residual   = NewtonResidual;
-  F->ops.destroy    = DestroyNewton;
-  F->ops.max_step   = 2; /* mean edge lengths per step (willmore_guards.c) */
-  F->ops.fold_guard = PETSC_TRUE;
-  F->ops.own_metric = PETSC_TRUE;
-  F->tmax           = 1; /* the full Newton step */
+  F->ops.id             = 3;
+  F->ops.conformal      = PETSC_FALSE;
+  F->ops.setup          = SetUpNewton;
+  F->ops.trial          = TrialNewton;
+  F->ops.filter         = CSWFFilterEnergy;
+  F->ops.accept         = AcceptNewton;
+  F->ops.grow           = GrowNewton;
+  F->ops.shrink         = ShrinkNewton;
+  F->ops.residual       = NewtonResidual;
+  F->ops.destroy        = DestroyNewton;
+  F->ops.max_step       = 2; /* mean edge lengths per step (willmore_guards.c) */
+  F->ops.fold_guard     = PETSC_TRUE;
+  F->ops.own_metric     = PETSC_TRUE;
+  F->tmax               = 1; /* the full Newton step */
   PetscFunctionReturn(0);
 }
