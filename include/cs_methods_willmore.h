@@ -87,10 +87,6 @@ typedef struct {
   PetscReal        el_first, el_min, energy_el_min; /* the EL residual of the first state, the smallest of the run and W there */
   PetscInt         it_el_min;           /* ... at this iteration (how near a critical point the path passed) */
   CSWillmoreFlowDegeneration degeneration; /* set when the resolution guard stopped the flow */
-  PetscReal        integrability_violation; /* trianglefield: max of |d1 omega|, face closure, |<<Y_i|omega>>| (-1: other kinds) */
-  PetscReal        immersion_tol;       /* trianglefield: -o writes the reconstruction only at integrability_violation <= this */
-  PetscReal        spin_energy;         /* trianglefield: E_tau(psi(omega)) (App. C.3), unweighted */
-  PetscInt         pinch_edges;         /* trianglefield: edges with |psi_jil - tau_ij psi_ijk| >= sqrt 2 (App. C.1; -1: other kinds) */
   PetscInt         k;                   /* global constraint values */
   const PetscReal *constraint_values;
   /* -flow_keep_best: the state of smallest el_residual_scaled with the violation <= ctol seen in the run (best_it -1:
@@ -101,9 +97,21 @@ typedef struct {
   PetscInt         last_it;             /* the iteration of the last state (== it unless best_used) */
   PetscReal        last_energy, last_el_residual_scaled;
 } CSWillmoreFlowInfo;
-/* whether the state of info is an immersion -o may write: positions (vertex kinds), or a triangle field integrable to
-   -flow_immersion_tol (its Poisson reconstruction is an immersion of it only then) */
-static inline PetscBool CSWillmoreFlowInfoIsImmersion(const CSWillmoreFlowInfo *i)
+
+/* The triangle field's own state (-flow_type trianglefield, soliman2021 Algorithm 2), after the last evaluation:
+   the kind's part of CSWillmoreFlowInfo. */
+typedef struct {
+  PetscReal integrability_violation; /* max of |d1 omega|, face closure, |<<Y_i|omega>>| (-1: not evaluated yet) */
+  PetscReal immersion_tol;           /* -flow_immersion_tol: -o writes the reconstruction only at a violation <= this */
+  PetscReal spin_energy;             /* E_tau(psi(omega)) (App. C.3), unweighted */
+  PetscInt  pinch_edges;             /* edges with |psi_jil - tau_ij psi_ijk| >= sqrt 2 (App. C.1; -1: not evaluated yet) */
+} CSWillmoreFlowTriangleFieldInfo;
+/* As KSPGMRESGetRestart, for the trianglefield kind only: with is NULL, another kind is an error; else *is says
+   whether flow is of this kind (info is then filled, else set to -1 throughout). */
+PETSC_EXTERN PetscErrorCode CSWillmoreFlowTriangleFieldGetInfo(CSWillmoreFlow flow, CSWillmoreFlowTriangleFieldInfo *info, PetscBool *is);
+/* Whether the state -o would write is an immersion: the Poisson reconstruction of a triangle field integrable to
+   -flow_immersion_tol (an immersion of it only then), or positions (the info of another kind: every field -1). */
+static inline PetscBool CSWillmoreFlowTriangleFieldInfoIsImmersion(const CSWillmoreFlowTriangleFieldInfo *i)
 {
   return (PetscBool)(i->integrability_violation < 0 || i->integrability_violation <= i->immersion_tol);
 }

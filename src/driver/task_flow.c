@@ -9,15 +9,17 @@
 
 /* After an error: -o only for a state that is a finite immersion (a triangle field's reconstruction is one only when
    the field is integrable, willmore_report.c CheckImmersion); the summary is written either way. */
-static PetscErrorCode KeepOnlyAnImmersion(CSMesh mesh, CSOutput *out, Vec x, const CSWillmoreFlowInfo *info)
+static PetscErrorCode KeepOnlyAnImmersion(CSWillmoreFlow flow, CSMesh mesh, CSOutput *out, Vec x)
 {
-  PetscReal big;
-  PetscBool finite, immersion;
+  CSWillmoreFlowTriangleFieldInfo tf;
+  PetscReal                       big;
+  PetscBool                       finite, immersion, is;
   PetscFunctionBeginUser;
   if (!out->has_out) PetscFunctionReturn(0);
   PetscCall(VecNorm(x, NORM_INFINITY, &big));
+  PetscCall(CSWillmoreFlowTriangleFieldGetInfo(flow, &tf, &is)); /* another kind: tf says immersion */
   finite    = (PetscBool)!PetscIsInfOrNanReal(big);
-  immersion = CSWillmoreFlowInfoIsImmersion(info);
+  immersion = CSWillmoreFlowTriangleFieldInfoIsImmersion(&tf);
   if (finite && immersion) PetscFunctionReturn(0);
   PetscCall(PetscPrintf(mesh->comm, "flow: -o %s is not written: the last state %s\n", out->out, finite ? "is a triangle field that is not integrable (-flow_immersion_tol)" : "is not finite"));
   out->has_out = PETSC_FALSE;
@@ -39,7 +41,7 @@ static PetscErrorCode SolveOrSave(CSWillmoreFlow flow, CSWillmoreViewer *wv, CSO
   PetscCall(CSWillmoreFlowGetSolution(flow, &x));
   PetscCall(CSWillmoreFlowGetMesh(flow, &mesh));
   PetscCall(CSWillmoreFlowViewerFinish(flow, wv));
-  PetscCall(KeepOnlyAnImmersion(mesh, out, x, &info));
+  PetscCall(KeepOnlyAnImmersion(flow, mesh, out, x));
   PetscCall(CSOutputSaveAfterError(out, mesh, x, info.it, ierr, msg, sizeof(msg)));
   SETERRQ(mesh->comm, ierr, "%s", msg);
 }

@@ -4,6 +4,20 @@
 
 PETSC_INTERN PetscErrorCode CSWillmoreFlowCheckpointFinal(CSWillmoreFlow flow, CSOutput *out);
 
+/* -flow_type trianglefield: its own keys (none for the other kinds) */
+static PetscErrorCode TriangleFieldKeys(CSWillmoreFlow flow, CSOutput *out)
+{
+  CSWillmoreFlowTriangleFieldInfo tf;
+  PetscBool                       is;
+  PetscFunctionBeginUser;
+  PetscCall(CSWillmoreFlowTriangleFieldGetInfo(flow, &tf, &is));
+  if (!is) PetscFunctionReturn(0);
+  if (tf.integrability_violation >= 0) PetscCall(CSJSONAddReal(out->json, "integrability_violation", tf.integrability_violation));
+  if (tf.pinch_edges >= 0) PetscCall(CSJSONAddInt(out->json, "pinch_edges", tf.pinch_edges));
+  if (tf.pinch_edges >= 0) PetscCall(CSJSONAddReal(out->json, "spin_energy", tf.spin_energy));
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode SummaryKeys(CSWillmoreFlow flow, CSOutput *out, const CSWillmoreFlowInfo *i)
 {
   CSWillmoreFlowType            type;
@@ -50,9 +64,7 @@ static PetscErrorCode SummaryKeys(CSWillmoreFlow flow, CSOutput *out, const CSWi
   PetscCall(CSJSONAddInt(out->json, "linear_solves", i->linear_solves)); /* steps, corrections, projections, bordering */
   PetscCall(CSJSONAddReal(out->json, "t_final", i->t));
   PetscCall(CSJSONAddReal(out->json, "seconds_per_iteration", i->it ? i->seconds / i->it : 0));
-  if (i->integrability_violation >= 0) PetscCall(CSJSONAddReal(out->json, "integrability_violation", i->integrability_violation));
-  if (i->pinch_edges >= 0) PetscCall(CSJSONAddInt(out->json, "pinch_edges", i->pinch_edges));
-  if (i->pinch_edges >= 0) PetscCall(CSJSONAddReal(out->json, "spin_energy", i->spin_energy));
+  PetscCall(TriangleFieldKeys(flow, out)); /* before constraint_values, as when they were CSWillmoreFlowInfo's */
   if (i->k) PetscCall(CSJSONAddRealArray(out->json, "constraint_values", i->k, i->constraint_values));
   PetscFunctionReturn(0);
 }
@@ -75,16 +87,19 @@ static PetscErrorCode PathLine(CSMesh mesh, const CSWillmoreFlowInfo *i)
    omega only when omega is integrable: above -flow_immersion_tol (default 1e-6) of integrability violation the
    summary is written and the mesh is refused with one line (issue 15: a non-integrable omega where an immersion is
    required). */
-static PetscErrorCode CheckImmersion(CSWillmoreFlow flow, CSOutput *out, CSMesh mesh, const CSWillmoreFlowInfo *i)
+static PetscErrorCode CheckImmersion(CSWillmoreFlow flow, CSOutput *out, CSMesh mesh)
 {
-  const PetscReal tol = i->immersion_tol;
-  const char     *prefix;
+  CSWillmoreFlowTriangleFieldInfo tf;
+  const char                     *prefix;
+  PetscBool                       is; /* another kind: tf says immersion */
   PetscFunctionBeginUser;
-  if (!out->has_out || CSWillmoreFlowInfoIsImmersion(i)) PetscFunctionReturn(0);
+  if (!out->has_out) PetscFunctionReturn(0);
+  PetscCall(CSWillmoreFlowTriangleFieldGetInfo(flow, &tf, &is));
+  if (CSWillmoreFlowTriangleFieldInfoIsImmersion(&tf)) PetscFunctionReturn(0);
   PetscCall(CSWillmoreFlowGetOptionsPrefix(flow, &prefix));
   PetscCall(CSOutputAddRunFacts(out, mesh->comm));
   PetscCall(CSOutputWriteSummary(out, mesh->comm));
-  SETERRQ(mesh->comm, PETSC_ERR_NOT_CONVERGED, "-o %s: the triangle field is not integrable (integrability violation %.2e > -%simmersion_tol %.1e), so its Poisson reconstruction is not an immersion of it; the mesh was not written (run the flow to convergence)", out->out, (double)i->integrability_violation, prefix ? prefix : "", (double)tol);
+  SETERRQ(mesh->comm, PETSC_ERR_NOT_CONVERGED, "-o %s: the triangle field is not integrable (integrability violation %.2e > -%simmersion_tol %.1e), so its Poisson reconstruction is not an immersion of it; the mesh was not written (run the flow to convergence)", out->out, (double)tf.integrability_violation, prefix ? prefix : "", (double)tf.immersion_tol);
 }
 /* -flow_keep_best put the kept best state into -o; the last state goes beside it as <stem>_last<ext> (issue 35: nothing
    computed is thrown away; a guard stop's best can be an early state of small residual and the last one the state of
@@ -128,7 +143,7 @@ PetscErrorCode CSWillmoreFlowReport(CSWillmoreFlow flow, CSOutput *out)
   if (!CSWillmoreFlowReasonConverged(reason)) PetscCall(PathLine(mesh, &last));
   PetscCall(SummaryKeys(flow, out, &i));
   PetscCall(CSOutputAddMeshFacts(out, mesh, x, x0));
-  PetscCall(CheckImmersion(flow, out, mesh, &i));
+  PetscCall(CheckImmersion(flow, out, mesh));
   PetscCall(WriteLastState(flow, out, mesh));
   PetscCall(CSOutputFinish(out, mesh, x));
   PetscFunctionReturn(0);

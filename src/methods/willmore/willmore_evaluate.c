@@ -82,24 +82,24 @@ PetscErrorCode CSWFMerit(CSWillmoreFlow F, PetscReal E, Vec c, const PetscReal c
   PetscFunctionReturn(0);
 }
 
-/* r = g + X^T mu + sum_j nu_j rows_j (the Euler-Lagrange residual), fixed entries zero. ALM: with its
-   first-order estimates mu + rho c, nu_j + rho xi_j / g_j (alm.c), so r = grad L_A. */
-PetscErrorCode CSWFResidual(CSWillmoreFlow F, PetscReal *el)
+/* r = g + X^T mu + sum_j nu_j rows_j (the Euler-Lagrange residual, soliman2021 Eq. 7) with the given multipliers,
+   fixed entries zero (ALM passes its first-order estimates: r = grad L_A, impls/alm/alm.c). */
+PetscErrorCode CSWFResidualWith(CSWillmoreFlow F, Vec mu, const PetscReal nu[], PetscReal *el)
 {
-  Vec        mu = F->mu;
-  PetscReal *nu = F->nu;
   PetscFunctionBeginUser;
-  if (F->ops.penalty) {
-    if (F->k) PetscCall(CSWFGlobalWeights(F));
-    PetscCall(CSWFMultiplierEstimate(F, F->c, F->cx));
-    mu = F->mun;
-    nu = F->nun;
-  }
   PetscCall(VecCopy(F->g, F->r));
   if (F->conformal) PetscCall(MatMultTransposeAdd(F->Xc, mu, F->r, F->r));
   for (PetscInt j = 0; j < F->k; j++) PetscCall(VecAXPY(F->r, nu[j], F->rows[j]));
   PetscCall(CSWFZeroFixed(F, F->r));
   PetscCall(VecNorm(F->r, NORM_2, el));
+  PetscFunctionReturn(0);
+}
+
+/* the residual with the multipliers mu, nu of x */
+PetscErrorCode CSWFResidual(CSWillmoreFlow F, PetscReal *el)
+{
+  PetscFunctionBeginUser;
+  PetscCall(CSWFResidualWith(F, F->mu, F->nu, el));
   PetscFunctionReturn(0);
 }
 

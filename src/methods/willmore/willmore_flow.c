@@ -58,8 +58,6 @@ static void SetDefaults(CSWillmoreFlow F)
 {
   F->t               = 1.0;
   F->tmu             = 0; /* 0: 1e3 t */
-  F->tmu_final       = 0; /* off */
-  F->tmu_final_el    = 1e-3;
   F->tmax            = 2.0;
   F->grow            = 2.0;
   F->rtol            = 5e-7; /* of el_residual_scaled: the median unit-scale input has el_residual_scaled ~ 0.3 el_residual, and 5e-7 stops the converged tests and golden cases of the old 1e-6 at the same iteration or within a few (docs/willmore_flow.md "Stopping") */
@@ -89,8 +87,6 @@ static void SetDefaults(CSWillmoreFlow F)
   F->proj_max_it     = 20;
   F->soc_max_it      = 2;
   F->proj_tmu        = 1e6;
-  F->mu_ls_every     = 0;
-  F->mu_ls_tmu       = 1e12;
   F->step_control    = PETSC_TRUE;
   F->step_model      = CS_WF_STEP_PREDICTIVE;
   F->vmax            = 1e-2;
@@ -99,18 +95,9 @@ static void SetDefaults(CSWillmoreFlow F)
   F->project_at_stop = PETSC_TRUE;
   F->fin_q           = 3; /* measured at the guard's stop: smooth squeezes 1.15-2.4, eight_cgal's fins 4.9 and growing */
   F->reuse_its       = -1; /* the saddle solver's default */
-  F->alm_rho         = 10;
-  F->alm_grow        = 10;
-  F->alm_rho_max     = 1e8;
-  F->alm_inner_it    = 10;
-  F->alm_update      = -1;
-  F->alm_metric      = CS_ALM_METRIC_GAUSS_NEWTON; /* converges for moderate rho; plain (the paper's explicit baseline) does not (docs/alm.md) */
   F->metric_type     = CS_FLOW_METRIC_H2;
   F->boundary        = CS_FLOW_BOUNDARY_DIRICHLET;
   F->saddle_mat      = CS_SADDLE_MAT_NEST;
-  F->integ           = -1;
-  F->immersion_tol   = 1e-6;
-  F->pinch           = -1;
   F->viol_min        = -1; /* none evaluated yet */
 }
 
@@ -304,10 +291,6 @@ PetscErrorCode CSWillmoreFlowGetInfo(CSWillmoreFlow F, CSWillmoreFlowInfo *info)
   info->q_max                = F->qmax;
   info->degeneration         = F->degeneration;
   info->seconds              = now - F->t0;
-  info->integrability_violation = F->integ;
-  info->immersion_tol           = F->immersion_tol;
-  info->pinch_edges          = F->pinch;
-  info->spin_energy          = F->espin;
   info->k                    = F->k;
   info->constraint_values    = F->cx;
   PetscFunctionReturn(0);

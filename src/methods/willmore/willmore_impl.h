@@ -83,13 +83,13 @@ typedef struct {
                             part (1 - t t_mu s^2 / (lambda_H + t t_mu s^2)) of a violation the step's operator leaves */
 } CSWFTrialRecord;
 
-/* ---- the flow kind: a strategy struct (cgd.c, pgd.c, gd.c) ---- */
+/* ---- the flow kind: a strategy struct (impls/<kind>/: cgd, pgd, gd, newton, alm, fairing, trianglefield) ----
+   Its data live in F->data (created by CSWillmoreFlowCreate_<Kind>, freed by ops.destroy); no shared file tests a
+   kind's name: what differs between kinds is one of these slots (NULL: the shared default named beside it). */
 struct _CSWillmoreFlowOps {
   PetscInt  id;             /* stored in checkpoints (a resume must use the same kind) */
   PetscBool conformal;      /* default of -flow_conformal */
   PetscBool step_halving;   /* default of -flow_step_model is halving (trianglefield: the model fell behind, docs/willmore_flow.md) */
-  PetscBool projected;      /* PGD: the constraint set is kept by projection, not by the step's filter */
-  PetscBool penalty;        /* ALM: the constraints enter L_A as penalty terms; the saddle solve is the metric alone */
   PetscErrorCode (*setup)(CSWillmoreFlow);               /* checks of the options against the kind */
   PetscErrorCode (*start)(CSWillmoreFlow);               /* before the first iteration (not after a resume) */
   PetscErrorCode (*trial)(CSWillmoreFlow, PetscBool *);  /* the trial point xt of step t (false: rejected) */
@@ -98,7 +98,15 @@ struct _CSWillmoreFlowOps {
   PetscErrorCode (*grow)(CSWillmoreFlow);                /* step sizes after an accepted step */
   PetscErrorCode (*shrink)(CSWillmoreFlow);              /* step sizes after a rejected step */
   PetscErrorCode (*dual)(CSWillmoreFlow);                /* before the step, after its operators: a multiplier estimate (NULL: none) */
-  PetscErrorCode (*residual)(CSWillmoreFlow, PetscReal *); /* the stopping residual at x (NULL: el_residual) */
+  PetscErrorCode (*residual)(CSWillmoreFlow, PetscReal *); /* the stopping residual at x (NULL: CSWFResidual, el_residual) */
+  PetscErrorCode (*multipliers)(CSWillmoreFlow, Vec *);  /* the conformal multiplier reported at x (NULL: mu; ALM: its estimate) */
+  PetscErrorCode (*weights)(CSWillmoreFlow);             /* the metric of the conformal rows at x (NULL: I_Q, CSWFQuadDiffMetric) */
+  PetscErrorCode (*scale)(CSWillmoreFlow, PetscReal sc, PetscReal E0); /* size scaling of the kind's parameters (s^2 = sc, |E(input)| = E0) */
+  PetscErrorCode (*saddle_blocks)(CSWillmoreFlow, PetscBool *edges, PetscInt *k); /* blocks of the saddle solver
+                                                         (NULL: the conformal rows if on, and the k global rows) */
+  PetscErrorCode (*storable)(CSWillmoreFlow);            /* refuses -checkpoint/-resume when its state is not stored (NULL: stored) */
+  PetscErrorCode (*get_switch)(CSWillmoreFlow, PetscBool *); /* the kind's one stored switch, ck[8] of a checkpoint */
+  PetscErrorCode (*set_switch)(CSWillmoreFlow, PetscBool);   /* (CGD: -t_mu_final fired; NULL: none, 0 stored) */
   PetscErrorCode (*destroy)(CSWillmoreFlow);             /* the kind's own data (NULL: none) */
   PetscErrorCode (*setfromoptions)(CSWillmoreFlow, PetscOptionItems *); /* the kind's own options, read inside the
                                                          flow's options block after the shared ones (NULL: none) */
@@ -106,6 +114,7 @@ struct _CSWillmoreFlowOps {
   PetscReal max_step;       /* default of -flow_max_step (0: off) */
   PetscBool fold_guard;     /* default of -flow_fold_guard */
   PetscBool own_metric;     /* the kind updates the metric itself, when it needs it (newton) */
+  size_t    bytes_per_vertex; /* memory of a run per vertex, measured (0: the vertex kinds', willmore_setup.c CheckMemory) */
   /* A kind with its own variables (trianglefield: x is a triangle field, not positions) replaces the positions'
      pipeline: its set-up (variables, energy, constraints, vectors, saddle), the evaluation at x (E, g, c, X, r,
      violations), the step's operators (metric, I_Q, weights), the constraints (for the filter and the
@@ -181,6 +190,7 @@ struct _p_CSWillmoreFlow {
   Vec                   area0, areat; /* barycentric vertex areas of the input and of the current state */
   PetscReal             area0_total;  /* total area of the input */
   PetscReal             max_area_ratio;
+  PetscBool             max_area_ratio_set; /* given as an option (a kind may default to 0 otherwise: trianglefield) */
   PetscBool             project_at_stop; /* project the state the guard stopped at onto the constraints */
   PetscReal             fin_q;        /* q_max above which the guard reports fins rather than a smooth concentration */
   CSWillmoreFlowDegeneration degeneration;
@@ -193,16 +203,6 @@ struct _p_CSWillmoreFlow {
   PetscReal             proj_tmu;
   PetscReal             tmu_grow, tmu_max; /* own schedule of the dual step (0: t_mu follows t) */
   PetscReal             tmu_ratio_max;     /* following t: t_mu <= this * t (1e3 times the initial t_mu / t) */
-  PetscReal             tmu_final, tmu_final_el; /* -t_mu_final: a fixed dual step once el < tmu_final_el (cgd.c) */
-  PetscBool             tmu_final_on;
-  PetscInt              tmu_final_from;    /* the switch is armed from this iteration on (a kind's relaxed phase before) */
-  PetscInt              mu_ls_every, mu_ls_count; /* CGD: least-squares multiplier estimate every mu_ls_every its (cgd_multiplier_ls.c), estimates made */
-  PetscReal             mu_ls_tmu;         /* t_mu (with t = 1) of its projection and least-squares solve */
-  PetscReal             alm_rho, alm_grow, alm_rho_max; /* ALM penalty (relative to |E(input)|), its growth, ceiling */
-  PetscInt              alm_inner_it;      /* ALM: accepted steps per inner loop */
-  CSALMMetricType       alm_metric;        /* ALM: metric of the inner steps */
-  PetscInt              alm_inner, alm_update, alm_updates; /* ALM loop state: steps in this inner loop, iteration of the last update, updates */
-  PetscReal             alm_vlast;         /* ALM: violation at the last multiplier update */
 
   /* geometric step control and guards (gd, newton: docs/willmore_flow.md "Unconstrained descent") */
   PetscReal             max_step;      /* reject a trial step moving a vertex by more than this times the mean edge length */
@@ -220,10 +220,6 @@ struct _p_CSWillmoreFlow {
   PetscBool             resumed, started;
   PetscLogDouble        t0;
   PetscReal             E, el, conf, glob, A, V, area_ratio, spread, qmax; /* at x, from the last evaluation */
-  PetscReal             integ; /* integrability violation of a triangle field (-1: not a triangle-field kind) */
-  PetscReal             immersion_tol; /* -flow_immersion_tol: the largest integ at which -o writes the reconstruction */
-  PetscReal             espin; /* E_tau(psi(omega)) of a triangle field (App. C.3), whatever its weight */
-  PetscInt              pinch; /* edges failing the spinor pinch test (soliman2021 App. C.1; -1: not a triangle-field kind) */
   PetscReal             viol_max; /* the largest max(conf, glob) of any evaluated state (before a projection at the stop) */
   PetscReal             viol_min; /* the smallest max(conf, glob) of any evaluated state (-1: none yet) */
   PetscInt              viol_min_it, viol_max_it; /* the iterations of viol_min, viol_max */
@@ -255,6 +251,13 @@ struct _p_CSWillmoreFlow {
   Vec                   last_x;               /* the last state's variables once the best replaced them (written beside -o) */
 };
 
+/* A kind with its own variables (ops.setup_problem: trianglefield's triangle field), not vertex positions: the shared
+   code asks this capability, never the kind's name. */
+static inline PetscBool CSWFOwnVariables(CSWillmoreFlow F)
+{
+  return F->ops.setup_problem ? PETSC_TRUE : PETSC_FALSE;
+}
+
 /* the residual -flow_rtol tests (-flow_el_norm) */
 static inline PetscReal CSWFStopResidual(CSWillmoreFlow F)
 {
@@ -267,14 +270,14 @@ PETSC_INTERN PetscErrorCode CSWFEvalConstraints(CSWillmoreFlow F, Vec x, Vec c, 
 PETSC_INTERN PetscErrorCode CSWFViolation(CSWillmoreFlow F, Vec c, const PetscReal cx[], PetscReal *conf, PetscReal *glob);
 PETSC_INTERN PetscErrorCode CSWFMerit(CSWillmoreFlow F, PetscReal E, Vec c, const PetscReal cx[], const PetscReal nun[], PetscReal *phi);
 PETSC_INTERN PetscErrorCode CSWFResidual(CSWillmoreFlow F, PetscReal *el);
+PETSC_INTERN PetscErrorCode CSWFResidualWith(CSWillmoreFlow F, Vec mu, const PetscReal nu[], PetscReal *el);
 PETSC_INTERN PetscErrorCode CSWFGlobalWeights(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFQuadDiffMetric(CSWillmoreFlow F, Vec x, PetscInt *ng);
 /* willmore_step.c */
 PETSC_INTERN PetscErrorCode CSWFSetOperators(CSWillmoreFlow F, PetscReal t, PetscReal tmu);
 PETSC_INTERN PetscErrorCode CSWFTrySolve(CSWillmoreFlow F, Vec rE, Vec rV, const PetscReal rX[], Vec zE, Vec zV, PetscReal zX[], PetscInt *its, PetscBool *ok);
 PETSC_INTERN PetscErrorCode CSWFSolveCorrection(CSWillmoreFlow F, Vec zE, Vec zV, PetscInt *its, PetscBool *ok);
-PETSC_INTERN PetscErrorCode CSWFTrialCGD(CSWillmoreFlow F, PetscBool *accept);
-PETSC_INTERN PetscErrorCode CSWFTrialPGD(CSWillmoreFlow F, PetscBool *accept);
+PETSC_INTERN PetscErrorCode CSWFRejected(CSWillmoreFlow F, const char what[]);
 /* willmore_filter.c */
 PETSC_INTERN PetscErrorCode CSWFFilterLagrangian(CSWillmoreFlow F, PetscBool *accept);
 PETSC_INTERN PetscErrorCode CSWFFilterEnergy(CSWillmoreFlow F, PetscBool *accept);
@@ -325,15 +328,8 @@ PETSC_INTERN PetscErrorCode CSWillmoreFlowCreate_Newton(CSWillmoreFlow);
 PETSC_INTERN PetscErrorCode CSWillmoreFlowCreate_ALM(CSWillmoreFlow);
 PETSC_INTERN PetscErrorCode CSWillmoreFlowCreate_Fairing(CSWillmoreFlow); /* the kind named by F->type */
 PETSC_INTERN PetscErrorCode CSWillmoreFlowCreate_TriangleField(CSWillmoreFlow);
-PETSC_INTERN PetscErrorCode CSWFMultiplierEstimate(CSWillmoreFlow F, Vec c, const PetscReal cx[]);
-/* cgd_multiplier_ls.c */
-PETSC_INTERN PetscErrorCode CSWFMultiplierLSOptions(CSWillmoreFlow F, PetscOptionItems *PetscOptionsObject);
-PETSC_INTERN PetscErrorCode CSWFMultiplierLS(CSWillmoreFlow F);
-PETSC_INTERN PetscErrorCode CSWFMultiplierLSRestore(CSWillmoreFlow F);
-PETSC_INTERN PetscErrorCode CSWFAcceptCGD(CSWillmoreFlow F);
-PETSC_INTERN PetscErrorCode CSWFGrowCGD(CSWillmoreFlow F);
+/* step sizes shared by the kinds (impls/pgd/pgd.c, impls/cgd/cgd.c) */
 PETSC_INTERN PetscErrorCode CSWFGrowStep(CSWillmoreFlow F, PetscReal *r);
-PETSC_INTERN PetscErrorCode CSWFShrinkCGD(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFGrowPrimal(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFShrinkPrimal(CSWillmoreFlow F);
 

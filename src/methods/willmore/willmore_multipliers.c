@@ -4,7 +4,8 @@
    (Dlambda^T q)_i = -sum_j q_ij df_ij / |df_ij|^2 (Sec. 3.1); the force sum_j q_ij df_ij / |df_ij|^2 (Eq. 8 summed
    around i, d tau) is then X^T mu, so grad E + force is the Euler-Lagrange residual the flow reports (without
    global constraints; their forces nu_j row_j are not included). With -flow_boundary normals the force includes
-   the normal constraint's rows. ALM: the multiplier is its first-order estimate mu + rho c (alm.c). */
+   the normal constraint's rows. A kind may report another multiplier (ops.multipliers; ALM: its first-order estimate
+   mu + rho c, impls/alm/alm.c). */
 #include "willmore_impl.h"
 
 PetscErrorCode CSWillmoreFlowGetConformalMultiplier(CSWillmoreFlow F, Vec q, Vec force)
@@ -12,16 +13,13 @@ PetscErrorCode CSWillmoreFlowGetConformalMultiplier(CSWillmoreFlow F, Vec q, Vec
   Vec mu = F->mu, muE;
   PetscFunctionBeginUser;
   PetscCheck(F->setupcalled && F->started, F->comm, PETSC_ERR_ORDER, "CSWillmoreFlowGetConformalMultiplier before the first CSWillmoreFlowStep");
-  PetscCheck(!F->ops.setup_problem, F->comm, PETSC_ERR_SUP, "-%stype %s: the multipliers live on halfedges; the vertex force and edge q are not defined", F->prefix, F->type);
+  PetscCheck(!CSWFOwnVariables(F), F->comm, PETSC_ERR_SUP, "-%stype %s: the multipliers live on halfedges; the vertex force and edge q are not defined", F->prefix, F->type);
   if (!F->conformal) {
     if (q) PetscCall(VecSet(q, 0));
     if (force) PetscCall(VecSet(force, 0));
     PetscFunctionReturn(0);
   }
-  if (F->ops.penalty) {
-    PetscCall(CSWFMultiplierEstimate(F, F->c, F->cx));
-    mu = F->mun;
-  }
+  if (F->ops.multipliers) PetscCall((*F->ops.multipliers)(F, &mu)); /* ALM: its estimate */
   if (force) {
     PetscCall(MatMultTranspose(F->Xc, mu, force));
     PetscCall(CSWFZeroFixed(F, force));
@@ -40,7 +38,7 @@ PetscErrorCode CSWillmoreFlowGetResidual(CSWillmoreFlow F, Vec *r)
 {
   PetscFunctionBeginUser;
   PetscCheck(F->setupcalled && F->started, F->comm, PETSC_ERR_ORDER, "CSWillmoreFlowGetResidual before the first CSWillmoreFlowStep");
-  PetscCheck(!F->ops.setup_problem, F->comm, PETSC_ERR_SUP, "-%stype %s: the residual lives on halfedges, not vertices", F->prefix, F->type);
+  PetscCheck(!CSWFOwnVariables(F), F->comm, PETSC_ERR_SUP, "-%stype %s: the residual lives on halfedges, not vertices", F->prefix, F->type);
   *r = F->r;
   PetscFunctionReturn(0);
 }

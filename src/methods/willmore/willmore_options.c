@@ -4,7 +4,6 @@
 
 const char *const CSFlowMetricTypes[]   = {"h2", "l2", "h1", "CSFlowMetricType", "CS_FLOW_METRIC_", NULL};
 const char *const CSFlowBoundaryTypes[] = {"dirichlet", "free", "normals", "CSFlowBoundaryType", "CS_FLOW_BOUNDARY_", NULL};
-const char *const CSALMMetricTypes[]    = {"plain", "gauss_newton", "CSALMMetricType", "CS_ALM_METRIC_", NULL};
 const char *const CSSaddleMatTypes[]    = {"nest", "aij", "CSSaddleMatType", "CS_SADDLE_MAT_", NULL};
 
 /* "-<prefix>constraint_area [value]": no value means the initial value. */
@@ -32,8 +31,6 @@ static PetscErrorCode StepOptions(CSWillmoreFlow F, PetscOptionItems *PetscOptio
   PetscCall(CSOptionsReal("-t_max", "Largest primal step", NULL, F->tmax, &F->tmax, NULL));
   PetscCall(CSOptionsReal("-t_mu_grow", "Grow t_mu by this factor after each accepted step, independently of t, up to t_mu_max (0: t_mu follows t)", NULL, F->tmu_grow, &F->tmu_grow, NULL));
   PetscCall(CSOptionsReal("-t_mu_max", "Largest t_mu (default: 1e3 t_max with t_mu_grow, else none; in the units of t_mu)", NULL, F->tmu_max, &F->tmu_max, NULL));
-  PetscCall(CSOptionsReal("-t_mu_final", "CGD: once an iterate's EL residual is below -t_mu_final_el, the dual step t_mu is max(t_mu, this), fixed (0: off; in the units of t_mu; docs/triangle_fields.md, \"The class floor\")", NULL, F->tmu_final, &F->tmu_final, NULL));
-  PetscCall(CSOptionsReal("-t_mu_final_el", "CGD: the EL residual below which -t_mu_final takes over", NULL, F->tmu_final_el, &F->tmu_final_el, NULL));
   PetscCall(CSOptionsReal("-t_grow", "Factor on t after an accepted step", NULL, F->grow, &F->grow, NULL));
   PetscCall(PetscOptionsBool("-step_control", "Accept a step only if the filter accepts it (else shrink t: -step_model)", NULL, F->step_control, &F->step_control, NULL));
   if (F->ops.step_halving) F->step_model = CS_WF_STEP_HALVING;
@@ -49,7 +46,7 @@ static PetscErrorCode StepOptions(CSWillmoreFlow F, PetscOptionItems *PetscOptio
   PetscCall(CSOptionsReal("-vmax", "Step control: reject steps whose constraint violation exceeds max(v, this), v that of the current state", NULL, F->vmax, &F->vmax, NULL));
   PetscCall(CSOptionsReal("-restore_above", "CGD/GD, trianglefield: project an accepted state whose constraint violation exceeds this back onto the constraints (0: never)", NULL, F->vrestore, &F->vrestore, NULL));
   PetscCall(PetscOptionsBool("-restore_stalled", "CGD/GD, trianglefield: project an accepted state back onto the constraints when t has collapsed (t < 1e-3 t_max) with the violation above vmax / 10", NULL, F->restore_stalled, &F->restore_stalled, NULL));
-  PetscCall(CSOptionsReal("-max_area_ratio", "Stop when max(A_i/A0_i)/min(A_i/A0_i) of the vertex areas, or the total area relative to the input, exceeds this (0: off)", NULL, F->max_area_ratio, &F->max_area_ratio, NULL));
+  PetscCall(CSOptionsReal("-max_area_ratio", "Stop when max(A_i/A0_i)/min(A_i/A0_i) of the vertex areas, or the total area relative to the input, exceeds this (0: off)", NULL, F->max_area_ratio, &F->max_area_ratio, &F->max_area_ratio_set));
   PetscCall(PetscOptionsBool("-project_at_stop", "When the resolution guard stops the flow, project the state onto the constraints (PGD's projection) so the result lies in the prescribed conformal class", NULL, F->project_at_stop, &F->project_at_stop, NULL));
   PetscCall(CSOptionsReal("-fin_q", "Resolution guard: a stop with the largest quasi-conformal error of a face above this is reported as fins (a jump of the conformal factor across faces), below it as a smooth concentration", NULL, F->fin_q, &F->fin_q, NULL));
   PetscCall(CSOptionsReal("-rtol", "Stop when the Euler-Lagrange residual is below this: el_residual_scaled = ||g + X^T mu + sum nu_j row_j||_2 sqrt(A) / |E|, scale-free (or ||g + X^T mu + ...||_2 itself with -el_norm absolute)", NULL, F->rtol, &F->rtol, NULL));
@@ -58,16 +55,10 @@ static PetscErrorCode StepOptions(CSWillmoreFlow F, PetscOptionItems *PetscOptio
   PetscCall(CSOptionsReal("-max_seconds", "Stop (as at max_it) once this many seconds have passed since the set-up (0: no limit); rank 0's clock decides for all ranks", NULL, F->max_seconds, &F->max_seconds, NULL));
   PetscCall(CSOptionsReal("-iq_wmin", "Floor on cotan weights in I_Q (Eq. 25) for non-Delaunay edges", NULL, F->wmin, &F->wmin, NULL));
   PetscCall(CSOptionsReal("-pgd_t_mu", "PGD: regularising dual step of the (singular) PGD system and of the projection", NULL, F->proj_tmu, &F->proj_tmu, NULL));
-  PetscCall(CSWFMultiplierLSOptions(F, PetscOptionsObject));
   PetscCall(CSOptionsInt("-soc_max_it", "CGD/GD: second-order corrections of each trial step toward the constraints (0: none)", NULL, F->soc_max_it, &F->soc_max_it, NULL));
   PetscCall(CSOptionsInt("-pgd_projection_max_it", "PGD: Gauss-Newton iterations of the projection onto the constraint set", NULL, F->proj_max_it, &F->proj_max_it, NULL));
   PetscCall(CSOptionsInt("-factor_reuse_its", "Keep the preconditioner (factorisation) of an earlier step while the last solve needed at most this many Krylov iterations (0: refactor every step; default 10 with the conformal constraint, else 0; ignored with a preonly saddle KSP)", NULL, F->reuse_its, &F->reuse_its, &set));
   PetscCheck(!set || F->reuse_its >= 0, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sfactor_reuse_its %" PetscInt_FMT ": use 0 (refactor every step) or a positive iteration count", p, F->reuse_its);
-  PetscCall(CSOptionsReal("-alm_rho", "ALM: initial penalty rho of the augmented Lagrangian, relative to |E(input)|", NULL, F->alm_rho, &F->alm_rho, NULL));
-  PetscCall(CSOptionsReal("-alm_rho_grow", "ALM: factor on rho at a multiplier update that did not reduce the violation 4-fold", NULL, F->alm_grow, &F->alm_grow, NULL));
-  PetscCall(CSOptionsReal("-alm_rho_max", "ALM: largest rho (relative to |E(input)|)", NULL, F->alm_rho_max, &F->alm_rho_max, NULL));
-  PetscCall(CSOptionsEnum("-alm_metric", "ALM: metric of the inner gradient steps: the flow's metric alone (plain) or with the penalty's Gauss-Newton curvature", NULL, CSALMMetricTypes, (PetscEnum)F->alm_metric, (PetscEnum *)&F->alm_metric, NULL));
-  PetscCall(CSOptionsInt("-alm_inner_it", "ALM: accepted gradient steps between multiplier updates", NULL, F->alm_inner_it, &F->alm_inner_it, NULL));
   PetscCall(CSOptionsEnum("-matrix_type", "The saddle matrix as MATNEST (fieldsplit) or converted to AIJ (monolithic direct solvers)", NULL, CSSaddleMatTypes, (PetscEnum)F->saddle_mat, (PetscEnum *)&F->saddle_mat, NULL));
   PetscFunctionReturn(0);
 }
@@ -102,8 +93,6 @@ static PetscErrorCode CheckValues(CSWillmoreFlow F)
     {"t_grow", F->grow, F->grow >= 1, "must be >= 1"},
     {"t_mu_grow", F->tmu_grow, F->tmu_grow == 0 || F->tmu_grow >= 1, "use 0 (t_mu follows t) or a factor >= 1"},
     {"t_mu_max", F->tmu_max, F->tmu_max >= 0, "must be >= 0 (0: the default)"},
-    {"t_mu_final", F->tmu_final, F->tmu_final >= 0, "use 0 (off) or a positive dual step"},
-    {"t_mu_final_el", F->tmu_final_el, F->tmu_final_el > 0, "must be > 0"},
     {"merit_rho", F->rho, F->rho >= 0, "must be >= 0"},
     {"vmax", F->vmax, F->vmax > 0, "must be > 0"},
     {"restore_above", F->vrestore, F->vrestore >= 0, "use 0 (off) or a positive violation"},
@@ -126,10 +115,6 @@ static PetscErrorCode CheckValues(CSWillmoreFlow F)
     {"t_min", F->t_min, F->t_min >= 0 && F->t_min <= F->t, "must lie in [0, t]"},
     {"max_step", F->max_step, F->max_step >= 0, "use 0 (off) or a positive fraction of the mean edge length"},
     {"energy_target", F->energy_target, !PetscIsInfOrNanReal(F->energy_target), "must be finite"},
-    {"alm_rho", F->alm_rho, F->alm_rho > 0, "must be > 0"},
-    {"alm_rho_grow", F->alm_grow, F->alm_grow >= 1, "must be >= 1"},
-    {"alm_rho_max", F->alm_rho_max, F->alm_rho_max >= F->alm_rho, "must be >= -alm_rho"},
-    {"alm_inner_it", (PetscReal)F->alm_inner_it, F->alm_inner_it >= 1, "must be >= 1"},
     {"soc_max_it", (PetscReal)F->soc_max_it, F->soc_max_it >= 0, "use 0 (no corrections) or a positive count"},
     /* a target the surface cannot have: inf was taken, then 31 rejected steps and exit 0 (issue 36, item 16) */
     {"constraint_area", F->area_given ? F->area_target : 1, !F->area_given || (F->area_target > 0 && F->area_target <= 1e12), "the target area must lie in (0, 1e12]"},
@@ -149,9 +134,8 @@ static PetscErrorCode CheckOptions(CSWillmoreFlow F)
   if (F->tmu == 0) F->tmu = 1e3 * F->t;
   PetscCheck(!F->target[0] || F->conformal, F->comm, PETSC_ERR_ARG_INCOMP, "-%starget_mesh %s needs the conformal constraint (cgd, or pgd with -%sconformal)", p, F->target, p);
   PetscCheck(!F->boundary_set || F->boundary != CS_FLOW_BOUNDARY_NORMALS || F->conformal, F->comm, PETSC_ERR_ARG_INCOMP, "-%sboundary normals needs the conformal constraint (cgd or pgd)", p);
-  PetscCheck(F->tmu_final == 0 || (F->ops.trial == CSWFTrialCGD && (F->conformal || F->k || F->ops.setup_problem)), F->comm, PETSC_ERR_SUP, "-%st_mu_final: a dual step of CGD's rows, for -%stype cgd or trianglefield (or gd with constraints), not -%stype %s%s", p, p, p, F->type, F->ops.trial == CSWFTrialCGD ? " without constraint rows" : "");
   /* the step-geometry check and the fold guard measure vertex positions; a triangle field's variables are not */
-  PetscCheck(!F->ops.setup_problem || (F->max_step == 0 && !F->fold_guard), F->comm, PETSC_ERR_SUP, "-%smax_step and -%sfold_guard work on vertex positions, not on -%stype %s (its reconstruction is guarded by -%smax_area_ratio)", p, p, p, F->type, p);
+  PetscCheck(!CSWFOwnVariables(F) || (F->max_step == 0 && !F->fold_guard), F->comm, PETSC_ERR_SUP, "-%smax_step and -%sfold_guard work on vertex positions, not on -%stype %s (its reconstruction is guarded by -%smax_area_ratio)", p, p, p, F->type, p);
   if (F->ops.setup) PetscCall((*F->ops.setup)(F));
   PetscFunctionReturn(0);
 }

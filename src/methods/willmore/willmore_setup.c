@@ -78,7 +78,6 @@ PetscErrorCode CSWFSetUpConstraints(CSWillmoreFlow F)
   }
   PetscCall(CSWFSetUpAddedConstraints(F));
   for (PetscInt j = 0; j < F->ng; j++) F->k += F->gc[j]->k;
-  PetscCheck(F->conformal || F->k == 0 || !F->ops.projected, F->comm, PETSC_ERR_ARG_INCOMP, "pgd without the conformal constraint is not supported");
   PetscFunctionReturn(0);
 }
 
@@ -163,13 +162,12 @@ PetscErrorCode CSWFSetUpScaling(CSWillmoreFlow F)
      raises t_mu / t twofold for good, up to 1e3 times its initial value, see the step control) */
   if (F->tmu_max <= 0) F->tmu_max = F->tmu_grow > 0 ? 1e3 * F->tmax : PETSC_MAX_REAL;
   F->tmu /= sc;
-  F->tmu_final /= sc;
   if (F->tmu_max < PETSC_MAX_REAL) F->tmu_max /= sc;
   F->tmu_ratio_max = 1e3 * F->tmu / F->t;
   /* merit weight relative to the size of the energy (W ~ 4 pi and a fairing energy eps W differ by orders) */
   PetscCall(CSEnergyValue(F->energy, F->x0, &E0));
   F->rho *= PetscMax(PetscAbsReal(E0), PETSC_SMALL);
-  if (F->ops.penalty) F->alm_rho_max *= PetscMax(PetscAbsReal(E0), PETSC_SMALL);
+  if (F->ops.scale) PetscCall((*F->ops.scale)(F, sc, E0)); /* the kind's own parameters (CGD: its final dual step; ALM: its largest penalty) */
   PetscFunctionReturn(0);
 }
 
@@ -193,16 +191,14 @@ static PetscErrorCode SetUpPositions(CSWillmoreFlow F)
 
 /* The memory a run of this kind needs, per vertex, against the memory available (issue 36, item 20): the peak RSS
    of one step, measured (docs/hardening.md "Memory per flow kind"): the vertex kinds about 30 KB per vertex (CGD:
-   bunny_closed_cgal 926 MB / 37706, icosphere 5 292 MB / 10242), the triangle field about 160 KB (its 18 unknowns
-   per vertex against 3, the same bytes per unknown: bunny_closed_cgal 5.7 GB, icosphere 5 1.6 GB, 48 x 48 lattice
-   397 MB / 2304). All ranks' vertices against one node's memory (the common single-machine run; an overestimate
-   across nodes). Refused before anything is built, with the sizes, rather than killed mid-run. */
-#define CS_FLOW_BYTES_PER_VERTEX    30000
-#define CS_TF_FLOW_BYTES_PER_VERTEX 160000
+   bunny_closed_cgal 926 MB / 37706, icosphere 5 292 MB / 10242); a kind with more unknowns says its own
+   (ops.bytes_per_vertex: trianglefield.c). All ranks' vertices against one node's memory (the common single-machine
+   run; an overestimate across nodes). Refused before anything is built, with the sizes, rather than killed mid-run. */
+#define CS_FLOW_BYTES_PER_VERTEX 30000
 static PetscErrorCode CheckMemory(CSWillmoreFlow F)
 {
   char   what[256];
-  size_t per = F->ops.setup_problem ? CS_TF_FLOW_BYTES_PER_VERTEX : CS_FLOW_BYTES_PER_VERTEX;
+  size_t per = F->ops.bytes_per_vertex ? F->ops.bytes_per_vertex : CS_FLOW_BYTES_PER_VERTEX;
   PetscFunctionBeginUser;
   PetscCall(PetscSNPrintf(what, sizeof(what), "-%stype %s on %s: %" PetscInt_FMT " vertices at about %d KB per vertex for the run", F->prefix, F->type, F->mesh->name, F->mesh->Nv, (int)(per / 1000)));
   CSRootCall(F->comm, CSCheckAllocation(what, (PetscInt64)F->mesh->Nv, per));
@@ -212,14 +208,13 @@ static PetscErrorCode CheckMemory(CSWillmoreFlow F)
 PetscErrorCode CSWillmoreFlowSetUp(CSWillmoreFlow F)
 {
   char      prefix[80];
-  PetscBool plain;
+  PetscBool edges = F->conformal;
+  PetscInt  k;
   PetscFunctionBeginUser;
   if (F->setupcalled) PetscFunctionReturn(0);
   PetscCall(PetscTime(&F->t0));
   PetscCall(CheckMemory(F));
-  /* rather refused than ignored: the least-squares multipliers are CGD's dual step on the conformal rows */
-  PetscCheck(!F->mu_ls_every || (F->ops.dual == CSWFMultiplierLS && F->conformal), F->comm, PETSC_ERR_SUP, "-%smultiplier_ls_every %" PetscInt_FMT ": only for -%stype cgd with the conformal constraint", F->prefix, F->mu_ls_every, F->prefix);
-  PetscCheck(!F->nadded || !F->ops.setup_problem, F->comm, PETSC_ERR_SUP, "CSWillmoreFlowAddConstraint(%s): the registered constraints act on vertex positions, not on the variables of -%stype %s", F->nadded ? F->added[0] : "", F->prefix, F->type);
+  PetscCheck(!F->nadded || !CSWFOwnVariables(F), F->comm, PETSC_ERR_SUP, "CSWillmoreFlowAddConstraint(%s): the registered constraints act on vertex positions, not on the variables of -%stype %s", F->nadded ? F->added[0] : "", F->prefix, F->type);
   if (F->ops.setup_problem) { /* a kind with its own variables (trianglefield) */
     PetscCall((*F->ops.setup_problem)(F));
     F->setupcalled = PETSC_TRUE;
@@ -234,9 +229,9 @@ PetscErrorCode CSWillmoreFlowSetUp(CSWillmoreFlow F)
   F->metric.h1 = (PetscBool)(F->metric_type == CS_FLOW_METRIC_H1);
   PetscCall(CSWFSetUpScaling(F));
   PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "%ssaddle_", F->prefix));
-  /* ALM with the plain metric: the metric solve alone, no multiplier block and no bordering */
-  plain = (PetscBool)(F->ops.penalty && F->alm_metric == CS_ALM_METRIC_PLAIN);
-  PetscCall(CSSaddleCreate(F->mesh, prefix, (PetscBool)(F->conformal && !plain), (PetscBool)(F->metric_type == CS_FLOW_METRIC_H2), (PetscBool)(F->saddle_mat == CS_SADDLE_MAT_AIJ), F->reuse_its, plain ? 0 : F->k, &F->saddle));
+  k = F->k;
+  if (F->ops.saddle_blocks) PetscCall((*F->ops.saddle_blocks)(F, &edges, &k)); /* ALM's plain metric: the metric solve alone */
+  PetscCall(CSSaddleCreate(F->mesh, prefix, edges, (PetscBool)(F->metric_type == CS_FLOW_METRIC_H2), (PetscBool)(F->saddle_mat == CS_SADDLE_MAT_AIJ), F->reuse_its, k, &F->saddle));
   F->saddle.fixed = F->fixedIS;
   F->saddle.metric = &F->metric;
   F->setupcalled  = PETSC_TRUE;

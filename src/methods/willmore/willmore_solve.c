@@ -45,7 +45,8 @@ static PetscErrorCode Operators(CSWillmoreFlow F)
     PetscFunctionReturn(0);
   }
   if (!F->ops.own_metric) PetscCall(CSMetricUpdate(&F->metric, F->x));
-  if (F->conformal && !F->ops.penalty) { /* ALM penalises |c|^2 unweighted (alm.c) */
+  if (F->conformal && F->ops.weights) PetscCall((*F->ops.weights)(F)); /* ALM: unweighted (impls/alm/alm.c) */
+  else if (F->conformal) {
     PetscInt ng;
     PetscCall(CSWFQuadDiffMetric(F, F->x, &ng));
     F->nguard = PetscMax(F->nguard, ng);

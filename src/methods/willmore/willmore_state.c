@@ -1,6 +1,6 @@
 /* The loop state a checkpoint keeps besides its fields (the positions and mu, the edge field; a triangle field's
    own, trianglefield_state.c): [flow kind, t, t_mu, rejections, KSP its in total, KSP its of the last step, edges
-   with guarded I_Q weight, seconds, whether the -t_mu_final switch fired, the step model's last accepted t and the
+   with guarded I_Q weight, seconds, the kind's switch (ops.get_switch: whether CGD's -t_mu_final fired), the step model's last accepted t and the
    violation it added (willmore_step_model.c), nu_1..nu_k, the stationarity window and the drift test's smallest residual
    (willmore_stop.c), the kind's own scalars]. The kept best state (-flow_keep_best) is not stored: a resumed run keeps the best
    of its own iterations. The rest (g, c, X, metric, residual) is
@@ -21,9 +21,9 @@ PetscErrorCode CSWillmoreFlowGetStateSize(CSWillmoreFlow F, PetscInt *nreal)
 static PetscErrorCode CheckStorable(CSWillmoreFlow F)
 {
   PetscFunctionBeginUser;
-  PetscCheck(!F->ops.setup_problem || F->ops.get_state, F->comm, PETSC_ERR_SUP, "-checkpoint/-resume with -%stype %s: its variables are not stored in checkpoints", F->prefix, F->type);
+  PetscCheck(!CSWFOwnVariables(F) || F->ops.get_state, F->comm, PETSC_ERR_SUP, "-checkpoint/-resume with -%stype %s: its variables are not stored in checkpoints", F->prefix, F->type);
   PetscCheck(!F->normals, F->comm, PETSC_ERR_SUP, "-checkpoint/-resume with -%sboundary normals: the multipliers of the normal constraint are not stored in checkpoints", F->prefix);
-  PetscCheck(!F->ops.penalty, F->comm, PETSC_ERR_SUP, "-checkpoint/-resume with -%stype alm: the penalty schedule is not stored in checkpoints", F->prefix);
+  if (F->ops.storable) PetscCall((*F->ops.storable)(F)); /* a kind whose state is not stored refuses (ALM) */
   PetscFunctionReturn(0);
 }
 
@@ -38,10 +38,12 @@ PetscErrorCode CSWillmoreFlowGetStart(CSWillmoreFlow F, Vec *x)
 PetscErrorCode CSWillmoreFlowGetState(CSWillmoreFlow F, PetscReal ck[], CSCheckpointFields *v)
 {
   PetscLogDouble now;
+  PetscBool      on = PETSC_FALSE;
   PetscFunctionBeginUser;
   PetscCheck(F->setupcalled, F->comm, PETSC_ERR_ORDER, "CSWillmoreFlowGetState before CSWillmoreFlowSetUp");
   PetscCall(CheckStorable(F));
   PetscCall(PetscTime(&now));
+  if (F->ops.get_switch) PetscCall((*F->ops.get_switch)(F, &on));
   if (ck) {
     ck[0] = (PetscReal)F->ops.id;
     ck[1] = F->t;
@@ -51,7 +53,7 @@ PetscErrorCode CSWillmoreFlowGetState(CSWillmoreFlow F, PetscReal ck[], CSCheckp
     ck[5] = (PetscReal)F->kspits;
     ck[6] = (PetscReal)F->nguard;
     ck[7] = (PetscReal)(now - F->t0);
-    ck[8] = (PetscReal)F->tmu_final_on; /* stored: t_mu >= T does not tell (t_mu may pass T before EL falls) */
+    ck[8] = (PetscReal)on; /* the kind's switch (CGD: -t_mu_final fired; t_mu >= T does not tell) */
     ck[9]  = F->step_tacc; /* the predictive step's growth fits the violation of the next step against this one */
     ck[10] = F->step_dacc;
     for (PetscInt j = 0; j < F->k; j++) ck[FLOW_CK_NREAL + j] = F->nu[j];
@@ -95,7 +97,6 @@ PetscErrorCode CSWillmoreFlowSetState(CSWillmoreFlow F, PetscInt it, const Petsc
   PetscCall(CheckScalars(F, it, ck));
   F->t            = ck[1];
   F->tmu          = ck[2];
-  F->tmu_final_on = (PetscBool)(ck[8] != 0); /* the -t_mu_final switch had fired */
   F->rejections   = (PetscInt)ck[3];
   F->step_tacc    = ck[9];
   F->step_dacc    = ck[10];
@@ -105,6 +106,7 @@ PetscErrorCode CSWillmoreFlowSetState(CSWillmoreFlow F, PetscInt it, const Petsc
   F->t0          -= ck[7]; /* the seconds column of the history continues */
   for (PetscInt j = 0; j < F->k; j++) F->nu[j] = ck[FLOW_CK_NREAL + j];
   CSWFStationarySetState(F, ck + FLOW_CK_NREAL + F->k);
+  if (F->ops.set_switch) PetscCall((*F->ops.set_switch)(F, (PetscBool)(ck[8] != 0))); /* CGD: the -t_mu_final switch had fired */
   F->it      = it;
   F->resumed = PETSC_TRUE;
   if (F->ops.set_state) PetscCall((*F->ops.set_state)(F, ck + FLOW_CK_NREAL + F->k + CS_WF_STAT_NREAL)); /* may override the above */

@@ -152,7 +152,7 @@ PetscErrorCode CSWFStepModelGrow(CSWillmoreFlow F, PetscReal *factor)
   PetscCall(CSWFViolation(F, F->ct, F->cxt, &conf, &glob));
   v       = PetscMax(conf, glob);
   *factor = GrowthFactor(F, v, d, p);
-  if (*factor == 0 && r->q > STEP_Q_WEAK && v > 0.1 * F->vmax && F->restore_stalled && !F->restore_failed && !F->ops.setup_problem && (F->conformal || F->k)) {
+  if (*factor == 0 && r->q > STEP_Q_WEAK && v > 0.1 * F->vmax && F->restore_stalled && !F->restore_failed && !CSWFOwnVariables(F) && (F->conformal || F->k)) {
     PetscInt its = 0;
     PetscCall(CSWFRestoreTo(F, v, 1e-2 * F->vmax, &its)); /* positions only: not a kind with its own variables */
     F->kspits_total += its;
@@ -165,3 +165,38 @@ PetscErrorCode CSWFStepModelGrow(CSWillmoreFlow F, PetscReal *factor)
   PetscCall(PetscInfo(NULL, "step model: accepted t = %g, v0 %.3e -> %.3e, restoring ratio q %.3f, added %.3e, p %.2f (0: the multipliers' lag), v(x) %.3e: factor %.3f\n", (double)F->t, (double)r->v0, (double)r->vt, (double)r->q, (double)d, (double)p, (double)v, (double)*factor));
   PetscFunctionReturn(0);
 }
+
+/* t after an accepted step: times the step model's factor (CSWFStepModelGrow; -t_grow with -step_model halving), capped
+   at -t_max (reached also when t_max is not t times a power of t_grow); *r is the factor t changed by (1 at t_max),
+   which t_mu follows */
+PetscErrorCode CSWFGrowStep(CSWillmoreFlow F, PetscReal *r)
+{
+  PetscReal f;
+  PetscFunctionBeginUser;
+  PetscCall(CSWFStepModelGrow(F, &f));
+  if (F->t * f <= F->tmax) {
+    F->t *= f;
+    *r = f;
+    PetscFunctionReturn(0);
+  }
+  *r   = F->t < F->tmax ? F->tmax / F->t : 1.0;
+  F->t = F->tmax; /* t_max itself, not t * r, which may round past it */
+  PetscFunctionReturn(0);
+}
+
+/* t grows by -flow_t_grow up to -flow_t_max after an accepted step, halves after a rejected one (PGD, ALM) */
+PetscErrorCode CSWFGrowPrimal(CSWillmoreFlow F)
+{
+  PetscReal r;
+  PetscFunctionBeginUser;
+  PetscCall(CSWFGrowStep(F, &r));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSWFShrinkPrimal(CSWillmoreFlow F)
+{
+  PetscFunctionBeginUser;
+  F->t *= 0.5;
+  PetscFunctionReturn(0);
+}
+

@@ -20,8 +20,8 @@ PetscErrorCode CSWFStopOptions(CSWillmoreFlow F, PetscOptionItems *PetscOptionsO
   PetscCall(CSOptionsReal("-stationary_xtol", "Stationarity: largest sum over the window of the steps' largest vertex displacements, in mean edge lengths", NULL, F->stat_xtol, &F->stat_xtol, NULL));
   PetscCall(CSOptionsEnum("-keep_best", "Keep the state of smallest el_residual_scaled with the violation <= -ctol, and return it (-o, the summary) at the resolution guard's stops (guard), at every non-converged stop (all), or never (none)", NULL, CSFlowKeepBestTypes, (PetscEnum)F->keep_best, (PetscEnum *)&F->keep_best, &set));
   /* a triangle field's state is more than (x, mu, nu): its continuation and spinor data are not kept */
-  PetscCheck(!set || F->keep_best == CS_FLOW_KEEP_BEST_NONE || !F->ops.setup_problem, F->comm, PETSC_ERR_SUP, "-%skeep_best %s: not available for -%stype %s (its spin continuation and spinor state are not kept); use -%skeep_best none", F->prefix, CSFlowKeepBestTypes[F->keep_best], F->prefix, F->type, F->prefix);
-  if (F->ops.setup_problem) F->keep_best = CS_FLOW_KEEP_BEST_NONE;
+  PetscCheck(!set || F->keep_best == CS_FLOW_KEEP_BEST_NONE || !CSWFOwnVariables(F), F->comm, PETSC_ERR_SUP, "-%skeep_best %s: not available for -%stype %s (its spin continuation and spinor state are not kept); use -%skeep_best none", F->prefix, CSFlowKeepBestTypes[F->keep_best], F->prefix, F->type, F->prefix);
+  if (CSWFOwnVariables(F)) F->keep_best = CS_FLOW_KEEP_BEST_NONE;
   PetscFunctionReturn(0);
 }
 

@@ -16,19 +16,50 @@
    mu~ = mu + rho c, nu~_j = nu_j + rho xi_j / g_j, i.e. |grad L_A|: it is the residual of soliman2021 Eq. 7 with
    the multiplier the method would take next. The saddle solver is used without the edge block (a metric solve). */
 #include "../../willmore_impl.h"
+#include "cs_util.h"
+
+const char *const CSALMMetricTypes[] = {"plain", "gauss_newton", "CSALMMetricType", "CS_ALM_METRIC_", NULL};
+
+typedef struct {
+  PetscReal       rho, grow, rho_max; /* -alm_rho (relative to |E(input)|), -alm_rho_grow, -alm_rho_max (scaled by ScaleALM) */
+  PetscInt        inner_it;           /* -alm_inner_it: accepted steps per inner loop */
+  CSALMMetricType metric;             /* -alm_metric: metric of the inner steps */
+  PetscInt        inner, update, updates; /* loop state: steps in this inner loop, iteration of the last update, updates */
+  PetscReal       vlast;              /* violation at the last multiplier update */
+} ALM;
+
+static PetscErrorCode SetFromOptionsALM(CSWillmoreFlow F, PetscOptionItems *PetscOptionsObject)
+{
+  ALM *alm = (ALM *)F->data;
+  PetscFunctionBeginUser;
+  PetscCall(CSOptionsReal("-alm_rho", "ALM: initial penalty rho of the augmented Lagrangian, relative to |E(input)|", NULL, alm->rho, &alm->rho, NULL));
+  PetscCall(CSOptionsReal("-alm_rho_grow", "ALM: factor on rho at a multiplier update that did not reduce the violation 4-fold", NULL, alm->grow, &alm->grow, NULL));
+  PetscCall(CSOptionsReal("-alm_rho_max", "ALM: largest rho (relative to |E(input)|)", NULL, alm->rho_max, &alm->rho_max, NULL));
+  PetscCall(CSOptionsEnum("-alm_metric", "ALM: metric of the inner gradient steps: the flow's metric alone (plain) or with the penalty's Gauss-Newton curvature", NULL, CSALMMetricTypes, (PetscEnum)alm->metric, (PetscEnum *)&alm->metric, NULL));
+  PetscCall(CSOptionsInt("-alm_inner_it", "ALM: accepted gradient steps between multiplier updates", NULL, alm->inner_it, &alm->inner_it, NULL));
+  PetscFunctionReturn(0);
+}
 
 static PetscErrorCode SetUpALM(CSWillmoreFlow F)
 {
+  ALM                *alm      = (ALM *)F->data;
+  const CSOptionCheck checks[] = {
+    {"alm_rho", alm->rho, alm->rho > 0, "must be > 0"},
+    {"alm_rho_grow", alm->grow, alm->grow >= 1, "must be >= 1"},
+    {"alm_rho_max", alm->rho_max, alm->rho_max >= alm->rho, "must be >= -alm_rho"},
+    {"alm_inner_it", (PetscReal)alm->inner_it, alm->inner_it >= 1, "must be >= 1"},
+  };
   PetscFunctionBeginUser;
+  PetscCall(CSCheckOptionValues(F->comm, F->prefix, sizeof(checks) / sizeof(checks[0]), checks));
   PetscCheck(F->conformal || F->area_set || F->vol_set || F->points[0] || F->mobius, F->comm, PETSC_ERR_ARG_INCOMP, "-%stype alm without any constraint is plain gradient descent: use -%stype gd", F->prefix, F->prefix);
   PetscCheck(F->boundary != CS_FLOW_BOUNDARY_NORMALS, F->comm, PETSC_ERR_SUP, "-%stype alm with -%sboundary normals is not supported", F->prefix, F->prefix);
-  F->rho            = F->alm_rho; /* scaled by |E(input)| in CSWFSetUpScaling, as -merit_rho */
+  F->rho            = alm->rho; /* scaled by |E(input)| in CSWFSetUpScaling, as -merit_rho */
   F->project_at_stop = PETSC_FALSE; /* the projection needs the saddle's edge block */
   PetscFunctionReturn(0);
 }
 
 /* The multiplier estimates mu~ = mu + rho c (into F->mun) and nu~ (into F->nun) at the constraints c, cx. */
-PetscErrorCode CSWFMultiplierEstimate(CSWillmoreFlow F, Vec c, const PetscReal cx[])
+static PetscErrorCode MultiplierEstimate(CSWillmoreFlow F, Vec c, const PetscReal cx[])
 {
   PetscFunctionBeginUser;
   if (F->conformal) PetscCall(VecWAXPY(F->mun, F->rho, c, F->mu));
@@ -39,16 +70,87 @@ PetscErrorCode CSWFMultiplierEstimate(CSWillmoreFlow F, Vec c, const PetscReal c
 /* The first-order multiplier update and the penalty schedule, between inner loops. */
 static PetscErrorCode UpdateMultipliers(CSWillmoreFlow F)
 {
-  PetscReal v = PetscMax(F->conf, F->glob);
+  ALM      *alm = (ALM *)F->data;
+  PetscReal v   = PetscMax(F->conf, F->glob);
   PetscFunctionBeginUser;
-  PetscCall(CSWFMultiplierEstimate(F, F->c, F->cx));
+  PetscCall(MultiplierEstimate(F, F->c, F->cx));
   if (F->conformal) PetscCall(VecCopy(F->mun, F->mu));
   for (PetscInt j = 0; j < F->k; j++) F->nu[j] = F->nun[j];
-  if (F->alm_vlast > 0 && v > 0.25 * F->alm_vlast) F->rho = PetscMin(F->rho * F->alm_grow, F->alm_rho_max);
-  F->alm_vlast  = v;
-  F->alm_inner  = 0;
-  F->alm_update = F->it;
-  F->alm_updates++;
+  if (alm->vlast > 0 && v > 0.25 * alm->vlast) F->rho = PetscMin(F->rho * alm->grow, alm->rho_max);
+  alm->vlast  = v;
+  alm->inner  = 0;
+  alm->update = F->it;
+  alm->updates++;
+  PetscFunctionReturn(0);
+}
+
+/* r = grad L_A = g + X^T mu~ + sum_j nu~_j rows_j: the residual of soliman2021 Eq. 7 with the multipliers the
+   method would take next (the stopping residual, and the direction of the next step). */
+static PetscErrorCode ResidualALM(CSWillmoreFlow F, PetscReal *el)
+{
+  PetscFunctionBeginUser;
+  if (F->k) PetscCall(CSWFGlobalWeights(F));
+  PetscCall(MultiplierEstimate(F, F->c, F->cx));
+  PetscCall(CSWFResidualWith(F, F->mun, F->nun, el));
+  PetscFunctionReturn(0);
+}
+
+/* the conformal multiplier reported (CSWillmoreFlowGetConformalMultiplier): its first-order estimate mu + rho c */
+static PetscErrorCode MultipliersALM(CSWillmoreFlow F, Vec *mu)
+{
+  PetscFunctionBeginUser;
+  PetscCall(MultiplierEstimate(F, F->c, F->cx));
+  *mu = F->mun;
+  PetscFunctionReturn(0);
+}
+
+/* The penalty |c|^2 is unweighted: I_Q stays the identity set at the start (no Eq. 25 weights at x). */
+static PetscErrorCode WeightsALM(CSWillmoreFlow F)
+{
+  PetscFunctionBeginUser;
+  (void)F;
+  PetscFunctionReturn(0);
+}
+
+/* -alm_rho_max relative to |E(input)|, as rho itself (CSWFSetUpScaling) */
+static PetscErrorCode ScaleALM(CSWillmoreFlow F, PetscReal sc, PetscReal E0)
+{
+  ALM *alm = (ALM *)F->data;
+  PetscFunctionBeginUser;
+  (void)sc;
+  alm->rho_max *= PetscMax(PetscAbsReal(E0), PETSC_SMALL);
+  PetscFunctionReturn(0);
+}
+
+/* -alm_metric plain: the metric solve alone, no multiplier block and no bordering */
+static PetscErrorCode SaddleBlocksALM(CSWillmoreFlow F, PetscBool *edges, PetscInt *k)
+{
+  ALM      *alm   = (ALM *)F->data;
+  PetscBool plain = (PetscBool)(alm->metric == CS_ALM_METRIC_PLAIN);
+  PetscFunctionBeginUser;
+  *edges = (PetscBool)(F->conformal && !plain);
+  *k     = plain ? 0 : F->k;
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode StorableALM(CSWillmoreFlow F)
+{
+  PetscFunctionBeginUser;
+  SETERRQ(F->comm, PETSC_ERR_SUP, "-checkpoint/-resume with -%stype alm: the penalty schedule is not stored in checkpoints", F->prefix);
+}
+
+static PetscErrorCode ViewALM(CSWillmoreFlow F, PetscViewer viewer)
+{
+  ALM *alm = (ALM *)F->data;
+  PetscFunctionBeginUser;
+  PetscCall(PetscViewerASCIIPrintf(viewer, "  augmented Lagrangian: rho %g (growth %g, at most %g), %" PetscInt_FMT " steps per inner loop, metric %s\n", (double)F->rho, (double)alm->grow, (double)alm->rho_max, alm->inner_it, CSALMMetricTypes[alm->metric]));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode DestroyALM(CSWillmoreFlow F)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscFree(F->data));
   PetscFunctionReturn(0);
 }
 
@@ -66,12 +168,13 @@ static PetscErrorCode StartALM(CSWillmoreFlow F)
    complement is that matrix); the multiplier parts of its solution are discarded. */
 static PetscErrorCode TrialALM(CSWillmoreFlow F, PetscBool *accept)
 {
-  PetscInt its;
-  PetscBool gn = (PetscBool)(F->alm_metric == CS_ALM_METRIC_GAUSS_NEWTON);
+  ALM      *alm = (ALM *)F->data;
+  PetscInt  its;
+  PetscBool gn = (PetscBool)(alm->metric == CS_ALM_METRIC_GAUSS_NEWTON);
   PetscFunctionBeginUser;
-  if (F->alm_update != F->it && (F->alm_inner >= F->alm_inner_it || CSWFStopResidual(F) < F->rtol)) {
+  if (alm->update != F->it && (alm->inner >= alm->inner_it || CSWFStopResidual(F) < F->rtol)) {
     PetscCall(UpdateMultipliers(F));
-    PetscCall(CSWFResidual(F, &F->el)); /* grad L_A with the new mu, rho: the step's direction */
+    PetscCall(ResidualALM(F, &F->el)); /* grad L_A with the new mu, rho: the step's direction */
     PetscCall(CSWFScaledResidual(F));
   }
   PetscCall(CSWFSetOperators(F, F->t, F->rho));
@@ -106,22 +209,39 @@ static PetscErrorCode FilterALM(CSWillmoreFlow F, PetscBool *accept)
 static PetscErrorCode AcceptALM(CSWillmoreFlow F)
 {
   PetscFunctionBeginUser;
-  F->alm_inner++;
+  ((ALM *)F->data)->inner++;
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode CSWillmoreFlowCreate_ALM(CSWillmoreFlow F)
 {
+  ALM *alm;
   PetscFunctionBeginUser;
-  F->ops.id        = 3;
-  F->ops.conformal = PETSC_TRUE;
-  F->ops.penalty   = PETSC_TRUE;
-  F->ops.setup     = SetUpALM;
-  F->ops.start     = StartALM;
-  F->ops.trial     = TrialALM;
-  F->ops.filter    = FilterALM;
-  F->ops.accept    = AcceptALM;
-  F->ops.grow      = CSWFGrowPrimal;
-  F->ops.shrink    = CSWFShrinkPrimal;
+  PetscCall(PetscNew(&alm));
+  alm->rho              = 10;
+  alm->grow             = 10;
+  alm->rho_max          = 1e8;
+  alm->inner_it         = 10;
+  alm->update           = -1;
+  alm->metric           = CS_ALM_METRIC_GAUSS_NEWTON; /* converges for moderate rho; plain (the paper's explicit baseline) does not (docs/alm.md) */
+  F->data               = alm;
+  F->ops.id             = 3;
+  F->ops.conformal      = PETSC_TRUE;
+  F->ops.setfromoptions = SetFromOptionsALM;
+  F->ops.residual       = ResidualALM;
+  F->ops.multipliers    = MultipliersALM;
+  F->ops.weights        = WeightsALM;
+  F->ops.scale          = ScaleALM;
+  F->ops.saddle_blocks  = SaddleBlocksALM;
+  F->ops.storable       = StorableALM;
+  F->ops.view           = ViewALM;
+  F->ops.destroy        = DestroyALM;
+  F->ops.setup          = SetUpALM;
+  F->ops.start          = StartALM;
+  F->ops.trial          = TrialALM;
+  F->ops.filter         = FilterALM;
+  F->ops.accept         = AcceptALM;
+  F->ops.grow           = CSWFGrowPrimal;
+  F->ops.shrink         = CSWFShrinkPrimal;
   PetscFunctionReturn(0);
 }

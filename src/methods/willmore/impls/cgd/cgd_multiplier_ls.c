@@ -9,22 +9,31 @@
         saddle system with right-hand side [0; -r; 0], r = g + X^T mu + B^T nu, i.e. X H^-1 X^T dmu = -X H^-1 r.
    At CGD's fixed point (c = 0, r = 0: the constrained Euler-Lagrange equation, soliman2021 Theorem 3.2) the
    projection is skipped and dmu = 0, so the fixed points, hence the converged answers, are unchanged. */
-#include "../../willmore_impl.h"
+#include "cgd_impl.h"
 #include "cs_util.h"
 
-PetscErrorCode CSWFMultiplierLSOptions(CSWillmoreFlow F, PetscOptionItems *PetscOptionsObject)
+PetscErrorCode CSWFMultiplierLSOptions(CSWillmoreFlow F, CSWF_CGD *cgd, PetscOptionItems *PetscOptionsObject)
 {
   PetscFunctionBeginUser;
-  PetscCall(CSOptionsInt("-multiplier_ls_every", "CGD: every this many iterations restore the constraints by a Gauss-Newton projection and replace the multipliers by their least-squares estimate argmin |g + X^T mu|_{H^-1} (0: never; docs/boundary_twist.md)", NULL, F->mu_ls_every, &F->mu_ls_every, NULL));
-  PetscCall(CSOptionsReal("-multiplier_ls_t_mu", "CGD: t_mu (with t = 1) of the projection and of the least-squares multiplier solve; large enough that t_mu s^2 / lambda_H >> 1 for the smallest singular value s of X", NULL, F->mu_ls_tmu, &F->mu_ls_tmu, NULL));
-  PetscCheck(F->mu_ls_every >= 0, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%smultiplier_ls_every %" PetscInt_FMT ": use 0 (off) or a positive iteration count", F->prefix, F->mu_ls_every);
-  PetscCheck(F->mu_ls_tmu > 0 && !PetscIsInfOrNanReal(F->mu_ls_tmu), F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%smultiplier_ls_t_mu %g: must be finite and > 0", F->prefix, (double)F->mu_ls_tmu);
+  PetscCall(CSOptionsInt("-multiplier_ls_every", "CGD: every this many iterations restore the constraints by a Gauss-Newton projection and replace the multipliers by their least-squares estimate argmin |g + X^T mu|_{H^-1} (0: never; docs/boundary_twist.md)", NULL, cgd->ls_every, &cgd->ls_every, NULL));
+  PetscCall(CSOptionsReal("-multiplier_ls_t_mu", "CGD: t_mu (with t = 1) of the projection and of the least-squares multiplier solve; large enough that t_mu s^2 / lambda_H >> 1 for the smallest singular value s of X", NULL, cgd->ls_tmu, &cgd->ls_tmu, NULL));
+  PetscCheck(cgd->ls_every >= 0, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%smultiplier_ls_every %" PetscInt_FMT ": use 0 (off) or a positive iteration count", F->prefix, cgd->ls_every);
+  PetscCheck(cgd->ls_tmu > 0 && !PetscIsInfOrNanReal(cgd->ls_tmu), F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%smultiplier_ls_t_mu %g: must be finite and > 0", F->prefix, (double)cgd->ls_tmu);
+  PetscFunctionReturn(0);
+}
+
+/* rather refused than ignored: the least-squares multipliers are CGD's dual step on the conformal rows */
+PetscErrorCode CSWFMultiplierLSCheck(CSWillmoreFlow F, CSWF_CGD *cgd)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(!cgd->ls_every || (F->ops.dual == CSWFMultiplierLS && F->conformal), F->comm, PETSC_ERR_SUP, "-%smultiplier_ls_every %" PetscInt_FMT ": only for -%stype cgd with the conformal constraint", F->prefix, cgd->ls_every, F->prefix);
   PetscFunctionReturn(0);
 }
 
 static PetscBool Due(CSWillmoreFlow F, PetscInt it)
 {
-  return (PetscBool)(F->mu_ls_every > 0 && F->conformal && it % F->mu_ls_every == 0);
+  CSWF_CGD *cgd = (CSWF_CGD *)F->data;
+  return (PetscBool)(cgd->ls_every > 0 && F->conformal && it % cgd->ls_every == 0);
 }
 
 /* The next CSSaddleSetOperators builds a fresh factorisation: one kept for the other t_mu would precondition badly. */
@@ -39,6 +48,7 @@ static void FreshFactorisation(CSWillmoreFlow F)
    projection leaves the state as it was. */
 PetscErrorCode CSWFMultiplierLSRestore(CSWillmoreFlow F)
 {
+  CSWF_CGD *cgd = (CSWF_CGD *)F->data;
   PetscReal conf, glob, keep_tmu = F->proj_tmu;
   PetscBool ok;
   PetscInt  its = 0;
@@ -50,7 +60,7 @@ PetscErrorCode CSWFMultiplierLSRestore(CSWillmoreFlow F)
   if (!(PetscMax(conf, glob) >= 0.1 * F->ctol)) PetscFunctionReturn(0);
   PetscCall(VecDuplicate(F->x, &keep));
   PetscCall(VecCopy(F->x, keep));
-  F->proj_tmu = F->mu_ls_tmu;
+  F->proj_tmu = cgd->ls_tmu;
   PetscCall(CSWFProject(F, F->x, &ok, &its));
   F->proj_tmu = keep_tmu;
   F->kspits += its;
@@ -64,13 +74,14 @@ PetscErrorCode CSWFMultiplierLSRestore(CSWillmoreFlow F)
 /* The estimate at x (after the step's operators are set up: H, I_Q, global weights); F->r and F->el updated. */
 PetscErrorCode CSWFMultiplierLS(CSWillmoreFlow F)
 {
+  CSWF_CGD *cgd = (CSWF_CGD *)F->data;
   PetscInt  its = 0;
   PetscBool ok;
   PetscReal el0 = F->el;
   PetscFunctionBeginUser;
   if (!Due(F, F->it)) PetscFunctionReturn(0);
   FreshFactorisation(F);
-  PetscCall(CSWFSetOperators(F, 1.0, F->mu_ls_tmu));
+  PetscCall(CSWFSetOperators(F, 1.0, cgd->ls_tmu));
   PetscCall(VecSet(F->ct, 0));
   PetscCall(VecCopy(F->r, F->tmp));
   PetscCall(VecScale(F->tmp, -1.0));
@@ -82,7 +93,7 @@ PetscErrorCode CSWFMultiplierLS(CSWillmoreFlow F)
   PetscCall(VecAXPY(F->mu, 1.0, F->dmu));
   for (PetscInt j = 0; j < F->k; j++) F->nu[j] += F->dnu[j];
   PetscCall(CSWFResidual(F, &F->el));
-  F->mu_ls_count++;
+  cgd->ls_count++;
   PetscCall(PetscInfo(NULL, "least-squares multipliers at iteration %" PetscInt_FMT ": EL residual %.3e -> %.3e (%" PetscInt_FMT " Krylov iterations)\n", F->it, (double)el0, (double)F->el, its));
   PetscFunctionReturn(0);
 }

@@ -205,6 +205,15 @@ static PetscErrorCode SetUpFair(CSWillmoreFlow F)
   PetscFunctionReturn(0);
 }
 
+static PetscErrorCode ViewFair(CSWillmoreFlow F, PetscViewer viewer)
+{
+  Fair     *fa    = (Fair *)F->data;
+  PetscBool bilap = (PetscBool)(fa->kind == FAIR_EBILAP || fa->kind == FAIR_IBILAP);
+  PetscFunctionBeginUser;
+  PetscCall(PetscViewerASCIIPrintf(viewer, "  baseline fairing flow %s: fixed step tau = t h^%d (h the input's mean edge length), linear solves with KSP prefix -%sfair_\n", F->type, bilap ? 4 : 2, F->prefix));
+  PetscFunctionReturn(0);
+}
+
 /* The kind named by F->type (set before the create function is called), with its id in checkpoints and its
    default step (in units of h^2 or h^4; the largest stable ones found by runs/study_fairing.sh are larger or
    smaller, per mesh). */
@@ -235,6 +244,7 @@ PetscErrorCode CSWillmoreFlowCreate_Fairing(CSWillmoreFlow F)
   F->ops.grow      = NoOp;
   F->ops.shrink    = CSWFShrinkPrimal;
   F->ops.destroy   = DestroyFair;
+  F->ops.view      = ViewFair;
   F->t             = kinds[k].t;
   F->tmax          = 1e8; /* the step never grows (grow is a no-op): no cap, the largest -flow_t_max the checks admit */
   PetscFunctionReturn(0);

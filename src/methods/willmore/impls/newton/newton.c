@@ -17,7 +17,7 @@
    over), doubled after an accepted step up to -flow_t_max (default 1 here). Stopping: the normal residual
    ||N^T g||_2 < -flow_rtol (or -flow_energy_target). Constraints: none (no conformal, area, volume or point
    constraint; closed surfaces only): refused with a message. */
-#include "../../willmore_impl.h"
+#include "../cgd/cgd_impl.h"
 #include "cs_geometry.h"
 #include "cs_util.h"
 
@@ -117,22 +117,6 @@ static PetscErrorCode FactoredApply(PC pc, Vec r, Vec y)
   PetscFunctionReturn(0);
 }
 
-/* The kind's data with its option defaults (allocated by SetFromOptions, or at the first use without it). */
-static PetscErrorCode GetData(CSWillmoreFlow F, Newton **d)
-{
-  PetscFunctionBeginUser;
-  if (!F->data) {
-    PetscCall(PetscNew(d));
-    (*d)->factored  = PETSC_TRUE;
-    (*d)->relax     = 0.3; /* bumpy level-4 sphere: smallest angle 22 -> 49 degrees, q_max 2.8 -> 1.6; torus unchanged */
-    (*d)->relax_sweeps = 1;
-    (*d)->reuse_its = 0; /* refactor every iteration: kept factors change the inexact steps, and the final mesh quality moved both ways (docs/willmore_flow.md) */
-    F->data         = *d;
-  }
-  *d = (Newton *)F->data;
-  PetscFunctionReturn(0);
-}
-
 static PetscErrorCode CreateData(CSWillmoreFlow F)
 {
   Newton  *d;
@@ -141,7 +125,7 @@ static PetscErrorCode CreateData(CSWillmoreFlow F)
   PC          pc;
   char        prefix[96];
   PetscFunctionBeginUser;
-  d         = (Newton *)F->data; /* allocated by SetUpNewton with the options */
+  d         = (Newton *)F->data; /* allocated by CSWillmoreFlowCreate_Newton with the options' defaults */
   d->it_dir = -1;
   PetscCall(VecDuplicate(F->x, &d->nrm));
   PetscCall(VecDuplicate(F->x, &d->u));
@@ -224,7 +208,7 @@ static PetscErrorCode NewtonResidual(CSWillmoreFlow F, PetscReal *el)
 {
   Newton *d;
   PetscFunctionBeginUser;
-  PetscCall(GetData(F, &d));
+  d = (Newton *)F->data;
   if (!d->nrm) PetscCall(CreateData(F));
   PetscCall(FillNormals(F, d));
   PetscCall(MatMultTranspose(d->N, F->g, d->gn));
@@ -367,19 +351,24 @@ static PetscErrorCode AcceptNewton(CSWillmoreFlow F)
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode SetUpNewton(CSWillmoreFlow F)
+static PetscErrorCode SetFromOptionsNewton(CSWillmoreFlow F, PetscOptionItems *PetscOptionsObject)
 {
-  const char *p = F->prefix;
-  Newton     *d;
+  Newton *d = (Newton *)F->data;
   PetscFunctionBeginUser;
-  PetscCall(GetData(F, &d));
-  PetscOptionsBegin(F->comm, F->prefix, "Newton flow (-flow_type newton)", NULL);
   PetscCall(PetscOptionsBool("-newton_factored_pc", "Precondition CG with (s M + L_n) M^-1 (s M + L_n) (two 1-ring solves) instead of a factorisation of N^T I_H2 N", NULL, d->factored, &d->factored, NULL));
   PetscCall(CSOptionsReal("-newton_relax", "Tangential relaxation toward the graph-harmonic vertex distribution after each accepted step: fraction of the way (0: off)", NULL, d->relax, &d->relax, NULL));
   PetscCall(CSOptionsInt("-newton_relax_sweeps", "Solves of the tangential relaxation per accepted step (weights recomputed before each)", NULL, d->relax_sweeps, &d->relax_sweeps, NULL));
   PetscCall(PetscOptionsBool("-newton_relax_scaled", "Weight the relaxation's edges by 1/sqrt(face area) (spacing in proportion to the local edge length: raises the smallest angle) instead of 1", NULL, d->relax_scaled, &d->relax_scaled, NULL));
   PetscCall(CSOptionsInt("-newton_reuse_its", "Keep the factored metric preconditioner of an earlier iteration while CG needed at most this many iterations (0: refactor every iteration)", NULL, d->reuse_its, &d->reuse_its, NULL));
-  PetscOptionsEnd();
+  PetscFunctionReturn(0);
+}
+
+/* the options against each other and against the problem (after the flow's options block) */
+static PetscErrorCode SetUpNewton(CSWillmoreFlow F)
+{
+  const char *p = F->prefix;
+  Newton     *d = (Newton *)F->data;
+  PetscFunctionBeginUser;
   PetscCheck(d->relax >= 0 && d->relax <= 1, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%snewton_relax %g: must lie in [0, 1]", p, (double)d->relax);
   PetscCheck(d->relax_sweeps >= 1, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%snewton_relax_sweeps %" PetscInt_FMT ": must be >= 1", p, d->relax_sweeps);
   PetscCheck(d->reuse_its >= 0, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%snewton_reuse_its %" PetscInt_FMT ": must be >= 0", p, d->reuse_its);
@@ -393,7 +382,6 @@ static PetscErrorCode DestroyNewton(CSWillmoreFlow F)
 {
   Newton *d = (Newton *)F->data;
   PetscFunctionBeginUser;
-  if (!d) PetscFunctionReturn(0);
   if (!d->nrm) {
     PetscCall(PetscFree(F->data));
     PetscFunctionReturn(0);
@@ -424,22 +412,54 @@ static PetscErrorCode DestroyNewton(CSWillmoreFlow F)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CSWillmoreFlowCreate_Newton(CSWillmoreFlow F)
+static PetscErrorCode ViewNewton(CSWillmoreFlow F, PetscViewer viewer)
+{
+  Newton *d = (Newton *)F->data;
+  PetscFunctionBeginUser;
+  PetscCall(PetscViewerASCIIPrintf(viewer, "  newton: preconditioner %s, reuse while CG <= %" PetscInt_FMT " its, tangential relaxation %g (%" PetscInt_FMT " sweeps%s)\n", d->factored ? "(s M + L_n) M^-1 (s M + L_n)" : "N^T I_H2 N factored", d->reuse_its, (double)d->relax, d->relax_sweeps, d->relax_scaled ? ", scaled" : ""));
+  PetscFunctionReturn(0);
+}
+
+/* CGD's step sizes without the -t_mu_final switch (no constraint rows) */
+static PetscErrorCode GrowNewton(CSWillmoreFlow F)
 {
   PetscFunctionBeginUser;
-  F->ops.id         = 3;
-  F->ops.conformal  = PETSC_FALSE;
-  F->ops.setup      = SetUpNewton;
-  F->ops.trial      = TrialNewton;
-  F->ops.filter     = CSWFFilterEnergy;
-  F->ops.accept     = AcceptNewton;
-  F->ops.grow       = CSWFGrowCGD;
-  F->ops.shrink     = CSWFShrinkCGD;
-  F->ops.residual   = NewtonResidual;
-  F->ops.destroy    = DestroyNewton;
-  F->ops.max_step   = 2; /* mean edge lengths per step (willmore_guards.c) */
-  F->ops.fold_guard = PETSC_TRUE;
-  F->ops.own_metric = PETSC_TRUE;
-  F->tmax           = 1; /* the full Newton step */
+  PetscCall(CSWFGrowDual(F, NULL));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode ShrinkNewton(CSWillmoreFlow F)
+{
+  PetscFunctionBeginUser;
+  PetscCall(CSWFShrinkDual(F, NULL));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSWillmoreFlowCreate_Newton(CSWillmoreFlow F)
+{
+  Newton *d;
+  PetscFunctionBeginUser;
+  PetscCall(PetscNew(&d));
+  d->factored           = PETSC_TRUE;
+  d->relax              = 0.3; /* bumpy level-4 sphere: smallest angle 22 -> 49 degrees, q_max 2.8 -> 1.6; torus unchanged */
+  d->relax_sweeps       = 1;
+  d->reuse_its          = 0; /* refactor every iteration: kept factors change the inexact steps, and the final mesh quality moved both ways (docs/willmore_flow.md) */
+  F->data               = d;
+  F->ops.setfromoptions = SetFromOptionsNewton;
+  F->ops.view           = ViewNewton;
+  F->ops.id             = 3;
+  F->ops.conformal      = PETSC_FALSE;
+  F->ops.setup          = SetUpNewton;
+  F->ops.trial          = TrialNewton;
+  F->ops.filter         = CSWFFilterEnergy;
+  F->ops.accept         = AcceptNewton;
+  F->ops.grow           = GrowNewton;
+  F->ops.shrink         = ShrinkNewton;
+  F->ops.residual       = NewtonResidual;
+  F->ops.destroy        = DestroyNewton;
+  F->ops.max_step       = 2; /* mean edge lengths per step (willmore_guards.c) */
+  F->ops.fold_guard     = PETSC_TRUE;
+  F->ops.own_metric     = PETSC_TRUE;
+  F->tmax               = 1; /* the full Newton step */
   PetscFunctionReturn(0);
 }

@@ -1,6 +1,61 @@
 /* -flow_type pgd: projected gradient descent (soliman2021 Sec. 4.1): an explicit step in the H^2 metric
-   tangent to the constraints, then a Gauss-Newton projection back onto the constraint set (willmore_projection.c). */
+   tangent to the constraints (the saddle solve with right-hand side [0; -g; 0], refined), then a Gauss-Newton
+   projection back onto the constraint set (willmore_projection.c). */
 #include "../../willmore_impl.h"
+
+/* The PGD matrix [[H/t, X^T], [X, 0]] is singular (dependent rows of X); we solve with -I_Q/pgd_t_mu in the
+   (2,2) block and remove the regularisation error by iterative refinement against the unregularised system:
+   only its second row differs, residual -X df (and -B^T df). */
+static PetscErrorCode RefinePGD(CSWillmoreFlow F, PetscBool *accept)
+{
+  Vec dmu2, df2;
+  PetscFunctionBeginUser;
+  PetscCall(VecDuplicate(F->dmu, &dmu2));
+  PetscCall(VecDuplicate(F->df, &df2));
+  for (PetscInt ref = 0; ref < 3 && *accept; ref++) {
+    PetscInt its;
+    PetscCall(MatMult(F->Xc, F->df, F->ct));
+    PetscCall(VecScale(F->ct, -1.0));
+    for (PetscInt j = 0; j < F->k; j++) {
+      PetscScalar v;
+      PetscCall(VecDot(F->rows[j], F->df, &v));
+      F->cxt[j] = -PetscRealPart(v);
+    }
+    PetscCall(VecSet(F->tmp, 0));
+    PetscCall(CSWFTrySolve(F, F->ct, F->tmp, F->cxt, dmu2, df2, F->dnu2, &its, accept));
+    F->kspits += its;
+    if (!*accept) PetscCall(CSWFRejected(F, "linear solve failed"));
+    else {
+      PetscCall(VecAXPY(F->dmu, 1.0, dmu2));
+      PetscCall(VecAXPY(F->df, 1.0, df2));
+      for (PetscInt j = 0; j < F->k; j++) F->dnu[j] += F->dnu2[j];
+    }
+  }
+  PetscCall(VecDestroy(&dmu2));
+  PetscCall(VecDestroy(&df2));
+  PetscFunctionReturn(0);
+}
+
+/* PGD (soliman2021 Sec. 4.1): right-hand side [0; -g; 0], refinement, then the projection of xt = x + df. */
+static PetscErrorCode TrialPGD(CSWillmoreFlow F, PetscBool *accept)
+{
+  PetscInt its;
+  PetscFunctionBeginUser;
+  PetscCall(CSWFSetOperators(F, F->t, F->proj_tmu));
+  PetscCall(VecSet(F->ct, 0));
+  PetscCall(VecCopy(F->g, F->tmp));
+  PetscCall(VecScale(F->tmp, -1.0));
+  for (PetscInt j = 0; j < F->k; j++) F->cxt[j] = 0;
+  PetscCall(CSWFTrySolve(F, F->ct, F->tmp, F->cxt, F->dmu, F->df, F->dnu, &its, accept));
+  F->kspits += its;
+  if (!*accept) PetscCall(CSWFRejected(F, "linear solve failed"));
+  if (*accept) PetscCall(RefinePGD(F, accept));
+  if (!*accept) PetscFunctionReturn(0);
+  PetscCall(VecWAXPY(F->xt, 1.0, F->df, F->x));
+  PetscCall(CSWFProject(F, F->xt, accept, &F->kspits));
+  if (!*accept) PetscCall(CSWFRejected(F, "the projection onto the constraint set failed"));
+  PetscFunctionReturn(0);
+}
 
 static PetscErrorCode SetUpPGD(CSWillmoreFlow F)
 {
@@ -14,6 +69,8 @@ static PetscErrorCode StartPGD(CSWillmoreFlow F)
 {
   PetscBool ok;
   PetscFunctionBeginUser;
+  /* the global rows are counted in the set-up (CSWFSetUpConstraints) */
+  PetscCheck(F->conformal || F->k == 0, F->comm, PETSC_ERR_ARG_INCOMP, "pgd without the conformal constraint is not supported");
   PetscCall(CSWFProject(F, F->x, &ok, &F->kspits_total));
   PetscCheck(ok, F->comm, PETSC_ERR_NOT_CONVERGED, "pgd: the initial projection onto the constraint set did not converge");
   PetscFunctionReturn(0);
@@ -28,19 +85,10 @@ static PetscErrorCode AcceptPGD(CSWillmoreFlow F)
   PetscFunctionReturn(0);
 }
 
-/* t grows by -flow_t_grow up to -flow_t_max after an accepted step, halves after a rejected one (PGD, ALM) */
-PetscErrorCode CSWFGrowPrimal(CSWillmoreFlow F)
-{
-  PetscReal r;
-  PetscFunctionBeginUser;
-  PetscCall(CSWFGrowStep(F, &r));
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSWFShrinkPrimal(CSWillmoreFlow F)
+static PetscErrorCode ViewPGD(CSWillmoreFlow F, PetscViewer viewer)
 {
   PetscFunctionBeginUser;
-  F->t *= 0.5;
+  PetscCall(PetscViewerASCIIPrintf(viewer, "  projection: t_mu %g, at most %" PetscInt_FMT " Gauss-Newton iterations\n", (double)F->proj_tmu, F->proj_max_it));
   PetscFunctionReturn(0);
 }
 
@@ -49,13 +97,13 @@ PetscErrorCode CSWillmoreFlowCreate_PGD(CSWillmoreFlow F)
   PetscFunctionBeginUser;
   F->ops.id        = 1;
   F->ops.conformal = PETSC_TRUE;
-  F->ops.projected = PETSC_TRUE;
   F->ops.setup     = SetUpPGD;
   F->ops.start     = StartPGD;
-  F->ops.trial     = CSWFTrialPGD;
+  F->ops.trial     = TrialPGD;
   F->ops.filter    = CSWFFilterEnergy;
   F->ops.accept    = AcceptPGD;
   F->ops.grow      = CSWFGrowPrimal;
   F->ops.shrink    = CSWFShrinkPrimal;
+  F->ops.view      = ViewPGD;
   PetscFunctionReturn(0);
 }

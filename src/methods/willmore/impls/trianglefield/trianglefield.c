@@ -111,9 +111,6 @@ static PetscErrorCode SetUpSpinors(CSWillmoreFlow F, CSTriangleField *d)
   PetscFunctionReturn(0);
 }
 
-const char *const CSTriangleFieldVariables[] = {"omega", "spinor", NULL};
-const char *const CSTriangleFieldInits[] = {"df", "random", "random_spinor", "smooth", "CSTriangleFieldInit", "CS_TF_INIT_", NULL};
-
 /* A uniform number in [-1, 1) from (seed, natural edge, side, component): the same field on any number of ranks. */
 static PetscReal HashUniform(PetscInt seed, PetscInt e, PetscInt s, PetscInt c)
 {
@@ -150,48 +147,6 @@ static PetscErrorCode RandomizeField(CSWillmoreFlow F, CSTriangleField *d)
   PetscCall(VecRestoreArray(ol, &o));
   PetscCall(DMLocalToGlobal(d->dmH3, ol, INSERT_VALUES, F->x));
   PetscCall(DMRestoreLocalVector(d->dmH3, &ol));
-  PetscFunctionReturn(0);
-}
-
-/* The kind's own options (read at SetFromOptions). */
-static PetscErrorCode SetFromOptionsTF(CSWillmoreFlow F)
-{
-  CSTriangleField *d = (CSTriangleField *)F->data;
-  PetscFunctionBeginUser;
-  PetscOptionsBegin(F->comm, F->prefix, "Triangle-field flow (soliman2021 Algorithm 2)", NULL);
-  PetscCall(CSOptionsEnum("-init", "Initial triangle field: df of the input, df plus a random field, S(l0, psi) with randomly rotated face spinors (App. C.2), or d(f + u) for a smooth random displacement u (plane waves)", NULL, CSTriangleFieldInits, (PetscEnum)d->init, (PetscEnum *)&d->init, NULL));
-  {
-    PetscInt v = d->spinor;
-    PetscCall(CSOptionsEList("-variables", "Variables of the flow: the triangle field omega, or (u, psi) with omega = S_c(u, psi) (soliman2021 App. C.2)", NULL, CSTriangleFieldVariables, 2, CSTriangleFieldVariables[v], &v, NULL));
-    d->spinor = (PetscBool)(v == 1);
-  }
-  /* the spinor variables mix units (u dimensionless, psi ~ length^1/2): no power of the area makes their residual
-     scale-free, so -flow_rtol tests it as it is unless -flow_el_norm is given (docs/willmore_flow.md "Stopping") */
-  if (d->spinor && !F->el_norm_set) F->el_norm = CS_FLOW_EL_NORM_ABSOLUTE;
-  PetscCall(CSOptionsReal("-scale_gauge_weight", "-flow_variables spinor: multiplier metric of the scale gauge row mean(u) = const, relative to its |row|^2; 0: no gauge row", NULL, d->wgauge, &d->wgauge, NULL));
-  PetscCall(CSOptionsReal("-spinor_metric_shift", "-flow_variables spinor: add this times the mean psi diagonal of J^T I_H1 J to the whole metric (0: none)", NULL, d->mshift, &d->mshift, NULL));
-  PetscCall(CSOptionsInt("-seed", "Seed of -flow_init random, random_spinor and smooth", NULL, d->seed, &d->seed, NULL));
-  PetscCall(CSOptionsReal("-immersion_tol", "-o writes the Poisson reconstruction of omega only when its integrability violation is at most this (else it is no immersion of omega)", NULL, F->immersion_tol, &F->immersion_tol, NULL));
-  PetscCall(CSOptionsReal("-init_amplitude", "-flow_init random: each halfedge vector gets a uniform random vector in [-a, a]^3 times the mean edge length; random_spinor: each face rotated by up to a pi; smooth: the largest vertex displacement is a times the mean edge length", NULL, d->amp, &d->amp, NULL));
-  PetscCall(CSOptionsInt("-init_modes", "-flow_init smooth: number of random plane waves (wavelength the input's bounding-box diagonal) in the displacement", NULL, d->modes, &d->modes, NULL));
-  PetscCall(CSOptionsReal("-spin_weight", "Weight of the spin Dirichlet energy E_tau(psi(omega)) added to W~ (soliman2021 App. C.3); 0: none", NULL, d->wspin, &d->wspin, NULL));
-  PetscCall(CSOptionsReal("-restore_near_ceiling", "Project an accepted omega back onto its rows (Gauss-Newton, I_H1 metric) when its violation exceeds this times -flow_vmax (0: only -flow_restore_above / -flow_restore_stalled)", NULL, d->restore_near, &d->restore_near, NULL));
-  PetscCall(CSOptionsReal("-integrability_weight", "Multiplier metric of the integrability rows (d1 omega, face closure, <<Y_i|omega>>) relative to their size; small = stiff", NULL, d->wint, &d->wint, NULL));
-  PetscOptionsEnd();
-  PetscCall(CSTFScheduleSetFromOptions(F, d));
-  PetscCall(CSTFContinuationSetFromOptions(F, d));
-  PetscCheck(d->restore_near >= 0 && !PetscIsInfOrNanReal(d->restore_near), F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%srestore_near_ceiling %g: must be >= 0", F->prefix, (double)d->restore_near);
-  PetscCheck(d->wint > 0 && !PetscIsInfOrNanReal(d->wint), F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sintegrability_weight %g: must be > 0", F->prefix, (double)d->wint);
-  PetscCheck(d->mshift >= 0 && !PetscIsInfOrNanReal(d->mshift), F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sspinor_metric_shift %g: must be >= 0", F->prefix, (double)d->mshift);
-  PetscCheck(d->wgauge >= 0 && !PetscIsInfOrNanReal(d->wgauge), F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sscale_gauge_weight %g: must be >= 0", F->prefix, (double)d->wgauge);
-  PetscCheck(d->wspin >= 0 && !PetscIsInfOrNanReal(d->wspin), F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sspin_weight %g: must be >= 0", F->prefix, (double)d->wspin);
-  /* the waves cost modes x vertices at the start; 1e4 is far more than a smooth displacement needs */
-  PetscCheck(d->modes > 0 && d->modes <= 10000, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sinit_modes %" PetscInt_FMT ": must lie in [1, 10000]", F->prefix, d->modes);
-  PetscCheck(F->immersion_tol >= 0 && !PetscIsInfOrNanReal(F->immersion_tol), F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%simmersion_tol %g: must be a finite number >= 0", F->prefix, (double)F->immersion_tol);
-  PetscCheck(d->amp >= 0 && !PetscIsInfOrNanReal(d->amp), F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sinit_amplitude %g: must be a finite number >= 0", F->prefix, (double)d->amp);
-  PetscCheck(!d->spinor || d->init != CS_TF_INIT_SMOOTH, F->comm, PETSC_ERR_SUP, "-%sinit smooth: built for the omega variables, not -%svariables spinor (use df, random or random_spinor)", F->prefix, F->prefix);
-  /* the spinor variables evaluate through their own path, which has no stages (rather refused than ignored) */
-  PetscCheck(!d->spinor || d->wdecay == 1, F->comm, PETSC_ERR_SUP, "-%sspin_weight_decay %g: the spin-weight continuation is built for the omega variables, not -%svariables spinor", F->prefix, (double)d->wdecay, F->prefix);
   PetscFunctionReturn(0);
 }
 
@@ -300,22 +255,11 @@ static PetscErrorCode SetUpScaling(CSWillmoreFlow F, CSTriangleField *d)
   d->sc = A / (4 * PETSC_PI);
   if (F->tmu_max <= 0) F->tmu_max = F->tmu_grow > 0 ? 1e3 * F->tmax : PETSC_MAX_REAL;
   F->tmu /= d->sc;
-  F->tmu_final /= d->sc;
+  CSWFDualStepScale(&d->ds, d->sc);
   if (F->tmu_max < PETSC_MAX_REAL) F->tmu_max /= d->sc;
   F->tmu_ratio_max = 1e3 * F->tmu / F->t;
   PetscCall(CSEnergyValue(F->energy, F->x0, &E0));
   F->rho *= PetscMax(PetscAbsReal(E0), PETSC_SMALL);
-  PetscFunctionReturn(0);
-}
-
-/* The resolution guard (-flow_max_area_ratio) measures the reconstructed surface (CSTFEvaluate): opt-in for this kind
-   (off unless given), since a change of class (Fig. 8's spiky sphere to the round class) squeezes on purpose. */
-static PetscErrorCode SetUpResolutionGuard(CSWillmoreFlow F)
-{
-  PetscBool set;
-  PetscFunctionBeginUser;
-  PetscCall(PetscOptionsHasName(NULL, F->prefix, "-max_area_ratio", &set));
-  if (!set) F->max_area_ratio = 0;
   PetscFunctionReturn(0);
 }
 
@@ -343,12 +287,9 @@ static PetscErrorCode SetUpTriangleField(CSWillmoreFlow F)
   PetscFunctionBeginUser;
   PetscCheck(m->topo.boundary_loops == 0, F->comm, PETSC_ERR_SUP, "-%stype trianglefield: the mesh %s has %" PetscInt_FMT " boundary loop(s); triangle-field flows are built for closed surfaces", F->prefix, m->name, m->topo.boundary_loops);
   PetscCall(CheckOptions(F));
-  /* -flow_t_mu_final (cgd.c): armed once the rows are enforced; a continuation's stages end at small EL residuals */
-  F->tmu_final_from = d->istart;
-  PetscCheck(F->tmu_final == 0 || d->wdecay == 1, F->comm, PETSC_ERR_SUP, "-%st_mu_final with -%sspin_weight_decay %g: the switch would fire at the end of the first stage of the continuation; use one or the other", F->prefix, F->prefix, (double)d->wdecay);
+  d->ds.final_from = d->istart; /* -flow_t_mu_final (cgd.c): armed once the rows are enforced (the relaxed phase before) */
   d->noconf    = (PetscBool)!F->conformal; /* unconstrained W~ (Fig. 8): integrability rows only */
   F->conformal = PETSC_TRUE;               /* the multiplier block holds the integrability rows either way */
-  PetscCall(SetUpResolutionGuard(F));
   PetscCall(CSLensCreateHalfedgeDM(m, 1, &d->dmH1));
   PetscCall(CSLensCreateHalfedgeDM(m, 3, &d->dmH3));
   PetscCall(VecDuplicate(m->x, &d->xpos0));
@@ -497,6 +438,25 @@ static PetscErrorCode Destroy(CSWillmoreFlow F)
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode CSWillmoreFlowTriangleFieldGetInfo(CSWillmoreFlow F, CSWillmoreFlowTriangleFieldInfo *info, PetscBool *is)
+{
+  CSTriangleField *d;
+  PetscBool        tf;
+  PetscFunctionBeginUser;
+  PetscCall(PetscStrcmp(F->type, CSWILLMOREFLOWTRIANGLEFIELD, &tf));
+  PetscCheck(tf || is, F->comm, PETSC_ERR_ARG_WRONG, "CSWillmoreFlowTriangleFieldGetInfo: -%stype %s is not trianglefield", F->prefix, F->type);
+  if (is) *is = tf;
+  info->integrability_violation = info->immersion_tol = info->spin_energy = -1;
+  info->pinch_edges             = -1;
+  if (!tf) PetscFunctionReturn(0);
+  d                             = (CSTriangleField *)F->data;
+  info->integrability_violation = d->integ;
+  info->immersion_tol           = d->immersion_tol;
+  info->spin_energy             = d->espin;
+  info->pinch_edges             = d->pinch;
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode CSWillmoreFlowCreate_TriangleField(CSWillmoreFlow F)
 {
   CSTriangleField *d;
@@ -510,17 +470,25 @@ PetscErrorCode CSWillmoreFlowCreate_TriangleField(CSWillmoreFlow F)
   F->ops.accept        = Accept;
   F->ops.grow          = CSWFGrowCGD;
   F->ops.shrink        = CSWFShrinkCGD;
+  F->ops.get_switch    = CSWFDualStepGetSwitch;
+  F->ops.set_switch    = CSWFDualStepSetSwitch;
   /* the predictive step model was fitted on the vertex kinds; on triangle fields it fell behind (Morin 24 x 12, 7
      iterations: W 165.59 against 150.73 halving; Fig. 8's spiky sphere did not reach 1 % of the round icosphere's W
      in 40), so halving stays this kind's default until the model knows the integrability rows */
   F->ops.step_halving  = PETSC_TRUE;
+  /* the peak RSS of one step (docs/hardening.md "Memory per flow kind"): its 18 unknowns per vertex against the vertex
+     kinds' 3, the same bytes per unknown (bunny_closed_cgal 5.7 GB, icosphere 5 1.6 GB, 48 x 48 lattice 397 MB / 2304) */
+  F->ops.bytes_per_vertex = 160000;
   F->ops.destroy       = Destroy;
   F->ops.setup_problem = SetUpTriangleField;
   F->ops.evaluate      = CSTFEvaluate;
   F->ops.operators     = CSTFOperators;
   F->ops.constraints   = CSTFConstraints;
   F->ops.positions     = Positions;
-  F->ops.setup         = SetFromOptionsTF;
+  F->ops.setfromoptions = CSTFSetFromOptions;
+  F->ops.setup         = CSTFCheckOptions;
+  F->ops.view          = CSTFView;
+  CSWFDualStepInitialize(&d->ds);
   d->wint              = 1e-4;
   d->restore_near      = 0.5;
   d->init              = CS_TF_INIT_DF;
@@ -534,5 +502,8 @@ PetscErrorCode CSWillmoreFlowCreate_TriangleField(CSWillmoreFlow F)
   d->wspin_min         = 1e-3;
   d->stage_rtol        = 1e-3;
   d->stage_ctol        = 1e-8;
+  d->immersion_tol     = 1e-6;
+  d->integ             = -1; /* not evaluated yet */
+  d->pinch             = -1;
   PetscFunctionReturn(0);
 }

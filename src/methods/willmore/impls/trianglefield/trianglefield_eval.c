@@ -48,7 +48,7 @@ PetscErrorCode CSTFConstraints(CSWillmoreFlow F, Vec x, Vec c, PetscReal cx[], P
   PetscFunctionReturn(0);
 }
 
-/* Violations at x: conformal (the C~ rows), integrability (d1, closure, <<Y|omega>>): F->conf, F->glob = F->integ. */
+/* Violations at x: conformal (the C~ rows), integrability (d1, closure, <<Y|omega>>): F->conf, F->glob = d->integ. */
 static PetscErrorCode Violations(CSWillmoreFlow F)
 {
   CSTriangleField *d = (CSTriangleField *)F->data;
@@ -63,8 +63,8 @@ static PetscErrorCode Violations(CSWillmoreFlow F)
   PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &vl, 1, MPIU_REAL, MPIU_MAX, F->comm));
   for (PetscInt j = 0; j < 3 * d->nforms; j++) vy = PetscMax(vy, PetscAbsReal(F->cx[j]));
   F->conf  = vc;
-  F->integ = PetscMax(vl, vy);
-  F->glob  = F->integ; /* the stopping test takes max(conf, glob): every row, App. B's included */
+  d->integ = PetscMax(vl, vy);
+  F->glob  = d->integ; /* the stopping test takes max(conf, glob): every row, App. B's included */
   for (PetscInt j = 3 * d->nforms; j < F->k; j++) F->glob = PetscMax(F->glob, PetscAbsReal(F->cx[j]));
   PetscFunctionReturn(0);
 }
@@ -87,8 +87,8 @@ static PetscErrorCode ViolationsSpinor(CSWillmoreFlow F, CSTriangleField *d)
   PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &vl, 1, MPIU_REAL, MPIU_MAX, F->comm));
   PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &vs, 1, MPIU_REAL, MPIU_MAX, F->comm));
   for (PetscInt j = 0; j < 3 * d->nforms; j++) vy = PetscMax(vy, PetscAbsReal(F->cx[j]));
-  F->integ = PetscMax(vl, vy);
-  F->glob  = PetscMax(F->integ, vs);
+  d->integ = PetscMax(vl, vy);
+  F->glob  = PetscMax(d->integ, vs);
   PetscFunctionReturn(0);
 }
 
@@ -107,8 +107,8 @@ static PetscErrorCode EvaluateSpinor(CSWillmoreFlow F, CSTriangleField *d)
   PetscCall(VecSum(d->star0, &A));
   F->A = PetscRealPart(A);
   PetscCall(CSTFSpinorOmega(d, F->x, d->omt)); /* d->pg = psi of x */
-  PetscCall(CSSpinorPinchEdges(d->sp, d->pg, &F->pinch, NULL));
-  PetscCall(CSSpinorDirichlet(d->sp, d->pg, &F->espin, NULL));
+  PetscCall(CSSpinorPinchEdges(d->sp, d->pg, &d->pinch, NULL));
+  PetscCall(CSSpinorDirichlet(d->sp, d->pg, &d->espin, NULL));
   F->V = 0;
   /* the surface of this state against the input, as for the omega variables (area spread, q_max, the guard) */
   PetscCall(CSTriangleFieldReconstructionSolve(d->recon, d->omega, d->xpos0, d->xpos));
@@ -134,8 +134,8 @@ static PetscErrorCode EvaluateAt(CSWillmoreFlow F, CSTriangleField *d)
   PetscCall(VecSum(d->star0, &A));
   F->A      = PetscRealPart(A);
   PetscCall(CSSpinorFromTriangleField(d->sp, d->dmH3, F->x, d->psi, d->psit));
-  PetscCall(CSSpinorPinchEdges(d->sp, d->psit, &F->pinch, NULL));
-  PetscCall(CSSpinorDirichlet(d->sp, d->psit, &F->espin, NULL));
+  PetscCall(CSSpinorPinchEdges(d->sp, d->psit, &d->pinch, NULL));
+  PetscCall(CSSpinorDirichlet(d->sp, d->psit, &d->espin, NULL));
   F->V      = 0; /* not tracked: a triangle field encloses no volume until it is integrated (docs/triangle_fields.md) */
   /* the surface of this state (the Poisson reconstruction) against the input: vertex-area spread and q_max for the
      history, the summary and the resolution guard (issue 21: the bunny's squeeze was invisible here) */

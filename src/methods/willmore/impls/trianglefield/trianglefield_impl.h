@@ -1,7 +1,7 @@
 /* Private to trianglefield*.c: the data of the triangle-field kind (soliman2021 Algorithm 2). */
 #ifndef CS_TRIANGLEFIELD_IMPL_H
 #define CS_TRIANGLEFIELD_IMPL_H
-#include "../../willmore_impl.h"
+#include "../cgd/cgd_impl.h"
 #include "cs_operators_lens.h"
 #include "cs_operators_spinor.h"
 #include "cs_linalg.h"
@@ -10,6 +10,7 @@ typedef enum { CS_TF_INIT_DF, CS_TF_INIT_RANDOM, CS_TF_INIT_RANDOM_SPINOR, CS_TF
 PETSC_INTERN const char *const CSTriangleFieldInits[];
 
 typedef struct {
+  CSWFDualStep ds;          /* first: CGD's dual step (-t_mu_final), found there by CGD's grow/shrink (cgd_impl.h) */
   CSTriangleFieldInit init; /* -flow_init df | random | random_spinor | smooth */
   PetscInt  modes;         /* -flow_init_modes: plane waves of -flow_init smooth */
   PetscInt  seed;          /* -flow_seed */
@@ -57,6 +58,11 @@ typedef struct {
   DM        dmCkE, dmCkF;  /* checkpoints (trianglefield_state.c): the packed per-edge and per-face fields */
   Vec       ckE, ckF;
   Vec       start;         /* the start omega's reconstruction (dmV3): fingerprinted by checkpoints (another -flow_init is refused) */
+  /* at x, from the last evaluation (trianglefield_eval.c): CSWillmoreFlowTriangleFieldGetInfo */
+  PetscReal integ;         /* integrability violation: max of |d1 omega|, face closure, |<<Y_i|omega>>| (-1: none yet) */
+  PetscReal espin;         /* E_tau(psi(omega)) (App. C.3), whatever its weight */
+  PetscInt  pinch;         /* edges failing the spinor pinch test (App. C.1; -1: none yet) */
+  PetscReal immersion_tol; /* -flow_immersion_tol: the largest integ at which -o writes the reconstruction */
 } CSTriangleField;
 PETSC_INTERN const char *const CSTriangleFieldVariables[];
 
@@ -67,8 +73,13 @@ PETSC_INTERN PetscErrorCode CSTFOperators(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSTFAppBSetUp(CSWillmoreFlow F, CSTriangleField *d);
 PETSC_INTERN PetscErrorCode CSTFAppBEvaluate(CSWillmoreFlow F, Vec x, PetscReal cx[], Vec rows[], PetscBool wantJ);
 PETSC_INTERN PetscInt       CSTFAppBRows(CSWillmoreFlow F);
+/* trianglefield_options.c: the kind's options (ops.setfromoptions), their checks (ops.setup) and ops.view */
+PETSC_INTERN PetscErrorCode CSTFSetFromOptions(CSWillmoreFlow F, PetscOptionItems *PetscOptionsObject);
+PETSC_INTERN PetscErrorCode CSTFCheckOptions(CSWillmoreFlow F);
+PETSC_INTERN PetscErrorCode CSTFView(CSWillmoreFlow F, PetscViewer viewer);
 /* trianglefield_schedule.c: integrability enforced from an iteration on (Fig. 8) */
-PETSC_INTERN PetscErrorCode CSTFScheduleSetFromOptions(CSWillmoreFlow F, CSTriangleField *d);
+PETSC_INTERN PetscErrorCode CSTFScheduleSetFromOptions(CSWillmoreFlow F, CSTriangleField *d, PetscOptionItems *PetscOptionsObject);
+PETSC_INTERN PetscErrorCode CSTFScheduleCheck(CSWillmoreFlow F, CSTriangleField *d);
 PETSC_INTERN PetscReal      CSTFIntegrabilityWeight(CSWillmoreFlow F, CSTriangleField *d);
 PETSC_INTERN void           CSTFScheduleApply(CSWillmoreFlow F, CSTriangleField *d);
 /* trianglefield_spinor.c: the spinor variables (App. C.2, C.3) */
@@ -89,6 +100,7 @@ PETSC_INTERN PetscErrorCode CSTFRestore(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSTFStateSetUp(CSWillmoreFlow F, CSTriangleField *d);
 PETSC_INTERN PetscErrorCode CSTFStateDestroy(CSTriangleField *d);
 /* trianglefield_continuation.c: w <- w * decay each time a stage converges, then 0 (App. C.3) */
-PETSC_INTERN PetscErrorCode CSTFContinuationSetFromOptions(CSWillmoreFlow F, CSTriangleField *d);
+PETSC_INTERN PetscErrorCode CSTFContinuationSetFromOptions(CSWillmoreFlow F, CSTriangleField *d, PetscOptionItems *PetscOptionsObject);
+PETSC_INTERN PetscErrorCode CSTFContinuationCheck(CSWillmoreFlow F, CSTriangleField *d);
 PETSC_INTERN PetscErrorCode CSTFContinuationAdvance(CSWillmoreFlow F, CSTriangleField *d, PetscBool *next);
 #endif

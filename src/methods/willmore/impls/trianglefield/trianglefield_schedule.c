@@ -12,13 +12,21 @@
 #include "trianglefield_impl.h"
 #include "cs_util.h"
 
-PetscErrorCode CSTFScheduleSetFromOptions(CSWillmoreFlow F, CSTriangleField *d)
+/* inside the flow's options block (CSTFSetFromOptions) */
+PetscErrorCode CSTFScheduleSetFromOptions(CSWillmoreFlow F, CSTriangleField *d, PetscOptionItems *PetscOptionsObject)
 {
   PetscFunctionBeginUser;
-  PetscOptionsBegin(F->comm, F->prefix, "Triangle-field integrability schedule (soliman2021 Fig. 8)", NULL);
+  PetscOptionsHeadBegin(PetscOptionsObject, "Triangle-field integrability schedule (soliman2021 Fig. 8)");
   PetscCall(CSOptionsInt("-integrability_start", "Iteration from which the lens and period rows are enforced (before: relaxed weight); 0 = always", NULL, d->istart, &d->istart, NULL));
   PetscCall(CSOptionsReal("-integrability_relaxed_weight", "Multiplier metric of the lens and period rows before -flow_integrability_start (large = relaxed)", NULL, d->wrelax, &d->wrelax, NULL));
-  PetscOptionsEnd();
+  PetscOptionsHeadEnd();
+  PetscFunctionReturn(0);
+}
+
+/* after the flow's options block (CSTFCheckOptions) */
+PetscErrorCode CSTFScheduleCheck(CSWillmoreFlow F, CSTriangleField *d)
+{
+  PetscFunctionBeginUser;
   PetscCheck(d->istart >= 0, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sintegrability_start %" PetscInt_FMT ": must be >= 0", F->prefix, d->istart);
   PetscCheck(d->wrelax > 0 && !PetscIsInfOrNanReal(d->wrelax), F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sintegrability_relaxed_weight %g: must be > 0", F->prefix, (double)d->wrelax);
   PetscFunctionReturn(0);
