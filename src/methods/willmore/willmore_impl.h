@@ -114,6 +114,7 @@ struct _CSWillmoreFlowOps {
   PetscReal max_step;       /* default of -flow_max_step (0: off) */
   PetscBool fold_guard;     /* default of -flow_fold_guard */
   PetscBool own_metric;     /* the kind updates the metric itself, when it needs it (newton) */
+  size_t    bytes_per_vertex; /* peak memory of a run per vertex, for the check before the set-up (0: the vertex kinds' 30 KB) */
   /* A kind with its own variables (trianglefield: x is a triangle field, not positions) replaces the positions'
      pipeline: its set-up (variables, energy, constraints, vectors, saddle), the evaluation at x (E, g, c, X, r,
      violations), the step's operators (metric, I_Q, weights), the constraints (for the filter and the

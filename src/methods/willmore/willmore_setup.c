@@ -191,16 +191,14 @@ static PetscErrorCode SetUpPositions(CSWillmoreFlow F)
 
 /* The memory a run of this kind needs, per vertex, against the memory available (issue 36, item 20): the peak RSS
    of one step, measured (docs/hardening.md "Memory per flow kind"): the vertex kinds about 30 KB per vertex (CGD:
-   bunny_closed_cgal 926 MB / 37706, icosphere 5 292 MB / 10242), the triangle field about 160 KB (its 18 unknowns
-   per vertex against 3, the same bytes per unknown: bunny_closed_cgal 5.7 GB, icosphere 5 1.6 GB, 48 x 48 lattice
-   397 MB / 2304). All ranks' vertices against one node's memory (the common single-machine run; an overestimate
-   across nodes). Refused before anything is built, with the sizes, rather than killed mid-run. */
-#define CS_FLOW_BYTES_PER_VERTEX    30000
-#define CS_TF_FLOW_BYTES_PER_VERTEX 160000
+   bunny_closed_cgal 926 MB / 37706, icosphere 5 292 MB / 10242); a kind with more unknowns gives its own
+   (ops.bytes_per_vertex; trianglefield.c). All ranks' vertices against one node's memory (the common single-machine
+   run; an overestimate across nodes). Refused before anything is built, with the sizes, rather than killed mid-run. */
+#define CS_FLOW_BYTES_PER_VERTEX 30000
 static PetscErrorCode CheckMemory(CSWillmoreFlow F)
 {
   char   what[256];
-  size_t per = CSWFOwnVariables(F) ? CS_TF_FLOW_BYTES_PER_VERTEX : CS_FLOW_BYTES_PER_VERTEX;
+  size_t per = F->ops.bytes_per_vertex ? F->ops.bytes_per_vertex : CS_FLOW_BYTES_PER_VERTEX;
   PetscFunctionBeginUser;
   PetscCall(PetscSNPrintf(what, sizeof(what), "-%stype %s on %s: %" PetscInt_FMT " vertices at about %d KB per vertex for the run", F->prefix, F->type, F->mesh->name, F->mesh->Nv, (int)(per / 1000)));
   CSRootCall(F->comm, CSCheckAllocation(what, (PetscInt64)F->mesh->Nv, per));

@@ -525,6 +525,9 @@ PetscErrorCode CSWillmoreFlowCreate_TriangleField(CSWillmoreFlow F)
      iterations: W 165.59 against 150.73 halving; Fig. 8's spiky sphere did not reach 1 % of the round icosphere's W
      in 40), so halving stays this kind's default until the model knows the integrability rows */
   F->ops.step_halving  = PETSC_TRUE;
+  /* about 160 KB of peak memory per vertex (its 18 unknowns per vertex against 3, the same bytes per unknown:
+     bunny_closed_cgal 5.7 GB, icosphere 5 1.6 GB, 48 x 48 lattice 397 MB / 2304; docs/hardening.md) */
+  F->ops.bytes_per_vertex = 160000;
   F->ops.destroy       = Destroy;
   F->ops.setup_problem = SetUpTriangleField;
   F->ops.evaluate      = CSTFEvaluate;
