@@ -1,7 +1,7 @@
 /* The loop state a checkpoint keeps besides its fields (the positions and mu, the edge field; a triangle field's
    own, trianglefield_state.c): [flow kind, t, t_mu, rejections, KSP its in total, KSP its of the last step, edges
-   with guarded I_Q weight, seconds, the kind's switch (ops.get_switch: whether CGD's -t_mu_final fired), the step model's last accepted t and the
-   violation it added (willmore_step_model.c), nu_1..nu_k, the stationarity window and the drift test's smallest residual
+   with guarded I_Q weight, seconds, the kind's switch (ops.get_switch: whether CGD's -t_mu_final fired), the step
+   model's last accepted t and the violation it added (willmore_step_model.c), nu_1..nu_k, the stationarity window and the drift test's smallest residual
    (willmore_stop.c), the kind's own scalars]. The kept best state (-flow_keep_best) is not stored: a resumed run keeps the best
    of its own iterations. The rest (g, c, X, metric, residual) is
    recomputed from x at the top of the loop, so a resumed run continues exactly like the uninterrupted one. */
