@@ -5,7 +5,7 @@
    the conformal flow (src/methods/conformal/) and the curve flow (src/methods/curve/). Not (yet) by the Willmore
    flows (src/methods/willmore/willmore_solve.c keeps its own step/reject loop, which predates this one) nor by the
    Bobenko-Schroeder flow, whose TAO scheme runs its iterations inside TaoSolve and reports them through TAO's
-   monitor, which a step-by-step driver cannot call. */
+   monitor, which a step-by-step driver cannot call. The loop logs the flow's Step and Solve events. */
 #ifndef CS_FLOW_LOOP_H
 #define CS_FLOW_LOOP_H
 #include <petscsys.h>
@@ -43,10 +43,12 @@ typedef struct {
   PetscReal      seconds, step_seconds; /* since the set-up began, at the last monitor call; of the last step */
   PetscLogDouble t0, t_setup, t_steps;  /* set-up start; set-up time; the steps' total time */
   PetscBool      setupcalled, started;
+  PetscLogEvent  event_step, event_solve; /* the flow's <Flow>Step (advance and evaluate) and <Flow>Solve events */
 } CSFlowLoop;
 
-/* ops, the communicator and the reason for -max_it/-max_seconds; everything else zero */
-PETSC_EXTERN PetscErrorCode CSFlowLoopInit(CSFlowLoop *, MPI_Comm, const CSFlowLoopOps *, PetscInt max_it_reason);
+/* ops, the communicator, the reason for -max_it/-max_seconds and the flow's Step and Solve events
+   (include/cs_log.h); everything else zero */
+PETSC_EXTERN PetscErrorCode CSFlowLoopInit(CSFlowLoop *, MPI_Comm, const CSFlowLoopOps *, PetscInt max_it_reason, PetscLogEvent event_step, PetscLogEvent event_solve);
 /* ops.setup once, timed (t0, t_setup) */
 PETSC_EXTERN PetscErrorCode CSFlowLoopSetUp(CSFlowLoop *, void *flow);
 /* one step (after the set-up and the input's evaluation, when not yet done); nothing once stopped. A step the flow
@@ -54,5 +56,27 @@ PETSC_EXTERN PetscErrorCode CSFlowLoopSetUp(CSFlowLoop *, void *flow);
 PETSC_EXTERN PetscErrorCode CSFlowLoopStep(CSFlowLoop *, void *flow);
 /* steps until a stopping test is met, then the END event */
 PETSC_EXTERN PetscErrorCode CSFlowLoopSolve(CSFlowLoop *, void *flow);
+
+/* The public SetUp, Step and Solve of a flow on the loop (its member `loop`), one call each of the loop's:
+   CS_FLOW_LOOP_DEFINE(CSCurveFlow) defines CSCurveFlowSetUp, CSCurveFlowStep and CSCurveFlowSolve. */
+#define CS_FLOW_LOOP_DEFINE(Type) \
+  PetscErrorCode Type##SetUp(Type obj) \
+  { \
+    PetscFunctionBeginUser; \
+    PetscCall(CSFlowLoopSetUp(&obj->loop, obj)); \
+    PetscFunctionReturn(0); \
+  } \
+  PetscErrorCode Type##Step(Type obj) \
+  { \
+    PetscFunctionBeginUser; \
+    PetscCall(CSFlowLoopStep(&obj->loop, obj)); \
+    PetscFunctionReturn(0); \
+  } \
+  PetscErrorCode Type##Solve(Type obj) \
+  { \
+    PetscFunctionBeginUser; \
+    PetscCall(CSFlowLoopSolve(&obj->loop, obj)); \
+    PetscFunctionReturn(0); \
+  }
 
 #endif

@@ -1,13 +1,15 @@
 /* The iteration driver the stepping flows share (include/cs_flow_loop.h). */
 #include "cs_flow_loop.h"
 
-PetscErrorCode CSFlowLoopInit(CSFlowLoop *L, MPI_Comm comm, const CSFlowLoopOps *ops, PetscInt max_it_reason)
+PetscErrorCode CSFlowLoopInit(CSFlowLoop *L, MPI_Comm comm, const CSFlowLoopOps *ops, PetscInt max_it_reason, PetscLogEvent event_step, PetscLogEvent event_solve)
 {
   PetscFunctionBeginUser;
   PetscCall(PetscMemzero(L, sizeof(*L)));
   L->ops           = *ops;
   L->comm          = comm;
   L->max_it_reason = max_it_reason;
+  L->event_step    = event_step;
+  L->event_solve   = event_solve;
   PetscFunctionReturn(0);
 }
 
@@ -71,6 +73,7 @@ PetscErrorCode CSFlowLoopStep(CSFlowLoop *L, void *flow)
   PetscFunctionBeginUser;
   PetscCall(Start(L, flow));
   if (L->reason) PetscFunctionReturn(0);
+  PetscCall(PetscLogEventBegin(L->event_step, 0, 0, 0, 0));
   PetscCall(PetscTime(&t0));
   PetscCall(L->ops.advance(flow, &L->step_taken));
   if (L->step_taken) {
@@ -78,6 +81,7 @@ PetscErrorCode CSFlowLoopStep(CSFlowLoop *L, void *flow)
     PetscCall(L->ops.evaluate(flow));
   } else L->rejections++;
   PetscCall(PetscTime(&t1));
+  PetscCall(PetscLogEventEnd(L->event_step, 0, 0, 0, 0));
   L->step_seconds = (PetscReal)(t1 - t0);
   L->t_steps += t1 - t0;
   PetscCall(Judge(L, flow, PETSC_TRUE));
@@ -88,8 +92,10 @@ PetscErrorCode CSFlowLoopStep(CSFlowLoop *L, void *flow)
 PetscErrorCode CSFlowLoopSolve(CSFlowLoop *L, void *flow)
 {
   PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(L->event_solve, 0, 0, 0, 0));
   PetscCall(Start(L, flow));
   while (!L->reason) PetscCall(CSFlowLoopStep(L, flow));
   PetscCall(Monitor(L, flow, CS_FLOW_EVENT_END));
+  PetscCall(PetscLogEventEnd(L->event_solve, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }

@@ -2,6 +2,7 @@
    loop and the monitors; the schemes are in bs_semi.c and bs_tao.c. See include/cs_methods_bs.h. */
 #include "bs_flow_impl.h"
 #include "cs_package.h"
+#include "cs_log.h"
 #include "cs_util.h"
 
 const char *const CSBSSchemes[]  = {"semi", "tao", "CSBSScheme", "CS_BS_SCHEME_", NULL};
@@ -10,12 +11,29 @@ const char *const CSBSIslandsTypes[] = {"vertex", "face", "CSBSIslandsType", "CS
 static const char *const ReasonsShifted[] = {"stalled", "diverged", "not_converged", "rejections", "max_it", "iterating", "converged", "energy_target"};
 const char *const       *CSBSConvergedReasons = ReasonsShifted + 5;
 
+CS_OBJECT_DEFINE(CSBSFlow, CSBSFlowMonitorFn) /* SetOptionsPrefix, GetOptionsPrefix, MonitorSet, Destroy */
+
+/* the header's destroy op (CSBSFlowDestroy) */
+static PetscErrorCode DestroyMembers(CSObject obj)
+{
+  CSBSFlow F = (CSBSFlow)obj;
+  PetscFunctionBeginUser;
+  if (F->ops) PetscCall(F->ops->destroy(F));
+  PetscCall(VecDestroy(&F->x));
+  PetscCall(VecDestroy(&F->x0));
+  PetscCall(VecDestroy(&F->area0));
+  PetscCall(VecDestroy(&F->areat));
+  PetscCall(CSEnergyDestroy(&F->bs));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode CSBSFlowCreate(CSMesh mesh, CSBSFlow *flow)
 {
   CSBSFlow F;
   PetscFunctionBeginUser;
   PetscCall(CSInitializePackage()); /* as KSPCreate does: events, PCs and solver types before any use */
   PetscCall(CSObjectCreate(sizeof(*F), mesh->comm, "bs_", &F));
+  F->hdr.destroy = DestroyMembers;
   F->mesh       = mesh;
   F->scheme     = CS_BS_SCHEME_SEMI;
   F->problem    = CS_BS_PROBLEM_STATIC;
@@ -31,20 +49,6 @@ PetscErrorCode CSBSFlowCreate(CSMesh mesh, CSBSFlow *flow)
   F->dt_min_rel = 1e-6;
   F->max_area_ratio = 200; /* as the Willmore flow's resolution guard */
   *flow = F;
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSBSFlowSetOptionsPrefix(CSBSFlow flow, const char prefix[])
-{
-  PetscFunctionBeginUser;
-  PetscCall(CSObjectSetOptionsPrefix(&flow->hdr, prefix));
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSBSFlowGetOptionsPrefix(CSBSFlow flow, const char *prefix[])
-{
-  PetscFunctionBeginUser;
-  PetscCall(CSObjectGetOptionsPrefix(&flow->hdr, prefix));
   PetscFunctionReturn(0);
 }
 
@@ -225,7 +229,7 @@ PetscErrorCode CSBSFlowMonitor(CSBSFlow F, CSBSMonitorInfo *info)
   info->row     = F->row;
   info->resumed = (PetscBool)(info->event == CS_BS_MONITOR_START && F->resumed);
   info->seconds = (PetscReal)(now - F->t0);
-  for (PetscInt i = 0; i < F->hdr.monitors.n; i++) PetscCall(((CSBSFlowMonitorFn)F->hdr.monitors.fn[i])(F, info, F->hdr.monitors.ctx[i]));
+  CS_OBJECT_MONITORS_CALL(F, CSBSFlowMonitorFn, info);
   if (info->event == CS_BS_MONITOR_STEP || (info->event == CS_BS_MONITOR_START && !F->resumed)) F->row++;
   PetscFunctionReturn(0);
 }
@@ -247,7 +251,11 @@ PetscErrorCode CSBSFlowStep(CSBSFlow F)
   PetscCall(Start(F));
   if (F->reason != CS_BS_ITERATING) PetscFunctionReturn(0);
   if (F->ops->max_it_reason != CS_BS_ITERATING && F->it >= F->max_it) F->reason = F->ops->max_it_reason;
-  else PetscCall(F->ops->step(F));
+  else {
+    PetscCall(PetscLogEventBegin(CS_EVENT_BSStep, 0, 0, 0, 0));
+    PetscCall(F->ops->step(F));
+    PetscCall(PetscLogEventEnd(CS_EVENT_BSStep, 0, 0, 0, 0));
+  }
   PetscFunctionReturn(0);
 }
 
@@ -255,6 +263,7 @@ PetscErrorCode CSBSFlowSolve(CSBSFlow F)
 {
   CSBSMonitorInfo info;
   PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(CS_EVENT_BSSolve, 0, 0, 0, 0));
   PetscCall(Start(F));
   while (F->reason == CS_BS_ITERATING) PetscCall(CSBSFlowStep(F));
   if (!F->finished) { /* the stepping time stops here */
@@ -270,29 +279,7 @@ PetscErrorCode CSBSFlowSolve(CSBSFlow F)
   info.dt    = F->dt;
   F->xmon    = F->x;
   PetscCall(CSBSFlowMonitor(F, &info));
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSBSFlowMonitorSet(CSBSFlow F, CSBSFlowMonitorFn fn, void *ctx, PetscErrorCode (*destroy)(void **))
-{
-  PetscFunctionBeginUser;
-  PetscCall(CSMonitorListAdd(&F->hdr.monitors, F->hdr.comm, "CSBSFlowMonitorSet", (PetscVoidFunction)fn, ctx, destroy));
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSBSFlowDestroy(CSBSFlow *flow)
-{
-  CSBSFlow F = *flow;
-  PetscFunctionBeginUser;
-  if (!F) PetscFunctionReturn(0);
-  PetscCall(CSMonitorListCancel(&F->hdr.monitors));
-  if (F->ops) PetscCall(F->ops->destroy(F));
-  PetscCall(VecDestroy(&F->x));
-  PetscCall(VecDestroy(&F->x0));
-  PetscCall(VecDestroy(&F->area0));
-  PetscCall(VecDestroy(&F->areat));
-  PetscCall(CSEnergyDestroy(&F->bs));
-  PetscCall(CSObjectDestroy((CSObject *)flow));
+  PetscCall(PetscLogEventEnd(CS_EVENT_BSSolve, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
 
