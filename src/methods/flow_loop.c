@@ -26,6 +26,17 @@ PetscErrorCode CSFlowLoopSetUp(CSFlowLoop *L, void *flow)
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode CSFlowLoopResume(CSFlowLoop *L, PetscInt it, PetscReal seconds)
+{
+  PetscLogDouble now;
+  PetscFunctionBeginUser;
+  PetscCheck(L->setupcalled && !L->started, L->comm, PETSC_ERR_ORDER, "CSFlowLoopResume: after the set-up, before the first step");
+  PetscCall(PetscTime(&now));
+  L->it = it;
+  L->t0 = now - seconds;
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode Monitor(CSFlowLoop *L, void *flow, CSFlowEvent ev)
 {
   PetscLogDouble now;
@@ -45,7 +56,7 @@ static PetscErrorCode Judge(CSFlowLoop *L, void *flow, PetscBool timed)
   PetscFunctionBeginUser;
   PetscCall(L->ops.judge(flow, &L->reason));
   /* rejected steps count too, so that a flow that keeps rejecting (its judge saying go on) still stops */
-  if (!L->reason && (L->it >= L->max_it || L->rejections >= L->max_it)) L->reason = L->max_it_reason;
+  if (!L->reason && (L->it >= L->max_it || (!L->own_rejection_limit && L->rejections >= L->max_it))) L->reason = L->max_it_reason;
   if (L->reason || !timed || L->max_seconds <= 0) PetscFunctionReturn(0);
   PetscCall(PetscTime(&now));
   over = (PetscMPIInt)(now - L->t0 >= L->max_seconds);
@@ -78,7 +89,7 @@ PetscErrorCode CSFlowLoopStep(CSFlowLoop *L, void *flow)
   PetscCall(L->ops.advance(flow, &L->step_taken));
   if (L->step_taken) {
     L->it++;
-    PetscCall(L->ops.evaluate(flow));
+    if (L->ops.evaluate) PetscCall(L->ops.evaluate(flow));
   } else L->rejections++;
   PetscCall(PetscTime(&t1));
   PetscCall(PetscLogEventEnd(L->event_step, 0, 0, 0, 0));

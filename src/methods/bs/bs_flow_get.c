@@ -1,7 +1,7 @@
 /* Getters of the Bobenko-Schroeder flow object (include/cs_methods_bs.h). */
 #include "bs_flow_impl.h"
 
-CS_OBJECT_GETTER(CSBSFlow, ConvergedReason, CSBSConvergedReason, reason)
+CS_OBJECT_GETTER(CSBSFlow, ConvergedReason, CSBSConvergedReason, loop.reason)
 CS_OBJECT_GETTER(CSBSFlow, InitialSolution, Vec, x0)
 CS_OBJECT_GETTER(CSBSFlow, Mesh, CSMesh, mesh)
 CS_OBJECT_GETTER(CSBSFlow, Energy, CSEnergy, bs)
@@ -37,6 +37,6 @@ PetscErrorCode CSBSFlowGetStepSeconds(CSBSFlow F, PetscLogDouble *seconds)
   PetscLogDouble now;
   PetscFunctionBeginUser;
   PetscCall(PetscTime(&now));
-  *seconds = F->tsteps0 + (F->started && !F->finished ? now - F->tstart : 0);
+  *seconds = F->tsteps0 + (F->loop.started && !F->finished ? now - F->tstart : 0);
   PetscFunctionReturn(0);
 }
