@@ -91,12 +91,13 @@ PETSC_EXTERN PetscErrorCode CSMonitorListCancel(CSMonitorList *l);
     PetscFunctionReturn(0); \
   }
 
-/* PetscErrorCode Type##Get##Name(Type obj, T *value): *value = (T)obj->member (borrowed) */
+/* PetscErrorCode Type##Get##Name(Type obj, T *value): *value = obj->member (borrowed; no cast, so a member of
+   another type is a compile error, but an integer member may give an enum) */
 #define CS_OBJECT_GETTER(Type, Name, T, member) \
   PetscErrorCode Type##Get##Name(Type obj, T *value) \
   { \
     PetscFunctionBeginUser; \
-    *value = (T)(obj->member); \
+    *value = obj->member; \
     PetscFunctionReturn(0); \
   }
 
