@@ -1,5 +1,6 @@
 /* The outer iteration: evaluate at x, monitor, stop or step (trial, filter, rejections), accept. */
 #include "willmore_impl.h"
+#include "cs_log.h"
 
 /* The smallest and largest violation of the run and their iterations: the report says when the violation at the
    end is above both -flow_ctol and 10x the smallest of the run (it grew; issue 21), so no run ends out of the
@@ -133,6 +134,7 @@ PetscErrorCode CSWillmoreFlowStep(CSWillmoreFlow F, CSWillmoreFlowConvergedReaso
   PetscBool accepted;
   PetscFunctionBeginUser;
   PetscCall(CSWillmoreFlowSetUp(F));
+  PetscCall(PetscLogEventBegin(CS_EVENT_WillmoreStep, 0, 0, 0, 0));
   if (!F->started) {
     F->started = PETSC_TRUE;
     if (F->ops.start && !F->resumed) PetscCall((*F->ops.start)(F)); /* a checkpoint is past the start already */
@@ -181,6 +183,7 @@ PetscErrorCode CSWillmoreFlowStep(CSWillmoreFlow F, CSWillmoreFlowConvergedReaso
     PetscCall((*F->ops.grow)(F));
     F->it++;
   }
+  PetscCall(PetscLogEventEnd(CS_EVENT_WillmoreStep, 0, 0, 0, 0));
   *reason = F->reason;
   PetscFunctionReturn(0);
 }
@@ -220,6 +223,8 @@ PetscErrorCode CSWillmoreFlowSolve(CSWillmoreFlow F)
 {
   CSWillmoreFlowConvergedReason reason = CS_WILLMORE_FLOW_ITERATING;
   PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(CS_EVENT_WillmoreSolve, 0, 0, 0, 0));
   while (reason == CS_WILLMORE_FLOW_ITERATING) PetscCall(CSWillmoreFlowStep(F, &reason));
+  PetscCall(PetscLogEventEnd(CS_EVENT_WillmoreSolve, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
