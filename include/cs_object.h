@@ -10,7 +10,8 @@
      Type##MonitorSet(Type, MonitorFn, void *ctx, PetscErrorCode (*destroy)(void **)) (up to CS_MAX_MONITORS,
                                                          called in the order set; destroy (may be NULL) frees ctx)
      Type##Destroy(Type *)                              (the monitors' contexts, hdr.destroy, the header)
-   and CS_OBJECT_GETTER(Type, Name, T, member) defines a getter Type##Get##Name(Type, T *) of one member. */
+   and CS_OBJECT_GETTER(Type, Name, T, member) defines a getter Type##Get##Name(Type, T *) of one member,
+   CS_OBJECT_SETTER(Type, Name, T, member) a setter Type##Set##Name(Type, T) of one member. */
 #ifndef CS_OBJECT_H
 #define CS_OBJECT_H
 #include <petscsys.h>
@@ -101,4 +102,12 @@ PETSC_EXTERN PetscErrorCode CSMonitorListCancel(CSMonitorList *l);
     PetscFunctionReturn(0); \
   }
 
+/* PetscErrorCode Type##Set##Name(Type obj, T value): obj->member = value (a plain value, no check) */
+#define CS_OBJECT_SETTER(Type, Name, T, member) \
+  PetscErrorCode Type##Set##Name(Type obj, T value) \
+  { \
+    PetscFunctionBeginUser; \
+    obj->member = value; \
+    PetscFunctionReturn(0); \
+  }
 #endif

@@ -3,19 +3,15 @@
    Sec. 6.4.2) and what a summary reads after it (the eigenvalue, its residual, iterations, times). */
 #include "spin_impl.h"
 
-PetscErrorCode CSSpinSetRhoLocation(CSSpin s, CSRhoLocation loc)
-{
-  PetscFunctionBeginUser;
-  s->rho_loc = loc;
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSSpinGetRhoLocation(CSSpin s, CSRhoLocation *loc)
-{
-  PetscFunctionBeginUser;
-  *loc = s->rho_loc;
-  PetscFunctionReturn(0);
-}
+/* one-member setters and getters (include/cs_object.h) */
+CS_OBJECT_SETTER(CSSpin, RhoLocation, CSRhoLocation, rho_loc)
+CS_OBJECT_GETTER(CSSpin, RhoLocation, CSRhoLocation, rho_loc)
+CS_OBJECT_SETTER(CSSpin, RestoreArea, PetscBool, restore_area)
+CS_OBJECT_SETTER(CSSpin, BoundaryType, CSSpinBoundary, boundary)
+CS_OBJECT_GETTER(CSSpin, BoundaryType, CSSpinBoundary, boundary)
+CS_OBJECT_GETTER(CSSpin, DM, DM, dm)
+CS_OBJECT_GETTER(CSSpin, Mesh, CSMesh, mesh)
+CS_OBJECT_GETTER(CSSpin, Shift, PetscReal, target) /* the shift toward 0 of the eigen solve (-spin_shift) */
 
 PetscErrorCode CSSpinSetTarget(CSSpin s, Vec xtarget, Vec mu)
 {
@@ -27,27 +23,6 @@ PetscErrorCode CSSpinSetTarget(CSSpin s, Vec xtarget, Vec mu)
   PetscCall(VecDestroy(&s->mu));
   s->xtarget = xtarget;
   s->mu      = mu;
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSSpinSetRestoreArea(CSSpin s, PetscBool restore)
-{
-  PetscFunctionBeginUser;
-  s->restore_area = restore;
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSSpinSetBoundaryType(CSSpin s, CSSpinBoundary b)
-{
-  PetscFunctionBeginUser;
-  s->boundary = b;
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSSpinGetBoundaryType(CSSpin s, CSSpinBoundary *b)
-{
-  PetscFunctionBeginUser;
-  *b = s->boundary;
   PetscFunctionReturn(0);
 }
 
@@ -65,27 +40,6 @@ PetscErrorCode CSSpinGetInverseIteration(CSSpin s, PetscBool *inverse, PetscInt 
   PetscFunctionBeginUser;
   if (inverse) *inverse = s->inverse;
   if (its) *its = s->inverse_its;
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSSpinGetDM(CSSpin s, DM *dm)
-{
-  PetscFunctionBeginUser;
-  *dm = s->dm;
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSSpinGetMesh(CSSpin s, CSMesh *mesh)
-{
-  PetscFunctionBeginUser;
-  *mesh = s->mesh;
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSSpinGetShift(CSSpin s, PetscReal *shift)
-{
-  PetscFunctionBeginUser;
-  *shift = s->target;
   PetscFunctionReturn(0);
 }
 

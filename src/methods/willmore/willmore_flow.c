@@ -188,6 +188,12 @@ PetscErrorCode CSWillmoreFlowGetType(CSWillmoreFlow F, CSWillmoreFlowType *type)
 /* SetOptionsPrefix, GetOptionsPrefix, MonitorSet, Destroy: the skeleton of every method object (include/cs_object.h) */
 CS_OBJECT_DEFINE(CSWillmoreFlow, CSWillmoreFlowMonitorFn)
 
+/* one-member getters (include/cs_object.h) */
+CS_OBJECT_GETTER(CSWillmoreFlow, ConvergedReason, CSWillmoreFlowConvergedReason, reason)
+CS_OBJECT_GETTER(CSWillmoreFlow, Mesh, CSMesh, mesh)
+CS_OBJECT_GETTER(CSWillmoreFlow, Conformal, PetscBool, conformal)
+CS_OBJECT_GETTER(CSWillmoreFlow, EnergyName, const char *, energy_name)
+
 PetscErrorCode CSWillmoreFlowMonitorCancel(CSWillmoreFlow F)
 {
   PetscFunctionBeginUser;
@@ -195,19 +201,27 @@ PetscErrorCode CSWillmoreFlowMonitorCancel(CSWillmoreFlow F)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CSWillmoreFlowGetConvergedReason(CSWillmoreFlow F, CSWillmoreFlowConvergedReason *reason)
+/* the positions of the current or the initial state: the kind's surface of its own variables, or x / x0 */
+static PetscErrorCode GetPositions(CSWillmoreFlow F, PetscBool initial, const char caller[], Vec *x)
 {
   PetscFunctionBeginUser;
-  *reason = F->reason;
+  PetscCheck(F->setupcalled, F->hdr.comm, PETSC_ERR_ORDER, "%s before CSWillmoreFlowSetUp", caller);
+  if (F->ops.positions) PetscCall((*F->ops.positions)(F, initial, x));
+  else *x = initial ? F->x0 : F->x;
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode CSWillmoreFlowGetSolution(CSWillmoreFlow F, Vec *x)
 {
   PetscFunctionBeginUser;
-  PetscCheck(F->setupcalled, F->hdr.comm, PETSC_ERR_ORDER, "CSWillmoreFlowGetSolution before CSWillmoreFlowSetUp");
-  if (F->ops.positions) PetscCall((*F->ops.positions)(F, PETSC_FALSE, x));
-  else *x = F->x;
+  PetscCall(GetPositions(F, PETSC_FALSE, "CSWillmoreFlowGetSolution", x));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSWillmoreFlowGetInitial(CSWillmoreFlow F, Vec *x0)
+{
+  PetscFunctionBeginUser;
+  PetscCall(GetPositions(F, PETSC_TRUE, "CSWillmoreFlowGetInitial", x0));
   PetscFunctionReturn(0);
 }
 
@@ -223,36 +237,6 @@ PetscErrorCode CSWillmoreFlowGetLastSolution(CSWillmoreFlow F, Vec *x)
 {
   PetscFunctionBeginUser;
   *x = F->best_used ? F->last_x : NULL;
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSWillmoreFlowGetInitial(CSWillmoreFlow F, Vec *x0)
-{
-  PetscFunctionBeginUser;
-  PetscCheck(F->setupcalled, F->hdr.comm, PETSC_ERR_ORDER, "CSWillmoreFlowGetInitial before CSWillmoreFlowSetUp");
-  if (F->ops.positions) PetscCall((*F->ops.positions)(F, PETSC_TRUE, x0));
-  else *x0 = F->x0;
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSWillmoreFlowGetMesh(CSWillmoreFlow F, CSMesh *mesh)
-{
-  PetscFunctionBeginUser;
-  *mesh = F->mesh;
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSWillmoreFlowGetConformal(CSWillmoreFlow F, PetscBool *conformal)
-{
-  PetscFunctionBeginUser;
-  *conformal = F->conformal;
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSWillmoreFlowGetEnergyName(CSWillmoreFlow F, const char **name)
-{
-  PetscFunctionBeginUser;
-  *name = F->energy_name;
   PetscFunctionReturn(0);
 }
 
