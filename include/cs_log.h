@@ -14,6 +14,10 @@ PETSC_EXTERN PetscLogEvent CS_EVENT_SubCholSym, CS_EVENT_SubCholNum, CS_EVENT_Su
 PETSC_EXTERN PetscLogEvent CS_EVENT_SpinEigen, CS_EVENT_SpinPoisson;
 /* methods: the curve flow's Poisson matrix and factorisation (once), its per-step Poisson solves */
 PETSC_EXTERN PetscLogEvent CS_EVENT_CurvePoissonSetUp, CS_EVENT_CurvePoisson;
+/* methods: one step and the whole solve of each flow (CSFlowLoop logs them for the flows on it; the Willmore and
+   Bobenko-Schroeder flows in their own loops); nested: a Solve event holds its Step events */
+PETSC_EXTERN PetscLogEvent CS_EVENT_WillmoreStep, CS_EVENT_WillmoreSolve, CS_EVENT_ConformalStep, CS_EVENT_ConformalSolve;
+PETSC_EXTERN PetscLogEvent CS_EVENT_CurveStep, CS_EVENT_CurveSolve, CS_EVENT_BSStep, CS_EVENT_BSSolve;
 /* operators: the harmonic 1-form basis (harmonic_basis.c): set-up / update */
 PETSC_EXTERN PetscLogEvent CS_EVENT_HarmonicBasis;
 #endif

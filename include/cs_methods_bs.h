@@ -25,6 +25,7 @@
 #define CS_METHODS_BS_H
 #include <petscksp.h>
 #include "cs_energy_bs.h"
+#include "cs_object.h"
 
 typedef struct _p_CSBSFlow *CSBSFlow;
 
@@ -81,15 +82,13 @@ typedef struct {
 typedef PetscErrorCode (*CSBSFlowMonitorFn)(CSBSFlow, const CSBSMonitorInfo *, void *);
 
 PETSC_EXTERN PetscErrorCode CSBSFlowCreate(CSMesh mesh, CSBSFlow *flow);
-PETSC_EXTERN PetscErrorCode CSBSFlowSetOptionsPrefix(CSBSFlow flow, const char prefix[]);
-PETSC_EXTERN PetscErrorCode CSBSFlowGetOptionsPrefix(CSBSFlow flow, const char *prefix[]);
 PETSC_EXTERN PetscErrorCode CSBSFlowSetFromOptions(CSBSFlow flow);
 PETSC_EXTERN PetscErrorCode CSBSFlowSetUp(CSBSFlow flow);
 PETSC_EXTERN PetscErrorCode CSBSFlowStep(CSBSFlow flow);
 PETSC_EXTERN PetscErrorCode CSBSFlowSolve(CSBSFlow flow);
-PETSC_EXTERN PetscErrorCode CSBSFlowDestroy(CSBSFlow *flow);
-/* Up to 8 monitors, called in the order set; destroy (may be NULL) frees ctx at CSBSFlowDestroy. */
-PETSC_EXTERN PetscErrorCode CSBSFlowMonitorSet(CSBSFlow flow, CSBSFlowMonitorFn fn, void *ctx, PetscErrorCode (*destroy)(void **));
+/* CSBSFlowSetOptionsPrefix, GetOptionsPrefix, MonitorSet (up to 8 monitors, called in the order set; destroy,
+   may be NULL, frees ctx at Destroy) and Destroy: the skeleton of every method object (include/cs_object.h) */
+CS_OBJECT_DECLARE(CSBSFlow, CSBSFlowMonitorFn);
 
 PETSC_EXTERN PetscErrorCode CSBSFlowGetConvergedReason(CSBSFlow flow, CSBSConvergedReason *reason);
 PETSC_EXTERN PetscErrorCode CSBSFlowGetSolution(CSBSFlow flow, Vec *x); /* the current state (borrowed) */

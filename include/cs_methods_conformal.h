@@ -27,6 +27,7 @@
 #define CS_METHODS_CONFORMAL_H
 #include <petscksp.h>
 #include "cs_mesh.h"
+#include "cs_object.h"
 
 typedef struct _p_CSConformalFlow *CSConformalFlow;
 
@@ -99,8 +100,6 @@ typedef struct {
 typedef PetscErrorCode (*CSConformalFlowMonitorFn)(CSConformalFlow, const CSConformalMonitorInfo *, void *);
 
 PETSC_EXTERN PetscErrorCode CSConformalFlowCreate(CSMesh mesh, CSConformalFlow *flow);
-PETSC_EXTERN PetscErrorCode CSConformalFlowSetOptionsPrefix(CSConformalFlow flow, const char prefix[]);
-PETSC_EXTERN PetscErrorCode CSConformalFlowGetOptionsPrefix(CSConformalFlow flow, const char *prefix[]);
 PETSC_EXTERN PetscErrorCode CSConformalFlowSetFromOptions(CSConformalFlow flow);
 /* Defaults in code (before SetFromOptions): tau > 0; atol >= 0 (0: off), rtol >= 0, max_it >= 0; the filter
    (sigma > 0 in units of (area/4pi)^k, k >= 0; sigma = 0 turns it off) */
@@ -110,9 +109,9 @@ PETSC_EXTERN PetscErrorCode CSConformalFlowSetFilter(CSConformalFlow flow, Petsc
 PETSC_EXTERN PetscErrorCode CSConformalFlowSetUp(CSConformalFlow flow);
 PETSC_EXTERN PetscErrorCode CSConformalFlowStep(CSConformalFlow flow);
 PETSC_EXTERN PetscErrorCode CSConformalFlowSolve(CSConformalFlow flow);
-PETSC_EXTERN PetscErrorCode CSConformalFlowDestroy(CSConformalFlow *flow);
-/* Up to 8 monitors, called in the order set; destroy (may be NULL) frees ctx at CSConformalFlowDestroy. */
-PETSC_EXTERN PetscErrorCode CSConformalFlowMonitorSet(CSConformalFlow flow, CSConformalFlowMonitorFn fn, void *ctx, PetscErrorCode (*destroy)(void **));
+/* CSConformalFlowSetOptionsPrefix, GetOptionsPrefix, MonitorSet (up to 8 monitors, called in the order set; destroy,
+   may be NULL, frees ctx at Destroy) and Destroy: the skeleton of every method object (include/cs_object.h) */
+CS_OBJECT_DECLARE(CSConformalFlow, CSConformalFlowMonitorFn);
 /* Sec. 4's filter on the current surface applied to a dmV1 vector v in place (after SetUp; needs sigma > 0). */
 PETSC_EXTERN PetscErrorCode CSConformalFlowApplyFilter(CSConformalFlow flow, Vec v);
 

@@ -21,6 +21,7 @@
 #define CS_METHODS_CURVE_H
 #include <petscksp.h>
 #include "cs_curve.h"
+#include "cs_object.h"
 
 typedef struct _p_CSCurveFlow *CSCurveFlow;
 
@@ -54,8 +55,6 @@ typedef struct {
 typedef PetscErrorCode (*CSCurveFlowMonitorFn)(CSCurveFlow, const CSCurveMonitorInfo *, void *);
 
 PETSC_EXTERN PetscErrorCode CSCurveFlowCreate(CSCurve curve, CSCurveFlow *flow);
-PETSC_EXTERN PetscErrorCode CSCurveFlowSetOptionsPrefix(CSCurveFlow flow, const char prefix[]);
-PETSC_EXTERN PetscErrorCode CSCurveFlowGetOptionsPrefix(CSCurveFlow flow, const char *prefix[]);
 PETSC_EXTERN PetscErrorCode CSCurveFlowSetFromOptions(CSCurveFlow flow);
 /* The defaults in code (before SetFromOptions, which may override them): tau (> 0); rtol (>= 0) and max_it (>= 0) */
 PETSC_EXTERN PetscErrorCode CSCurveFlowSetTimeStep(CSCurveFlow flow, PetscReal tau);
@@ -63,9 +62,9 @@ PETSC_EXTERN PetscErrorCode CSCurveFlowSetTolerances(CSCurveFlow flow, PetscReal
 PETSC_EXTERN PetscErrorCode CSCurveFlowSetUp(CSCurveFlow flow);
 PETSC_EXTERN PetscErrorCode CSCurveFlowStep(CSCurveFlow flow);
 PETSC_EXTERN PetscErrorCode CSCurveFlowSolve(CSCurveFlow flow);
-PETSC_EXTERN PetscErrorCode CSCurveFlowDestroy(CSCurveFlow *flow);
-/* Up to 8 monitors, called in the order set; destroy (may be NULL) frees ctx at CSCurveFlowDestroy. */
-PETSC_EXTERN PetscErrorCode CSCurveFlowMonitorSet(CSCurveFlow flow, CSCurveFlowMonitorFn fn, void *ctx, PetscErrorCode (*destroy)(void **));
+/* CSCurveFlowSetOptionsPrefix, GetOptionsPrefix, MonitorSet (up to 8 monitors, called in the order set; destroy,
+   may be NULL, frees ctx at Destroy) and Destroy: the skeleton of every method object (include/cs_object.h) */
+CS_OBJECT_DECLARE(CSCurveFlow, CSCurveFlowMonitorFn);
 
 PETSC_EXTERN PetscErrorCode CSCurveFlowGetConvergedReason(CSCurveFlow flow, CSCurveFlowConvergedReason *reason);
 PETSC_EXTERN PetscErrorCode CSCurveFlowGetSolution(CSCurveFlow flow, Vec *x);     /* positions, block size 2 (borrowed) */

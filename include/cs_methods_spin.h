@@ -10,6 +10,7 @@
 #include "cs_operators_dirac.h"
 #include "cs_cholmod.h"
 #include "cs_quaternion_cholesky.h"
+#include "cs_object.h"
 
 /* crane2011 Eq. 8: e~_ij = 1/3 conj(l_i) e l_i + 1/6 conj(l_i) e l_j + 1/6 conj(l_j) e l_i + 1/3 conj(l_j) e l_j for the
    edge vector e = f_j - f_i. The two middle terms are q - conj(q) = 2 Im q with q = conj(l_i) e l_j, so e~ is
@@ -49,8 +50,6 @@ typedef struct _p_CSSpin *CSSpin;
 typedef PetscErrorCode (*CSSpinMonitorFn)(CSSpin spin, void *ctx);
 
 PETSC_EXTERN PetscErrorCode CSSpinCreate(CSMesh mesh, CSSpin *spin);
-PETSC_EXTERN PetscErrorCode CSSpinSetOptionsPrefix(CSSpin spin, const char prefix[]);
-PETSC_EXTERN PetscErrorCode CSSpinGetOptionsPrefix(CSSpin spin, const char *prefix[]);
 PETSC_EXTERN PetscErrorCode CSSpinSetFromOptions(CSSpin spin);
 /* the work vectors of CSSpinSolve; called by CSSpinSolve when needed */
 PETSC_EXTERN PetscErrorCode CSSpinSetUp(CSSpin spin);
@@ -64,8 +63,9 @@ PETSC_EXTERN PetscErrorCode CSSpinSolve(CSSpin spin, Vec x, Vec rho);
 PETSC_EXTERN PetscErrorCode CSSpinGetSolution(CSSpin spin, Vec *xnew);
 /* its eigenvector lambda (global on the object's DM, owned by the object) */
 PETSC_EXTERN PetscErrorCode CSSpinGetSpinor(CSSpin spin, Vec *lambda);
-PETSC_EXTERN PetscErrorCode CSSpinMonitorSet(CSSpin spin, CSSpinMonitorFn fn, void *ctx, PetscErrorCode (*destroy)(void **));
-PETSC_EXTERN PetscErrorCode CSSpinDestroy(CSSpin *spin);
+/* CSSpinSetOptionsPrefix, GetOptionsPrefix, MonitorSet (up to 8 monitors, called once per Solve in the order set;
+   destroy, may be NULL, frees ctx at Destroy) and Destroy: the skeleton of every method object (include/cs_object.h) */
+CS_OBJECT_DECLARE(CSSpin, CSSpinMonitorFn);
 
 /* Setters (before CSSpinSetFromOptions; the options given override those that are options) */
 PETSC_EXTERN PetscErrorCode CSSpinSetRhoLocation(CSSpin spin, CSRhoLocation loc);

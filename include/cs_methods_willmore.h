@@ -11,6 +11,7 @@
 #ifndef CS_METHODS_WILLMORE_H
 #define CS_METHODS_WILLMORE_H
 #include "cs_constraints.h"
+#include "cs_object.h"
 #include <petscksp.h>
 
 typedef struct _p_CSWillmoreFlow *CSWillmoreFlow;
@@ -119,8 +120,6 @@ static inline PetscBool CSWillmoreFlowTriangleFieldInfoIsImmersion(const CSWillm
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowCreate(CSMesh mesh, CSWillmoreFlow *flow);
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowSetType(CSWillmoreFlow flow, CSWillmoreFlowType type);
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetType(CSWillmoreFlow flow, CSWillmoreFlowType *type);
-PETSC_EXTERN PetscErrorCode CSWillmoreFlowSetOptionsPrefix(CSWillmoreFlow flow, const char prefix[]);
-PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetOptionsPrefix(CSWillmoreFlow flow, const char *prefix[]);
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowSetTolerances(CSWillmoreFlow flow, PetscReal rtol, PetscReal ctol, PetscInt max_it);
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowSetFromOptions(CSWillmoreFlow flow);
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowSetUp(CSWillmoreFlow flow);
@@ -146,7 +145,6 @@ PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetEnergy(CSWillmoreFlow flow, CSEnerg
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetEnergyName(CSWillmoreFlow flow, const char **name);
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetInitialEnergy(CSWillmoreFlow flow, PetscReal *E0);
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowView(CSWillmoreFlow flow, PetscViewer viewer); /* NULL: stdout */
-PETSC_EXTERN PetscErrorCode CSWillmoreFlowDestroy(CSWillmoreFlow *flow);
 
 /* The conformal Lagrange multiplier at the current state (soliman2021 Sec. 3.2): q (dmE1, or NULL) the
    quadratic differential in the paper's sign (Eq. 7), force (dmV3, or NULL) the conformal tension force
@@ -160,7 +158,9 @@ PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetResidual(CSWillmoreFlow flow, Vec *
 
 /* Monitors, called after the evaluation at the top of every iteration (it = accepted steps so far). */
 typedef PetscErrorCode (*CSWillmoreFlowMonitorFn)(CSWillmoreFlow flow, PetscInt it, void *ctx);
-PETSC_EXTERN PetscErrorCode CSWillmoreFlowMonitorSet(CSWillmoreFlow flow, CSWillmoreFlowMonitorFn fn, void *ctx, PetscErrorCode (*destroy)(void **));
+/* CSWillmoreFlowSetOptionsPrefix, GetOptionsPrefix, MonitorSet (up to 8 monitors, called in the order set; destroy,
+   may be NULL, frees ctx at Destroy) and Destroy: the skeleton of every method object (include/cs_object.h) */
+CS_OBJECT_DECLARE(CSWillmoreFlow, CSWillmoreFlowMonitorFn);
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowMonitorCancel(CSWillmoreFlow flow);
 
 /* Checkpoint state (after SetUp): the loop scalars and the fields a checkpoint stores (borrowed; may be

@@ -56,6 +56,16 @@ static const EventName curve_events[] = {
   {"CSCurvePoissonSet", &CS_EVENT_CurvePoissonSetUp},
   {"CSCurvePoisson",    &CS_EVENT_CurvePoisson     },
 };
+static const EventName flow_events[] = {
+  {"CSWillmoreStep",   &CS_EVENT_WillmoreStep  },
+  {"CSWillmoreSolve",  &CS_EVENT_WillmoreSolve },
+  {"CSConformalStep",  &CS_EVENT_ConformalStep },
+  {"CSConformalSolve", &CS_EVENT_ConformalSolve},
+  {"CSCurveStep",      &CS_EVENT_CurveStep     },
+  {"CSCurveSolve",     &CS_EVENT_CurveSolve    },
+  {"CSBSStep",         &CS_EVENT_BSStep        },
+  {"CSBSSolve",        &CS_EVENT_BSSolve       },
+};
 
 /* Registers the class (unless it is an existing one: name NULL) and its n events. */
 static PetscErrorCode RegisterClassEvents(const char name[], PetscClassId classid, size_t n, const EventName events[])
@@ -75,6 +85,7 @@ static PetscErrorCode RegisterEvents(void)
   PetscCall(RegisterClassEvents(NULL, PC_CLASSID, PETSC_STATIC_ARRAY_LENGTH(subchol_events), subchol_events));
   PetscCall(RegisterClassEvents("confsurf spin", 0, PETSC_STATIC_ARRAY_LENGTH(spin_events), spin_events));
   PetscCall(RegisterClassEvents("confsurf curve flow", 0, PETSC_STATIC_ARRAY_LENGTH(curve_events), curve_events));
+  PetscCall(RegisterClassEvents("confsurf flow", 0, PETSC_STATIC_ARRAY_LENGTH(flow_events), flow_events));
   PetscFunctionReturn(0);
 }
 

@@ -30,7 +30,8 @@ PetscErrorCode CSObjectDestroy(CSObject *obj)
 {
   PetscFunctionBeginUser;
   if (!*obj) PetscFunctionReturn(0);
-  PetscCall(CSMonitorListCancel(&(*obj)->monitors));
+  PetscCall(CSMonitorListCancel(&(*obj)->monitors)); /* before the members: a monitor's context may hold some */
+  if ((*obj)->destroy) PetscCall((*(*obj)->destroy)(*obj));
   PetscCall(PetscFree((*obj)->prefix));
   PetscCall(PetscFree(*obj));
   PetscFunctionReturn(0);

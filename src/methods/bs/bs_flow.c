@@ -2,7 +2,10 @@
    loop and the monitors; the schemes are in bs_semi.c and bs_tao.c. See include/cs_methods_bs.h. */
 #include "bs_flow_impl.h"
 #include "cs_package.h"
+#include "cs_log.h"
 #include "cs_util.h"
+
+static const CSFlowLoopOps LoopOps; /* the flow's parts for the iteration driver (defined below) */
 
 const char *const CSBSSchemes[]  = {"semi", "tao", "CSBSScheme", "CS_BS_SCHEME_", NULL};
 const char *const CSBSProblems[] = {"static", "euler", "CSBSProblem", "CS_BS_PROBLEM_", NULL};
@@ -10,12 +13,31 @@ const char *const CSBSIslandsTypes[] = {"vertex", "face", "CSBSIslandsType", "CS
 static const char *const ReasonsShifted[] = {"stalled", "diverged", "not_converged", "rejections", "max_it", "iterating", "converged", "energy_target"};
 const char *const       *CSBSConvergedReasons = ReasonsShifted + 5;
 
+CS_OBJECT_DEFINE(CSBSFlow, CSBSFlowMonitorFn) /* SetOptionsPrefix, GetOptionsPrefix, MonitorSet, Destroy */
+
+/* the header's destroy op (CSBSFlowDestroy) */
+static PetscErrorCode DestroyMembers(CSObject obj)
+{
+  CSBSFlow F = (CSBSFlow)obj;
+  PetscFunctionBeginUser;
+  if (F->ops) PetscCall(F->ops->destroy(F));
+  PetscCall(VecDestroy(&F->x));
+  PetscCall(VecDestroy(&F->x0));
+  PetscCall(VecDestroy(&F->area0));
+  PetscCall(VecDestroy(&F->areat));
+  PetscCall(CSEnergyDestroy(&F->bs));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode CSBSFlowCreate(CSMesh mesh, CSBSFlow *flow)
 {
   CSBSFlow F;
   PetscFunctionBeginUser;
   PetscCall(CSInitializePackage()); /* as KSPCreate does: events, PCs and solver types before any use */
   PetscCall(CSObjectCreate(sizeof(*F), mesh->comm, "bs_", &F));
+  F->hdr.destroy = DestroyMembers;
+  PetscCall(CSFlowLoopInit(&F->loop, mesh->comm, &LoopOps, CS_BS_DIVERGED_MAX_IT, CS_EVENT_BSStep, CS_EVENT_BSSolve));
+  F->loop.own_rejection_limit = PETSC_TRUE; /* semi: -bs_max_rejections in a row and -bs_dt_min_rel */
   F->mesh       = mesh;
   F->scheme     = CS_BS_SCHEME_SEMI;
   F->problem    = CS_BS_PROBLEM_STATIC;
@@ -25,26 +47,12 @@ PetscErrorCode CSBSFlowCreate(CSMesh mesh, CSBSFlow *flow)
   F->dt_grow    = 2;
   F->atol       = 1e-8;
   F->rtol       = 1e-9;
-  F->max_it     = 100;
+  F->loop.max_it = 100;
   F->max_rej    = 30;
   F->monotone   = PETSC_TRUE;
   F->dt_min_rel = 1e-6;
   F->max_area_ratio = 200; /* as the Willmore flow's resolution guard */
   *flow = F;
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSBSFlowSetOptionsPrefix(CSBSFlow flow, const char prefix[])
-{
-  PetscFunctionBeginUser;
-  PetscCall(CSObjectSetOptionsPrefix(&flow->hdr, prefix));
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSBSFlowGetOptionsPrefix(CSBSFlow flow, const char *prefix[])
-{
-  PetscFunctionBeginUser;
-  PetscCall(CSObjectGetOptionsPrefix(&flow->hdr, prefix));
   PetscFunctionReturn(0);
 }
 
@@ -62,7 +70,7 @@ static PetscErrorCode CheckOptions(CSBSFlow F)
     {"rtol", F->rtol, F->rtol >= 0, "must be >= 0"},
     {"beta_eps", F->beta_eps, F->beta_eps >= 0 && F->beta_eps < 1, "must lie in [0, 1)"},
     {"perturb", F->perturb, F->perturb >= 0 && F->perturb < 1, "must lie in [0, 1)"},
-    {"max_it", (PetscReal)F->max_it, F->max_it >= 0, "must be >= 0"},
+    {"max_it", (PetscReal)F->loop.max_it, F->loop.max_it >= 0, "must be >= 0"},
     {"max_rejections", (PetscReal)F->max_rej, F->max_rej >= 0, "must be >= 0"},
     {"dt_min_rel", F->dt_min_rel, F->dt_min_rel >= 0 && F->dt_min_rel < 1, "must lie in [0, 1)"},
     {"max_area_ratio", F->max_area_ratio, F->max_area_ratio == 0 || F->max_area_ratio > 1, "use 0 (off) or a ratio above 1"},
@@ -81,7 +89,7 @@ PetscErrorCode CSBSFlowSetFromOptions(CSBSFlow F)
   PetscCall(CSOptionsEnum("-scheme", "semi: semi-implicit (1/dt I + K) dx = -grad W; tao: TAO (static problem or backward Euler)", "CSBSFlowSetFromOptions", CSBSSchemes, (PetscEnum)F->scheme, (PetscEnum *)&F->scheme, NULL));
   PetscCall(CSOptionsEnum("-boundary", "fixed: G1, boundary and one-ring fixed; free: vertex at infinity (Sec. 3.3)", "CSBSFlowSetFromOptions", CSBSBoundaries, (PetscEnum)F->bc, (PetscEnum *)&F->bc, NULL));
   PetscCall(CSOptionsReal("-beta_eps", "Diamonds with |sin beta| below this contribute no gradient (Sec. 3.2)", NULL, F->beta_eps, &F->beta_eps, NULL));
-  PetscCall(CSOptionsInt("-max_it", "Maximum number of accepted steps (TAO static: iterations)", NULL, F->max_it, &F->max_it, NULL));
+  PetscCall(CSOptionsInt("-max_it", "Maximum number of accepted steps (TAO static: iterations)", NULL, F->loop.max_it, &F->loop.max_it, NULL));
   PetscCall(CSOptionsReal("-dt", "Initial time step (units length^2); default -dt_rel times the squared mean edge length", NULL, F->dt_opt, &F->dt_opt, &F->dt_set));
   PetscCall(CSOptionsReal("-dt_rel", "Initial time step relative to the squared mean edge length", NULL, F->dt_rel, &F->dt_rel, NULL));
   PetscCall(CSOptionsReal("-dt_grow", "Factor on dt after an accepted step", NULL, F->dt_grow, &F->dt_grow, NULL));
@@ -161,12 +169,12 @@ static PetscErrorCode SetIslands(CSBSFlow F)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CSBSFlowSetUp(CSBSFlow F)
+/* the loop's set-up (CSFlowLoopSetUp times it) */
+static PetscErrorCode SetUpFlow(void *ctx)
 {
-  CSMesh mesh = F->mesh;
+  CSBSFlow F    = (CSBSFlow)ctx;
+  CSMesh   mesh = F->mesh;
   PetscFunctionBeginUser;
-  if (F->setupcalled) PetscFunctionReturn(0);
-  PetscCall(PetscTime(&F->t0));
   PetscCall(CSEnergyCreateWillmoreBS(mesh, F->bc, F->beta_eps, &F->bs));
   if (F->hessian_eps_set) PetscCall(CSEnergyWillmoreBSSetHessianEps(F->bs, F->hessian_eps));
   if (F->islands[0]) PetscCall(SetIslands(F));
@@ -189,7 +197,7 @@ PetscErrorCode CSBSFlowSetUp(CSBSFlow F)
   PetscCall(PetscPrintf(mesh->comm, "bs flow: scheme %s, boundary %s (%" PetscInt_FMT " fixed vertices), beta_eps %g, dt0 %.3e (mean edge %.3e)\n", CSBSSchemes[F->scheme], CSBSBoundaries[F->bc], F->nfixed, (double)F->beta_eps, (double)F->dt, (double)F->h));
   F->ops = F->scheme == CS_BS_SCHEME_SEMI ? &CSBSSchemeSemi : &CSBSSchemeTao;
   PetscCall(F->ops->setup(F));
-  F->setupcalled = PETSC_TRUE;
+  F->loop.max_it_reason = F->ops->max_it_reason; /* (the TAO set-up may switch to the static problem) */
   PetscFunctionReturn(0);
 }
 
@@ -224,39 +232,47 @@ PetscErrorCode CSBSFlowMonitor(CSBSFlow F, CSBSMonitorInfo *info)
   PetscCall(PetscTime(&now));
   info->row     = F->row;
   info->resumed = (PetscBool)(info->event == CS_BS_MONITOR_START && F->resumed);
-  info->seconds = (PetscReal)(now - F->t0);
-  for (PetscInt i = 0; i < F->hdr.monitors.n; i++) PetscCall(((CSBSFlowMonitorFn)F->hdr.monitors.fn[i])(F, info, F->hdr.monitors.ctx[i]));
+  info->seconds = (PetscReal)(now - F->loop.t0);
+  CS_OBJECT_MONITORS_CALL(F, CSBSFlowMonitorFn, info);
   if (info->event == CS_BS_MONITOR_STEP || (info->event == CS_BS_MONITOR_START && !F->resumed)) F->row++;
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode Start(CSBSFlow F)
+/* the input's state (or the checkpoint's): the scheme's start, which monitors it */
+static PetscErrorCode Start(void *ctx)
 {
+  CSBSFlow F = (CSBSFlow)ctx;
   PetscFunctionBeginUser;
-  PetscCall(CSBSFlowSetUp(F));
-  if (F->started) PetscFunctionReturn(0);
-  F->started = PETSC_TRUE;
   PetscCall(PetscTime(&F->tstart));
   PetscCall(F->ops->start(F));
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CSBSFlowStep(CSBSFlow F)
+/* one step of the scheme, which evaluates, tests and monitors the new state itself; taken when it counted one */
+static PetscErrorCode Advance(void *ctx, PetscBool *taken)
 {
+  CSBSFlow F  = (CSBSFlow)ctx;
+  PetscInt it = F->it;
   PetscFunctionBeginUser;
-  PetscCall(Start(F));
-  if (F->reason != CS_BS_ITERATING) PetscFunctionReturn(0);
-  if (F->ops->max_it_reason != CS_BS_ITERATING && F->it >= F->max_it) F->reason = F->ops->max_it_reason;
-  else PetscCall(F->ops->step(F));
+  PetscCall(F->ops->step(F));
+  *taken = (PetscBool)(F->it > it);
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CSBSFlowSolve(CSBSFlow F)
+static PetscErrorCode Judge(void *ctx, PetscInt *reason)
 {
+  PetscFunctionBeginUser;
+  *reason = ((CSBSFlow)ctx)->reason;
+  PetscFunctionReturn(0);
+}
+
+/* START and STEP: the schemes monitored them (TAO static: every TAO iteration); END: the state returned */
+static PetscErrorCode Monitor(void *ctx, CSFlowEvent ev)
+{
+  CSBSFlow        F = (CSBSFlow)ctx;
   CSBSMonitorInfo info;
   PetscFunctionBeginUser;
-  PetscCall(Start(F));
-  while (F->reason == CS_BS_ITERATING) PetscCall(CSBSFlowStep(F));
+  if (ev != CS_FLOW_EVENT_END) PetscFunctionReturn(0);
   if (!F->finished) { /* the stepping time stops here */
     PetscLogDouble t;
     PetscCall(CSBSFlowGetStepSeconds(F, &t));
@@ -273,28 +289,9 @@ PetscErrorCode CSBSFlowSolve(CSBSFlow F)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CSBSFlowMonitorSet(CSBSFlow F, CSBSFlowMonitorFn fn, void *ctx, PetscErrorCode (*destroy)(void **))
-{
-  PetscFunctionBeginUser;
-  PetscCall(CSMonitorListAdd(&F->hdr.monitors, F->hdr.comm, "CSBSFlowMonitorSet", (PetscVoidFunction)fn, ctx, destroy));
-  PetscFunctionReturn(0);
-}
+static const CSFlowLoopOps LoopOps = {SetUpFlow, Start, Advance, NULL, Judge, Monitor};
 
-PetscErrorCode CSBSFlowDestroy(CSBSFlow *flow)
-{
-  CSBSFlow F = *flow;
-  PetscFunctionBeginUser;
-  if (!F) PetscFunctionReturn(0);
-  PetscCall(CSMonitorListCancel(&F->hdr.monitors));
-  if (F->ops) PetscCall(F->ops->destroy(F));
-  PetscCall(VecDestroy(&F->x));
-  PetscCall(VecDestroy(&F->x0));
-  PetscCall(VecDestroy(&F->area0));
-  PetscCall(VecDestroy(&F->areat));
-  PetscCall(CSEnergyDestroy(&F->bs));
-  PetscCall(CSObjectDestroy((CSObject *)flow));
-  PetscFunctionReturn(0);
-}
+CS_FLOW_LOOP_DEFINE(CSBSFlow) /* SetUp, Step, Solve */
 
 PetscErrorCode CSBSFlowGetCheckpointState(CSBSFlow F, PetscReal r[CS_BS_CHECKPOINT_NREAL])
 {
@@ -304,21 +301,19 @@ PetscErrorCode CSBSFlowGetCheckpointState(CSBSFlow F, PetscReal r[CS_BS_CHECKPOI
   PetscCall(CSBSFlowGetStepSeconds(F, &steps));
   r[0] = F->dt;
   r[1] = (PetscReal)F->rejected;
-  r[2] = (PetscReal)(now - F->t0);
+  r[2] = (PetscReal)(now - F->loop.t0);
   r[3] = (PetscReal)steps;
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode CSBSFlowSetCheckpointState(CSBSFlow F, PetscInt it, const PetscReal r[CS_BS_CHECKPOINT_NREAL])
 {
-  PetscLogDouble now;
   PetscFunctionBeginUser;
-  PetscCheck(F->setupcalled && !F->started, F->mesh->comm, PETSC_ERR_ORDER, "CSBSFlowSetCheckpointState: call after CSBSFlowSetUp, before the first step");
-  PetscCall(PetscTime(&now));
+  PetscCheck(F->loop.setupcalled && !F->loop.started, F->mesh->comm, PETSC_ERR_ORDER, "CSBSFlowSetCheckpointState: call after CSBSFlowSetUp, before the first step");
+  PetscCall(CSFlowLoopResume(&F->loop, it, r[2])); /* the history's seconds column continues */
   F->it       = it;
   F->dt       = r[0];
   F->rejected = (PetscInt)r[1];
-  F->t0       = now - r[2]; /* the history's seconds column continues */
   F->tsteps0  = r[3];
   F->row      = it + 1;     /* history row of the next accepted step (the row of step it is in the file) */
   F->resumed  = PETSC_TRUE;

@@ -1,38 +1,15 @@
 /* Getters of the Bobenko-Schroeder flow object (include/cs_methods_bs.h). */
 #include "bs_flow_impl.h"
 
-PetscErrorCode CSBSFlowGetConvergedReason(CSBSFlow F, CSBSConvergedReason *reason)
-{
-  PetscFunctionBeginUser;
-  *reason = F->reason;
-  PetscFunctionReturn(0);
-}
+CS_OBJECT_GETTER(CSBSFlow, ConvergedReason, CSBSConvergedReason, loop.reason)
+CS_OBJECT_GETTER(CSBSFlow, InitialSolution, Vec, x0)
+CS_OBJECT_GETTER(CSBSFlow, Mesh, CSMesh, mesh)
+CS_OBJECT_GETTER(CSBSFlow, Energy, CSEnergy, bs)
 
 PetscErrorCode CSBSFlowGetSolution(CSBSFlow F, Vec *x)
 {
   PetscFunctionBeginUser;
   *x = F->xmon ? F->xmon : F->x;
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSBSFlowGetInitialSolution(CSBSFlow F, Vec *x0)
-{
-  PetscFunctionBeginUser;
-  *x0 = F->x0;
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSBSFlowGetMesh(CSBSFlow F, CSMesh *mesh)
-{
-  PetscFunctionBeginUser;
-  *mesh = F->mesh;
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSBSFlowGetEnergy(CSBSFlow F, CSEnergy *bs)
-{
-  PetscFunctionBeginUser;
-  *bs = F->bs;
   PetscFunctionReturn(0);
 }
 
@@ -60,6 +37,6 @@ PetscErrorCode CSBSFlowGetStepSeconds(CSBSFlow F, PetscLogDouble *seconds)
   PetscLogDouble now;
   PetscFunctionBeginUser;
   PetscCall(PetscTime(&now));
-  *seconds = F->tsteps0 + (F->started && !F->finished ? now - F->tstart : 0);
+  *seconds = F->tsteps0 + (F->loop.started && !F->finished ? now - F->tstart : 0);
   PetscFunctionReturn(0);
 }

@@ -4,6 +4,7 @@
 #include "cs_methods_bs.h"
 #include "cs_geometry.h"
 #include "cs_object.h"
+#include "cs_flow_loop.h"
 
 /* A scheme: setup after the flow's SetUp, start before the first step (after a resume), one step, destroy. */
 typedef struct {
@@ -30,7 +31,7 @@ struct _p_CSBSFlow {
   PetscReal    dt_min_rel, dt_min, dt0, max_area_ratio, energy_target;
   PetscBool    energy_target_set;
   PetscBool    hessian_eps_set, dt_set, monotone;
-  PetscInt     max_it, max_rej;
+  PetscInt     max_rej;
   char         islands[PETSC_MAX_PATH_LEN]; /* -bs_islands FILE (Sec. 3.3), "" for none */
   CSBSIslandsType islands_type;             /* -bs_islands_type: the file lists vertices or faces */
   CSBSSingular    singular;                 /* -bs_singular (Sec. 3.2) */
@@ -43,10 +44,11 @@ struct _p_CSBSFlow {
   Vec              area0, areat; /* vertex areas of the input and of a trial state (the guard) */
   Vec              xmon;   /* the state the monitors see (x, or TAO's iterate with fixed vertices reset) */
   PetscReal        h, dt, dt_max, W;
-  PetscInt         it, rejected, row;
-  PetscLogDouble   t0, tstart, tsteps0;
-  CSBSConvergedReason reason;
-  PetscBool        setupcalled, started, finished, resumed;
+  PetscInt         it, rejected, row; /* it: the scheme's count (loop.it, but TAO static: its iterations) */
+  PetscLogDouble   tstart, tsteps0;
+  CSBSConvergedReason reason;       /* the scheme's verdict of its last step (the loop's reason adds max_it) */
+  PetscBool        finished, resumed;
+  CSFlowLoop       loop;            /* -max_it, the set-up time and t0, the stop reason (src/methods/flow_loop.c) */
 
   const CSBSSchemeOps *ops;
   void                *data;

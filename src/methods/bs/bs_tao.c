@@ -160,7 +160,7 @@ static PetscErrorCode TaoSchemeSetUp(CSBSFlow F)
   PetscCall(TaoSetConvergenceTest(T->tao, TaoConv, F));
   PetscCall(TaoSetMonitor(T->tao, TaoMon, F, NULL));
   PetscCall(TaoSetTolerances(T->tao, 1e-9, 0, 0));
-  PetscCall(TaoSetMaximumIterations(T->tao, F->problem == CS_BS_PROBLEM_STATIC ? F->max_it : 50));
+  PetscCall(TaoSetMaximumIterations(T->tao, F->problem == CS_BS_PROBLEM_STATIC ? F->loop.max_it : 50));
   PetscCall(TaoSetFromOptions(T->tao));
   if (F->problem == CS_BS_PROBLEM_STATIC) F->ops = &CSBSSchemeTaoStatic;
   PetscFunctionReturn(0);

@@ -3,14 +3,18 @@
    (V-VII: Eq. 5 and 6 through CSSpin). See include/cs_methods_conformal.h. */
 #include "conformal_impl.h"
 #include "cs_package.h"
+#include "cs_log.h"
 #include "cs_util.h"
 
 static const CSFlowLoopOps LoopOps; /* the flow's parts for the iteration driver (defined below) */
+static PetscErrorCode      DestroyMembers(CSObject); /* the header's destroy op (defined at the end) */
 static const char *const ReasonsShifted[]              = {"stalled", "resolution", "energy_growth", "max_it", "iterating", "converged_atol", "converged_rtol"};
 const char *const       *CSConformalFlowConvergedReasons = ReasonsShifted + 4;
 const char *const        CSConformalCurvatures[]       = {"barycentric", "voronoi", "CSConformalCurvature", "CS_CONFORMAL_CURVATURE_", NULL};
 const char *const        CSConformalMobiusSteps[]      = {"newton", "paper", "CSConformalMobiusStep", "CS_CONFORMAL_MOBIUS_", NULL};
 const char *const        CSConformalEigensolvers[]      = {"inverse", "eps", "CSConformalEigensolver", "CS_CONFORMAL_EIGEN_", NULL};
+
+CS_OBJECT_DEFINE(CSConformalFlow, CSConformalFlowMonitorFn) /* SetOptionsPrefix, GetOptionsPrefix, MonitorSet, Destroy */
 
 PetscErrorCode CSConformalFlowCreate(CSMesh mesh, CSConformalFlow *flow)
 {
@@ -18,7 +22,8 @@ PetscErrorCode CSConformalFlowCreate(CSMesh mesh, CSConformalFlow *flow)
   PetscFunctionBeginUser;
   PetscCall(CSInitializePackage());
   PetscCall(CSObjectCreate(sizeof(*F), mesh->comm, "flow_", &F));
-  PetscCall(CSFlowLoopInit(&F->loop, mesh->comm, &LoopOps, CS_CONFORMAL_DIVERGED_MAX_IT));
+  F->hdr.destroy = DestroyMembers;
+  PetscCall(CSFlowLoopInit(&F->loop, mesh->comm, &LoopOps, CS_CONFORMAL_DIVERGED_MAX_IT, CS_EVENT_ConformalStep, CS_EVENT_ConformalSolve));
   F->mesh          = mesh;
   F->tau           = 0.95; /* stable for tau < 1 (Sec. 4: |1 - 2 tau| < 1) */
   F->loop.max_it   = 100;
@@ -39,20 +44,6 @@ PetscErrorCode CSConformalFlowCreate(CSMesh mesh, CSConformalFlow *flow)
   F->min_edge      = 1e-12; /* edge vectors then carry >= 4 digits: conformal_integrate.c */
   F->frame[2]      = 1; /* V = B: Sec. 6.3.1's choice for CMC surfaces */
   *flow            = F;
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSConformalFlowSetOptionsPrefix(CSConformalFlow F, const char prefix[])
-{
-  PetscFunctionBeginUser;
-  PetscCall(CSObjectSetOptionsPrefix(&F->hdr, prefix));
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSConformalFlowGetOptionsPrefix(CSConformalFlow F, const char *prefix[])
-{
-  PetscFunctionBeginUser;
-  PetscCall(CSObjectGetOptionsPrefix(&F->hdr, prefix));
   PetscFunctionReturn(0);
 }
 
@@ -207,13 +198,6 @@ static PetscErrorCode SetUpFlow(void *ctx)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CSConformalFlowSetUp(CSConformalFlow F)
-{
-  PetscFunctionBeginUser;
-  PetscCall(CSFlowLoopSetUp(&F->loop, F));
-  PetscFunctionReturn(0);
-}
-
 static PetscErrorCode Monitor(void *ctx, CSFlowEvent ev)
 {
   CSConformalFlow F = (CSConformalFlow)ctx;
@@ -222,7 +206,7 @@ static PetscErrorCode Monitor(void *ctx, CSFlowEvent ev)
   F->s.it           = F->loop.it;
   F->s.seconds      = F->loop.seconds;
   F->s.step_seconds = F->loop.step_seconds;
-  for (PetscInt i = 0; i < F->hdr.monitors.n; i++) PetscCall(((CSConformalFlowMonitorFn)F->hdr.monitors.fn[i])(F, &F->s, F->hdr.monitors.ctx[i]));
+  CS_OBJECT_MONITORS_CALL(F, CSConformalFlowMonitorFn, &F->s);
   PetscFunctionReturn(0);
 }
 
@@ -276,33 +260,13 @@ static PetscErrorCode Evaluate(void *ctx)
 
 static const CSFlowLoopOps LoopOps = {SetUpFlow, Start, Advance, Evaluate, Judge, Monitor};
 
-PetscErrorCode CSConformalFlowStep(CSConformalFlow F)
-{
-  PetscFunctionBeginUser;
-  PetscCall(CSFlowLoopStep(&F->loop, F));
-  PetscFunctionReturn(0);
-}
+CS_FLOW_LOOP_DEFINE(CSConformalFlow) /* SetUp, Step, Solve */
 
-PetscErrorCode CSConformalFlowSolve(CSConformalFlow F)
+/* the header's destroy op (CSConformalFlowDestroy) */
+static PetscErrorCode DestroyMembers(CSObject obj)
 {
+  CSConformalFlow F = (CSConformalFlow)obj;
   PetscFunctionBeginUser;
-  PetscCall(CSFlowLoopSolve(&F->loop, F));
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSConformalFlowMonitorSet(CSConformalFlow F, CSConformalFlowMonitorFn fn, void *ctx, PetscErrorCode (*destroy)(void **))
-{
-  PetscFunctionBeginUser;
-  PetscCall(CSMonitorListAdd(&F->hdr.monitors, F->hdr.comm, "CSConformalFlowMonitorSet", (PetscVoidFunction)fn, ctx, destroy));
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSConformalFlowDestroy(CSConformalFlow *flow)
-{
-  CSConformalFlow F = *flow;
-  PetscFunctionBeginUser;
-  if (!F) PetscFunctionReturn(0);
-  PetscCall(CSMonitorListCancel(&F->hdr.monitors));
   {
     Vec *vs[] = {&F->x, &F->x0, &F->xnew, &F->work3, &F->area0, &F->area, &F->N, &F->H, &F->v, &F->rho, &F->work, &F->lambda};
     for (size_t k = 0; k < sizeof(vs) / sizeof(vs[0]); k++) PetscCall(VecDestroy(vs[k]));
@@ -315,6 +279,5 @@ PetscErrorCode CSConformalFlowDestroy(CSConformalFlow *flow)
   PetscCall(MatDestroy(&F->L));
   PetscCall(MatDestroy(&F->B));
   PetscCall(KSPDestroy(&F->kspf));
-  PetscCall(CSObjectDestroy((CSObject *)flow));
   PetscFunctionReturn(0);
 }

@@ -1,33 +1,10 @@
 /* Getters of the conformal flow object (include/cs_methods_conformal.h). */
 #include "conformal_impl.h"
 
-PetscErrorCode CSConformalFlowGetConvergedReason(CSConformalFlow F, CSConformalFlowConvergedReason *reason)
-{
-  PetscFunctionBeginUser;
-  *reason = (CSConformalFlowConvergedReason)F->loop.reason;
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSConformalFlowGetSolution(CSConformalFlow F, Vec *x)
-{
-  PetscFunctionBeginUser;
-  *x = F->x;
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSConformalFlowGetInitialSolution(CSConformalFlow F, Vec *x0)
-{
-  PetscFunctionBeginUser;
-  *x0 = F->x0;
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSConformalFlowGetMesh(CSConformalFlow F, CSMesh *mesh)
-{
-  PetscFunctionBeginUser;
-  *mesh = F->mesh;
-  PetscFunctionReturn(0);
-}
+CS_OBJECT_GETTER(CSConformalFlow, ConvergedReason, CSConformalFlowConvergedReason, loop.reason)
+CS_OBJECT_GETTER(CSConformalFlow, Solution, Vec, x)
+CS_OBJECT_GETTER(CSConformalFlow, InitialSolution, Vec, x0)
+CS_OBJECT_GETTER(CSConformalFlow, Mesh, CSMesh, mesh)
 
 PetscErrorCode CSConformalFlowGetFields(CSConformalFlow F, Vec *H, Vec *rhodot)
 {

@@ -3,11 +3,15 @@
    (Eq. 2, Sec. 5.1-5.2 angles and tangents), curve_poisson.c (Sec. 5.2 positions). */
 #include "curve_flow_impl.h"
 #include "cs_package.h"
+#include "cs_log.h"
 #include "cs_util.h"
 
 static const CSFlowLoopOps LoopOps; /* the flow's parts for the iteration driver (defined below) */
+static PetscErrorCode      DestroyMembers(CSObject); /* the header's destroy op (defined at the end) */
 static const char *const ReasonsShifted[]         = {"turning_changed", "energy_growth", "max_it", "iterating", "converged"};
 const char *const       *CSCurveFlowConvergedReasons = ReasonsShifted + 3;
+
+CS_OBJECT_DEFINE(CSCurveFlow, CSCurveFlowMonitorFn) /* SetOptionsPrefix, GetOptionsPrefix, MonitorSet, Destroy */
 
 PetscErrorCode CSCurveFlowCreate(CSCurve curve, CSCurveFlow *flow)
 {
@@ -15,7 +19,8 @@ PetscErrorCode CSCurveFlowCreate(CSCurve curve, CSCurveFlow *flow)
   PetscFunctionBeginUser;
   PetscCall(CSInitializePackage());
   PetscCall(CSObjectCreate(sizeof(*F), curve->comm, "curve_", &F));
-  PetscCall(CSFlowLoopInit(&F->loop, curve->comm, &LoopOps, CS_CURVE_DIVERGED_MAX_IT));
+  F->hdr.destroy = DestroyMembers;
+  PetscCall(CSFlowLoopInit(&F->loop, curve->comm, &LoopOps, CS_CURVE_DIVERGED_MAX_IT, CS_EVENT_CurveStep, CS_EVENT_CurveSolve));
   F->curve       = curve;
   F->tau         = 0.95; /* the default; stable for tau < 1 (Sec. 5: |1 - 2 tau| < 1) */
   F->loop.max_it = 100;
@@ -24,20 +29,6 @@ PetscErrorCode CSCurveFlowCreate(CSCurve curve, CSCurveFlow *flow)
   F->fk     = 2;
   F->egrow  = 1e6;
   *flow = F;
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSCurveFlowSetOptionsPrefix(CSCurveFlow F, const char prefix[])
-{
-  PetscFunctionBeginUser;
-  PetscCall(CSObjectSetOptionsPrefix(&F->hdr, prefix));
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSCurveFlowGetOptionsPrefix(CSCurveFlow F, const char *prefix[])
-{
-  PetscFunctionBeginUser;
-  PetscCall(CSObjectGetOptionsPrefix(&F->hdr, prefix));
   PetscFunctionReturn(0);
 }
 
@@ -110,13 +101,6 @@ static PetscErrorCode SetUpFlow(void *ctx)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CSCurveFlowSetUp(CSCurveFlow F)
-{
-  PetscFunctionBeginUser;
-  PetscCall(CSFlowLoopSetUp(&F->loop, F));
-  PetscFunctionReturn(0);
-}
-
 static PetscErrorCode Monitor(void *ctx, CSFlowEvent ev)
 {
   CSCurveFlow F = (CSCurveFlow)ctx;
@@ -125,7 +109,7 @@ static PetscErrorCode Monitor(void *ctx, CSFlowEvent ev)
   F->s.it           = F->loop.it;
   F->s.seconds      = F->loop.seconds;
   F->s.step_seconds = F->loop.step_seconds;
-  for (PetscInt i = 0; i < F->hdr.monitors.n; i++) PetscCall(((CSCurveFlowMonitorFn)F->hdr.monitors.fn[i])(F, &F->s, F->hdr.monitors.ctx[i]));
+  CS_OBJECT_MONITORS_CALL(F, CSCurveFlowMonitorFn, &F->s);
   PetscFunctionReturn(0);
 }
 
@@ -176,33 +160,13 @@ static PetscErrorCode Evaluate(void *ctx)
 
 static const CSFlowLoopOps LoopOps = {SetUpFlow, Start, Advance, Evaluate, Judge, Monitor};
 
-PetscErrorCode CSCurveFlowStep(CSCurveFlow F)
-{
-  PetscFunctionBeginUser;
-  PetscCall(CSFlowLoopStep(&F->loop, F));
-  PetscFunctionReturn(0);
-}
+CS_FLOW_LOOP_DEFINE(CSCurveFlow) /* SetUp, Step, Solve */
 
-PetscErrorCode CSCurveFlowSolve(CSCurveFlow F)
+/* the header's destroy op (CSCurveFlowDestroy) */
+static PetscErrorCode DestroyMembers(CSObject obj)
 {
+  CSCurveFlow F = (CSCurveFlow)obj;
   PetscFunctionBeginUser;
-  PetscCall(CSFlowLoopSolve(&F->loop, F));
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSCurveFlowMonitorSet(CSCurveFlow F, CSCurveFlowMonitorFn fn, void *ctx, PetscErrorCode (*destroy)(void **))
-{
-  PetscFunctionBeginUser;
-  PetscCall(CSMonitorListAdd(&F->hdr.monitors, F->hdr.comm, "CSCurveFlowMonitorSet", (PetscVoidFunction)fn, ctx, destroy));
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSCurveFlowDestroy(CSCurveFlow *flow)
-{
-  CSCurveFlow F = *flow;
-  PetscFunctionBeginUser;
-  if (!F) PetscFunctionReturn(0);
-  PetscCall(CSMonitorListCancel(&F->hdr.monitors));
   {
     Vec *vs[] = {&F->x, &F->xold, &F->w, &F->len, &F->d, &F->lwork, &F->kappa, &F->v, &F->theta};
     for (size_t k = 0; k < sizeof(vs) / sizeof(vs[0]); k++) PetscCall(VecDestroy(vs[k]));
@@ -214,6 +178,5 @@ PetscErrorCode CSCurveFlowDestroy(CSCurveFlow *flow)
   PetscCall(MatDestroy(&F->Lf));
   PetscCall(KSPDestroy(&F->ksp));
   PetscCall(KSPDestroy(&F->kspf));
-  PetscCall(CSObjectDestroy((CSObject *)flow));
   PetscFunctionReturn(0);
 }

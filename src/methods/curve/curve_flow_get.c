@@ -1,12 +1,9 @@
 /* Setters and getters of the curve flow object (include/cs_methods_curve.h). */
 #include "curve_flow_impl.h"
 
-PetscErrorCode CSCurveFlowGetConvergedReason(CSCurveFlow F, CSCurveFlowConvergedReason *reason)
-{
-  PetscFunctionBeginUser;
-  *reason = (CSCurveFlowConvergedReason)F->loop.reason;
-  PetscFunctionReturn(0);
-}
+CS_OBJECT_GETTER(CSCurveFlow, ConvergedReason, CSCurveFlowConvergedReason, loop.reason)
+CS_OBJECT_GETTER(CSCurveFlow, Curve, CSCurve, curve)
+
 
 PetscErrorCode CSCurveFlowGetSolution(CSCurveFlow F, Vec *x)
 {
@@ -21,13 +18,6 @@ PetscErrorCode CSCurveFlowGetCurvature(CSCurveFlow F, Vec *kappa)
   PetscFunctionBeginUser;
   PetscCheck(F->loop.started, F->hdr.comm, PETSC_ERR_ORDER, "CSCurveFlowGetCurvature: no state evaluated yet (call CSCurveFlowStep or Solve)");
   *kappa = F->kappa;
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSCurveFlowGetCurve(CSCurveFlow F, CSCurve *curve)
-{
-  PetscFunctionBeginUser;
-  *curve = F->curve;
   PetscFunctionReturn(0);
 }
 

@@ -5,12 +5,44 @@
 #include "cs_package.h"
 #include "cs_util.h"
 
+/* The object's own members (hdr.destroy: CSSpinDestroy cancels the monitors first and frees the header after) */
+static PetscErrorCode DestroyMembers(CSObject obj)
+{
+  CSSpin s = (CSSpin)obj;
+  PetscFunctionBeginUser;
+  PetscCall(EPSDestroy(&s->eps));
+  PetscCall(KSPDestroy(&s->kinv));
+  PetscCall(KSPDestroy(&s->klap));
+  PetscCall(MatDestroy(&s->Ls));
+  PetscCall(KSPDestroy(&s->kpois));
+  PetscCall(MatDestroy(&s->Kinv));
+  PetscCall(MatDestroy(&s->Ks));
+  PetscCall(MatDestroy(&s->L));
+  PetscCall(MatDestroy(&s->X));
+  PetscCall(MatDestroy(&s->K));
+  PetscCall(MatDestroy(&s->Y));
+  PetscCall(MatDestroy(&s->P));
+  PetscCall(VecDestroy(&s->mass));
+  PetscCall(VecDestroy(&s->v4));
+  PetscCall(VecDestroy(&s->Ttarget));
+  PetscCall(VecDestroy(&s->Vcur));
+  PetscCall(VecDestroy(&s->start));
+  PetscCall(VecDestroy(&s->lambda));
+  PetscCall(VecDestroy(&s->xnew));
+  PetscCall(VecDestroy(&s->xtarget));
+  PetscCall(VecDestroy(&s->mu));
+  PetscCall(DMDestroy(&s->dm));
+  PetscCall(DMDestroy(&s->dmr));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode CSSpinCreate(CSMesh mesh, CSSpin *spin)
 {
   CSSpin s;
   PetscFunctionBeginUser;
   PetscCall(CSInitializePackage());
   PetscCall(CSObjectCreate(sizeof(*s), mesh->comm, "spin_", &s));
+  s->hdr.destroy  = DestroyMembers;
   s->mesh         = mesh;
   s->inverse_its  = 1;
   s->target       = 1e-2;
@@ -22,19 +54,8 @@ PetscErrorCode CSSpinCreate(CSMesh mesh, CSSpin *spin)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CSSpinSetOptionsPrefix(CSSpin s, const char prefix[])
-{
-  PetscFunctionBeginUser;
-  PetscCall(CSObjectSetOptionsPrefix(&s->hdr, prefix));
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSSpinGetOptionsPrefix(CSSpin s, const char *prefix[])
-{
-  PetscFunctionBeginUser;
-  PetscCall(CSObjectGetOptionsPrefix(&s->hdr, prefix));
-  PetscFunctionReturn(0);
-}
+/* SetOptionsPrefix, GetOptionsPrefix, MonitorSet, Destroy: the skeleton of every method object (include/cs_object.h) */
+CS_OBJECT_DEFINE(CSSpin, CSSpinMonitorFn)
 
 PetscErrorCode CSSpinSubPrefix(CSSpin s, const char suffix[], char prefix[], size_t len)
 {
@@ -145,41 +166,3 @@ PetscErrorCode CSSpinGetSpinor(CSSpin s, Vec *lambda)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CSSpinMonitorSet(CSSpin s, CSSpinMonitorFn fn, void *ctx, PetscErrorCode (*destroy)(void **))
-{
-  PetscFunctionBeginUser;
-  PetscCall(CSMonitorListAdd(&s->hdr.monitors, s->hdr.comm, "CSSpinMonitorSet", (PetscVoidFunction)fn, ctx, destroy));
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSSpinDestroy(CSSpin *spin)
-{
-  CSSpin s = *spin;
-  PetscFunctionBeginUser;
-  if (!s) PetscFunctionReturn(0);
-  PetscCall(EPSDestroy(&s->eps));
-  PetscCall(KSPDestroy(&s->kinv));
-  PetscCall(KSPDestroy(&s->klap));
-  PetscCall(MatDestroy(&s->Ls));
-  PetscCall(KSPDestroy(&s->kpois));
-  PetscCall(MatDestroy(&s->Kinv));
-  PetscCall(MatDestroy(&s->Ks));
-  PetscCall(MatDestroy(&s->L));
-  PetscCall(MatDestroy(&s->X));
-  PetscCall(MatDestroy(&s->K));
-  PetscCall(MatDestroy(&s->Y));
-  PetscCall(MatDestroy(&s->P));
-  PetscCall(VecDestroy(&s->mass));
-  PetscCall(VecDestroy(&s->v4));
-  PetscCall(VecDestroy(&s->Ttarget));
-  PetscCall(VecDestroy(&s->Vcur));
-  PetscCall(VecDestroy(&s->start));
-  PetscCall(VecDestroy(&s->lambda));
-  PetscCall(VecDestroy(&s->xnew));
-  PetscCall(VecDestroy(&s->xtarget));
-  PetscCall(VecDestroy(&s->mu));
-  PetscCall(DMDestroy(&s->dm));
-  PetscCall(DMDestroy(&s->dmr));
-  PetscCall(CSObjectDestroy((CSObject *)spin));
-  PetscFunctionReturn(0);
-}

@@ -92,11 +92,11 @@ PetscErrorCode CSWillmoreFlowAddConstraint(CSWillmoreFlow F, const char name[])
   PetscErrorCode (*create)(CSMesh, Vec, const char[], CSGlobalConstraint *);
   char names[256];
   PetscFunctionBeginUser;
-  PetscCheck(!F->setupcalled, F->comm, PETSC_ERR_ORDER, "CSWillmoreFlowAddConstraint(%s): call it before CSWillmoreFlowSetUp", name);
+  PetscCheck(!F->setupcalled, F->hdr.comm, PETSC_ERR_ORDER, "CSWillmoreFlowAddConstraint(%s): call it before CSWillmoreFlowSetUp", name);
   PetscCall(CSWillmoreFlowConstraintList(&F->constraint_list));
   PetscCall(PetscFunctionListFind(F->constraint_list, name, &create));
   if (!create) PetscCall(CSFunctionListJoin(F->constraint_list, "|", names, sizeof(names)));
-  PetscCheck(create, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "CSWillmoreFlowAddConstraint(%s): unknown constraint (%s)", name, names);
+  PetscCheck(create, F->hdr.comm, PETSC_ERR_ARG_OUTOFRANGE, "CSWillmoreFlowAddConstraint(%s): unknown constraint (%s)", name, names);
   PetscCall(CSArrayGrow(sizeof(char *), F->nadded, 4, &F->naddedmax, (void **)&F->added));
   PetscCall(PetscStrallocpy(name, &F->added[F->nadded++]));
   PetscFunctionReturn(0);
@@ -111,7 +111,7 @@ PetscErrorCode CSWFSetUpAddedConstraints(CSWillmoreFlow F)
   PetscFunctionBeginUser;
   for (PetscInt j = 0; j < F->nadded; j++) {
     PetscCall(PetscFunctionListFind(F->constraint_list, F->added[j], &create));
-    PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "%sconstraint_%s_", F->prefix, F->added[j]));
+    PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "%sconstraint_%s_", F->hdr.prefix, F->added[j]));
     PetscCall((*create)(F->mesh, F->x0, prefix, &g));
     PetscCall(CSWFAddConstraint(F, g));
   }

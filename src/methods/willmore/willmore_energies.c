@@ -71,7 +71,7 @@ PetscErrorCode CSWillmoreFlowEnergyList(PetscFunctionList *list)
 PetscErrorCode CSWillmoreFlowSetEnergyType(CSWillmoreFlow F, const char name[])
 {
   PetscFunctionBeginUser;
-  PetscCheck(!F->setupcalled, F->comm, PETSC_ERR_ORDER, "CSWillmoreFlowSetEnergyType(%s): call it before CSWillmoreFlowSetUp", name);
+  PetscCheck(!F->setupcalled, F->hdr.comm, PETSC_ERR_ORDER, "CSWillmoreFlowSetEnergyType(%s): call it before CSWillmoreFlowSetUp", name);
   PetscCall(PetscStrncpy(F->energy_name, name, sizeof(F->energy_name)));
   PetscFunctionReturn(0);
 }
@@ -85,9 +85,9 @@ PetscErrorCode CSWFCreateEnergy(CSWillmoreFlow F)
   PetscCall(CSWillmoreFlowEnergyList(&list));
   PetscCall(PetscFunctionListFind(list, F->energy_name, &create));
   if (!create) PetscCall(CSFunctionListJoin(list, "|", names, sizeof(names)));
-  PetscCheck(create, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%senergy %s: unknown (%s)", F->prefix, F->energy_name, names);
+  PetscCheck(create, F->hdr.comm, PETSC_ERR_ARG_OUTOFRANGE, "-%senergy %s: unknown (%s)", F->hdr.prefix, F->energy_name, names);
   PetscCall((*create)(F->mesh, F->x0, &F->energy));
-  PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "%s%s_", F->prefix, F->energy_name));
+  PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "%s%s_", F->hdr.prefix, F->energy_name));
   PetscCall(CSEnergySetOptionsPrefix(F->energy, prefix));
   PetscCall(CSEnergySetFromOptions(F->energy));
   PetscFunctionReturn(0);

@@ -10,7 +10,7 @@
 static PetscErrorCode Rejected(CSWillmoreFlow F, const char what[])
 {
   PetscFunctionBeginUser;
-  PetscCall(PetscPrintf(F->comm, "     step rejected: %s with t = %g; halving t\n", what, (double)F->t));
+  PetscCall(PetscPrintf(F->hdr.comm, "     step rejected: %s with t = %g; halving t\n", what, (double)F->t));
   PetscFunctionReturn(0);
 }
 
@@ -31,7 +31,7 @@ PetscErrorCode CSWFFilterEnergy(CSWillmoreFlow F, PetscBool *accept)
   PetscCall(CSEnergyValue(F->energy, F->xt, &Et));
   /* a relative slack of 1e-12 lets converged iterates (changes at round-off level) pass */
   *accept = (PetscBool)!(!(Et == Et) || Et > E + 1e-12 * PetscAbsReal(E));
-  if (!*accept) PetscCall(PetscPrintf(F->comm, "     step rejected: energy %.15g -> %.15g with t = %g; halving t\n", (double)E, (double)Et, (double)F->t));
+  if (!*accept) PetscCall(PetscPrintf(F->hdr.comm, "     step rejected: energy %.15g -> %.15g with t = %g; halving t\n", (double)E, (double)Et, (double)F->t));
   PetscFunctionReturn(0);
 }
 
@@ -56,6 +56,6 @@ PetscErrorCode CSWFFilterLagrangian(CSWillmoreFlow F, PetscBool *accept)
   if (vt > PetscMax(v0, F->vmax)) why |= CS_WF_REJECT_CEILING;
   *accept = (PetscBool)!why;
   PetscCall(CSWFStepModelRecord(F, v0, vt, Lt - L0, why));
-  if (!*accept) PetscCall(PetscPrintf(F->comm, "     step rejected: %s: Lagrangian %.15g -> %.15g, violation %.3e -> %.3e (ceiling %.3e) with t = %g; %s\n", why == CS_WF_REJECT_CEILING ? "violation above the ceiling" : why == CS_WF_REJECT_LAGRANGIAN ? "the Lagrangian increases" : "both criteria", (double)L0, (double)Lt, (double)v0, (double)vt, (double)PetscMax(v0, F->vmax), (double)F->t, F->step_model == CS_WF_STEP_PREDICTIVE ? "t from the step model" : "halving t"));
+  if (!*accept) PetscCall(PetscPrintf(F->hdr.comm, "     step rejected: %s: Lagrangian %.15g -> %.15g, violation %.3e -> %.3e (ceiling %.3e) with t = %g; %s\n", why == CS_WF_REJECT_CEILING ? "violation above the ceiling" : why == CS_WF_REJECT_LAGRANGIAN ? "the Lagrangian increases" : "both criteria", (double)L0, (double)Lt, (double)v0, (double)vt, (double)PetscMax(v0, F->vmax), (double)F->t, F->step_model == CS_WF_STEP_PREDICTIVE ? "t from the step model" : "halving t"));
   PetscFunctionReturn(0);
 }

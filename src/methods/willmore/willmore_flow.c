@@ -101,17 +101,62 @@ static void SetDefaults(CSWillmoreFlow F)
   F->viol_min        = -1; /* none evaluated yet */
 }
 
+/* The flow's own members (hdr.destroy: CSWillmoreFlowDestroy cancels the monitors first and frees the header after) */
+static PetscErrorCode DestroyMembers(CSObject obj)
+{
+  CSWillmoreFlow F = (CSWillmoreFlow)obj;
+  PetscFunctionBeginUser;
+  if (F->ops.destroy) PetscCall((*F->ops.destroy)(F));
+  PetscCall(VecDestroy(&F->xgood));
+  PetscCall(CSWFStopDestroy(F));
+  /* also after a set-up that failed half-way (the parts are zeroed at creation; their destroys take NULL) */
+  PetscCall(CSSaddleDestroy(&F->saddle));
+  PetscCall(CSMetricDestroy(&F->metric));
+  PetscCall(CSConformalConstraintDestroy(&F->cc));
+  PetscCall(CSNormalConstraintDestroy(&F->nc));
+  PetscCall(CSWFConstraintsDestroy(F));
+  if (F->k) PetscCall(VecDestroyVecs(F->k, &F->rows));
+  PetscCall(PetscFree(F->dnu2));
+  PetscCall(PetscFree6(F->cx, F->cxt, F->nu, F->dnu, F->gw, F->nun));
+  if (F->energy) PetscCall(CSEnergyDestroy(&F->energy));
+  PetscCall(VecDestroy(&F->x));
+  PetscCall(VecDestroy(&F->x0));
+  PetscCall(VecDestroy(&F->area0));
+  PetscCall(VecDestroy(&F->areat));
+  PetscCall(VecDestroy(&F->g));
+  PetscCall(VecDestroy(&F->r));
+  PetscCall(VecDestroy(&F->df));
+  PetscCall(VecDestroy(&F->xt));
+  PetscCall(VecDestroy(&F->tmp));
+  PetscCall(VecDestroy(&F->c));
+  PetscCall(VecDestroy(&F->cE));
+  PetscCall(VecDestroy(&F->cN));
+  PetscCall(VecDestroy(&F->iqE));
+  PetscCall(VecDestroy(&F->iqN));
+  PetscCall(MatDestroy(&F->Xn));
+  PetscCall(MatDestroy(&F->Xext));
+  PetscCall(ISDestroy(&F->isM[0]));
+  PetscCall(ISDestroy(&F->isM[1]));
+  PetscCall(VecDestroy(&F->mu));
+  PetscCall(VecDestroy(&F->dmu));
+  PetscCall(VecDestroy(&F->iq));
+  PetscCall(VecDestroy(&F->ct));
+  PetscCall(VecDestroy(&F->mun));
+  PetscCall(ISDestroy(&F->fixedIS));
+  PetscCall(PetscFree(F->fixed));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode CSWillmoreFlowCreate(CSMesh mesh, CSWillmoreFlow *flow)
 {
   CSWillmoreFlow F;
   PetscFunctionBeginUser;
   PetscCall(CSInitializePackage()); /* as KSPCreate does: events, PCs and solver types before any use */
   PetscCall(RegisterAll());
-  PetscCall(PetscNew(&F));
-  F->comm = mesh->comm;
-  F->mesh = mesh;
+  PetscCall(CSObjectCreate(sizeof(*F), mesh->comm, "flow_", &F));
+  F->hdr.destroy = DestroyMembers;
+  F->mesh        = mesh;
   SetDefaults(F);
-  PetscCall(PetscStrncpy(F->prefix, "flow_", sizeof(F->prefix)));
   PetscCall(PetscStrncpy(F->energy_name, "willmore", sizeof(F->energy_name)));
   PetscCall(CSWillmoreFlowSetType(F, CSWILLMOREFLOWCGD));
   *flow = F;
@@ -122,10 +167,10 @@ PetscErrorCode CSWillmoreFlowSetType(CSWillmoreFlow F, CSWillmoreFlowType type)
 {
   PetscErrorCode (*create)(CSWillmoreFlow);
   PetscFunctionBeginUser;
-  PetscCheck(!F->setupcalled, F->comm, PETSC_ERR_ORDER, "CSWillmoreFlowSetType after CSWillmoreFlowSetUp");
+  PetscCheck(!F->setupcalled, F->hdr.comm, PETSC_ERR_ORDER, "CSWillmoreFlowSetType after CSWillmoreFlowSetUp");
   PetscCall(RegisterAll());
   PetscCall(PetscFunctionListFind(CSWillmoreFlowList, type, &create));
-  PetscCheck(create, F->comm, PETSC_ERR_ARG_UNKNOWN_TYPE, "-%stype %s: unknown Willmore flow type", F->prefix, type);
+  PetscCheck(create, F->hdr.comm, PETSC_ERR_ARG_UNKNOWN_TYPE, "-%stype %s: unknown Willmore flow type", F->hdr.prefix, type);
   if (F->ops.destroy) PetscCall((*F->ops.destroy)(F)); /* the previous kind's data */
   PetscCall(PetscMemzero(&F->ops, sizeof(F->ops)));
   PetscCall(PetscStrncpy(F->type, type, sizeof(F->type)));
@@ -140,37 +185,13 @@ PetscErrorCode CSWillmoreFlowGetType(CSWillmoreFlow F, CSWillmoreFlowType *type)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CSWillmoreFlowSetOptionsPrefix(CSWillmoreFlow F, const char prefix[])
-{
-  PetscFunctionBeginUser;
-  PetscCall(PetscStrncpy(F->prefix, prefix ? prefix : "", sizeof(F->prefix)));
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSWillmoreFlowGetOptionsPrefix(CSWillmoreFlow F, const char *prefix[])
-{
-  PetscFunctionBeginUser;
-  *prefix = F->prefix;
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSWillmoreFlowMonitorSet(CSWillmoreFlow F, CSWillmoreFlowMonitorFn fn, void *ctx, PetscErrorCode (*destroy)(void **))
-{
-  PetscFunctionBeginUser;
-  PetscCheck(F->nmonitor < CS_WILLMORE_FLOW_MAX_MONITORS, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "too many Willmore flow monitors (at most %d)", CS_WILLMORE_FLOW_MAX_MONITORS);
-  F->monitor[F->nmonitor].fn      = fn;
-  F->monitor[F->nmonitor].ctx     = ctx;
-  F->monitor[F->nmonitor].destroy = destroy;
-  F->nmonitor++;
-  PetscFunctionReturn(0);
-}
+/* SetOptionsPrefix, GetOptionsPrefix, MonitorSet, Destroy: the skeleton of every method object (include/cs_object.h) */
+CS_OBJECT_DEFINE(CSWillmoreFlow, CSWillmoreFlowMonitorFn)
 
 PetscErrorCode CSWillmoreFlowMonitorCancel(CSWillmoreFlow F)
 {
   PetscFunctionBeginUser;
-  for (PetscInt i = 0; i < F->nmonitor; i++)
-    if (F->monitor[i].destroy) PetscCall((*F->monitor[i].destroy)(&F->monitor[i].ctx));
-  F->nmonitor = 0;
+  PetscCall(CSMonitorListCancel(&F->hdr.monitors));
   PetscFunctionReturn(0);
 }
 
@@ -184,7 +205,7 @@ PetscErrorCode CSWillmoreFlowGetConvergedReason(CSWillmoreFlow F, CSWillmoreFlow
 PetscErrorCode CSWillmoreFlowGetSolution(CSWillmoreFlow F, Vec *x)
 {
   PetscFunctionBeginUser;
-  PetscCheck(F->setupcalled, F->comm, PETSC_ERR_ORDER, "CSWillmoreFlowGetSolution before CSWillmoreFlowSetUp");
+  PetscCheck(F->setupcalled, F->hdr.comm, PETSC_ERR_ORDER, "CSWillmoreFlowGetSolution before CSWillmoreFlowSetUp");
   if (F->ops.positions) PetscCall((*F->ops.positions)(F, PETSC_FALSE, x));
   else *x = F->x;
   PetscFunctionReturn(0);
@@ -193,7 +214,7 @@ PetscErrorCode CSWillmoreFlowGetSolution(CSWillmoreFlow F, Vec *x)
 PetscErrorCode CSWillmoreFlowGetVariables(CSWillmoreFlow F, Vec *x)
 {
   PetscFunctionBeginUser;
-  PetscCheck(F->setupcalled, F->comm, PETSC_ERR_ORDER, "CSWillmoreFlowGetVariables before CSWillmoreFlowSetUp");
+  PetscCheck(F->setupcalled, F->hdr.comm, PETSC_ERR_ORDER, "CSWillmoreFlowGetVariables before CSWillmoreFlowSetUp");
   *x = F->x;
   PetscFunctionReturn(0);
 }
@@ -208,7 +229,7 @@ PetscErrorCode CSWillmoreFlowGetLastSolution(CSWillmoreFlow F, Vec *x)
 PetscErrorCode CSWillmoreFlowGetInitial(CSWillmoreFlow F, Vec *x0)
 {
   PetscFunctionBeginUser;
-  PetscCheck(F->setupcalled, F->comm, PETSC_ERR_ORDER, "CSWillmoreFlowGetInitial before CSWillmoreFlowSetUp");
+  PetscCheck(F->setupcalled, F->hdr.comm, PETSC_ERR_ORDER, "CSWillmoreFlowGetInitial before CSWillmoreFlowSetUp");
   if (F->ops.positions) PetscCall((*F->ops.positions)(F, PETSC_TRUE, x0));
   else *x0 = F->x0;
   PetscFunctionReturn(0);
@@ -238,7 +259,7 @@ PetscErrorCode CSWillmoreFlowGetEnergyName(CSWillmoreFlow F, const char **name)
 PetscErrorCode CSWillmoreFlowGetEnergy(CSWillmoreFlow F, CSEnergy *e)
 {
   PetscFunctionBeginUser;
-  PetscCheck(F->setupcalled, F->comm, PETSC_ERR_ORDER, "CSWillmoreFlowSetUp first");
+  PetscCheck(F->setupcalled, F->hdr.comm, PETSC_ERR_ORDER, "CSWillmoreFlowSetUp first");
   *e = F->energy;
   PetscFunctionReturn(0);
 }
@@ -296,60 +317,13 @@ PetscErrorCode CSWillmoreFlowGetInfo(CSWillmoreFlow F, CSWillmoreFlowInfo *info)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CSWillmoreFlowDestroy(CSWillmoreFlow *flow)
-{
-  CSWillmoreFlow F = *flow;
-  PetscFunctionBeginUser;
-  if (!F) PetscFunctionReturn(0);
-  PetscCall(CSWillmoreFlowMonitorCancel(F));
-  if (F->ops.destroy) PetscCall((*F->ops.destroy)(F));
-  PetscCall(VecDestroy(&F->xgood));
-  PetscCall(CSWFStopDestroy(F));
-  /* also after a set-up that failed half-way (the parts are zeroed at creation; their destroys take NULL) */
-  PetscCall(CSSaddleDestroy(&F->saddle));
-  PetscCall(CSMetricDestroy(&F->metric));
-  PetscCall(CSConformalConstraintDestroy(&F->cc));
-  PetscCall(CSNormalConstraintDestroy(&F->nc));
-  PetscCall(CSWFConstraintsDestroy(F));
-  if (F->k) PetscCall(VecDestroyVecs(F->k, &F->rows));
-  PetscCall(PetscFree(F->dnu2));
-  PetscCall(PetscFree6(F->cx, F->cxt, F->nu, F->dnu, F->gw, F->nun));
-  if (F->energy) PetscCall(CSEnergyDestroy(&F->energy));
-  PetscCall(VecDestroy(&F->x));
-  PetscCall(VecDestroy(&F->x0));
-  PetscCall(VecDestroy(&F->area0));
-  PetscCall(VecDestroy(&F->areat));
-  PetscCall(VecDestroy(&F->g));
-  PetscCall(VecDestroy(&F->r));
-  PetscCall(VecDestroy(&F->df));
-  PetscCall(VecDestroy(&F->xt));
-  PetscCall(VecDestroy(&F->tmp));
-  PetscCall(VecDestroy(&F->c));
-  PetscCall(VecDestroy(&F->cE));
-  PetscCall(VecDestroy(&F->cN));
-  PetscCall(VecDestroy(&F->iqE));
-  PetscCall(VecDestroy(&F->iqN));
-  PetscCall(MatDestroy(&F->Xn));
-  PetscCall(MatDestroy(&F->Xext));
-  PetscCall(ISDestroy(&F->isM[0]));
-  PetscCall(ISDestroy(&F->isM[1]));
-  PetscCall(VecDestroy(&F->mu));
-  PetscCall(VecDestroy(&F->dmu));
-  PetscCall(VecDestroy(&F->iq));
-  PetscCall(VecDestroy(&F->ct));
-  PetscCall(VecDestroy(&F->mun));
-  PetscCall(ISDestroy(&F->fixedIS));
-  PetscCall(PetscFree(F->fixed));
-  PetscCall(PetscFree(*flow));
-  PetscFunctionReturn(0);
-}
 
 /* One line: the problem the flow solves; then the kind's own lines (ops.view). */
 PetscErrorCode CSWillmoreFlowView(CSWillmoreFlow F, PetscViewer viewer)
 {
   CSMesh m = F->mesh;
   PetscFunctionBeginUser;
-  if (!viewer) viewer = PETSC_VIEWER_STDOUT_(F->comm);
+  if (!viewer) viewer = PETSC_VIEWER_STDOUT_(F->hdr.comm);
   PetscCall(PetscViewerASCIIPrintf(viewer, "flow %s: mesh %s V=%" PetscInt_FMT " E=%" PetscInt_FMT " F=%" PetscInt_FMT ", energy %s, metric %s, conformal %s, %" PetscInt_FMT " global constraint rows%s, t=%g t_mu=%g\n", F->type, m->name, m->Nv, m->Ne, m->Nf, F->energy_name, CSFlowMetricTypes[F->metric_type], F->conformal ? "on" : "off", F->k, F->fixedIS ? ", Dirichlet boundary" : "", (double)F->t, (double)F->tmu));
   if (F->ops.view) PetscCall((*F->ops.view)(F, viewer));
   PetscFunctionReturn(0);

@@ -77,8 +77,8 @@ static PetscErrorCode SayMechanism(CSWillmoreFlow F)
   char cls[400];
   PetscFunctionBeginUser;
   (void)ClassText(F, cls, sizeof(cls));
-  if (F->degeneration == CS_WILLMORE_FLOW_DEGENERATION_FINS) PetscCall(PetscPrintf(F->comm, "flow: the surface is growing fins at iteration %" PetscInt_FMT ": the conformal factor jumps across faces (a face's quasi-conformal error is %.3g > -%sfin_q %g) and the vertex areas spread %.0fx against the input; %s.\n", F->it, (double)F->qmax, F->prefix, (double)F->fin_q, (double)F->spread, cls));
-  else PetscCall(PetscPrintf(F->comm, "flow: the surface is squeezing conformally at iteration %" PetscInt_FMT ": the vertex areas spread %.0fx against the input while every face keeps its shape (q_max %.3g)%s; %s.\n", F->it, (double)F->spread, (double)F->qmax, F->degeneration == CS_WILLMORE_FLOW_DEGENERATION_SMOOTH ? ", or it slides along a Moebius orbit (the gauge is free)" : "", cls));
+  if (F->degeneration == CS_WILLMORE_FLOW_DEGENERATION_FINS) PetscCall(PetscPrintf(F->hdr.comm, "flow: the surface is growing fins at iteration %" PetscInt_FMT ": the conformal factor jumps across faces (a face's quasi-conformal error is %.3g > -%sfin_q %g) and the vertex areas spread %.0fx against the input; %s.\n", F->it, (double)F->qmax, F->hdr.prefix, (double)F->fin_q, (double)F->spread, cls));
+  else PetscCall(PetscPrintf(F->hdr.comm, "flow: the surface is squeezing conformally at iteration %" PetscInt_FMT ": the vertex areas spread %.0fx against the input while every face keeps its shape (q_max %.3g)%s; %s.\n", F->it, (double)F->spread, (double)F->qmax, F->degeneration == CS_WILLMORE_FLOW_DEGENERATION_SMOOTH ? ", or it slides along a Moebius orbit (the gauge is free)" : "", cls));
   PetscFunctionReturn(0);
 }
 
@@ -92,14 +92,14 @@ PetscErrorCode CSWFCheckResolution(CSWillmoreFlow F, CSWillmoreFlowConvergedReas
   PetscFunctionBeginUser;
   if (!(F->max_area_ratio > 0)) PetscFunctionReturn(0);
   if (!(F->area_ratio < F->max_area_ratio && F->area_ratio > 1 / F->max_area_ratio)) { /* e.g. a far-off volume target */
-    PetscCall(PetscPrintf(F->comm, "flow: the flow diverges at iteration %" PetscInt_FMT ": the total area is %g times the input's, beyond -%smax_area_ratio (%g). Stopping with this state; it is not a solution (try a smaller -%st_max, or a constraint target nearer the input)\n", it, (double)F->area_ratio, F->prefix, (double)F->max_area_ratio, F->prefix));
+    PetscCall(PetscPrintf(F->hdr.comm, "flow: the flow diverges at iteration %" PetscInt_FMT ": the total area is %g times the input's, beyond -%smax_area_ratio (%g). Stopping with this state; it is not a solution (try a smaller -%st_max, or a constraint target nearer the input)\n", it, (double)F->area_ratio, F->hdr.prefix, (double)F->max_area_ratio, F->hdr.prefix));
     *reason = CS_WILLMORE_FLOW_DIVERGED_AREA;
     PetscFunctionReturn(0);
   }
   if (!(F->spread <= F->max_area_ratio)) {
     F->degeneration = Classify(F);
     PetscCall(SayMechanism(F));
-    PetscCall(PetscPrintf(F->comm, "flow: mesh resolution collapse at iteration %" PetscInt_FMT ": the vertex areas relative to the input spread by max(A/A0)/min(A/A0) = %g, beyond -%smax_area_ratio (%g), with the constraints %s (violation %.2e) and the largest quasi-conformal error of a face %.3g (-%sfin_q %g): %s. Stopping with this state; it is not a critical point and its energy is not trustworthy (docs/real_meshes.md; -%smax_area_ratio 0 disables this check)\n", it, (double)F->spread, F->prefix, (double)F->max_area_ratio, viol < 1e3 * F->ctol ? "met" : "NOT met", (double)viol, (double)F->qmax, F->prefix, (double)F->fin_q, DegenerationText(F->degeneration), F->prefix));
+    PetscCall(PetscPrintf(F->hdr.comm, "flow: mesh resolution collapse at iteration %" PetscInt_FMT ": the vertex areas relative to the input spread by max(A/A0)/min(A/A0) = %g, beyond -%smax_area_ratio (%g), with the constraints %s (violation %.2e) and the largest quasi-conformal error of a face %.3g (-%sfin_q %g): %s. Stopping with this state; it is not a critical point and its energy is not trustworthy (docs/real_meshes.md; -%smax_area_ratio 0 disables this check)\n", it, (double)F->spread, F->hdr.prefix, (double)F->max_area_ratio, viol < 1e3 * F->ctol ? "met" : "NOT met", (double)viol, (double)F->qmax, F->hdr.prefix, (double)F->fin_q, DegenerationText(F->degeneration), F->hdr.prefix));
     *reason = CS_WILLMORE_FLOW_DIVERGED_MESH_DEGENERATE;
   }
   PetscFunctionReturn(0);
@@ -129,7 +129,7 @@ PetscErrorCode CSWFCheckStepGeometry(CSWillmoreFlow F, PetscBool *accept)
   PetscCall(CSGeometryFoldedFaces(F->mesh, F->x, F->xt, &nfold));
   if ((F->max_step > 0 && !(dmax <= F->max_step * h)) || nfold > 0) {
     *accept = PETSC_FALSE;
-    PetscCall(PetscPrintf(F->comm, "     step rejected: it moves a vertex by %.3g mean edge lengths (-%smax_step %g) and turns %" PetscInt_FMT " faces over, with t = %g; halving t\n", (double)(dmax / h), F->prefix, (double)F->max_step, nfold, (double)F->t));
+    PetscCall(PetscPrintf(F->hdr.comm, "     step rejected: it moves a vertex by %.3g mean edge lengths (-%smax_step %g) and turns %" PetscInt_FMT " faces over, with t = %g; halving t\n", (double)(dmax / h), F->hdr.prefix, (double)F->max_step, nfold, (double)F->t));
   }
   PetscFunctionReturn(0);
 }
@@ -156,7 +156,7 @@ PetscErrorCode CSWFCheckFolds(CSWillmoreFlow F, PetscBool *folded)
   if (F->good_set) PetscCall(CSGeometryFoldedFaces(F->mesh, F->xgood, F->x, &nfold));
   PetscCall(CSGeometryCreasedEdges(F->mesh, F->x0, F->x, CS_WF_FOLD_CREASE, &ncrease));
   *folded = (PetscBool)(nfold > 0 || ncrease > 0 || (F->mesh->topo.boundary_loops == 0 && !(F->V * F->V0 > 0)));
-  if (*folded) PetscCall(PetscPrintf(F->comm, "flow: the surface folds at iteration %" PetscInt_FMT ": enclosed volume %g (input %g), %" PetscInt_FMT " faces turned over since the last accepted state, %" PetscInt_FMT " new creases of more than %.0f degrees between neighbouring faces (-%sfold_guard). Stopping with the last good state\n", F->it, (double)F->V, (double)F->V0, nfold, ncrease, (double)CS_WF_FOLD_CREASE, F->prefix));
+  if (*folded) PetscCall(PetscPrintf(F->hdr.comm, "flow: the surface folds at iteration %" PetscInt_FMT ": enclosed volume %g (input %g), %" PetscInt_FMT " faces turned over since the last accepted state, %" PetscInt_FMT " new creases of more than %.0f degrees between neighbouring faces (-%sfold_guard). Stopping with the last good state\n", F->it, (double)F->V, (double)F->V0, nfold, ncrease, (double)CS_WF_FOLD_CREASE, F->hdr.prefix));
   else {
     PetscCall(VecCopy(F->x, F->xgood));
     F->good_set = PETSC_TRUE;

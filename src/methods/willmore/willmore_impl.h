@@ -3,6 +3,7 @@
 #ifndef CS_WILLMORE_IMPL_H
 #define CS_WILLMORE_IMPL_H
 #include "cs_methods_willmore.h"
+#include "cs_object.h"
 
 /* ---- the linear solver of every step (willmore_saddle.c) ----
    Solves, with the KSP of prefix "<flow prefix>saddle_",
@@ -132,24 +133,16 @@ struct _CSWillmoreFlowOps {
   PetscErrorCode (*set_state)(CSWillmoreFlow, const PetscReal ck[]);
 };
 
-typedef struct {
-  PetscErrorCode (*fn)(CSWillmoreFlow, PetscInt, void *);
-  void *ctx;
-  PetscErrorCode (*destroy)(void **);
-} CSWillmoreFlowMonitor;
-#define CS_WILLMORE_FLOW_MAX_MONITORS 8
 #define CS_WF_STAT_MAX                64 /* largest -flow_stationary_window (its values are stored in checkpoints) */
 #define CS_WF_STAT_NREAL              (4 + 2 * (CS_WF_STAT_MAX + 1)) /* checkpoint scalars of the window and of the drift test */
 
 struct _p_CSWillmoreFlow {
-  MPI_Comm              comm;
+  CSObjectHeader        hdr;  /* comm (the mesh's), prefix (default "flow_"), monitors (CSWillmoreFlowMonitorFn), destroy */
   CSMesh                mesh; /* given, referenced by the caller; not destroyed here */
-  char                  type[16], prefix[64];
+  char                  type[16];
   struct _CSWillmoreFlowOps ops;
   PetscBool             setupcalled;
   CSWillmoreFlowConvergedReason reason;
-  CSWillmoreFlowMonitor monitor[CS_WILLMORE_FLOW_MAX_MONITORS];
-  PetscInt              nmonitor;
 
   /* options */
   char                  energy_name[32];

@@ -12,8 +12,8 @@ PetscErrorCode CSWillmoreFlowGetConformalMultiplier(CSWillmoreFlow F, Vec q, Vec
 {
   Vec mu = F->mu, muE;
   PetscFunctionBeginUser;
-  PetscCheck(F->setupcalled && F->started, F->comm, PETSC_ERR_ORDER, "CSWillmoreFlowGetConformalMultiplier before the first CSWillmoreFlowStep");
-  PetscCheck(!CSWFOwnVariables(F), F->comm, PETSC_ERR_SUP, "-%stype %s: the multipliers live on halfedges; the vertex force and edge q are not defined", F->prefix, F->type);
+  PetscCheck(F->setupcalled && F->started, F->hdr.comm, PETSC_ERR_ORDER, "CSWillmoreFlowGetConformalMultiplier before the first CSWillmoreFlowStep");
+  PetscCheck(!CSWFOwnVariables(F), F->hdr.comm, PETSC_ERR_SUP, "-%stype %s: the multipliers live on halfedges; the vertex force and edge q are not defined", F->hdr.prefix, F->type);
   if (!F->conformal) {
     if (q) PetscCall(VecSet(q, 0));
     if (force) PetscCall(VecSet(force, 0));
@@ -37,8 +37,8 @@ PetscErrorCode CSWillmoreFlowGetConformalMultiplier(CSWillmoreFlow F, Vec q, Vec
 PetscErrorCode CSWillmoreFlowGetResidual(CSWillmoreFlow F, Vec *r)
 {
   PetscFunctionBeginUser;
-  PetscCheck(F->setupcalled && F->started, F->comm, PETSC_ERR_ORDER, "CSWillmoreFlowGetResidual before the first CSWillmoreFlowStep");
-  PetscCheck(!CSWFOwnVariables(F), F->comm, PETSC_ERR_SUP, "-%stype %s: the residual lives on halfedges, not vertices", F->prefix, F->type);
+  PetscCheck(F->setupcalled && F->started, F->hdr.comm, PETSC_ERR_ORDER, "CSWillmoreFlowGetResidual before the first CSWillmoreFlowStep");
+  PetscCheck(!CSWFOwnVariables(F), F->hdr.comm, PETSC_ERR_SUP, "-%stype %s: the residual lives on halfedges, not vertices", F->hdr.prefix, F->type);
   *r = F->r;
   PetscFunctionReturn(0);
 }

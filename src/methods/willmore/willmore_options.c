@@ -23,7 +23,7 @@ static PetscErrorCode OptionalTarget(const char name[], const char help[], Petsc
 /* Step sizes, step control, guards, stopping. */
 static PetscErrorCode StepOptions(CSWillmoreFlow F, PetscOptionItems *PetscOptionsObject)
 {
-  const char *p = F->prefix;
+  const char *p = F->hdr.prefix;
   PetscBool   set;
   PetscFunctionBeginUser;
   PetscCall(CSOptionsReal("-t", "Initial primal step size t", NULL, F->t, &F->t, NULL));
@@ -58,7 +58,7 @@ static PetscErrorCode StepOptions(CSWillmoreFlow F, PetscOptionItems *PetscOptio
   PetscCall(CSOptionsInt("-soc_max_it", "CGD/GD: second-order corrections of each trial step toward the constraints (0: none)", NULL, F->soc_max_it, &F->soc_max_it, NULL));
   PetscCall(CSOptionsInt("-pgd_projection_max_it", "PGD: Gauss-Newton iterations of the projection onto the constraint set", NULL, F->proj_max_it, &F->proj_max_it, NULL));
   PetscCall(CSOptionsInt("-factor_reuse_its", "Keep the preconditioner (factorisation) of an earlier step while the last solve needed at most this many Krylov iterations (0: refactor every step; default 10 with the conformal constraint, else 0; ignored with a preonly saddle KSP)", NULL, F->reuse_its, &F->reuse_its, &set));
-  PetscCheck(!set || F->reuse_its >= 0, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sfactor_reuse_its %" PetscInt_FMT ": use 0 (refactor every step) or a positive iteration count", p, F->reuse_its);
+  PetscCheck(!set || F->reuse_its >= 0, F->hdr.comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sfactor_reuse_its %" PetscInt_FMT ": use 0 (refactor every step) or a positive iteration count", p, F->reuse_its);
   PetscCall(CSOptionsEnum("-matrix_type", "The saddle matrix as MATNEST (fieldsplit) or converted to AIJ (monolithic direct solvers)", NULL, CSSaddleMatTypes, (PetscEnum)F->saddle_mat, (PetscEnum *)&F->saddle_mat, NULL));
   PetscFunctionReturn(0);
 }
@@ -121,21 +121,21 @@ static PetscErrorCode CheckValues(CSWillmoreFlow F)
     {"constraint_volume", F->vol_given ? F->vol_target : 1, !F->vol_given || PetscAbsReal(F->vol_target) <= 1e12, "the target volume must lie in [-1e12, 1e12]"},
   };
   PetscFunctionBeginUser;
-  PetscCall(CSCheckOptionValues(F->comm, F->prefix, sizeof(checks) / sizeof(checks[0]), checks));
+  PetscCall(CSCheckOptionValues(F->hdr.comm, F->hdr.prefix, sizeof(checks) / sizeof(checks[0]), checks));
   PetscFunctionReturn(0);
 }
 
 /* Consistency of the options with each other and with the kind. */
 static PetscErrorCode CheckOptions(CSWillmoreFlow F)
 {
-  const char *p = F->prefix;
+  const char *p = F->hdr.prefix;
   PetscFunctionBeginUser;
   PetscCall(CheckValues(F));
   if (F->tmu == 0) F->tmu = 1e3 * F->t;
-  PetscCheck(!F->target[0] || F->conformal, F->comm, PETSC_ERR_ARG_INCOMP, "-%starget_mesh %s needs the conformal constraint (cgd, or pgd with -%sconformal)", p, F->target, p);
-  PetscCheck(!F->boundary_set || F->boundary != CS_FLOW_BOUNDARY_NORMALS || F->conformal, F->comm, PETSC_ERR_ARG_INCOMP, "-%sboundary normals needs the conformal constraint (cgd or pgd)", p);
+  PetscCheck(!F->target[0] || F->conformal, F->hdr.comm, PETSC_ERR_ARG_INCOMP, "-%starget_mesh %s needs the conformal constraint (cgd, or pgd with -%sconformal)", p, F->target, p);
+  PetscCheck(!F->boundary_set || F->boundary != CS_FLOW_BOUNDARY_NORMALS || F->conformal, F->hdr.comm, PETSC_ERR_ARG_INCOMP, "-%sboundary normals needs the conformal constraint (cgd or pgd)", p);
   /* the step-geometry check and the fold guard measure vertex positions; a triangle field's variables are not */
-  PetscCheck(!CSWFOwnVariables(F) || (F->max_step == 0 && !F->fold_guard), F->comm, PETSC_ERR_SUP, "-%smax_step and -%sfold_guard work on vertex positions, not on -%stype %s (its reconstruction is guarded by -%smax_area_ratio)", p, p, p, F->type, p);
+  PetscCheck(!CSWFOwnVariables(F) || (F->max_step == 0 && !F->fold_guard), F->hdr.comm, PETSC_ERR_SUP, "-%smax_step and -%sfold_guard work on vertex positions, not on -%stype %s (its reconstruction is guarded by -%smax_area_ratio)", p, p, p, F->type, p);
   if (F->ops.setup) PetscCall((*F->ops.setup)(F));
   PetscFunctionReturn(0);
 }
@@ -149,7 +149,7 @@ PetscErrorCode CSWillmoreFlowSetFromOptions(CSWillmoreFlow F)
   PetscCall(CSWillmoreFlowEnergyList(&energies));
   PetscCall(CSWillmoreFlowGetTypeList(&kinds));
   PetscCall(PetscStrncpy(type, F->type, sizeof(type)));
-  PetscOptionsBegin(F->comm, F->prefix, "Constrained Willmore flow (soliman2021)", NULL);
+  PetscOptionsBegin(F->hdr.comm, F->hdr.prefix, "Constrained Willmore flow (soliman2021)", NULL);
   PetscCall(PetscOptionsFList("-type", "Flow kind", NULL, kinds, type, type, sizeof(type), &set));
   if (set) PetscCall(CSWillmoreFlowSetType(F, type));
   PetscCall(StepOptions(F, PetscOptionsObject));

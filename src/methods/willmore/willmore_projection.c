@@ -96,6 +96,6 @@ PetscErrorCode CSWFRestoreTo(CSWillmoreFlow F, PetscReal v, PetscReal vtarget, P
     F->restore_failed = PETSC_TRUE; /* a failed projection costs -pgd_projection_max_it solves: not again in this run */
   }
   PetscCall(VecDestroy(&keep));
-  PetscCall(PetscPrintf(F->comm, "     restoration after iteration %" PetscInt_FMT ": violation %.3e (t = %g): %s\n", F->it, (double)v, (double)F->t, ok ? "projected back onto the constraints" : "the projection failed; state kept, no more restorations in this run"));
+  PetscCall(PetscPrintf(F->hdr.comm, "     restoration after iteration %" PetscInt_FMT ": violation %.3e (t = %g): %s\n", F->it, (double)v, (double)F->t, ok ? "projected back onto the constraints" : "the projection failed; state kept, no more restorations in this run"));
   PetscFunctionReturn(0);
 }

@@ -10,7 +10,7 @@ PetscErrorCode CSWFSetUpBoundary(CSWillmoreFlow F)
   ISLocalToGlobalMapping l2g;
   PetscInt              *idx, n = 0;
   PetscFunctionBeginUser;
-  if (F->boundary_set) PetscCheck(m->topo.boundary_loops > 0, F->comm, PETSC_ERR_ARG_INCOMP, "-%sboundary %s: the mesh %s is closed (no boundary); boundary methods need a surface with boundary", F->prefix, CSFlowBoundaryTypes[F->boundary], m->name);
+  if (F->boundary_set) PetscCheck(m->topo.boundary_loops > 0, F->hdr.comm, PETSC_ERR_ARG_INCOMP, "-%sboundary %s: the mesh %s is closed (no boundary); boundary methods need a surface with boundary", F->hdr.prefix, CSFlowBoundaryTypes[F->boundary], m->name);
   if (m->topo.boundary_loops == 0) PetscFunctionReturn(0);
   F->normals = (PetscBool)(F->boundary == CS_FLOW_BOUNDARY_NORMALS); /* fixed positions and boundary-face normals (Fig. 2) */
   if (F->boundary == CS_FLOW_BOUNDARY_FREE) PetscFunctionReturn(0);
@@ -23,7 +23,7 @@ PetscErrorCode CSWFSetUpBoundary(CSWillmoreFlow F)
   }
   PetscCall(DMGetLocalToGlobalMapping(m->dmV3, &l2g));
   PetscCall(ISLocalToGlobalMappingApply(l2g, n, idx, idx));
-  PetscCall(ISCreateGeneral(F->comm, n, idx, PETSC_OWN_POINTER, &F->fixedIS));
+  PetscCall(ISCreateGeneral(F->hdr.comm, n, idx, PETSC_OWN_POINTER, &F->fixedIS));
   PetscFunctionReturn(0);
 }
 
@@ -39,7 +39,7 @@ PetscErrorCode CSWFSetUpConstraints(CSWillmoreFlow F)
   PetscFunctionBeginUser;
   if (F->conformal) {
     Vec xt = F->x0;
-    PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%starget_mesh", F->prefix));
+    PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%starget_mesh", F->hdr.prefix));
     if (F->target[0]) PetscCall(CSMeshLoadCompatiblePositions(m, opt, F->target, &xt));
     PetscCall(CSConformalConstraintCreate(m, xt, (PetscBool)(m->topo.boundary_loops > 0), F->fixed, &F->cc));
     if (!F->target[0] && m->lt) PetscCall(CSConformalConstraintSetTargetLengths(&F->cc, m->lt));
@@ -48,9 +48,9 @@ PetscErrorCode CSWFSetUpConstraints(CSWillmoreFlow F)
   }
   PetscCall(CSGeometryAreaVolume(m, F->x0, &A, &V));
   /* checked here too, so that the messages name this object's options */
-  PetscCheck(!F->area_set || !F->area_given || F->area_target > 0, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sconstraint_area %g: the target area must be positive", F->prefix, (double)F->area_target);
-  PetscCheck(!F->vol_set || m->topo.boundary_loops == 0, F->comm, PETSC_ERR_ARG_WRONG, "-%sconstraint_volume: the mesh %s has %" PetscInt_FMT " boundary loop(s); the enclosed volume is only defined for closed surfaces", F->prefix, m->name, m->topo.boundary_loops);
-  PetscCheck(!F->vol_set || (F->vol_given ? F->vol_target : V) > 0, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sconstraint_volume %g: the target volume must be positive (outward-oriented surface)", F->prefix, (double)(F->vol_given ? F->vol_target : V));
+  PetscCheck(!F->area_set || !F->area_given || F->area_target > 0, F->hdr.comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sconstraint_area %g: the target area must be positive", F->hdr.prefix, (double)F->area_target);
+  PetscCheck(!F->vol_set || m->topo.boundary_loops == 0, F->hdr.comm, PETSC_ERR_ARG_WRONG, "-%sconstraint_volume: the mesh %s has %" PetscInt_FMT " boundary loop(s); the enclosed volume is only defined for closed surfaces", F->hdr.prefix, m->name, m->topo.boundary_loops);
+  PetscCheck(!F->vol_set || (F->vol_given ? F->vol_target : V) > 0, F->hdr.comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sconstraint_volume %g: the target volume must be positive (outward-oriented surface)", F->hdr.prefix, (double)(F->vol_given ? F->vol_target : V));
   if (F->area_set) {
     PetscCall(CSConstraintCreateArea(m, F->area_given ? F->area_target : A, &g));
     PetscCall(CSWFAddConstraint(F, g));
@@ -59,7 +59,7 @@ PetscErrorCode CSWFSetUpConstraints(CSWillmoreFlow F)
     PetscCall(CSConstraintCreateVolume(m, F->vol_given ? F->vol_target : V, &g));
     PetscCall(CSWFAddConstraint(F, g));
   }
-  PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%sconstraint_points", F->prefix));
+  PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%sconstraint_points", F->hdr.prefix));
   if (F->points[0]) {
     PetscCall(CSConstraintCreatePointsFromFile(m, opt, F->points, &g));
     PetscCall(CSWFAddConstraint(F, g));
@@ -67,12 +67,12 @@ PetscErrorCode CSWFSetUpConstraints(CSWillmoreFlow F)
   /* Moebius balancing on request: not the default, its 3 dense rows cost 3 more solves per step
      (docs/willmore_flow.md), and soliman2021's method has no such rows */
   if (F->mobius) {
-    PetscCheck(F->conformal, F->comm, PETSC_ERR_ARG_INCOMP, "-%sconstraint_mobius fixes the Moebius gauge of the conformal constraint: it needs -%sconformal (cgd, pgd)", F->prefix, F->prefix);
+    PetscCheck(F->conformal, F->hdr.comm, PETSC_ERR_ARG_INCOMP, "-%sconstraint_mobius fixes the Moebius gauge of the conformal constraint: it needs -%sconformal (cgd, pgd)", F->hdr.prefix, F->hdr.prefix);
     PetscCall(CSConstraintCreateMobiusBalance(m, F->x0, &g));
     PetscCall(CSWFAddConstraint(F, g));
   }
   if (F->rotation) {
-    PetscCheck(F->conformal && F->mobius, F->comm, PETSC_ERR_ARG_INCOMP, "-%sconstraint_rotation fixes the rotations of the domain left free by the conformal constraint and the Moebius balancing: it needs -%sconformal and -%sconstraint_mobius", F->prefix, F->prefix, F->prefix);
+    PetscCheck(F->conformal && F->mobius, F->hdr.comm, PETSC_ERR_ARG_INCOMP, "-%sconstraint_rotation fixes the rotations of the domain left free by the conformal constraint and the Moebius balancing: it needs -%sconformal and -%sconstraint_mobius", F->hdr.prefix, F->hdr.prefix, F->hdr.prefix);
     PetscCall(CSConstraintCreateRotationGauge(m, F->x0, &g));
     PetscCall(CSWFAddConstraint(F, g));
   }
@@ -94,10 +94,10 @@ static PetscErrorCode SetUpNormalLayout(CSWillmoreFlow F)
   PetscCall(VecDuplicate(F->nc.N0, &F->iqN));
   PetscCall(VecGetLocalSize(F->cE, &nE));
   PetscCall(VecGetLocalSize(F->cN, &nN));
-  PetscCall(VecCreateMPI(F->comm, nE + nN, PETSC_DETERMINE, &F->c));
+  PetscCall(VecCreateMPI(F->hdr.comm, nE + nN, PETSC_DETERMINE, &F->c));
   PetscCall(VecGetOwnershipRange(F->c, &rs, NULL));
-  PetscCall(ISCreateStride(F->comm, nE, rs, 1, &F->isM[0]));
-  PetscCall(ISCreateStride(F->comm, nN, rs + nE, 1, &F->isM[1]));
+  PetscCall(ISCreateStride(F->hdr.comm, nE, rs, 1, &F->isM[0]));
+  PetscCall(ISCreateStride(F->hdr.comm, nN, rs + nE, 1, &F->isM[1]));
   PetscFunctionReturn(0);
 }
 
@@ -155,7 +155,7 @@ PetscErrorCode CSWFSetUpScaling(CSWillmoreFlow F)
   F->metric.mass_weight = 1.0 / (sc * sc);
   /* an energy with its own metric term (the fairing energy's fidelity, soliman2021 Eq. 21: energy_fairing.c) */
   if (F->energy->metric) {
-    PetscCheck(F->metric_type != CS_FLOW_METRIC_H1, F->comm, PETSC_ERR_SUP, "-%smetric h1 with -%senergy %s: not built (the energy's metric term is a weight on the H^2 metric's mass term)", F->prefix, F->prefix, F->energy_name);
+    PetscCheck(F->metric_type != CS_FLOW_METRIC_H1, F->hdr.comm, PETSC_ERR_SUP, "-%smetric h1 with -%senergy %s: not built (the energy's metric term is a weight on the H^2 metric's mass term)", F->hdr.prefix, F->hdr.prefix, F->energy_name);
     PetscCall(CSEnergyMetric(F->energy, &F->metric));
   }
   /* the ceiling of t_mu: with its own ramp 1e3 t_max; following t, none but tmu_ratio_max (each rejection
@@ -200,8 +200,8 @@ static PetscErrorCode CheckMemory(CSWillmoreFlow F)
   char   what[256];
   size_t per = F->ops.bytes_per_vertex ? F->ops.bytes_per_vertex : CS_FLOW_BYTES_PER_VERTEX;
   PetscFunctionBeginUser;
-  PetscCall(PetscSNPrintf(what, sizeof(what), "-%stype %s on %s: %" PetscInt_FMT " vertices at about %d KB per vertex for the run", F->prefix, F->type, F->mesh->name, F->mesh->Nv, (int)(per / 1000)));
-  CSRootCall(F->comm, CSCheckAllocation(what, (PetscInt64)F->mesh->Nv, per));
+  PetscCall(PetscSNPrintf(what, sizeof(what), "-%stype %s on %s: %" PetscInt_FMT " vertices at about %d KB per vertex for the run", F->hdr.prefix, F->type, F->mesh->name, F->mesh->Nv, (int)(per / 1000)));
+  CSRootCall(F->hdr.comm, CSCheckAllocation(what, (PetscInt64)F->mesh->Nv, per));
   PetscFunctionReturn(0);
 }
 
@@ -214,7 +214,7 @@ PetscErrorCode CSWillmoreFlowSetUp(CSWillmoreFlow F)
   if (F->setupcalled) PetscFunctionReturn(0);
   PetscCall(PetscTime(&F->t0));
   PetscCall(CheckMemory(F));
-  PetscCheck(!F->nadded || !CSWFOwnVariables(F), F->comm, PETSC_ERR_SUP, "CSWillmoreFlowAddConstraint(%s): the registered constraints act on vertex positions, not on the variables of -%stype %s", F->nadded ? F->added[0] : "", F->prefix, F->type);
+  PetscCheck(!F->nadded || !CSWFOwnVariables(F), F->hdr.comm, PETSC_ERR_SUP, "CSWillmoreFlowAddConstraint(%s): the registered constraints act on vertex positions, not on the variables of -%stype %s", F->nadded ? F->added[0] : "", F->hdr.prefix, F->type);
   if (F->ops.setup_problem) { /* a kind with its own variables (trianglefield) */
     PetscCall((*F->ops.setup_problem)(F));
     F->setupcalled = PETSC_TRUE;
@@ -228,7 +228,7 @@ PetscErrorCode CSWillmoreFlowSetUp(CSWillmoreFlow F)
   PetscCall(CSMetricCreate(F->mesh, (PetscBool)(F->metric_type == CS_FLOW_METRIC_H2), &F->metric));
   F->metric.h1 = (PetscBool)(F->metric_type == CS_FLOW_METRIC_H1);
   PetscCall(CSWFSetUpScaling(F));
-  PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "%ssaddle_", F->prefix));
+  PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "%ssaddle_", F->hdr.prefix));
   k = F->k;
   if (F->ops.saddle_blocks) PetscCall((*F->ops.saddle_blocks)(F, &edges, &k)); /* ALM's plain metric: the metric solve alone */
   PetscCall(CSSaddleCreate(F->mesh, prefix, edges, (PetscBool)(F->metric_type == CS_FLOW_METRIC_H2), (PetscBool)(F->saddle_mat == CS_SADDLE_MAT_AIJ), F->reuse_its, k, &F->saddle));

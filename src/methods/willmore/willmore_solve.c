@@ -1,5 +1,6 @@
 /* The outer iteration: evaluate at x, monitor, stop or step (trial, filter, rejections), accept. */
 #include "willmore_impl.h"
+#include "cs_log.h"
 
 /* The smallest and largest violation of the run and their iterations: the report says when the violation at the
    end is above both -flow_ctol and 10x the smallest of the run (it grew; issue 21), so no run ends out of the
@@ -65,14 +66,14 @@ static PetscErrorCode StepWithRejections(CSWillmoreFlow F, PetscBool *accepted)
     PetscBool accept;
     if (F->t < F->t_min) {
       PetscBool atceil = (PetscBool)(F->step_control && PetscMax(F->conf, F->glob) >= 0.5 * F->vmax);
-      PetscCall(PetscPrintf(F->comm, "flow: the step size t = %g fell below -%st_min (%g) at iteration %" PetscInt_FMT ": stalled, stopping with the last accepted state (not converged: el_residual %.3e, conformal violation %.3e, constraint violation %.3e%s%s%s)\n", (double)F->t, F->prefix, (double)F->t_min, F->it, (double)F->el, (double)F->conf, (double)F->glob, atceil ? "; the violation is near the ceiling -" : "", atceil ? F->prefix : "", atceil ? "vmax, above which a trial step is rejected" : ""));
+      PetscCall(PetscPrintf(F->hdr.comm, "flow: the step size t = %g fell below -%st_min (%g) at iteration %" PetscInt_FMT ": stalled, stopping with the last accepted state (not converged: el_residual %.3e, conformal violation %.3e, constraint violation %.3e%s%s%s)\n", (double)F->t, F->hdr.prefix, (double)F->t_min, F->it, (double)F->el, (double)F->conf, (double)F->glob, atceil ? "; the violation is near the ceiling -" : "", atceil ? F->hdr.prefix : "", atceil ? "vmax, above which a trial step is rejected" : ""));
       *accepted = PETSC_FALSE;
       F->reason = CS_WILLMORE_FLOW_STALLED;
       PetscFunctionReturn(0);
     }
     if (rej > F->max_rej) {
       /* stop cleanly: x is the last accepted state, and E, el, c belong to it */
-      PetscCall(PetscPrintf(F->comm, "flow: %" PetscInt_FMT " consecutive steps rejected at iteration %" PetscInt_FMT " (t = %g, -%smax_rejections): stopping with the last accepted state\n", rej, F->it, (double)F->t, F->prefix));
+      PetscCall(PetscPrintf(F->hdr.comm, "flow: %" PetscInt_FMT " consecutive steps rejected at iteration %" PetscInt_FMT " (t = %g, -%smax_rejections): stopping with the last accepted state\n", rej, F->it, (double)F->t, F->hdr.prefix));
       *accepted = PETSC_FALSE;
       PetscFunctionReturn(0);
     }
@@ -107,8 +108,8 @@ static PetscErrorCode ProjectAtStop(CSWillmoreFlow F)
   if (ok) PetscCall(Evaluate(F));
   else PetscCall(VecCopy(keep, F->x));
   PetscCall(VecDestroy(&keep));
-  if (ok) PetscCall(PetscPrintf(F->comm, "flow: the stopped state is projected onto the constraints (-%sproject_at_stop): violation %.2e -> %.2e, W %.10g -> %.10g, largest quasi-conformal error %.3g\n", F->prefix, (double)v, (double)PetscMax(F->conf, F->glob), (double)E, (double)F->E, (double)F->qmax));
-  else PetscCall(PetscPrintf(F->comm, "flow: the projection of the stopped state onto the constraints failed (-%sproject_at_stop); the state is kept, violation %.2e\n", F->prefix, (double)v));
+  if (ok) PetscCall(PetscPrintf(F->hdr.comm, "flow: the stopped state is projected onto the constraints (-%sproject_at_stop): violation %.2e -> %.2e, W %.10g -> %.10g, largest quasi-conformal error %.3g\n", F->hdr.prefix, (double)v, (double)PetscMax(F->conf, F->glob), (double)E, (double)F->E, (double)F->qmax));
+  else PetscCall(PetscPrintf(F->hdr.comm, "flow: the projection of the stopped state onto the constraints failed (-%sproject_at_stop); the state is kept, violation %.2e\n", F->hdr.prefix, (double)v));
   PetscFunctionReturn(0);
 }
 
@@ -133,6 +134,7 @@ PetscErrorCode CSWillmoreFlowStep(CSWillmoreFlow F, CSWillmoreFlowConvergedReaso
   PetscBool accepted;
   PetscFunctionBeginUser;
   PetscCall(CSWillmoreFlowSetUp(F));
+  PetscCall(PetscLogEventBegin(CS_EVENT_WillmoreStep, 0, 0, 0, 0));
   if (!F->started) {
     F->started = PETSC_TRUE;
     if (F->ops.start && !F->resumed) PetscCall((*F->ops.start)(F)); /* a checkpoint is past the start already */
@@ -147,15 +149,15 @@ PetscErrorCode CSWillmoreFlowStep(CSWillmoreFlow F, CSWillmoreFlowConvergedReaso
   /* the window and the kept best state before the monitors: a checkpoint written by them stores the window */
   PetscCall(CSWFTrackStationarity(F));
   PetscCall(CSWFTrackBest(F));
-  for (PetscInt i = 0; i < F->nmonitor; i++) PetscCall((*F->monitor[i].fn)(F, F->it, F->monitor[i].ctx));
+  CS_OBJECT_MONITORS_CALL(F, CSWillmoreFlowMonitorFn, F->it);
   /* at the first state no step was taken yet: a smaller t cannot help, the start itself is degenerate */
-  PetscCheck(F->E == F->E && F->el == F->el, F->comm, PETSC_ERR_FP, "flow: the energy or the residual is not a number at iteration %" PetscInt_FMT " (degenerate triangles?); %s%s%s", F->it, F->it == 0 && !F->resumed ? "the start state is degenerate: check the input mesh (or the initial field, -" : "try a smaller -", F->prefix, F->it == 0 && !F->resumed ? "init*)" : "t");
+  PetscCheck(F->E == F->E && F->el == F->el, F->hdr.comm, PETSC_ERR_FP, "flow: the energy or the residual is not a number at iteration %" PetscInt_FMT " (degenerate triangles?); %s%s%s", F->it, F->it == 0 && !F->resumed ? "the start state is degenerate: check the input mesh (or the initial field, -" : "try a smaller -", F->hdr.prefix, F->it == 0 && !F->resumed ? "init*)" : "t");
   /* -rtol tests el_residual_scaled (or el_residual with -el_norm absolute; willmore_stop.c) */
   if (!F->reason && CSWFStopResidual(F) < F->rtol && PetscMax(F->conf, F->glob) < F->ctol) F->reason = CS_WILLMORE_FLOW_CONVERGED_RTOL;
   if (!F->reason) PetscCall(CSWFCheckStationary(F, &F->reason));
   if (!F->reason) PetscCall(CSWFCheckDrift(F, &F->reason));
   if (!F->reason && F->energy_target_set && F->E <= F->energy_target) {
-    PetscCall(PetscPrintf(F->comm, "flow: the energy %.10g reached -%senergy_target %.10g at iteration %" PetscInt_FMT "\n", (double)F->E, F->prefix, (double)F->energy_target, F->it));
+    PetscCall(PetscPrintf(F->hdr.comm, "flow: the energy %.10g reached -%senergy_target %.10g at iteration %" PetscInt_FMT "\n", (double)F->E, F->hdr.prefix, (double)F->energy_target, F->it));
     F->reason = CS_WILLMORE_FLOW_CONVERGED_ENERGY_TARGET;
   }
   if (!F->reason && F->it >= F->max_it) F->reason = CS_WILLMORE_FLOW_DIVERGED_MAX_IT;
@@ -164,7 +166,7 @@ PetscErrorCode CSWillmoreFlowStep(CSWillmoreFlow F, CSWillmoreFlowConvergedReaso
     PetscMPIInt    over;
     PetscCall(PetscTime(&now));
     over = (PetscMPIInt)(now - F->t0 >= F->max_seconds);
-    PetscCallMPI(MPI_Bcast(&over, 1, MPI_INT, 0, F->comm)); /* rank 0's clock decides for all: no rank stops alone */
+    PetscCallMPI(MPI_Bcast(&over, 1, MPI_INT, 0, F->hdr.comm)); /* rank 0's clock decides for all: no rank stops alone */
     if (over) F->reason = CS_WILLMORE_FLOW_DIVERGED_MAX_IT;
   }
   if (!F->reason) {
@@ -181,6 +183,7 @@ PetscErrorCode CSWillmoreFlowStep(CSWillmoreFlow F, CSWillmoreFlowConvergedReaso
     PetscCall((*F->ops.grow)(F));
     F->it++;
   }
+  PetscCall(PetscLogEventEnd(CS_EVENT_WillmoreStep, 0, 0, 0, 0));
   *reason = F->reason;
   PetscFunctionReturn(0);
 }
@@ -212,7 +215,7 @@ PetscErrorCode CSWillmoreFlowUseBest(CSWillmoreFlow F, PetscBool *used)
   PetscCall(Evaluate(F));
   F->best_used = PETSC_TRUE;
   *used        = PETSC_TRUE;
-  PetscCall(PetscPrintf(F->comm, "flow: -o and the summary hold the best state of the run (-%skeep_best %s): iteration %" PetscInt_FMT ", el_residual_scaled %.3e, W %.10g, violation %.2e; the last state (iteration %" PetscInt_FMT ") had el_residual_scaled %.3e, W %.10g\n", F->prefix, CSFlowKeepBestTypes[F->keep_best], F->best_it, (double)F->els, (double)F->E, (double)PetscMax(F->conf, F->glob), F->last_it, (double)F->last_els, (double)F->last_E));
+  PetscCall(PetscPrintf(F->hdr.comm, "flow: -o and the summary hold the best state of the run (-%skeep_best %s): iteration %" PetscInt_FMT ", el_residual_scaled %.3e, W %.10g, violation %.2e; the last state (iteration %" PetscInt_FMT ") had el_residual_scaled %.3e, W %.10g\n", F->hdr.prefix, CSFlowKeepBestTypes[F->keep_best], F->best_it, (double)F->els, (double)F->E, (double)PetscMax(F->conf, F->glob), F->last_it, (double)F->last_els, (double)F->last_E));
   PetscFunctionReturn(0);
 }
 
@@ -220,6 +223,8 @@ PetscErrorCode CSWillmoreFlowSolve(CSWillmoreFlow F)
 {
   CSWillmoreFlowConvergedReason reason = CS_WILLMORE_FLOW_ITERATING;
   PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(CS_EVENT_WillmoreSolve, 0, 0, 0, 0));
   while (reason == CS_WILLMORE_FLOW_ITERATING) PetscCall(CSWillmoreFlowStep(F, &reason));
+  PetscCall(PetscLogEventEnd(CS_EVENT_WillmoreSolve, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }

@@ -12,7 +12,7 @@
 PetscErrorCode CSWillmoreFlowGetStateSize(CSWillmoreFlow F, PetscInt *nreal)
 {
   PetscFunctionBeginUser;
-  PetscCheck(F->setupcalled, F->comm, PETSC_ERR_ORDER, "CSWillmoreFlowGetStateSize before CSWillmoreFlowSetUp");
+  PetscCheck(F->setupcalled, F->hdr.comm, PETSC_ERR_ORDER, "CSWillmoreFlowGetStateSize before CSWillmoreFlowSetUp");
   *nreal = FLOW_CK_NREAL + F->k + CS_WF_STAT_NREAL + F->ops.state_nreal;
   PetscFunctionReturn(0);
 }
@@ -21,8 +21,8 @@ PetscErrorCode CSWillmoreFlowGetStateSize(CSWillmoreFlow F, PetscInt *nreal)
 static PetscErrorCode CheckStorable(CSWillmoreFlow F)
 {
   PetscFunctionBeginUser;
-  PetscCheck(!CSWFOwnVariables(F) || F->ops.get_state, F->comm, PETSC_ERR_SUP, "-checkpoint/-resume with -%stype %s: its variables are not stored in checkpoints", F->prefix, F->type);
-  PetscCheck(!F->normals, F->comm, PETSC_ERR_SUP, "-checkpoint/-resume with -%sboundary normals: the multipliers of the normal constraint are not stored in checkpoints", F->prefix);
+  PetscCheck(!CSWFOwnVariables(F) || F->ops.get_state, F->hdr.comm, PETSC_ERR_SUP, "-checkpoint/-resume with -%stype %s: its variables are not stored in checkpoints", F->hdr.prefix, F->type);
+  PetscCheck(!F->normals, F->hdr.comm, PETSC_ERR_SUP, "-checkpoint/-resume with -%sboundary normals: the multipliers of the normal constraint are not stored in checkpoints", F->hdr.prefix);
   if (F->ops.storable) PetscCall((*F->ops.storable)(F)); /* a kind whose state is not stored refuses (ALM) */
   PetscFunctionReturn(0);
 }
@@ -30,7 +30,7 @@ static PetscErrorCode CheckStorable(CSWillmoreFlow F)
 PetscErrorCode CSWillmoreFlowGetStart(CSWillmoreFlow F, Vec *x)
 {
   PetscFunctionBeginUser;
-  PetscCheck(F->setupcalled, F->comm, PETSC_ERR_ORDER, "CSWillmoreFlowGetStart before CSWillmoreFlowSetUp");
+  PetscCheck(F->setupcalled, F->hdr.comm, PETSC_ERR_ORDER, "CSWillmoreFlowGetStart before CSWillmoreFlowSetUp");
   *x = F->xstart ? F->xstart : F->x0;
   PetscFunctionReturn(0);
 }
@@ -40,7 +40,7 @@ PetscErrorCode CSWillmoreFlowGetState(CSWillmoreFlow F, PetscReal ck[], CSCheckp
   PetscLogDouble now;
   PetscBool      on = PETSC_FALSE;
   PetscFunctionBeginUser;
-  PetscCheck(F->setupcalled, F->comm, PETSC_ERR_ORDER, "CSWillmoreFlowGetState before CSWillmoreFlowSetUp");
+  PetscCheck(F->setupcalled, F->hdr.comm, PETSC_ERR_ORDER, "CSWillmoreFlowGetState before CSWillmoreFlowSetUp");
   PetscCall(CheckStorable(F));
   PetscCall(PetscTime(&now));
   if (F->ops.get_switch) PetscCall((*F->ops.get_switch)(F, &on));
@@ -75,7 +75,7 @@ static PetscErrorCode CheckScalars(CSWillmoreFlow F, PetscInt it, const PetscRea
 {
   const char *names[FLOW_CK_NREAL - 1] = {"t", "t_mu", "rejections", "KSP iterations", "KSP iterations of the last step", "guarded edges", "seconds", "-t_mu_final switch", "step model's last accepted t", "step model's added violation"};
   PetscFunctionBeginUser;
-  PetscCheck(it <= F->max_it, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-resume: the checkpoint is at iteration %" PetscInt_FMT ", beyond -%smax_it %" PetscInt_FMT ": nothing left to run", it, F->prefix, F->max_it);
+  PetscCheck(it <= F->max_it, F->hdr.comm, PETSC_ERR_ARG_OUTOFRANGE, "-resume: the checkpoint is at iteration %" PetscInt_FMT ", beyond -%smax_it %" PetscInt_FMT ": nothing left to run", it, F->hdr.prefix, F->max_it);
   for (PetscInt i = 1; i < FLOW_CK_NREAL; i++) {
     PetscReal v  = ck[i];
     PetscBool ok = (PetscBool)(PetscIsNormalReal(v) || v == 0);
@@ -84,7 +84,7 @@ static PetscErrorCode CheckScalars(CSWillmoreFlow F, PetscInt it, const PetscRea
     else if (i == 8) ok = (PetscBool)(v == 0 || v == 1);
     else if (i >= 9) ok = (PetscBool)(ok && v >= 0 && v < 1e300); /* willmore_step_model.c: 0 before the first accepted step */
     else ok = (PetscBool)(ok && v >= 0 && v <= 1e9 && v == PetscFloorReal(v));
-    PetscCheck(ok, F->comm, PETSC_ERR_FILE_UNEXPECTED, "-resume: the checkpoint's %s is %g, out of range (a damaged or crafted file)", names[i - 1], (double)v);
+    PetscCheck(ok, F->hdr.comm, PETSC_ERR_FILE_UNEXPECTED, "-resume: the checkpoint's %s is %g, out of range (a damaged or crafted file)", names[i - 1], (double)v);
   }
   PetscFunctionReturn(0);
 }
@@ -93,7 +93,7 @@ static PetscErrorCode CheckScalars(CSWillmoreFlow F, PetscInt it, const PetscRea
 PetscErrorCode CSWillmoreFlowSetState(CSWillmoreFlow F, PetscInt it, const PetscReal ck[])
 {
   PetscFunctionBeginUser;
-  PetscCheck(ck[0] == (PetscReal)F->ops.id, F->comm, PETSC_ERR_ARG_INCOMP, "-resume: the checkpoint was written by another flow type (this run is %s)", F->type);
+  PetscCheck(ck[0] == (PetscReal)F->ops.id, F->hdr.comm, PETSC_ERR_ARG_INCOMP, "-resume: the checkpoint was written by another flow type (this run is %s)", F->type);
   PetscCall(CheckScalars(F, it, ck));
   F->t            = ck[1];
   F->tmu          = ck[2];

@@ -19,7 +19,7 @@ PetscErrorCode CSWFTrySolve(CSWillmoreFlow F, Vec rE, Vec rV, const PetscReal rX
   *its = 0;
   PetscCall(CSSaddleSolve(&F->saddle, rE, rV, rX, zE, zV, zX, its, &reason));
   *ok = (PetscBool)(reason > 0);
-  if (!*ok) PetscCall(PetscPrintf(F->comm, "     linear solve failed: the saddle solve (prefix -%s) did not converge: %s after %" PetscInt_FMT " iterations; try -%smatrix_type aij -%spc_type cholesky -%spc_factor_mat_solver_type mumps, or a smaller -%st\n", F->saddle.prefix, KSPConvergedReasons[reason], *its, F->prefix, F->saddle.prefix, F->saddle.prefix, F->prefix));
+  if (!*ok) PetscCall(PetscPrintf(F->hdr.comm, "     linear solve failed: the saddle solve (prefix -%s) did not converge: %s after %" PetscInt_FMT " iterations; try -%smatrix_type aij -%spc_type cholesky -%spc_factor_mat_solver_type mumps, or a smaller -%st\n", F->saddle.prefix, KSPConvergedReasons[reason], *its, F->hdr.prefix, F->saddle.prefix, F->saddle.prefix, F->hdr.prefix));
   PetscFunctionReturn(0);
 }
 
@@ -38,7 +38,7 @@ PetscErrorCode CSWFSolveCorrection(CSWillmoreFlow F, Vec zE, Vec zV, PetscInt *i
 PetscErrorCode CSWFRejected(CSWillmoreFlow F, const char what[])
 {
   PetscFunctionBeginUser;
-  PetscCall(PetscPrintf(F->comm, "     step rejected: %s with t = %g; halving t\n", what, (double)F->t));
+  PetscCall(PetscPrintf(F->hdr.comm, "     step rejected: %s with t = %g; halving t\n", what, (double)F->t));
   PetscFunctionReturn(0);
 }
 

@@ -20,7 +20,7 @@ PetscErrorCode CSWFStopOptions(CSWillmoreFlow F, PetscOptionItems *PetscOptionsO
   PetscCall(CSOptionsReal("-stationary_xtol", "Stationarity: largest sum over the window of the steps' largest vertex displacements, in mean edge lengths", NULL, F->stat_xtol, &F->stat_xtol, NULL));
   PetscCall(CSOptionsEnum("-keep_best", "Keep the state of smallest el_residual_scaled with the violation <= -ctol, and return it (-o, the summary) at the resolution guard's stops (guard), at every non-converged stop (all), or never (none)", NULL, CSFlowKeepBestTypes, (PetscEnum)F->keep_best, (PetscEnum *)&F->keep_best, &set));
   /* a triangle field's state is more than (x, mu, nu): its continuation and spinor data are not kept */
-  PetscCheck(!set || F->keep_best == CS_FLOW_KEEP_BEST_NONE || !CSWFOwnVariables(F), F->comm, PETSC_ERR_SUP, "-%skeep_best %s: not available for -%stype %s (its spin continuation and spinor state are not kept); use -%skeep_best none", F->prefix, CSFlowKeepBestTypes[F->keep_best], F->prefix, F->type, F->prefix);
+  PetscCheck(!set || F->keep_best == CS_FLOW_KEEP_BEST_NONE || !CSWFOwnVariables(F), F->hdr.comm, PETSC_ERR_SUP, "-%skeep_best %s: not available for -%stype %s (its spin continuation and spinor state are not kept); use -%skeep_best none", F->hdr.prefix, CSFlowKeepBestTypes[F->keep_best], F->hdr.prefix, F->type, F->hdr.prefix);
   if (CSWFOwnVariables(F)) F->keep_best = CS_FLOW_KEEP_BEST_NONE;
   PetscFunctionReturn(0);
 }
@@ -127,7 +127,7 @@ PetscErrorCode CSWFCheckStationary(CSWillmoreFlow F, CSWillmoreFlowConvergedReas
   for (PetscInt j = n - K; j < n; j++) dsum += F->stat_d[j];
   wrel = (wmax - wmin) / PetscMax(PetscAbsReal(F->E), PETSC_SMALL);
   if (!(wrel <= F->stat_rtol && dsum <= F->stat_xtol)) PetscFunctionReturn(0);
-  PetscCall(PetscPrintf(F->comm, "flow: stationary at iteration %" PetscInt_FMT ": over the last %" PetscInt_FMT " steps W changed by %.2e (relative; -%sstationary_rtol %g) and the vertices moved by at most %.2e mean edge lengths (-%sstationary_xtol %g), violation %.2e; el_residual_scaled %.3e (-%srtol %g), t %g\n", F->it, K, (double)wrel, F->prefix, (double)F->stat_rtol, (double)dsum, F->prefix, (double)F->stat_xtol, (double)PetscMax(F->conf, F->glob), (double)F->els, F->prefix, (double)F->rtol, (double)F->t));
+  PetscCall(PetscPrintf(F->hdr.comm, "flow: stationary at iteration %" PetscInt_FMT ": over the last %" PetscInt_FMT " steps W changed by %.2e (relative; -%sstationary_rtol %g) and the vertices moved by at most %.2e mean edge lengths (-%sstationary_xtol %g), violation %.2e; el_residual_scaled %.3e (-%srtol %g), t %g\n", F->it, K, (double)wrel, F->hdr.prefix, (double)F->stat_rtol, (double)dsum, F->hdr.prefix, (double)F->stat_xtol, (double)PetscMax(F->conf, F->glob), (double)F->els, F->hdr.prefix, (double)F->rtol, (double)F->t));
   *reason = CS_WILLMORE_FLOW_CONVERGED_STATIONARY;
   PetscFunctionReturn(0);
 }
@@ -155,7 +155,7 @@ PetscErrorCode CSWFCheckDrift(CSWillmoreFlow F, CSWillmoreFlowConvergedReason *r
   if (!K || n < K || F->els_min <= 0 || !(F->els >= F->drift_rise * F->els_min) || !(PetscMax(F->conf, F->glob) < F->ctol)) PetscFunctionReturn(0);
   for (PetscInt j = n - K + 1; j <= n; j++) dw = PetscMax(dw, PetscAbsReal(F->stat_W[j] - F->stat_W[j - 1]) / PetscMax(PetscAbsReal(F->stat_W[j]), PETSC_SMALL));
   if (!(dw <= F->drift_wtol)) PetscFunctionReturn(0);
-  PetscCall(PetscPrintf(F->comm, "flow: drifting at iteration %" PetscInt_FMT ", not converging: over the last %" PetscInt_FMT " steps W changed by at most %.1e per step (relative; -%sdrift_wtol %g) while el_residual_scaled rose to %.3e, %.2f times its smallest value %.3e at iteration %" PetscInt_FMT " (-%sdrift_rise %g), violation %.2e. The flow slides along a direction of nearly constant W (%s, docs/real_meshes.md)\n", F->it, K, (double)dw, F->prefix, (double)F->drift_wtol, (double)F->els, (double)(F->els / F->els_min), (double)F->els_min, F->els_min_it, F->prefix, (double)F->drift_rise, (double)PetscMax(F->conf, F->glob), DriftCause(F)));
+  PetscCall(PetscPrintf(F->hdr.comm, "flow: drifting at iteration %" PetscInt_FMT ", not converging: over the last %" PetscInt_FMT " steps W changed by at most %.1e per step (relative; -%sdrift_wtol %g) while el_residual_scaled rose to %.3e, %.2f times its smallest value %.3e at iteration %" PetscInt_FMT " (-%sdrift_rise %g), violation %.2e. The flow slides along a direction of nearly constant W (%s, docs/real_meshes.md)\n", F->it, K, (double)dw, F->hdr.prefix, (double)F->drift_wtol, (double)F->els, (double)(F->els / F->els_min), (double)F->els_min, F->els_min_it, F->hdr.prefix, (double)F->drift_rise, (double)PetscMax(F->conf, F->glob), DriftCause(F)));
   *reason = CS_WILLMORE_FLOW_DIVERGED_DRIFT;
   PetscFunctionReturn(0);
 }

@@ -50,9 +50,9 @@ static PetscErrorCode SetUpALM(CSWillmoreFlow F)
     {"alm_inner_it", (PetscReal)alm->inner_it, alm->inner_it >= 1, "must be >= 1"},
   };
   PetscFunctionBeginUser;
-  PetscCall(CSCheckOptionValues(F->comm, F->prefix, sizeof(checks) / sizeof(checks[0]), checks));
-  PetscCheck(F->conformal || F->area_set || F->vol_set || F->points[0] || F->mobius, F->comm, PETSC_ERR_ARG_INCOMP, "-%stype alm without any constraint is plain gradient descent: use -%stype gd", F->prefix, F->prefix);
-  PetscCheck(F->boundary != CS_FLOW_BOUNDARY_NORMALS, F->comm, PETSC_ERR_SUP, "-%stype alm with -%sboundary normals is not supported", F->prefix, F->prefix);
+  PetscCall(CSCheckOptionValues(F->hdr.comm, F->hdr.prefix, sizeof(checks) / sizeof(checks[0]), checks));
+  PetscCheck(F->conformal || F->area_set || F->vol_set || F->points[0] || F->mobius, F->hdr.comm, PETSC_ERR_ARG_INCOMP, "-%stype alm without any constraint is plain gradient descent: use -%stype gd", F->hdr.prefix, F->hdr.prefix);
+  PetscCheck(F->boundary != CS_FLOW_BOUNDARY_NORMALS, F->hdr.comm, PETSC_ERR_SUP, "-%stype alm with -%sboundary normals is not supported", F->hdr.prefix, F->hdr.prefix);
   F->rho            = alm->rho; /* scaled by |E(input)| in CSWFSetUpScaling, as -merit_rho */
   F->project_at_stop = PETSC_FALSE; /* the projection needs the saddle's edge block */
   PetscFunctionReturn(0);
@@ -136,7 +136,7 @@ static PetscErrorCode SaddleBlocksALM(CSWillmoreFlow F, PetscBool *edges, PetscI
 static PetscErrorCode StorableALM(CSWillmoreFlow F)
 {
   PetscFunctionBeginUser;
-  SETERRQ(F->comm, PETSC_ERR_SUP, "-checkpoint/-resume with -%stype alm: the penalty schedule is not stored in checkpoints", F->prefix);
+  SETERRQ(F->hdr.comm, PETSC_ERR_SUP, "-checkpoint/-resume with -%stype alm: the penalty schedule is not stored in checkpoints", F->hdr.prefix);
 }
 
 static PetscErrorCode ViewALM(CSWillmoreFlow F, PetscViewer viewer)
@@ -185,7 +185,7 @@ static PetscErrorCode TrialALM(CSWillmoreFlow F, PetscBool *accept)
   if (gn) PetscCall(CSWFTrySolve(F, F->conformal ? F->ct : NULL, F->tmp, F->cxt, F->conformal ? F->dmu : NULL, F->df, F->dnu, &its, accept));
   else PetscCall(CSWFTrySolve(F, NULL, F->tmp, NULL, NULL, F->df, NULL, &its, accept));
   F->kspits += its;
-  if (!*accept) PetscCall(PetscPrintf(F->comm, "     step rejected: linear solve failed with t = %g; halving t\n", (double)F->t));
+  if (!*accept) PetscCall(PetscPrintf(F->hdr.comm, "     step rejected: linear solve failed with t = %g; halving t\n", (double)F->t));
   if (*accept) PetscCall(VecWAXPY(F->xt, 1.0, F->df, F->x));
   PetscFunctionReturn(0);
 }
@@ -202,7 +202,7 @@ static PetscErrorCode FilterALM(CSWillmoreFlow F, PetscBool *accept)
   PetscCall(CSWFEvalConstraints(F, F->xt, F->ct, F->cxt, PETSC_FALSE));
   PetscCall(CSWFMerit(F, Et, F->ct, F->cxt, F->nun, &Lt));
   *accept = (PetscBool)(Lt == Lt && Lt <= L0 + 1e-12 * PetscAbsReal(L0));
-  if (!*accept) PetscCall(PetscPrintf(F->comm, "     step rejected: augmented Lagrangian %.15g -> %.15g with t = %g; halving t\n", (double)L0, (double)Lt, (double)F->t));
+  if (!*accept) PetscCall(PetscPrintf(F->hdr.comm, "     step rejected: augmented Lagrangian %.15g -> %.15g with t = %g; halving t\n", (double)L0, (double)Lt, (double)F->t));
   PetscFunctionReturn(0);
 }
 

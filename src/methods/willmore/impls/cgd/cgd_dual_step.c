@@ -17,7 +17,7 @@ static PetscErrorCode FinalDualStep(CSWillmoreFlow F, CSWFDualStep *ds, PetscBoo
   if (!ds) PetscFunctionReturn(0);
   if (ds->final > 0 && !ds->final_on && F->it >= ds->final_from && F->el < ds->final_el) {
     ds->final_on = PETSC_TRUE;
-    PetscCall(PetscPrintf(F->comm, "     iteration %" PetscInt_FMT ": EL residual %.3e below -%st_mu_final_el %g: the dual step t_mu is fixed from here on (-%st_mu_final; %g after the size scaling)\n", F->it, (double)F->el, F->prefix, (double)ds->final_el, F->prefix, (double)PetscMax(F->tmu, ds->final)));
+    PetscCall(PetscPrintf(F->hdr.comm, "     iteration %" PetscInt_FMT ": EL residual %.3e below -%st_mu_final_el %g: the dual step t_mu is fixed from here on (-%st_mu_final; %g after the size scaling)\n", F->it, (double)F->el, F->hdr.prefix, (double)ds->final_el, F->hdr.prefix, (double)PetscMax(F->tmu, ds->final)));
   }
   *on = ds->final_on;
   PetscFunctionReturn(0);
@@ -38,7 +38,7 @@ static PetscErrorCode CheckValues(CSWillmoreFlow F, const CSWFDualStep *ds)
     {"t_mu_final_el", ds->final_el, ds->final_el > 0, "must be > 0"},
   };
   PetscFunctionBeginUser;
-  PetscCall(CSCheckOptionValues(F->comm, F->prefix, sizeof(checks) / sizeof(checks[0]), checks));
+  PetscCall(CSCheckOptionValues(F->hdr.comm, F->hdr.prefix, sizeof(checks) / sizeof(checks[0]), checks));
   PetscFunctionReturn(0);
 }
 
@@ -55,9 +55,9 @@ PetscErrorCode CSWFDualStepSetFromOptions(CSWillmoreFlow F, CSWFDualStep *ds, Pe
 /* the switch acts on the rows of CGD's step: refused when there are none (F->k is not known before the set-up) */
 PetscErrorCode CSWFDualStepCheck(CSWillmoreFlow F, CSWFDualStep *ds)
 {
-  const char *p = F->prefix;
+  const char *p = F->hdr.prefix;
   PetscFunctionBeginUser;
-  PetscCheck(ds->final == 0 || F->conformal || F->k || F->ops.setup_problem, F->comm, PETSC_ERR_SUP, "-%st_mu_final: a dual step of CGD's rows, for -%stype cgd or trianglefield (or gd with constraints), not -%stype %s without constraint rows", p, p, p, F->type);
+  PetscCheck(ds->final == 0 || F->conformal || F->k || F->ops.setup_problem, F->hdr.comm, PETSC_ERR_SUP, "-%st_mu_final: a dual step of CGD's rows, for -%stype cgd or trianglefield (or gd with constraints), not -%stype %s without constraint rows", p, p, p, F->type);
   PetscFunctionReturn(0);
 }
 

@@ -17,8 +17,8 @@ PetscErrorCode CSWFMultiplierLSOptions(CSWillmoreFlow F, CSWF_CGD *cgd, PetscOpt
   PetscFunctionBeginUser;
   PetscCall(CSOptionsInt("-multiplier_ls_every", "CGD: every this many iterations restore the constraints by a Gauss-Newton projection and replace the multipliers by their least-squares estimate argmin |g + X^T mu|_{H^-1} (0: never; docs/boundary_twist.md)", NULL, cgd->ls_every, &cgd->ls_every, NULL));
   PetscCall(CSOptionsReal("-multiplier_ls_t_mu", "CGD: t_mu (with t = 1) of the projection and of the least-squares multiplier solve; large enough that t_mu s^2 / lambda_H >> 1 for the smallest singular value s of X", NULL, cgd->ls_tmu, &cgd->ls_tmu, NULL));
-  PetscCheck(cgd->ls_every >= 0, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%smultiplier_ls_every %" PetscInt_FMT ": use 0 (off) or a positive iteration count", F->prefix, cgd->ls_every);
-  PetscCheck(cgd->ls_tmu > 0 && !PetscIsInfOrNanReal(cgd->ls_tmu), F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%smultiplier_ls_t_mu %g: must be finite and > 0", F->prefix, (double)cgd->ls_tmu);
+  PetscCheck(cgd->ls_every >= 0, F->hdr.comm, PETSC_ERR_ARG_OUTOFRANGE, "-%smultiplier_ls_every %" PetscInt_FMT ": use 0 (off) or a positive iteration count", F->hdr.prefix, cgd->ls_every);
+  PetscCheck(cgd->ls_tmu > 0 && !PetscIsInfOrNanReal(cgd->ls_tmu), F->hdr.comm, PETSC_ERR_ARG_OUTOFRANGE, "-%smultiplier_ls_t_mu %g: must be finite and > 0", F->hdr.prefix, (double)cgd->ls_tmu);
   PetscFunctionReturn(0);
 }
 
@@ -26,7 +26,7 @@ PetscErrorCode CSWFMultiplierLSOptions(CSWillmoreFlow F, CSWF_CGD *cgd, PetscOpt
 PetscErrorCode CSWFMultiplierLSCheck(CSWillmoreFlow F, CSWF_CGD *cgd)
 {
   PetscFunctionBeginUser;
-  PetscCheck(!cgd->ls_every || (F->ops.dual == CSWFMultiplierLS && F->conformal), F->comm, PETSC_ERR_SUP, "-%smultiplier_ls_every %" PetscInt_FMT ": only for -%stype cgd with the conformal constraint", F->prefix, cgd->ls_every, F->prefix);
+  PetscCheck(!cgd->ls_every || (F->ops.dual == CSWFMultiplierLS && F->conformal), F->hdr.comm, PETSC_ERR_SUP, "-%smultiplier_ls_every %" PetscInt_FMT ": only for -%stype cgd with the conformal constraint", F->hdr.prefix, cgd->ls_every, F->hdr.prefix);
   PetscFunctionReturn(0);
 }
 

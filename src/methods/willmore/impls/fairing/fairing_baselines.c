@@ -67,9 +67,9 @@ static PetscErrorCode NewKSP(CSWillmoreFlow F, Fair *fa)
   PetscMPIInt size;
   char        prefix[80];
   PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Comm_size(F->comm, &size));
-  PetscCall(KSPCreate(F->comm, &fa->ksp));
-  PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "%sfair_", F->prefix));
+  PetscCallMPI(MPI_Comm_size(F->hdr.comm, &size));
+  PetscCall(KSPCreate(F->hdr.comm, &fa->ksp));
+  PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "%sfair_", F->hdr.prefix));
   PetscCall(KSPSetOptionsPrefix(fa->ksp, prefix));
   PetscCall(KSPGetPC(fa->ksp, &pc));
   if (size == 1) {
@@ -206,7 +206,7 @@ static PetscErrorCode DestroyFair(CSWillmoreFlow F)
 static PetscErrorCode SetUpFair(CSWillmoreFlow F)
 {
   PetscFunctionBeginUser;
-  PetscCheck(!F->conformal && !F->area_set && !F->vol_set && !F->points[0] && !F->mobius, F->comm, PETSC_ERR_ARG_INCOMP, "-%stype %s is an unconstrained baseline fairing flow: no constraints", F->prefix, F->type);
+  PetscCheck(!F->conformal && !F->area_set && !F->vol_set && !F->points[0] && !F->mobius, F->hdr.comm, PETSC_ERR_ARG_INCOMP, "-%stype %s is an unconstrained baseline fairing flow: no constraints", F->hdr.prefix, F->type);
   F->step_control = PETSC_FALSE; /* a fixed step; only a non-finite state is rejected */
   F->grow         = 1;
   PetscFunctionReturn(0);
@@ -217,7 +217,7 @@ static PetscErrorCode ViewFair(CSWillmoreFlow F, PetscViewer viewer)
   Fair     *fa    = (Fair *)F->data;
   PetscBool bilap = (PetscBool)(fa->kind == FAIR_EBILAP || fa->kind == FAIR_IBILAP);
   PetscFunctionBeginUser;
-  PetscCall(PetscViewerASCIIPrintf(viewer, "  baseline fairing flow %s: fixed step tau = t h^%d (h the input's mean edge length), linear solves with KSP prefix -%sfair_\n", F->type, bilap ? 4 : 2, F->prefix));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "  baseline fairing flow %s: fixed step tau = t h^%d (h the input's mean edge length), linear solves with KSP prefix -%sfair_\n", F->type, bilap ? 4 : 2, F->hdr.prefix));
   PetscFunctionReturn(0);
 }
 
@@ -236,7 +236,7 @@ PetscErrorCode CSWillmoreFlowCreate_Fairing(CSWillmoreFlow F)
   PetscInt  k;
   PetscFunctionBeginUser;
   for (k = 0; k < 5 && !match; k++) PetscCall(PetscStrcmp(F->type, kinds[k].name, &match));
-  PetscCheck(match, F->comm, PETSC_ERR_PLIB, "fairing baseline %s not in the table", F->type);
+  PetscCheck(match, F->hdr.comm, PETSC_ERR_PLIB, "fairing baseline %s not in the table", F->type);
   k--;
   PetscCall(PetscNew(&fa));
   fa->kind         = kinds[k].kind;

@@ -5,7 +5,7 @@
 static PetscErrorCode SetUpGD(CSWillmoreFlow F)
 {
   PetscFunctionBeginUser;
-  PetscCheck(!F->conformal, F->comm, PETSC_ERR_ARG_INCOMP, "-%stype gd is unconstrained Sobolev gradient descent: -%sconformal true is not allowed (use cgd or pgd)", F->prefix, F->prefix);
+  PetscCheck(!F->conformal, F->hdr.comm, PETSC_ERR_ARG_INCOMP, "-%stype gd is unconstrained Sobolev gradient descent: -%sconformal true is not allowed (use cgd or pgd)", F->hdr.prefix, F->hdr.prefix);
   PetscCall(CSWFSetUpCGD(F));
   PetscFunctionReturn(0);
 }

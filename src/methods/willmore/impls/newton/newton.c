@@ -137,17 +137,17 @@ static PetscErrorCode CreateData(CSWillmoreFlow F)
   PetscCall(VecGetLocalSize(F->x, &n3));
   PetscCall(VecGetLocalSize(d->gn, &n1));
   PetscCall(VecGetSize(d->gn, &N1));
-  PetscCall(MatCreateAIJ(F->comm, n3, n1, 3 * N1, N1, 1, NULL, 1, NULL, &d->N));
+  PetscCall(MatCreateAIJ(F->hdr.comm, n3, n1, 3 * N1, N1, 1, NULL, 1, NULL, &d->N));
   PetscCall(MatSetOption(d->N, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE));
-  PetscCall(MatCreateShell(F->comm, n1, n1, N1, N1, F, &d->A));
+  PetscCall(MatCreateShell(F->hdr.comm, n1, n1, N1, N1, F, &d->A));
   PetscCall(MatShellSetOperation(d->A, MATOP_MULT, (void (*)(void))HessMult));
   PetscCall(MatSetOption(d->A, MAT_SYMMETRIC, PETSC_TRUE));
-  PetscCall(KSPCreate(F->comm, &d->ksp));
-  PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "%snewton_", F->prefix));
+  PetscCall(KSPCreate(F->hdr.comm, &d->ksp));
+  PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "%snewton_", F->hdr.prefix));
   PetscCall(KSPSetOptionsPrefix(d->ksp, prefix));
-  PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "%snewton_inner_", F->prefix));
+  PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "%snewton_inner_", F->hdr.prefix));
   PetscCall(KSPSetType(d->ksp, KSPCG));
-  PetscCallMPI(MPI_Comm_size(F->comm, &size));
+  PetscCallMPI(MPI_Comm_size(F->hdr.comm, &size));
   if (d->factored) {
     PetscCall(KSPGetPC(d->ksp, &pc));
     PetscCall(PCSetType(pc, PCSHELL));
@@ -156,8 +156,8 @@ static PetscErrorCode CreateData(CSWillmoreFlow F)
     PetscCall(PCShellSetName(pc, "(s M + L_n) M^-1 (s M + L_n)"));
     PetscCall(DMCreateGlobalVector(F->mesh->dmV1, &d->m1));
     PetscCall(VecDuplicate(d->m1, &d->w1));
-    PetscCall(KSPCreate(F->comm, &d->inner));
-    PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "%snewton_inner_", F->prefix));
+    PetscCall(KSPCreate(F->hdr.comm, &d->inner));
+    PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "%snewton_inner_", F->hdr.prefix));
     PetscCall(KSPSetOptionsPrefix(d->inner, prefix));
     PetscCall(KSPSetType(d->inner, KSPPREONLY));
     PetscCall(KSPGetPC(d->inner, &pc));
@@ -272,7 +272,7 @@ static PetscErrorCode Direction(CSWillmoreFlow F, Newton *d)
   PetscCall(VecDot(d->phi, d->gn, &slope));
   if (reason < 0) d->truncated++;
   if (!(PetscRealPart(slope) < 0)) PetscCall(MetricStep(d)); /* zero (indefinite at once) or not a descent direction */
-  if (reason < 0) PetscCall(PetscPrintf(F->comm, "     newton: CG stopped after %" PetscInt_FMT " iterations (%s): %s\n", its, KSPConvergedReasons[reason], PetscRealPart(slope) < 0 ? "the truncated CG iterate is taken" : "H^2 metric step"));
+  if (reason < 0) PetscCall(PetscPrintf(F->hdr.comm, "     newton: CG stopped after %" PetscInt_FMT " iterations (%s): %s\n", its, KSPConvergedReasons[reason], PetscRealPart(slope) < 0 ? "the truncated CG iterate is taken" : "H^2 metric step"));
   d->it_dir = F->it;
   PetscFunctionReturn(0);
 }
@@ -327,16 +327,16 @@ static PetscErrorCode Relax(CSWillmoreFlow F, Newton *d)
     PetscCall(MatCreateMAIJ(d->G1, 3, &d->G)); /* dmV3 interlaces the 3 coordinates of the vertices dmV1 owns, in order */
     PetscCall(VecGetLocalSize(F->x, &n));
     PetscCall(VecGetSize(F->x, &N));
-    PetscCall(MatCreateShell(F->comm, n, n, N, N, d, &d->PGP));
+    PetscCall(MatCreateShell(F->hdr.comm, n, n, N, N, d, &d->PGP));
     PetscCall(MatShellSetOperation(d->PGP, MATOP_MULT, (void (*)(void))PGPMult));
     PetscCall(VecDuplicate(F->x, &d->at));
     PetscCall(VecDuplicate(F->x, &d->bt));
-    PetscCall(KSPCreate(F->comm, &d->kspT));
+    PetscCall(KSPCreate(F->hdr.comm, &d->kspT));
     PetscCall(KSPSetType(d->kspT, KSPCG));
     PetscCall(KSPSetTolerances(d->kspT, 1e-3, PETSC_DEFAULT, PETSC_DEFAULT, 200));
     PetscCall(KSPGetPC(d->kspT, &pc));
     PetscCall(PCSetType(pc, PCNONE));
-    PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "%snewton_relax_", F->prefix));
+    PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "%snewton_relax_", F->hdr.prefix));
     PetscCall(KSPSetOptionsPrefix(d->kspT, prefix));
     PetscCall(KSPSetFromOptions(d->kspT));
   }
@@ -366,15 +366,15 @@ static PetscErrorCode SetFromOptionsNewton(CSWillmoreFlow F, PetscOptionItems *P
 /* the options against each other and against the problem (after the flow's options block) */
 static PetscErrorCode SetUpNewton(CSWillmoreFlow F)
 {
-  const char *p = F->prefix;
+  const char *p = F->hdr.prefix;
   Newton     *d = (Newton *)F->data;
   PetscFunctionBeginUser;
-  PetscCheck(d->relax >= 0 && d->relax <= 1, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%snewton_relax %g: must lie in [0, 1]", p, (double)d->relax);
-  PetscCheck(d->relax_sweeps >= 1, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%snewton_relax_sweeps %" PetscInt_FMT ": must be >= 1", p, d->relax_sweeps);
-  PetscCheck(d->reuse_its >= 0, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%snewton_reuse_its %" PetscInt_FMT ": must be >= 0", p, d->reuse_its);
-  PetscCheck(!F->conformal, F->comm, PETSC_ERR_ARG_INCOMP, "-%stype newton is unconstrained: -%sconformal true is not supported (use cgd or pgd)", p, p);
-  PetscCheck(!F->area_set && !F->vol_set && !F->points[0] && !F->mobius && !F->target[0], F->comm, PETSC_ERR_ARG_INCOMP, "-%stype newton supports no constraints (area, volume, points, Moebius, target mesh): use gd or cgd", p);
-  PetscCheck(F->mesh->topo.boundary_loops == 0, F->comm, PETSC_ERR_ARG_INCOMP, "-%stype newton: the mesh %s has %" PetscInt_FMT " boundary loop(s); newton supports closed surfaces only (use gd or cgd)", p, F->mesh->name, F->mesh->topo.boundary_loops);
+  PetscCheck(d->relax >= 0 && d->relax <= 1, F->hdr.comm, PETSC_ERR_ARG_OUTOFRANGE, "-%snewton_relax %g: must lie in [0, 1]", p, (double)d->relax);
+  PetscCheck(d->relax_sweeps >= 1, F->hdr.comm, PETSC_ERR_ARG_OUTOFRANGE, "-%snewton_relax_sweeps %" PetscInt_FMT ": must be >= 1", p, d->relax_sweeps);
+  PetscCheck(d->reuse_its >= 0, F->hdr.comm, PETSC_ERR_ARG_OUTOFRANGE, "-%snewton_reuse_its %" PetscInt_FMT ": must be >= 0", p, d->reuse_its);
+  PetscCheck(!F->conformal, F->hdr.comm, PETSC_ERR_ARG_INCOMP, "-%stype newton is unconstrained: -%sconformal true is not supported (use cgd or pgd)", p, p);
+  PetscCheck(!F->area_set && !F->vol_set && !F->points[0] && !F->mobius && !F->target[0], F->hdr.comm, PETSC_ERR_ARG_INCOMP, "-%stype newton supports no constraints (area, volume, points, Moebius, target mesh): use gd or cgd", p);
+  PetscCheck(F->mesh->topo.boundary_loops == 0, F->hdr.comm, PETSC_ERR_ARG_INCOMP, "-%stype newton: the mesh %s has %" PetscInt_FMT " boundary loop(s); newton supports closed surfaces only (use gd or cgd)", p, F->mesh->name, F->mesh->topo.boundary_loops);
   PetscFunctionReturn(0);
 }
 

@@ -60,7 +60,7 @@ static PetscErrorCode TrialPGD(CSWillmoreFlow F, PetscBool *accept)
 static PetscErrorCode SetUpPGD(CSWillmoreFlow F)
 {
   PetscFunctionBeginUser;
-  PetscCheck(!F->target[0], F->comm, PETSC_ERR_ARG_INCOMP, "-%starget_mesh with -%stype pgd: PGD keeps the class of its input and cannot move to another class (soliman2021 Sec. 4.2); use cgd", F->prefix, F->prefix);
+  PetscCheck(!F->target[0], F->hdr.comm, PETSC_ERR_ARG_INCOMP, "-%starget_mesh with -%stype pgd: PGD keeps the class of its input and cannot move to another class (soliman2021 Sec. 4.2); use cgd", F->hdr.prefix, F->hdr.prefix);
   PetscFunctionReturn(0);
 }
 
@@ -70,9 +70,9 @@ static PetscErrorCode StartPGD(CSWillmoreFlow F)
   PetscBool ok;
   PetscFunctionBeginUser;
   /* the global rows are counted in the set-up (CSWFSetUpConstraints) */
-  PetscCheck(F->conformal || F->k == 0, F->comm, PETSC_ERR_ARG_INCOMP, "pgd without the conformal constraint is not supported");
+  PetscCheck(F->conformal || F->k == 0, F->hdr.comm, PETSC_ERR_ARG_INCOMP, "pgd without the conformal constraint is not supported");
   PetscCall(CSWFProject(F, F->x, &ok, &F->kspits_total));
-  PetscCheck(ok, F->comm, PETSC_ERR_NOT_CONVERGED, "pgd: the initial projection onto the constraint set did not converge");
+  PetscCheck(ok, F->hdr.comm, PETSC_ERR_NOT_CONVERGED, "pgd: the initial projection onto the constraint set did not converge");
   PetscFunctionReturn(0);
 }
 

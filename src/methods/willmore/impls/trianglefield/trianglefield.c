@@ -139,7 +139,7 @@ static PetscErrorCode RandomizeField(CSWillmoreFlow F, CSTriangleField *d)
   PetscCall(VecGetArray(ol, &o));
   for (PetscInt e = 0; e < m->ne; e++)
     if (m->edgeOwned[e]) lsum += PetscSqrtReal(PetscSqr(PetscRealPart(o[6 * e])) + PetscSqr(PetscRealPart(o[6 * e + 1])) + PetscSqr(PetscRealPart(o[6 * e + 2])));
-  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &lsum, 1, MPIU_REAL, MPIU_SUM, F->comm));
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &lsum, 1, MPIU_REAL, MPIU_SUM, F->hdr.comm));
   lbar = lsum / m->Ne;
   for (PetscInt e = 0; e < m->ne; e++)
     for (PetscInt s = 0; s < 2; s++)
@@ -153,13 +153,13 @@ static PetscErrorCode RandomizeField(CSWillmoreFlow F, CSTriangleField *d)
 /* The options this kind does not take, refused by name. */
 static PetscErrorCode CheckOptions(CSWillmoreFlow F)
 {
-  const char *p = F->prefix;
+  const char *p = F->hdr.prefix;
   PetscBool   willmore;
   PetscFunctionBeginUser;
   PetscCall(PetscStrcmp(F->energy_name, "willmore", &willmore));
-  PetscCheck(willmore, F->comm, PETSC_ERR_SUP, "-%senergy %s: -%stype trianglefield minimises the Willmore energy W~ of App. D.1 only", p, F->energy_name, p);
-  PetscCheck(!F->area_set && !F->rotation && !F->target[0], F->comm, PETSC_ERR_SUP, "-%stype trianglefield: the area and rotation constraints and -%starget_mesh are not built for triangle fields (App. B: volume, points and the Moebius balancing only)", p, p);
-  PetscCheck(F->metric_type == CS_FLOW_METRIC_H2, F->comm, PETSC_ERR_SUP, "-%smetric %s: -%stype trianglefield has its own metric, the I_H1 of triangle fields (Eq. 32), which the default -%smetric h2 selects", p, CSFlowMetricTypes[F->metric_type], p, p);
+  PetscCheck(willmore, F->hdr.comm, PETSC_ERR_SUP, "-%senergy %s: -%stype trianglefield minimises the Willmore energy W~ of App. D.1 only", p, F->energy_name, p);
+  PetscCheck(!F->area_set && !F->rotation && !F->target[0], F->hdr.comm, PETSC_ERR_SUP, "-%stype trianglefield: the area and rotation constraints and -%starget_mesh are not built for triangle fields (App. B: volume, points and the Moebius balancing only)", p, p);
+  PetscCheck(F->metric_type == CS_FLOW_METRIC_H2, F->hdr.comm, PETSC_ERR_SUP, "-%smetric %s: -%stype trianglefield has its own metric, the I_H1 of triangle fields (Eq. 32), which the default -%smetric h2 selects", p, CSFlowMetricTypes[F->metric_type], p, p);
   PetscFunctionReturn(0);
 }
 
@@ -235,7 +235,7 @@ static PetscErrorCode SetUpVectors(CSWillmoreFlow F, CSTriangleField *d)
 {
   PetscFunctionBeginUser;
   PetscCall(CSWFSetUpPrimalVectors(F));
-  PetscCall(VecCreateMPI(F->comm, d->nH + d->nL, PETSC_DETERMINE, &F->c)); /* rows [C~ lambda - c0; d1 omega; closure] */
+  PetscCall(VecCreateMPI(F->hdr.comm, d->nH + d->nL, PETSC_DETERMINE, &F->c)); /* rows [C~ lambda - c0; d1 omega; closure] */
   PetscCall(CSWFSetUpMultiplierVectors(F));
   PetscCall(DMCreateGlobalVector(d->dmH1, &d->lambda));
   PetscCall(VecDuplicate(d->lambda, &d->c0));
@@ -285,7 +285,7 @@ static PetscErrorCode SetUpTriangleField(CSWillmoreFlow F)
   CSMesh           m = F->mesh;
   char             prefix[80];
   PetscFunctionBeginUser;
-  PetscCheck(m->topo.boundary_loops == 0, F->comm, PETSC_ERR_SUP, "-%stype trianglefield: the mesh %s has %" PetscInt_FMT " boundary loop(s); triangle-field flows are built for closed surfaces", F->prefix, m->name, m->topo.boundary_loops);
+  PetscCheck(m->topo.boundary_loops == 0, F->hdr.comm, PETSC_ERR_SUP, "-%stype trianglefield: the mesh %s has %" PetscInt_FMT " boundary loop(s); triangle-field flows are built for closed surfaces", F->hdr.prefix, m->name, m->topo.boundary_loops);
   PetscCall(CheckOptions(F));
   d->ds.final_from = d->istart; /* -flow_t_mu_final (cgd.c): armed once the rows are enforced (the relaxed phase before) */
   d->noconf    = (PetscBool)!F->conformal; /* unconstrained W~ (Fig. 8): integrability rows only */
@@ -321,7 +321,7 @@ static PetscErrorCode SetUpTriangleField(CSWillmoreFlow F)
   PetscCall(SetUpSpinors(F, d));
   PetscCall(SetUpScaling(F, d));
   PetscCall(CSTFStateSetUp(F, d));
-  PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "%ssaddle_", F->prefix));
+  PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "%ssaddle_", F->hdr.prefix));
   PetscCall(CSSaddleCreate(m, prefix, PETSC_TRUE, PETSC_TRUE, (PetscBool)(F->saddle_mat == CS_SADDLE_MAT_AIJ), F->reuse_its, F->k, &F->saddle));
   PetscFunctionReturn(0);
 }
@@ -356,7 +356,7 @@ static PetscErrorCode SetUpTriangleFieldSpinor(CSWillmoreFlow F, CSTriangleField
   PetscCall(VecCopy(F->x, F->x0));
   PetscCall(CreateEnergy(F, d));
   PetscCall(CSTFAppBSetUp(F, d));
-  PetscCheck(CSTFAppBRows(F) == 0, F->comm, PETSC_ERR_SUP, "-%svariables spinor: the App. B constraints (volume, points, Moebius) are built for -%svariables omega only", F->prefix, F->prefix);
+  PetscCheck(CSTFAppBRows(F) == 0, F->hdr.comm, PETSC_ERR_SUP, "-%svariables spinor: the App. B constraints (volume, points, Moebius) are built for -%svariables omega only", F->hdr.prefix, F->hdr.prefix);
   PetscCall(SetUpHarmonicRows(F, d));
   if (d->wgauge > 0) { /* the gauge row: d mean(u) */
     PetscScalar *r;
@@ -366,10 +366,10 @@ static PetscErrorCode SetUpTriangleFieldSpinor(CSWillmoreFlow F, CSTriangleField
     PetscCall(VecRestoreArray(F->rows[F->k - 1], &r));
   }
   PetscCall(CSWFSetUpPrimalVectors(F));
-  PetscCall(VecCreateMPI(F->comm, d->nL + m->nf, PETSC_DETERMINE, &F->c)); /* rows [d1 omega; (|psi_f|^2 - 1)/2] */
+  PetscCall(VecCreateMPI(F->hdr.comm, d->nL + m->nf, PETSC_DETERMINE, &F->c)); /* rows [d1 omega; (|psi_f|^2 - 1)/2] */
   PetscCall(CSWFSetUpMultiplierVectors(F));
   PetscCall(SetUpScaling(F, d));
-  PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "%ssaddle_", F->prefix));
+  PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "%ssaddle_", F->hdr.prefix));
   PetscCall(CSSaddleCreate(m, prefix, PETSC_TRUE, PETSC_TRUE, (PetscBool)(F->saddle_mat == CS_SADDLE_MAT_AIJ), F->reuse_its, F->k, &F->saddle));
   PetscFunctionReturn(0);
 }
@@ -444,7 +444,7 @@ PetscErrorCode CSWillmoreFlowTriangleFieldGetInfo(CSWillmoreFlow F, CSWillmoreFl
   PetscBool        tf;
   PetscFunctionBeginUser;
   PetscCall(PetscStrcmp(F->type, CSWILLMOREFLOWTRIANGLEFIELD, &tf));
-  PetscCheck(tf || is, F->comm, PETSC_ERR_ARG_WRONG, "CSWillmoreFlowTriangleFieldGetInfo: -%stype %s is not trianglefield", F->prefix, F->type);
+  PetscCheck(tf || is, F->hdr.comm, PETSC_ERR_ARG_WRONG, "CSWillmoreFlowTriangleFieldGetInfo: -%stype %s is not trianglefield", F->hdr.prefix, F->type);
   if (is) *is = tf;
   info->integrability_violation = info->immersion_tol = info->spin_energy = -1;
   info->pinch_edges             = -1;

@@ -15,7 +15,7 @@ PetscErrorCode CSTFAppBSetUp(CSWillmoreFlow F, CSTriangleField *d)
   PetscFunctionBeginUser;
   if (!F->vol_set && !F->points[0] && !F->mobius) PetscFunctionReturn(0);
   PetscCall(CSTriangleFieldPoissonCreate(m, d->dmH1, d->dmH3, d->xpos0, &P));
-  PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%sconstraint_points", F->prefix));
+  PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%sconstraint_points", F->hdr.prefix));
   if (F->vol_set) {
     PetscReal A, V;
     PetscCall(CSGeometryAreaVolume(m, d->xpos0, &A, &V));

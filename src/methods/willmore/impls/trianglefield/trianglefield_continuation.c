@@ -27,12 +27,12 @@ PetscErrorCode CSTFContinuationSetFromOptions(CSWillmoreFlow F, CSTriangleField 
 /* after the flow's options block (CSTFCheckOptions) */
 PetscErrorCode CSTFContinuationCheck(CSWillmoreFlow F, CSTriangleField *d)
 {
-  const char *p = F->prefix;
+  const char *p = F->hdr.prefix;
   PetscFunctionBeginUser;
-  PetscCheck(d->wdecay > 0 && d->wdecay <= 1, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sspin_weight_decay %g: must be in (0, 1]", p, (double)d->wdecay);
-  PetscCheck(d->wspin_min >= 0 && !PetscIsInfOrNanReal(d->wspin_min), F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sspin_weight_min %g: must be >= 0", p, (double)d->wspin_min);
-  PetscCheck(d->stage_rtol > 0 && d->stage_ctol > 0, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sspin_stage_rtol, -%sspin_stage_ctol: must be > 0", p, p);
-  PetscCheck(d->stage_maxit >= 0, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sspin_stage_max_it %" PetscInt_FMT ": must be >= 0", p, d->stage_maxit);
+  PetscCheck(d->wdecay > 0 && d->wdecay <= 1, F->hdr.comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sspin_weight_decay %g: must be in (0, 1]", p, (double)d->wdecay);
+  PetscCheck(d->wspin_min >= 0 && !PetscIsInfOrNanReal(d->wspin_min), F->hdr.comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sspin_weight_min %g: must be >= 0", p, (double)d->wspin_min);
+  PetscCheck(d->stage_rtol > 0 && d->stage_ctol > 0, F->hdr.comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sspin_stage_rtol, -%sspin_stage_ctol: must be > 0", p, p);
+  PetscCheck(d->stage_maxit >= 0, F->hdr.comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sspin_stage_max_it %" PetscInt_FMT ": must be >= 0", p, d->stage_maxit);
   PetscFunctionReturn(0);
 }
 
@@ -51,7 +51,7 @@ PetscErrorCode CSTFContinuationAdvance(CSWillmoreFlow F, CSTriangleField *d, Pet
   d->wspin = w * d->wdecay < d->wspin_min ? 0 : w * d->wdecay;
   d->stage_it0 = F->it;
   d->nstages++;
-  PetscCall(PetscPrintf(F->comm, "flow: spin stage %" PetscInt_FMT " %s at iteration %" PetscInt_FMT " (w = %g): W~ + w E_tau = %.10g, E_tau = %.6g, el_residual %.3e, violation %.3e, pinch edges %" PetscInt_FMT "; w -> %g\n", d->nstages, conv ? "converged" : "ended (-flow_spin_stage_max_it)", F->it, (double)w, (double)F->E, (double)d->espin, (double)F->el, (double)PetscMax(F->conf, F->glob), d->pinch, (double)d->wspin));
+  PetscCall(PetscPrintf(F->hdr.comm, "flow: spin stage %" PetscInt_FMT " %s at iteration %" PetscInt_FMT " (w = %g): W~ + w E_tau = %.10g, E_tau = %.6g, el_residual %.3e, violation %.3e, pinch edges %" PetscInt_FMT "; w -> %g\n", d->nstages, conv ? "converged" : "ended (-flow_spin_stage_max_it)", F->it, (double)w, (double)F->E, (double)d->espin, (double)F->el, (double)PetscMax(F->conf, F->glob), d->pinch, (double)d->wspin));
   *next = PETSC_TRUE;
   PetscFunctionReturn(0);
 }

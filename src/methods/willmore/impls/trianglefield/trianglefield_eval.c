@@ -19,7 +19,7 @@ PetscErrorCode CSTFConstraints(CSWillmoreFlow F, Vec x, Vec c, PetscReal cx[], P
   PetscCall(VecGetArray(c, &a));
   if (!d->noconf) { /* conformal rows: C~ lambda - c0 written straight into c's first nH entries */
     Vec cH;
-    PetscCall(VecCreateMPIWithArray(F->comm, 1, d->nH, PETSC_DETERMINE, a, &cH));
+    PetscCall(VecCreateMPIWithArray(F->hdr.comm, 1, d->nH, PETSC_DETERMINE, a, &cH));
     PetscCall(MatMult(d->C, d->lambda, cH));
     PetscCall(VecAXPY(cH, -1.0, d->c0));
     PetscCall(VecDestroy(&cH));
@@ -59,8 +59,8 @@ static PetscErrorCode Violations(CSWillmoreFlow F)
   for (PetscInt i = 0; i < d->nH; i++) vc = PetscMax(vc, PetscAbsScalar(a[i]));
   for (PetscInt i = d->nH; i < d->nH + d->nL; i++) vl = PetscMax(vl, PetscAbsScalar(a[i]));
   PetscCall(VecRestoreArrayRead(F->c, &a));
-  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &vc, 1, MPIU_REAL, MPIU_MAX, F->comm));
-  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &vl, 1, MPIU_REAL, MPIU_MAX, F->comm));
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &vc, 1, MPIU_REAL, MPIU_MAX, F->hdr.comm));
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &vl, 1, MPIU_REAL, MPIU_MAX, F->hdr.comm));
   for (PetscInt j = 0; j < 3 * d->nforms; j++) vy = PetscMax(vy, PetscAbsReal(F->cx[j]));
   F->conf  = vc;
   d->integ = PetscMax(vl, vy);
@@ -84,8 +84,8 @@ static PetscErrorCode ViolationsSpinor(CSWillmoreFlow F, CSTriangleField *d)
   for (PetscInt i = 0; i < d->nL; i++) vl = PetscMax(vl, PetscAbsScalar(a[i]));
   for (PetscInt i = d->nL; i < d->nL + F->mesh->nf; i++) vs = PetscMax(vs, PetscAbsScalar(a[i]));
   PetscCall(VecRestoreArrayRead(F->c, &a));
-  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &vl, 1, MPIU_REAL, MPIU_MAX, F->comm));
-  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &vs, 1, MPIU_REAL, MPIU_MAX, F->comm));
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &vl, 1, MPIU_REAL, MPIU_MAX, F->hdr.comm));
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &vs, 1, MPIU_REAL, MPIU_MAX, F->hdr.comm));
   for (PetscInt j = 0; j < 3 * d->nforms; j++) vy = PetscMax(vy, PetscAbsReal(F->cx[j]));
   d->integ = PetscMax(vl, vy);
   F->glob  = PetscMax(d->integ, vs);

@@ -81,7 +81,7 @@ PetscErrorCode CSTFInitSmooth(CSWillmoreFlow F, CSTriangleField *d, PetscReal (*
   PetscCall(VecDuplicate(d->xpos0, &u));
   PetscCall(PlaneWaves(d, hash, d->xpos0, D, u, &umax));
   if (!(umax > 0)) PetscCall(VecDestroy(&u)); /* nothing left behind by the error below */
-  PetscCheck(umax > 0, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sinit smooth: the random displacement vanishes at every vertex (seed %" PetscInt_FMT "); use another -%sseed", F->prefix, d->seed, F->prefix);
+  PetscCheck(umax > 0, F->hdr.comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sinit smooth: the random displacement vanishes at every vertex (seed %" PetscInt_FMT "); use another -%sseed", F->hdr.prefix, d->seed, F->hdr.prefix);
   PetscCall(VecAYPX(u, d->amp * lbar / umax, d->xpos0));
   PetscCall(CSTriangleFieldFromPositions(F->mesh, u, d->dmH3, F->x));
   PetscCall(VecDestroy(&u));

@@ -52,25 +52,25 @@ PetscErrorCode CSTFSetFromOptions(CSWillmoreFlow F, PetscOptionItems *PetscOptio
 PetscErrorCode CSTFCheckOptions(CSWillmoreFlow F)
 {
   CSTriangleField *d = (CSTriangleField *)F->data;
-  const char      *p = F->prefix;
+  const char      *p = F->hdr.prefix;
   PetscFunctionBeginUser;
   PetscCall(CSWFDualStepCheck(F, &d->ds));
   PetscCall(CSTFScheduleCheck(F, d));
   PetscCall(CSTFContinuationCheck(F, d));
   /* -flow_t_mu_final is armed once the rows are enforced (SetUp); a continuation's stages end at small EL residuals */
-  PetscCheck(d->ds.final == 0 || d->wdecay == 1, F->comm, PETSC_ERR_SUP, "-%st_mu_final with -%sspin_weight_decay %g: the switch would fire at the end of the first stage of the continuation; use one or the other", p, p, (double)d->wdecay);
-  PetscCheck(d->restore_near >= 0 && !PetscIsInfOrNanReal(d->restore_near), F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%srestore_near_ceiling %g: must be >= 0", p, (double)d->restore_near);
-  PetscCheck(d->wint > 0 && !PetscIsInfOrNanReal(d->wint), F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sintegrability_weight %g: must be > 0", p, (double)d->wint);
-  PetscCheck(d->mshift >= 0 && !PetscIsInfOrNanReal(d->mshift), F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sspinor_metric_shift %g: must be >= 0", p, (double)d->mshift);
-  PetscCheck(d->wgauge >= 0 && !PetscIsInfOrNanReal(d->wgauge), F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sscale_gauge_weight %g: must be >= 0", p, (double)d->wgauge);
-  PetscCheck(d->wspin >= 0 && !PetscIsInfOrNanReal(d->wspin), F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sspin_weight %g: must be >= 0", p, (double)d->wspin);
+  PetscCheck(d->ds.final == 0 || d->wdecay == 1, F->hdr.comm, PETSC_ERR_SUP, "-%st_mu_final with -%sspin_weight_decay %g: the switch would fire at the end of the first stage of the continuation; use one or the other", p, p, (double)d->wdecay);
+  PetscCheck(d->restore_near >= 0 && !PetscIsInfOrNanReal(d->restore_near), F->hdr.comm, PETSC_ERR_ARG_OUTOFRANGE, "-%srestore_near_ceiling %g: must be >= 0", p, (double)d->restore_near);
+  PetscCheck(d->wint > 0 && !PetscIsInfOrNanReal(d->wint), F->hdr.comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sintegrability_weight %g: must be > 0", p, (double)d->wint);
+  PetscCheck(d->mshift >= 0 && !PetscIsInfOrNanReal(d->mshift), F->hdr.comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sspinor_metric_shift %g: must be >= 0", p, (double)d->mshift);
+  PetscCheck(d->wgauge >= 0 && !PetscIsInfOrNanReal(d->wgauge), F->hdr.comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sscale_gauge_weight %g: must be >= 0", p, (double)d->wgauge);
+  PetscCheck(d->wspin >= 0 && !PetscIsInfOrNanReal(d->wspin), F->hdr.comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sspin_weight %g: must be >= 0", p, (double)d->wspin);
   /* the waves cost modes x vertices at the start; 1e4 is far more than a smooth displacement needs */
-  PetscCheck(d->modes > 0 && d->modes <= 10000, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sinit_modes %" PetscInt_FMT ": must lie in [1, 10000]", p, d->modes);
-  PetscCheck(d->immersion_tol >= 0 && !PetscIsInfOrNanReal(d->immersion_tol), F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%simmersion_tol %g: must be a finite number >= 0", p, (double)d->immersion_tol);
-  PetscCheck(d->amp >= 0 && !PetscIsInfOrNanReal(d->amp), F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sinit_amplitude %g: must be a finite number >= 0", p, (double)d->amp);
-  PetscCheck(!d->spinor || d->init != CS_TF_INIT_SMOOTH, F->comm, PETSC_ERR_SUP, "-%sinit smooth: built for the omega variables, not -%svariables spinor (use df, random or random_spinor)", p, p);
+  PetscCheck(d->modes > 0 && d->modes <= 10000, F->hdr.comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sinit_modes %" PetscInt_FMT ": must lie in [1, 10000]", p, d->modes);
+  PetscCheck(d->immersion_tol >= 0 && !PetscIsInfOrNanReal(d->immersion_tol), F->hdr.comm, PETSC_ERR_ARG_OUTOFRANGE, "-%simmersion_tol %g: must be a finite number >= 0", p, (double)d->immersion_tol);
+  PetscCheck(d->amp >= 0 && !PetscIsInfOrNanReal(d->amp), F->hdr.comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sinit_amplitude %g: must be a finite number >= 0", p, (double)d->amp);
+  PetscCheck(!d->spinor || d->init != CS_TF_INIT_SMOOTH, F->hdr.comm, PETSC_ERR_SUP, "-%sinit smooth: built for the omega variables, not -%svariables spinor (use df, random or random_spinor)", p, p);
   /* the spinor variables evaluate through their own path, which has no stages (rather refused than ignored) */
-  PetscCheck(!d->spinor || d->wdecay == 1, F->comm, PETSC_ERR_SUP, "-%sspin_weight_decay %g: the spin-weight continuation is built for the omega variables, not -%svariables spinor", p, (double)d->wdecay, p);
+  PetscCheck(!d->spinor || d->wdecay == 1, F->hdr.comm, PETSC_ERR_SUP, "-%sspin_weight_decay %g: the spin-weight continuation is built for the omega variables, not -%svariables spinor", p, (double)d->wdecay, p);
   PetscFunctionReturn(0);
 }
 

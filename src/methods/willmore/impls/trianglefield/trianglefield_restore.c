@@ -93,6 +93,6 @@ PetscErrorCode CSTFRestore(CSWillmoreFlow F)
     F->restore_failed = PETSC_TRUE;
   }
   PetscCall(VecDestroy(&keep));
-  PetscCall(PetscPrintf(F->comm, "     restoration after iteration %" PetscInt_FMT " (%s%s): violation %.3e -> %.3e in %" PetscInt_FMT " Gauss-Newton steps (t = %g): %s\n", F->it, near || above ? F->prefix : "", near ? "restore_near_ceiling" : (above ? "restore_above exceeded" : "stalled"), (double)v, (double)vend, nsteps, (double)F->t, ok ? "restored" : "not lowered tenfold; state kept, no more restorations in this run"));
+  PetscCall(PetscPrintf(F->hdr.comm, "     restoration after iteration %" PetscInt_FMT " (%s%s): violation %.3e -> %.3e in %" PetscInt_FMT " Gauss-Newton steps (t = %g): %s\n", F->it, near || above ? F->hdr.prefix : "", near ? "restore_near_ceiling" : (above ? "restore_above exceeded" : "stalled"), (double)v, (double)vend, nsteps, (double)F->t, ok ? "restored" : "not lowered tenfold; state kept, no more restorations in this run"));
   PetscFunctionReturn(0);
 }

@@ -27,8 +27,8 @@ PetscErrorCode CSTFScheduleSetFromOptions(CSWillmoreFlow F, CSTriangleField *d, 
 PetscErrorCode CSTFScheduleCheck(CSWillmoreFlow F, CSTriangleField *d)
 {
   PetscFunctionBeginUser;
-  PetscCheck(d->istart >= 0, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sintegrability_start %" PetscInt_FMT ": must be >= 0", F->prefix, d->istart);
-  PetscCheck(d->wrelax > 0 && !PetscIsInfOrNanReal(d->wrelax), F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sintegrability_relaxed_weight %g: must be > 0", F->prefix, (double)d->wrelax);
+  PetscCheck(d->istart >= 0, F->hdr.comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sintegrability_start %" PetscInt_FMT ": must be >= 0", F->hdr.prefix, d->istart);
+  PetscCheck(d->wrelax > 0 && !PetscIsInfOrNanReal(d->wrelax), F->hdr.comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sintegrability_relaxed_weight %g: must be > 0", F->hdr.prefix, (double)d->wrelax);
   PetscFunctionReturn(0);
 }
 

@@ -180,7 +180,7 @@ static PetscErrorCode FlatFaces(CSWillmoreFlow F, CSTriangleField *d, PetscInt *
   }
   PetscCall(VecRestoreArrayRead(ul, &ua));
   PetscCall(DMRestoreLocalVector(m->dmV1, &ul));
-  PetscCall(MPIU_Allreduce(&n, nflat, 1, MPIU_INT, MPI_SUM, F->comm));
+  PetscCall(MPIU_Allreduce(&n, nflat, 1, MPIU_INT, MPI_SUM, F->hdr.comm));
   PetscFunctionReturn(0);
 }
 
@@ -272,7 +272,7 @@ PetscErrorCode CSTFSpinorConstraints(CSWillmoreFlow F, Vec x, Vec c, PetscReal c
     PetscCall(VecGetArrayRead(x, &xa));
     for (PetscInt i = 0; i < d->nVo; i++) s += PetscRealPart(xa[i]);
     PetscCall(VecRestoreArrayRead(x, &xa));
-    PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &s, 1, MPIU_REAL, MPIU_SUM, F->comm));
+    PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &s, 1, MPIU_REAL, MPIU_SUM, F->hdr.comm));
     cx[3 * d->nforms] = s / F->mesh->Nv - d->ubar0;
   }
   if (!wantJ) PetscFunctionReturn(0);
@@ -305,7 +305,7 @@ PetscErrorCode CSTFSpinorMetric(CSWillmoreFlow F, CSTriangleField *d)
   for (PetscInt i = d->nVo; i < d->nVo + 4 * F->mesh->nf; i++) a += PetscRealPart(g[i]);
   PetscCall(VecRestoreArrayRead(dg, &g));
   PetscCall(VecDestroy(&dg));
-  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &a, 1, MPIU_REAL, MPIU_SUM, F->comm));
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &a, 1, MPIU_REAL, MPIU_SUM, F->hdr.comm));
   a /= 4.0 * F->mesh->Nf;
   PetscCall(MatGetOwnershipRange(F->metric.H, &rs, NULL));
   PetscCall(VecGetArrayRead(d->pg, &p));
@@ -357,7 +357,7 @@ PetscErrorCode CSTFSpinorSetUp(CSWillmoreFlow F, CSTriangleField *d)
   PetscCall(DMCreateGlobalVector(dmF4, &d->pg));
   PetscCall(VecDuplicate(d->pg, &d->gpsi));
   PetscCall(VecGetLocalSize(d->ug, &d->nVo));
-  PetscCall(VecCreateMPI(F->comm, d->nVo + 4 * m->nf, PETSC_DETERMINE, &F->x));
+  PetscCall(VecCreateMPI(F->hdr.comm, d->nVo + 4 * m->nf, PETSC_DETERMINE, &F->x));
   PetscCall(VecGetOwnershipRange(F->x, &d->xstart, NULL));
   PetscCall(VecDuplicate(d->ug, &ix));
   {
@@ -375,18 +375,18 @@ PetscErrorCode CSTFSpinorSetUp(CSWillmoreFlow F, CSTriangleField *d)
   PetscCall(DMRestoreLocalVector(m->dmV1, &il));
   PetscCall(VecDestroy(&ix));
   for (PetscInt i = 0; i < 4 * m->nf; i++) cidx[m->nv + i] = d->xstart + d->nVo + i;
-  PetscCall(ISLocalToGlobalMappingCreate(F->comm, 1, m->nv + 4 * m->nf, cidx, PETSC_OWN_POINTER, &cmap));
+  PetscCall(ISLocalToGlobalMappingCreate(F->hdr.comm, 1, m->nv + 4 * m->nf, cidx, PETSC_OWN_POINTER, &cmap));
   PetscCall(DMCreateGlobalVector(d->dmH3, &d->omega));
   PetscCall(VecDuplicate(d->omega, &d->omt));
   PetscCall(VecDuplicate(d->omega, &d->gom));
   PetscCall(VecGetLocalSize(d->omega, &nH3));
   PetscCall(VecGetSize(d->omega, &NH3));
   PetscCall(DMGetLocalToGlobalMapping(d->dmH3, &rmap));
-  PetscCall(MatCreateAIJ(F->comm, nH3, d->nVo + 4 * m->nf, NH3, PETSC_DETERMINE, 7, NULL, 7, NULL, &d->J));
+  PetscCall(MatCreateAIJ(F->hdr.comm, nH3, d->nVo + 4 * m->nf, NH3, PETSC_DETERMINE, 7, NULL, 7, NULL, &d->J));
   PetscCall(MatSetLocalToGlobalMapping(d->J, rmap, cmap));
   PetscCall(MatSetOption(d->J, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_FALSE));
   PetscCall(ISLocalToGlobalMappingDestroy(&cmap));
-  PetscCall(MatCreateAIJ(F->comm, m->nf, d->nVo + 4 * m->nf, PETSC_DETERMINE, PETSC_DETERMINE, 4, NULL, 0, NULL, &d->P));
+  PetscCall(MatCreateAIJ(F->hdr.comm, m->nf, d->nVo + 4 * m->nf, PETSC_DETERMINE, PETSC_DETERMINE, 4, NULL, 0, NULL, &d->P));
   PetscCall(CSOperatorLensD1(m, d->dmH1, &d1));
   PetscCall(MatGetLocalSize(d1, &d->nD1, NULL));
   PetscCall(CSMatKronIdentity(d1, 3, MAT_INITIAL_MATRIX, &d->Klin));

@@ -143,7 +143,7 @@ static PetscErrorCode Pack(CSWillmoreFlow F, CSTriangleField *d, PetscBool unpac
     PetscCall(DMCreateGlobalVector(d->dmCkF, &d->ckF));
   }
   PetscCall(VecGetLocalSize(F->mu, &nmu));
-  PetscCheck(nmu == d->nH + d->nL && d->nL == 3 * (d->nD1 + F->mesh->nf), F->comm, PETSC_ERR_PLIB, "trianglefield checkpoint: multiplier layout %" PetscInt_FMT " != %" PetscInt_FMT " + %" PetscInt_FMT, nmu, d->nH, d->nL);
+  PetscCheck(nmu == d->nH + d->nL && d->nL == 3 * (d->nD1 + F->mesh->nf), F->hdr.comm, PETSC_ERR_PLIB, "trianglefield checkpoint: multiplier layout %" PetscInt_FMT " != %" PetscInt_FMT " + %" PetscInt_FMT, nmu, d->nH, d->nL);
   PetscCall(PackSlot(F, d, F->x, F->mu, 0, unpack));
   PetscCall(VecDuplicate(F->mu, &E));
   PetscCall(VecDuplicate(F->x, &V));
@@ -161,7 +161,7 @@ static PetscErrorCode GetState(CSWillmoreFlow F, PetscReal ck[], CSCheckpointFie
 {
   CSTriangleField *d = (CSTriangleField *)F->data;
   PetscFunctionBeginUser;
-  PetscCheck(!d->spinor, F->comm, PETSC_ERR_SUP, "-checkpoint/-resume with -%svariables spinor: the variables (u, psi) are not stored in checkpoints (only -%svariables omega)", F->prefix, F->prefix);
+  PetscCheck(!d->spinor, F->hdr.comm, PETSC_ERR_SUP, "-checkpoint/-resume with -%svariables spinor: the variables (u, psi) are not stored in checkpoints (only -%svariables omega)", F->hdr.prefix, F->hdr.prefix);
   PetscCall(Pack(F, d, PETSC_FALSE));
   v->x    = NULL;
   v->edge = d->ckE;
@@ -209,7 +209,7 @@ PetscErrorCode CSTFStateSetUp(CSWillmoreFlow F, CSTriangleField *d)
     /* a perturbed start may fold triangles: its *1 is then not positive definite and no step can be measured
        (issue 36: the flow ended in "CHOLMOD error -4"); refused here, naming the option */
     CSCaptureError(ierr, CSTriangleFieldReconstructionSolve(d->recon, F->x, d->xpos0, d->start));
-    PetscCheck(!ierr, F->comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sinit %s: the start triangle field has no Poisson reconstruction (its *1 is not positive definite: the perturbation folds triangles); lower -%sinit_amplitude (%g)", F->prefix, CSTriangleFieldInits[d->init], F->prefix, (double)d->amp);
+    PetscCheck(!ierr, F->hdr.comm, PETSC_ERR_ARG_OUTOFRANGE, "-%sinit %s: the start triangle field has no Poisson reconstruction (its *1 is not positive definite: the perturbation folds triangles); lower -%sinit_amplitude (%g)", F->hdr.prefix, CSTriangleFieldInits[d->init], F->hdr.prefix, (double)d->amp);
   }
   F->xstart          = d->start;
   F->ops.state_nreal = TF_CK_NREAL;
