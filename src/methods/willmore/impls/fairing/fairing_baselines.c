@@ -94,7 +94,7 @@ static PetscErrorCode SetUpFairData(CSWillmoreFlow F)
   PetscReal V;
   PetscFunctionBeginUser;
   if (fa->m) PetscFunctionReturn(0);
-  PetscCheck(F->k == 0, F->comm, PETSC_ERR_ARG_INCOMP, "-%stype %s is an unconstrained baseline fairing flow: the constraint %s added by CSWillmoreFlowAddConstraint is not supported", F->prefix, F->type, F->nadded ? F->added[0] : "(global)");
+  PetscCheck(F->k == 0, F->hdr.comm, PETSC_ERR_ARG_INCOMP, "-%stype %s is an unconstrained baseline fairing flow: the constraint %s added by CSWillmoreFlowAddConstraint is not supported", F->hdr.prefix, F->type, F->nadded ? F->added[0] : "(global)");
   PetscCall(CSGeometryMeanEdgeLength(F->mesh, F->x0, &fa->h));
   PetscCall(CSGeometryAreaVolume(F->mesh, F->x0, &fa->A0, &V));
   PetscCall(Centroid(F, F->x0, fa->c0));

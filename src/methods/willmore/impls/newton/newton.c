@@ -384,7 +384,7 @@ static PetscErrorCode SetUpNewton(CSWillmoreFlow F)
 static PetscErrorCode StartNewton(CSWillmoreFlow F)
 {
   PetscFunctionBeginUser;
-  PetscCheck(F->k == 0, F->comm, PETSC_ERR_ARG_INCOMP, "-%stype newton supports no constraints: the constraint %s added by CSWillmoreFlowAddConstraint is not supported (use gd or cgd)", F->prefix, F->nadded ? F->added[0] : "(global)");
+  PetscCheck(F->k == 0, F->hdr.comm, PETSC_ERR_ARG_INCOMP, "-%stype newton supports no constraints: the constraint %s added by CSWillmoreFlowAddConstraint is not supported (use gd or cgd)", F->hdr.prefix, F->nadded ? F->added[0] : "(global)");
   PetscFunctionReturn(0);
 }
 
