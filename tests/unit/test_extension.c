@@ -3,7 +3,8 @@ static const char help[] = "The extension points of the Willmore flow (issue 37,
                            "and a toy constraint |f|^2 / N = its input value are registered, a CGD flow runs 5 iterations with them,\n"
                            "and their gradient and rows pass central finite differences. Then every registered energy's gradient\n"
                            "and every registered constraint's rows are checked the same way, so a new one is tested by being\n"
-                           "registered. Exit status = number of failed checks.\n";
+                           "registered. Every registered flow kind must keep a constraint added by name or refuse it.\n"
+                           "Exit status = number of failed checks.\n";
 
 #include "cs_methods_willmore.h"
 #include "cs_package.h"
@@ -245,6 +246,71 @@ static PetscErrorCode CheckRegistered(MPI_Comm comm)
   PetscFunctionReturn(0);
 }
 
+/* One run of kind `name`, 2 iterations, with the toy constraint added after SetFromOptions (add) or without:
+   *ierr the error of the set-up or the solve (0: it ran), *v = |toy_radius| at the solution. */
+static PetscErrorCode RunKind(MPI_Comm comm, CSMesh m, const char name[], PetscBool add, PetscErrorCode *ierr, PetscReal *v)
+{
+  CSWillmoreFlow     flow;
+  CSGlobalConstraint g;
+  Vec                x;
+  PetscReal          c;
+  PetscFunctionBeginUser;
+  *v = -1;
+  PetscCall(CSWillmoreFlowCreate(m, &flow));
+  PetscCall(CSWillmoreFlowSetType(flow, name));
+  PetscCall(CSWillmoreFlowSetTolerances(flow, 0, 1e-10, 2)); /* ctol the default: PGD projects to it */
+  PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
+  *ierr = CSWillmoreFlowSetFromOptions(flow);
+  if (!*ierr && add) *ierr = CSWillmoreFlowAddConstraint(flow, "toy_radius"); /* after the kind's option checks */
+  if (!*ierr) *ierr = CSWillmoreFlowSetUp(flow);
+  if (!*ierr) *ierr = CSWillmoreFlowSolve(flow);
+  PetscCall(PetscPopErrorHandler());
+  if (!*ierr) {
+    PetscCall(CSWillmoreFlowGetSolution(flow, &x));
+    PetscCall(ToyRadiusCreate(m, m->x, "check_", &g));
+    PetscCall(CSGlobalConstraintEvaluate(g, x, &c, NULL));
+    PetscCall(CSGlobalConstraintDestroy(&g));
+    *v = PetscAbsReal(c);
+  }
+  PetscCall(CSWillmoreFlowDestroy(&flow));
+  PetscFunctionReturn(0);
+}
+
+/* Every registered kind honours a constraint added by name or refuses it: refused (ARG_INCOMP or SUP), or after 2
+   iterations |toy_radius| < 1e-6 or under a tenth of what the kind reaches without it. newton and the fairing
+   baselines refused only the option-made constraints and ran ignoring an added one (the kind recipe's walk-through). */
+static PetscErrorCode CheckKindsHonourAdded(MPI_Comm comm)
+{
+  CSMesh            m;
+  PetscFunctionList kinds;
+  const char      **names;
+  int               n;
+  PetscFunctionBeginUser;
+  PetscCall(MakeMesh(comm, &m));
+  PetscCall(CSWillmoreFlowGetTypeList(&kinds));
+  PetscCall(PetscFunctionListGet(kinds, &names, &n));
+  for (int i = 0; i < n && names[i]; i++) {
+    PetscErrorCode ierr, ierr0 = 0;
+    PetscReal      v, v0 = -1;
+    PetscBool      ok;
+    char           what[256];
+    PetscCall(RunKind(comm, m, names[i], PETSC_TRUE, &ierr, &v));
+    if (!ierr && v >= 1e-6) PetscCall(RunKind(comm, m, names[i], PETSC_FALSE, &ierr0, &v0));
+    ok = (PetscBool)(ierr ? (ierr == PETSC_ERR_ARG_INCOMP || ierr == PETSC_ERR_SUP) : (v < 1e-6 || (!ierr0 && v < 0.1 * v0)));
+    if (ierr) {
+      char *msg = NULL;
+      PetscCall(PetscErrorMessage(ierr, NULL, &msg));
+      PetscCall(PetscSNPrintf(what, sizeof(what), "kind %s: an added constraint refused (error %d: %.90s)", names[i], (int)ierr, msg ? msg : ""));
+    }
+    else if (v0 < 0) PetscCall(PetscSNPrintf(what, sizeof(what), "kind %s ran with an added constraint: |c| %.2e", names[i], (double)v));
+    else PetscCall(PetscSNPrintf(what, sizeof(what), "kind %s ran with an added constraint: |c| %.2e (without it %.2e)", names[i], (double)v, (double)v0));
+    PetscCall(CSTestCheck(comm, ok, what, ierr ? (PetscReal)ierr : v, ierr ? 0 : 1e-6));
+  }
+  PetscCall(PetscFree(names));
+  PetscCall(CSMeshDestroy(&m));
+  PetscFunctionReturn(0);
+}
+
 int main(int argc, char **argv)
 {
   PetscCall(PetscInitialize(&argc, &argv, NULL, help));
@@ -253,5 +319,6 @@ int main(int argc, char **argv)
   PetscCall(CSWillmoreFlowConstraintRegister("toy_radius", ToyRadiusCreate));
   PetscCall(CheckToyFlow(PETSC_COMM_WORLD));
   PetscCall(CheckRegistered(PETSC_COMM_WORLD));
+  PetscCall(CheckKindsHonourAdded(PETSC_COMM_WORLD));
   return CSTestFinalize(PETSC_COMM_WORLD, PetscFinalize);
 }

@@ -85,11 +85,16 @@ static PetscErrorCode NewKSP(CSWillmoreFlow F, Fair *fa)
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode StartFair(CSWillmoreFlow F)
+/* The kind's data, from the input x0, at the first trial: also after a -resume, which skips ops.start (the data
+   were built there and a resumed run crashed on the missing Laplacian). An added constraint (CSWillmoreFlowAddConstraint,
+   counted in F->k only at the flow's set-up) is refused here: the option-made ones are refused by SetUpFair. */
+static PetscErrorCode SetUpFairData(CSWillmoreFlow F)
 {
   Fair     *fa = (Fair *)F->data;
   PetscReal V;
   PetscFunctionBeginUser;
+  if (fa->m) PetscFunctionReturn(0);
+  PetscCheck(F->k == 0, F->hdr.comm, PETSC_ERR_ARG_INCOMP, "-%stype %s is an unconstrained baseline fairing flow: the constraint %s added by CSWillmoreFlowAddConstraint is not supported", F->hdr.prefix, F->type, F->nadded ? F->added[0] : "(global)");
   PetscCall(CSGeometryMeanEdgeLength(F->mesh, F->x0, &fa->h));
   PetscCall(CSGeometryAreaVolume(F->mesh, F->x0, &fa->A0, &V));
   PetscCall(Centroid(F, F->x0, fa->c0));
@@ -147,9 +152,11 @@ static PetscErrorCode Normalise(CSWillmoreFlow F, Fair *fa, Vec x)
 static PetscErrorCode TrialFair(CSWillmoreFlow F, PetscBool *accept)
 {
   Fair              *fa  = (Fair *)F->data;
-  PetscReal          tau = F->t * PetscPowReal(fa->h, (fa->kind == FAIR_EBILAP || fa->kind == FAIR_IBILAP) ? 4 : 2);
+  PetscReal          tau;
   KSPConvergedReason reason;
   PetscFunctionBeginUser;
+  PetscCall(SetUpFairData(F));
+  tau = F->t * PetscPowReal(fa->h, (fa->kind == FAIR_EBILAP || fa->kind == FAIR_IBILAP) ? 4 : 2);
   *accept = PETSC_TRUE;
   PetscCall(CSOperatorLaplacian3(F->mesh, F->x, MAT_REUSE_MATRIX, &fa->L));
   PetscCall(Mass3(F, F->x, fa->m));
@@ -237,7 +244,6 @@ PetscErrorCode CSWillmoreFlowCreate_Fairing(CSWillmoreFlow F)
   F->ops.id        = 10 + k;
   F->ops.conformal = PETSC_FALSE;
   F->ops.setup     = SetUpFair;
-  F->ops.start     = StartFair;
   F->ops.trial     = TrialFair;
   F->ops.filter    = CSWFCheckFinite;
   F->ops.accept    = NoOp;
