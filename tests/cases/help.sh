@@ -15,7 +15,7 @@ check() { # task-args, must-have regex list, must-not regex
   if grep -qE -- "$not" "$TMP/opts.txt"; then echo "BAD: $args -help shows $(grep -E -- "$not" "$TMP/opts.txt" | head -2)"; exit 1; fi
   echo "ok  $args -help: $(grep -c '^  -' "$TMP/t.txt") options, none of /$not/"
 }
-check "-task flow" "-flow_rtol -flow_type -flow_viewer_every -flow_constraint_area -o -mesh -viewer_dir" "^  -(spin_|bs_)|_ksp_|_pc_"
+check "-task flow" "-flow_rtol -flow_type -flow_viewer_every -flow_constraint_area -flow_constraint_add -o -mesh -viewer_dir" "^  -(spin_|bs_)|_ksp_|_pc_"
 grep -qE -- "-flow_rtol <5e-07 : 5e-07>" "$TMP/t.txt" || { echo "BAD: -flow_rtol default not shown"; exit 1; }
 # an energy's own options (its SetFromOptions under -flow_<energy>_) with that energy
 check "-task flow -flow_energy fairing" "-flow_fairing_epsilon -flow_energy" "^  -(spin_|bs_)|_ksp_|_pc_"
