@@ -86,3 +86,12 @@ for name, good, v in checks:
 sys.exit(bad)
 PY
 EXPECT="-flow_constraint_add volumes: unknown constraint \(registered: area\|volume\|mobius\|rotation" expect_fail $MPIEXEC "$CS_BIN" -task flow $D -flow_constraint_add area,volumes
+# (e) -flow_t_mu_final acts on the rows of CGD's step: gd with a volume constraint has one and is accepted (checked
+#     once the constraints are set up; it was refused while the check ran before them), the switch fires and the
+#     volume is held; gd with no constraint row is refused naming the option
+G="-task flow -flow_type gd -gen icosphere -gen_level 2 -gen_deform_bump 0.1 -flow_max_it 20 -flow_t_mu_final 1e6 -flow_t_mu_final_el 1"
+timeout 60 $MPIEXEC "$CS_BIN" $G -flow_constraint_volume -summary "$TMP/gdv.json" -history_csv "$TMP/gdv.csv" > "$TMP/gdv.log" 2>&1 || { tail "$TMP/gdv.log"; echo "BAD: gd + volume + -flow_t_mu_final refused"; exit 1; }
+grep -q "the dual step t_mu is fixed from here on (-flow_t_mu_final" "$TMP/gdv.log" || { echo "BAD: gd + volume: the -flow_t_mu_final switch did not fire"; exit 1; }
+V0=$(python3 -c "import csv,sys; print(list(csv.DictReader(open(sys.argv[1])))[0]['volume'])" "$TMP/gdv.csv")
+check_close "$(json volume "$TMP/gdv.json")" "$V0" 1e-10 "gd + volume + -flow_t_mu_final: the volume held"
+EXPECT="-flow_t_mu_final: a dual step of CGD's rows.*not -flow_type gd without constraint rows" expect_fail $MPIEXEC "$CS_BIN" $G
