@@ -26,10 +26,12 @@ static const char *const task_help[][2] = {
    the task list; with -task NAME the task runs on a small generated mesh with zero iterations, its normal output
    discarded, and only the option blocks of confsurf's own objects are printed (with their defaults: PETSc's
    "<now V : formerly D>" shows the default D); the solver objects' (KSP, PC, EPS, ST, TAO) blocks are left out,
-   as PETSc's `-help all` shows them. */
+   as PETSc's `-help all` (a bare -help given to PETSc, added to a real run: it lists what that run reaches) shows them. */
 static PetscBool HelpKeep = PETSC_FALSE;
 static PetscErrorCode (*HelpSavedVFPrintf)(FILE *, const char[], va_list) = NULL;
-static const char *const HelpSections[] = {"confsurf", "confsurf flow", "confsurf output", "Mesh orientation", "Mesh source", "Isotropic remeshing (CGAL) of the input", "Test-input deformation", "ParaView output (-viewer_dir)", "Bobenko-Schroeder flow output", "Dirac spectrum (crane2011 Fig. 8)", "Willmore flow output", "Bobenko-Schroeder Willmore flow (bobenko-schroeder2005)", "Constrained Willmore flow (soliman2021)", "Fairing energy (soliman2021 Eq. 21)", "Triangle-field flow (soliman2021 Algorithm 2)", "Triangle-field integrability schedule (soliman2021 Fig. 8)", "Triangle-field spin-weight continuation (soliman2021 App. C.3)", "Change of mean curvature half-density rho (crane2011 Sec. 4.1)", "Spin boundary tangents (crane2011 Sec. 5.7)", "Spin transformations (crane2011)", "confsurf curve input", "Isometric curve flow (crane2013 Sec. 5)", "Curve flow output"};
+/* The titles of confsurf's own PetscOptionsBegin blocks (a kind's PetscOptionsHeadBegin sub-headings print inside
+   its flow's block, e.g. the triangle field's three in "Constrained Willmore flow (soliman2021)"). */
+static const char *const HelpSections[] = {"confsurf", "confsurf flow", "confsurf output", "Mesh orientation", "Mesh source", "Isotropic remeshing (CGAL) of the input", "Test-input deformation", "ParaView output (-viewer_dir)", "Bobenko-Schroeder flow output", "Dirac spectrum (crane2011 Fig. 8)", "Willmore flow output", "Bobenko-Schroeder Willmore flow (bobenko-schroeder2005)", "Constrained Willmore flow (soliman2021)", "Fairing energy (soliman2021 Eq. 21)", "Change of mean curvature half-density rho (crane2011 Sec. 4.1)", "Spin boundary tangents (crane2011 Sec. 5.7)", "Spin transformations (crane2011)", "confsurf curve input", "Isometric curve flow (crane2013 Sec. 5)", "Curve flow output"};
 
 /* Everything the task prints is dropped, except the lines of an enumerated option's help, which PETSc prints
    with PetscFPrintf (PetscFunctionListPrintTypes) instead of PetscHelpPrintf. */
@@ -69,14 +71,19 @@ static PetscErrorCode HelpFilter(MPI_Comm comm, const char format[], ...)
   return 0;
 }
 
-/* Removes -help/--help/-h (unless "-help all") from argv; returns whether it was there. */
+/* Removes -help/--help/-h from argv and returns whether it was there; "-help all" becomes PETSc's own bare -help. */
 static PetscBool HelpFromArgs(int *argc, char **argv)
 {
   PetscBool found = PETSC_FALSE;
   int       j     = 1;
   for (int i = 1; i < *argc; i++) {
     if (!strcmp(argv[i], "-help") || !strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
-      if (i + 1 < *argc && !strcmp(argv[i + 1], "all")) return PETSC_FALSE; /* PETSc's full -help */
+      if (i + 1 < *argc && !strcmp(argv[i + 1], "all")) { /* PETSc's full help: a bare -help (3.18 reads its value as a bool) */
+        static char petsc_help[] = "-help";
+        argv[j++]                = petsc_help;
+        i++;
+        continue;
+      }
       found = PETSC_TRUE;
       continue;
     }
@@ -92,7 +99,7 @@ static PetscErrorCode HelpTaskList(void)
   PetscFunctionBeginUser;
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s\nTasks (-task NAME; `bin/confsurf -task NAME -help` lists that task's options and their defaults):\n", help));
   for (size_t i = 0; i < sizeof(task_help) / sizeof(task_help[0]); i++) PetscCall(PetscPrintf(PETSC_COMM_WORLD, "  %-9s %s\n", task_help[i][0], task_help[i][1]));
-  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "Experiments: options/*.opts (bin/confsurf -options_file F); PETSc's own help with every solver option: -help all\n"));
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "Experiments: options/*.opts (bin/confsurf -options_file F); PETSc's own help with every solver option a run reaches: -help all added to a run (e.g. -task flow -gen icosphere -flow_max_it 1 -help all)\n"));
   PetscFunctionReturn(0);
 }
 
@@ -132,7 +139,7 @@ static PetscErrorCode HelpTaskEnd(PetscOptions *help)
 {
   PetscFunctionBeginUser;
   PetscVFPrintf = HelpSavedVFPrintf;
-  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "\n(<now V : formerly D>: D is the default; -flow_max_it, -bs_max_it and -curve_max_it are 0 here only to list the options. Solver objects take PETSc's options under their prefixes, e.g. -flow_saddle_ksp_*, -bs_semi_*, -spin_st_*: listed by -help all.)\n"));
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "\n(<now V : formerly D>: D is the default; -flow_max_it, -bs_max_it and -curve_max_it are 0 here only to list the options. Solver objects take PETSc's options under their prefixes, e.g. -flow_saddle_ksp_*, -bs_semi_*, -spin_st_*: listed by -help all added to a run that reaches them, with a mesh and -flow_max_it 1.)\n"));
   PetscCall(PetscOptionsPop());
   PetscCall(PetscOptionsDestroy(help));
   PetscFunctionReturn(0);

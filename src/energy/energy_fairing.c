@@ -92,7 +92,8 @@ PetscErrorCode CSEnergyCreateFairing(CSMesh mesh, Vec x0, PetscReal eps, CSEnerg
   PetscScalar       *m;
   PetscInt           n;
   PetscFunctionBeginUser;
-  PetscCheck(eps > 0, mesh->comm, PETSC_ERR_ARG_OUTOFRANGE, "-flow_fairing_epsilon %g: must be positive", (double)eps);
+  /* the argument, not an option: the energy has no prefix yet (its option -<prefix>epsilon is checked in its SetFromOptions) */
+  PetscCheck(eps > 0, mesh->comm, PETSC_ERR_ARG_OUTOFRANGE, "CSEnergyCreateFairing: eps %g, the weight of W (soliman2021 Eq. 21), must be > 0", (double)eps);
   PetscCall(CSEnergyCreateShell(mesh, "fairing", e));
   PetscCall(PetscNew(&c));
   c->eps = eps;

@@ -92,10 +92,9 @@ static PetscErrorCode WriteStep(CSWillmoreFlow flow, CSWillmoreViewer V, PetscIn
   PetscCall(CSViewerAddFaceField(V->v, "face_area", farea));
   PetscCall(CSViewerAddFaceField(V->v, "Q", q));
   {
-    CSWillmoreFlowType type;
-    PetscBool          tf;
-    PetscCall(CSWillmoreFlowGetType(flow, &type));
-    PetscCall(PetscStrcmp(type, CSWILLMOREFLOWTRIANGLEFIELD, &tf));
+    CSWillmoreFlowTriangleFieldInfo info;
+    PetscBool                       tf;
+    PetscCall(CSWillmoreFlowTriangleFieldGetInfo(flow, &info, &tf)); /* the kind's own getter: no test of its name */
     if (tf) PetscCall(AddTriangleField(flow, mesh, V->v)); /* its multipliers and residual live on halfedges */
     else {
       PetscCall(AddMultiplierFields(flow, mesh, V->v, x));

@@ -15,7 +15,7 @@ check() { # task-args, must-have regex list, must-not regex
   if grep -qE -- "$not" "$TMP/opts.txt"; then echo "BAD: $args -help shows $(grep -E -- "$not" "$TMP/opts.txt" | head -2)"; exit 1; fi
   echo "ok  $args -help: $(grep -c '^  -' "$TMP/t.txt") options, none of /$not/"
 }
-check "-task flow" "-flow_rtol -flow_type -flow_viewer_every -flow_constraint_area -o -mesh -viewer_dir" "^  -(spin_|bs_)|_ksp_|_pc_"
+check "-task flow" "-flow_rtol -flow_type -flow_viewer_every -flow_constraint_area -flow_constraint_add -o -mesh -viewer_dir" "^  -(spin_|bs_)|_ksp_|_pc_"
 grep -qE -- "-flow_rtol <5e-07 : 5e-07>" "$TMP/t.txt" || { echo "BAD: -flow_rtol default not shown"; exit 1; }
 # an energy's own options (its SetFromOptions under -flow_<energy>_) with that energy
 check "-task flow -flow_energy fairing" "-flow_fairing_epsilon -flow_energy" "^  -(spin_|bs_)|_ksp_|_pc_"
@@ -31,3 +31,11 @@ table=$(sed -n '/Option Table entries/,/End of PETSc Option Table/p' "$TMP/left.
 echo "ok  -help leaves the global options database as given"
 EXPECT="-flow_rtoll" expect_fail "$CS_BIN" -task flow -gen icosphere -gen_level 1 -flow_max_it 1 -flow_rtoll 1
 check "-task curveflow" "-curve_tau -curve -gen_curve -o" "^  -(flow_|bs_|spin_|gen_level)|_ksp_|_pc_"
+# -help all: PETSc's own full help of a real run, with the solver objects' blocks the run reaches (PETSc 3.18 reads
+# -help's value as a bool: "all" handed on would stop it with "Unknown logical value"), as the task list promises
+grep -q -- "-help all" "$TMP/h.txt" || { echo "BAD: the task list no longer names -help all"; exit 1; }
+$CS_BIN -task flow -gen icosphere -gen_level 1 -flow_max_it 1 -help all > "$TMP/all.txt" 2>&1 || { tail -20 "$TMP/all.txt"; echo "BAD: -help all failed"; exit 1; }
+for w in "Options for all PETSc programs" "-flow_saddle_ksp_type" "-flow_rtol"; do grep -qF -- "$w" "$TMP/all.txt" || { echo "BAD: -help all lacks $w"; exit 1; }; done
+echo "ok  -help all: PETSc's full help, $(grep -c -- '-flow_saddle_' "$TMP/all.txt") -flow_saddle_ lines"
+# the triangle field's options (its kind's sub-headings inside the flow's block) still listed
+check "-task flow -flow_type trianglefield" "-flow_init -flow_integrability_start -flow_spin_weight_decay -flow_type" "^  -(spin_|bs_)|_ksp_|_pc_"

@@ -1,8 +1,8 @@
 # The extension points (issue 37, point 3; docs/DESIGN.md "Extending confsurf"): tests/unit/test_extension.c registers
 # a toy energy (with its own option -flow_toy_weight) and a toy constraint through the public registration alone,
 # runs CGD with them, and checks the gradient of every registered energy and the rows of every registered
-# constraint against central differences. No leak: -malloc_dump lists unfreed blocks at PetscFinalize (and
-# -malloc_debug, which checks every allocation, took 37 s instead of 4 on 2 ranks: serially only).
+# constraint against central differences, and refuses a kind registered with another kind's ops.id (the id a
+# checkpoint stores). No leak: -malloc_dump lists unfreed blocks at PetscFinalize (and -malloc_debug, which checks every allocation, took 37 s instead of 4 on 2 ranks: serially only).
 # nprocs: 1 2
 source tests/lib.sh
 debug=""; [ "${NP:-1}" = 1 ] && debug="-malloc_debug"

@@ -14,5 +14,15 @@ n=$(ls "$TMP/every" | grep -c '\.pvtu$'); [ "$n" = 4 ] || { echo "BAD: $n .pvtu 
 timeout 60 $MPIEXEC "$CS_BIN" $B -viewer_dir "$TMP/final" > "$TMP/b.log" 2>&1 || { tail "$TMP/b.log"; exit 1; }
 got=$(steps "$TMP/final"); echo "default: $got"
 [ "$got" = "12 " ] || { echo "BAD: expected the final step 12 only"; exit 1; }
+# the fields follow the kind (CSWillmoreFlowTriangleFieldGetInfo's flag): a triangle field's omega_0..2 (cell data),
+# no el_residual (its residual lives on halfedges); CGD's el_residual and conformal_force, no omega
+fields() { grep -o 'Name="[A-Za-z_0-9]*"' "$1"/surface_*.pvtu | sed 's/.*Name="\(.*\)"/\1/' | sort -u | tr '\n' ' '; }
+timeout 60 $MPIEXEC "$CS_BIN" $B -flow_type trianglefield -flow_max_it 3 -viewer_dir "$TMP/tf" > "$TMP/tf.log" 2>&1 || { tail "$TMP/tf.log"; exit 1; }
+got=$(fields "$TMP/tf"); echo "trianglefield fields: $got"
+for f in omega_0 omega_1 omega_2 Q; do [[ " $got" == *" $f "* ]] || { echo "BAD: trianglefield lacks $f"; exit 1; }; done
+[[ " $got" != *" el_residual "* ]] || { echo "BAD: trianglefield wrote el_residual"; exit 1; }
+got=$(fields "$TMP/final"); echo "cgd fields: $got"
+for f in el_residual conformal_force Q; do [[ " $got" == *" $f "* ]] || { echo "BAD: cgd lacks $f"; exit 1; }; done
+[[ " $got" != *" omega_0 "* ]] || { echo "BAD: cgd wrote omega_0"; exit 1; }
 EXPECT="-flow_viewer_every -1" expect_fail $MPIEXEC "$CS_BIN" $B -viewer_dir "$TMP/bad" -flow_viewer_every -1
 echo ok

@@ -4,7 +4,7 @@ static const char help[] = "The extension points of the Willmore flow (issue 37,
                            "and their gradient and rows pass central finite differences. Then every registered energy's gradient\n"
                            "and every registered constraint's rows are checked the same way, so a new one is tested by being\n"
                            "registered. Every registered flow kind must keep a constraint added by name or refuse it.\n"
-                           "Exit status = number of failed checks.\n";
+                           "A kind with another's ops.id is refused at registration. Exit status = number of failed checks.\n";
 
 #include "cs_methods_willmore.h"
 #include "cs_package.h"
@@ -311,6 +311,36 @@ static PetscErrorCode CheckKindsHonourAdded(MPI_Comm comm)
   PetscFunctionReturn(0);
 }
 
+/* ---- a kind whose create sets no ops.id (0, cgd's): refused at registration, since the id is what a checkpoint
+   stores to find the kind that wrote it (alm and newton once shared 3) ---- */
+static PetscErrorCode ToyKindCreate(CSWillmoreFlow F)
+{
+  PetscFunctionBeginUser;
+  (void)F;
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode CheckKindIds(MPI_Comm comm)
+{
+  PetscErrorCode    ierr;
+  PetscFunctionList kinds;
+  PetscVoidFunction fn = NULL;
+  const char       *text;
+  char             *specific = NULL;
+  PetscBool         named;
+  PetscFunctionBeginUser;
+  PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
+  ierr = CSWillmoreFlowRegister("toy_kind", ToyKindCreate);
+  PetscCall(PetscPopErrorHandler());
+  if (ierr) PetscCall(PetscErrorMessage(ierr, &text, &specific));
+  named = (PetscBool)(specific && strstr(specific, "CSWillmoreFlowRegister(toy_kind): its ops.id 0 is that of the kind cgd"));
+  PetscCall(CSTestCheck(comm, (PetscBool)(ierr && named), "a kind with cgd's ops.id refused at registration, naming both", 0, 0));
+  PetscCall(CSWillmoreFlowGetTypeList(&kinds));
+  PetscCall(PetscFunctionListFind(kinds, "toy_kind", &fn));
+  PetscCall(CSTestCheck(comm, (PetscBool)!fn, "the refused kind is not in the list", 0, 0));
+  PetscFunctionReturn(0);
+}
+
 int main(int argc, char **argv)
 {
   PetscCall(PetscInitialize(&argc, &argv, NULL, help));
@@ -320,5 +350,6 @@ int main(int argc, char **argv)
   PetscCall(CheckToyFlow(PETSC_COMM_WORLD));
   PetscCall(CheckRegistered(PETSC_COMM_WORLD));
   PetscCall(CheckKindsHonourAdded(PETSC_COMM_WORLD));
+  PetscCall(CheckKindIds(PETSC_COMM_WORLD));
   return CSTestFinalize(PETSC_COMM_WORLD, PetscFinalize);
 }

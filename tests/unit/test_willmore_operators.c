@@ -41,6 +41,40 @@ static PetscErrorCode FillVertexField(Vec x, Vec v, int kind)
   PetscFunctionReturn(0);
 }
 
+/* The fairing energy's errors name what the caller gave: the eps argument of CSEnergyCreateFairing, and the option
+   -<prefix>epsilon under the energy's own prefix (here "my_fairing_", not the flow's "flow_fairing_"). */
+static PetscErrorCode CheckFairingErrors(MPI_Comm comm, CSMesh m, Vec x0, const char label[])
+{
+  CSEnergy       e = NULL;
+  PetscErrorCode ierr;
+  const char    *text;
+  char          *specific = NULL, what[160];
+  PetscBool      named, flow;
+  PetscFunctionBeginUser;
+  PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
+  ierr = CSEnergyCreateFairing(m, x0, -1.0, &e);
+  PetscCall(PetscPopErrorHandler());
+  if (ierr) PetscCall(PetscErrorMessage(ierr, &text, &specific));
+  named = (PetscBool)(specific && strstr(specific, "CSEnergyCreateFairing: eps -1"));
+  flow  = (PetscBool)(specific && strstr(specific, "-flow_"));
+  PetscCall(PetscSNPrintf(what, sizeof(what), "%s: fairing eps -1 refused naming the argument, no -flow_ option (%s)", label, specific ? specific : "no error"));
+  PetscCall(CSTestCheck(comm, (PetscBool)(ierr && named && !flow), what, 0, 0));
+  PetscCall(CSEnergyCreateFairing(m, x0, 0.1, &e));
+  PetscCall(CSEnergySetOptionsPrefix(e, "my_fairing_"));
+  PetscCall(PetscOptionsSetValue(NULL, "-my_fairing_epsilon", "-2"));
+  PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
+  ierr = CSEnergySetFromOptions(e);
+  PetscCall(PetscPopErrorHandler());
+  PetscCall(PetscOptionsClearValue(NULL, "-my_fairing_epsilon"));
+  specific = NULL;
+  if (ierr) PetscCall(PetscErrorMessage(ierr, &text, &specific));
+  named = (PetscBool)(specific && strstr(specific, "-my_fairing_epsilon -2"));
+  PetscCall(PetscSNPrintf(what, sizeof(what), "%s: -my_fairing_epsilon -2 refused naming the energy's prefix (%s)", label, specific ? specific : "no error"));
+  PetscCall(CSTestCheck(comm, (PetscBool)(ierr && named), what, 0, 0));
+  PetscCall(CSEnergyDestroy(&e));
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode RunChecks(MPI_Comm comm, PetscBool torus)
 {
   CSMesh                m;
@@ -205,6 +239,7 @@ static PetscErrorCode RunChecks(MPI_Comm comm, PetscBool torus)
     PetscCall(PetscSNPrintf(what, sizeof(what), "%s: FD gradient of the fairing energy", label));
     PetscCall(CSTestCheck(comm, (PetscBool)(err < 1e-6), what, err, 1e-6));
     PetscCall(CSEnergyDestroy(&e));
+    PetscCall(CheckFairingErrors(comm, m, x0, label));
     PetscCall(VecDestroy(&x0));
   }
   PetscCall(PetscRandomDestroy(&rnd));

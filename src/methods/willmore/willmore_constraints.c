@@ -97,6 +97,11 @@ PetscErrorCode CSWillmoreFlowAddConstraint(CSWillmoreFlow F, const char name[])
   PetscCall(PetscFunctionListFind(F->constraint_list, name, &create));
   if (!create) PetscCall(CSFunctionListJoin(F->constraint_list, "|", names, sizeof(names)));
   PetscCheck(create, F->hdr.comm, PETSC_ERR_ARG_OUTOFRANGE, "CSWillmoreFlowAddConstraint(%s): unknown constraint (%s)", name, names);
+  for (PetscInt j = 0; j < F->nadded; j++) { /* once: a repeat would only add dependent rows */
+    PetscBool same;
+    PetscCall(PetscStrcmp(F->added[j], name, &same));
+    if (same) PetscFunctionReturn(0);
+  }
   PetscCall(CSArrayGrow(sizeof(char *), F->nadded, 4, &F->naddedmax, (void **)&F->added));
   PetscCall(PetscStrallocpy(name, &F->added[F->nadded++]));
   PetscFunctionReturn(0);

@@ -2,6 +2,7 @@
    checkpoint state, destruction. The method itself: willmore_step.c, willmore_filter.c, willmore_projection.c, willmore_guards.c, willmore_solve.c. */
 #include "willmore_impl.h"
 #include "cs_package.h"
+#include "cs_util.h"
 
 const char *const CSWillmoreFlowConvergedReasons[] = {"ITERATING", "CONVERGED_RTOL", "DIVERGED_MAX_IT", "DIVERGED_REJECTIONS", "DIVERGED_AREA", "DIVERGED_MESH_DEGENERATE", "STALLED", "CONVERGED_ENERGY_TARGET", "DIVERGED_FOLDED", "CONVERGED_STATIONARY", "DIVERGED_DRIFT", NULL};
 /* the summary's stop_reason (unchanged from before the object) */
@@ -9,10 +10,48 @@ const char *const CSWillmoreFlowDegenerations[] = {"none", "fins", "squeeze", "s
 const char *const CSWillmoreFlowStopReasons[] = {"iterating", "converged", "max_it", "rejections", "diverged", "mesh_degenerate", "stalled", "energy_target", "folded", "stationary", "drift", NULL};
 
 static PetscFunctionList CSWillmoreFlowList = NULL;
+/* the ops.id of each registered kind: stored in checkpoints, so a resume finds the kind that wrote one */
+typedef struct {
+  char     name[16];
+  PetscInt id;
+} KindId;
+static KindId   *KindIds = NULL;
+static PetscInt  KindIdCount = 0, KindIdMax = 0;
+static PetscBool KindsRegistered = PETSC_FALSE;
+static PetscErrorCode RegisterAll(void);
 
+/* A kind's ops.id, read by creating it on a bare flow (a kind's create fills only ops and its data). */
+static PetscErrorCode KindIdOf(const char name[], PetscErrorCode (*create)(CSWillmoreFlow), PetscInt *id)
+{
+  CSWillmoreFlow F;
+  PetscFunctionBeginUser;
+  PetscCall(PetscNew(&F));
+  PetscCall(PetscStrncpy(F->type, name, sizeof(F->type)));
+  PetscCall((*create)(F));
+  *id = F->ops.id;
+  if (F->ops.destroy) PetscCall((*F->ops.destroy)(F));
+  PetscCall(PetscFree(F));
+  PetscFunctionReturn(0);
+}
+
+/* Registers a kind whose ops.id no other registered kind has (the same name again replaces the kind). */
 PetscErrorCode CSWillmoreFlowRegister(const char name[], PetscErrorCode (*create)(CSWillmoreFlow))
 {
+  PetscInt id = -1, j;
   PetscFunctionBeginUser;
+  PetscCall(RegisterAll()); /* the built-ins first, whoever registers first */
+  PetscCall(KindIdOf(name, create, &id));
+  for (j = 0; j < KindIdCount; j++) {
+    PetscBool same;
+    PetscCall(PetscStrcmp(KindIds[j].name, name, &same));
+    if (same) break;
+    PetscCheck(KindIds[j].id != id, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "CSWillmoreFlowRegister(%s): its ops.id %" PetscInt_FMT " is that of the kind %s (the id stored in checkpoints: give each kind its own)", name, id, KindIds[j].name);
+  }
+  if (j == KindIdCount) {
+    PetscCall(CSArrayGrow(sizeof(KindId), KindIdCount, 16, &KindIdMax, (void **)&KindIds));
+    PetscCall(PetscStrncpy(KindIds[KindIdCount++].name, name, sizeof(KindIds[0].name)));
+  }
+  KindIds[j].id = id;
   PetscCall(PetscFunctionListAdd(&CSWillmoreFlowList, name, create));
   PetscFunctionReturn(0);
 }
@@ -21,13 +60,18 @@ static PetscErrorCode ListDestroy(void)
 {
   PetscFunctionBeginUser;
   PetscCall(PetscFunctionListDestroy(&CSWillmoreFlowList));
+  PetscCall(PetscFree(KindIds));
+  KindIdCount = KindIdMax = 0;
+  KindsRegistered         = PETSC_FALSE;
   PetscFunctionReturn(0);
 }
 
 static PetscErrorCode RegisterAll(void)
 {
   PetscFunctionBeginUser;
-  if (CSWillmoreFlowList) PetscFunctionReturn(0);
+  if (KindsRegistered) PetscFunctionReturn(0);
+  KindsRegistered = PETSC_TRUE;
+  PetscCall(PetscRegisterFinalize(ListDestroy));
   PetscCall(CSWillmoreFlowRegister(CSWILLMOREFLOWCGD, CSWillmoreFlowCreate_CGD));
   PetscCall(CSWillmoreFlowRegister(CSWILLMOREFLOWPGD, CSWillmoreFlowCreate_PGD));
   PetscCall(CSWillmoreFlowRegister(CSWILLMOREFLOWGD, CSWillmoreFlowCreate_GD));
@@ -39,7 +83,6 @@ static PetscErrorCode RegisterAll(void)
     const char *baseline[] = {"emcf", "ebilap", "imcf", "ibilap", "cmcf"};
     PetscCall(CSWillmoreFlowRegister(baseline[k], CSWillmoreFlowCreate_Fairing));
   }
-  PetscCall(PetscRegisterFinalize(ListDestroy));
   PetscFunctionReturn(0);
 }
 

@@ -20,6 +20,39 @@ static PetscErrorCode OptionalTarget(const char name[], const char help[], Petsc
   PetscFunctionReturn(0);
 }
 
+/* "-<prefix>constraint_add NAME[,NAME...]": registered global constraints (CSWillmoreFlowConstraintRegister) added
+   by name, as CSWillmoreFlowAddConstraint does from code; each is built at the input positions. Read inside the
+   options block; checked and added after it (an error inside would leak the block's option items). */
+static PetscErrorCode ConstraintAddRead(CSWillmoreFlow F, char *names[], PetscInt *n, PetscOptionItems *PetscOptionsObject)
+{
+  PetscFunctionList list;
+  char              known[256], help[400];
+  PetscFunctionBeginUser;
+  PetscCall(CSWillmoreFlowConstraintList(&list));
+  PetscCall(CSFunctionListJoin(list, "|", known, sizeof(known)));
+  PetscCall(PetscSNPrintf(help, sizeof(help), "Add registered global constraints by name, each at its value on the input (%s)", known));
+  PetscCall(PetscOptionsStringArray("-constraint_add", help, NULL, names, n, NULL));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode ConstraintAddApply(CSWillmoreFlow F, char *names[], PetscInt n)
+{
+  PetscFunctionList list;
+  char              known[256], bad[64] = "";
+  PetscErrorCode (*create)(CSMesh, Vec, const char[], CSGlobalConstraint *);
+  PetscFunctionBeginUser;
+  PetscCall(CSWillmoreFlowConstraintList(&list));
+  for (PetscInt i = 0; i < n; i++) {
+    PetscCall(PetscFunctionListFind(list, names[i], &create));
+    if (create && !bad[0]) PetscCall(CSWillmoreFlowAddConstraint(F, names[i]));
+    else if (!bad[0]) PetscCall(PetscStrncpy(bad, names[i], sizeof(bad)));
+    PetscCall(PetscFree(names[i]));
+  }
+  if (bad[0]) PetscCall(CSFunctionListJoin(list, "|", known, sizeof(known)));
+  PetscCheck(!bad[0], F->comm, PETSC_ERR_ARG_UNKNOWN_TYPE, "-%sconstraint_add %s: unknown constraint (registered: %s)", F->prefix, bad, known);
+  PetscFunctionReturn(0);
+}
+
 /* Step sizes, step control, guards, stopping. */
 static PetscErrorCode StepOptions(CSWillmoreFlow F, PetscOptionItems *PetscOptionsObject)
 {
@@ -142,7 +175,8 @@ static PetscErrorCode CheckOptions(CSWillmoreFlow F)
 
 PetscErrorCode CSWillmoreFlowSetFromOptions(CSWillmoreFlow F)
 {
-  char              type[16];
+  char              type[16], *added[32];
+  PetscInt          nadded = 32;
   PetscBool         set;
   PetscFunctionList energies, kinds;
   PetscFunctionBeginUser;
@@ -155,8 +189,10 @@ PetscErrorCode CSWillmoreFlowSetFromOptions(CSWillmoreFlow F)
   PetscCall(StepOptions(F, PetscOptionsObject));
   PetscCall(CSWFStopOptions(F, PetscOptionsObject));
   PetscCall(ProblemOptions(F, energies, PetscOptionsObject));
+  PetscCall(ConstraintAddRead(F, added, &nadded, PetscOptionsObject));
   if (F->ops.setfromoptions) PetscCall((*F->ops.setfromoptions)(F, PetscOptionsObject));
   PetscOptionsEnd();
+  PetscCall(ConstraintAddApply(F, added, nadded));
   PetscCall(CheckOptions(F));
   PetscFunctionReturn(0);
 }

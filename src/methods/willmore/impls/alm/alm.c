@@ -225,7 +225,7 @@ PetscErrorCode CSWillmoreFlowCreate_ALM(CSWillmoreFlow F)
   alm->update           = -1;
   alm->metric           = CS_ALM_METRIC_GAUSS_NEWTON; /* converges for moderate rho; plain (the paper's explicit baseline) does not (docs/alm.md) */
   F->data               = alm;
-  F->ops.id             = 3;
+  F->ops.id             = 4; /* its own (newton has 3; unique: checked at CSWillmoreFlowRegister) */
   F->ops.conformal      = PETSC_TRUE;
   F->ops.setfromoptions = SetFromOptionsALM;
   F->ops.residual       = ResidualALM;

@@ -23,21 +23,24 @@ static PetscErrorCode SetFromOptionsCGD(CSWillmoreFlow F, PetscOptionItems *Pets
   PetscFunctionReturn(0);
 }
 
-/* the options against the problem (gd calls it from its own) */
+/* the options against the problem (gd calls it from its own; -t_mu_final is checked in ScaleCGD, with the rows) */
 PetscErrorCode CSWFSetUpCGD(CSWillmoreFlow F)
 {
   CSWF_CGD *cgd = (CSWF_CGD *)F->data;
   PetscFunctionBeginUser;
-  PetscCall(CSWFDualStepCheck(F, &cgd->ds));
   PetscCall(CSWFMultiplierLSCheck(F, cgd));
   PetscFunctionReturn(0);
 }
 
+/* ops.scale runs in CSWillmoreFlowSetUp after CSWFSetUpConstraints: F->k, the global rows, is known here, and
+   not yet when the options are checked (a gd run with -flow_constraint_volume has rows, and was refused) */
 static PetscErrorCode ScaleCGD(CSWillmoreFlow F, PetscReal sc, PetscReal E0)
 {
+  CSWF_CGD *cgd = (CSWF_CGD *)F->data;
   PetscFunctionBeginUser;
   (void)E0;
-  CSWFDualStepScale(&((CSWF_CGD *)F->data)->ds, sc);
+  PetscCall(CSWFDualStepCheck(F, &cgd->ds));
+  CSWFDualStepScale(&cgd->ds, sc);
   PetscFunctionReturn(0);
 }
 

@@ -52,7 +52,8 @@ PetscErrorCode CSWFDualStepSetFromOptions(CSWillmoreFlow F, CSWFDualStep *ds, Pe
   PetscFunctionReturn(0);
 }
 
-/* the switch acts on the rows of CGD's step: refused when there are none (F->k is not known before the set-up) */
+/* the switch acts on the rows of CGD's step: refused when there are none; called once they are set up (F->k known:
+   cgd and gd from their ops.scale in SetUp; trianglefield, whose rows are always there, from its options check) */
 PetscErrorCode CSWFDualStepCheck(CSWillmoreFlow F, CSWFDualStep *ds)
 {
   const char *p = F->hdr.prefix;
