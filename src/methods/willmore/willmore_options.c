@@ -49,7 +49,7 @@ static PetscErrorCode ConstraintAddApply(CSWillmoreFlow F, char *names[], PetscI
     PetscCall(PetscFree(names[i]));
   }
   if (bad[0]) PetscCall(CSFunctionListJoin(list, "|", known, sizeof(known)));
-  PetscCheck(!bad[0], F->comm, PETSC_ERR_ARG_UNKNOWN_TYPE, "-%sconstraint_add %s: unknown constraint (registered: %s)", F->prefix, bad, known);
+  PetscCheck(!bad[0], F->hdr.comm, PETSC_ERR_ARG_UNKNOWN_TYPE, "-%sconstraint_add %s: unknown constraint (registered: %s)", F->hdr.prefix, bad, known);
   PetscFunctionReturn(0);
 }
 
