@@ -213,6 +213,14 @@ static PetscErrorCode AcceptALM(CSWillmoreFlow F)
   PetscFunctionReturn(0);
 }
 
+/* the kind's strategy (willmore_impl.h), grouped: identity, the step, hooks, its own data and options */
+static const struct _CSWillmoreFlowOps ALMOps = {
+  .id = 4, .conformal = PETSC_TRUE, /* id: its own (newton has 3; unique: checked at CSWillmoreFlowRegister) */
+  .trial = TrialALM, .filter = FilterALM, .accept = AcceptALM, .grow = CSWFGrowPrimal, .shrink = CSWFShrinkPrimal,
+  .residual = ResidualALM, .multipliers = MultipliersALM, .weights = WeightsALM, .saddle_blocks = SaddleBlocksALM, .scale = ScaleALM, .storable = StorableALM, .start = StartALM,
+  .setfromoptions = SetFromOptionsALM, .setup = SetUpALM, .view = ViewALM, .destroy = DestroyALM,
+};
+
 PetscErrorCode CSWillmoreFlowCreate_ALM(CSWillmoreFlow F)
 {
   ALM *alm;
@@ -225,23 +233,6 @@ PetscErrorCode CSWillmoreFlowCreate_ALM(CSWillmoreFlow F)
   alm->update           = -1;
   alm->metric           = CS_ALM_METRIC_GAUSS_NEWTON; /* converges for moderate rho; plain (the paper's explicit baseline) does not (docs/alm.md) */
   F->data               = alm;
-  F->ops.id             = 4; /* its own (newton has 3; unique: checked at CSWillmoreFlowRegister) */
-  F->ops.conformal      = PETSC_TRUE;
-  F->ops.setfromoptions = SetFromOptionsALM;
-  F->ops.residual       = ResidualALM;
-  F->ops.multipliers    = MultipliersALM;
-  F->ops.weights        = WeightsALM;
-  F->ops.scale          = ScaleALM;
-  F->ops.saddle_blocks  = SaddleBlocksALM;
-  F->ops.storable       = StorableALM;
-  F->ops.view           = ViewALM;
-  F->ops.destroy        = DestroyALM;
-  F->ops.setup          = SetUpALM;
-  F->ops.start          = StartALM;
-  F->ops.trial          = TrialALM;
-  F->ops.filter         = FilterALM;
-  F->ops.accept         = AcceptALM;
-  F->ops.grow           = CSWFGrowPrimal;
-  F->ops.shrink         = CSWFShrinkPrimal;
+  F->ops                = ALMOps;
   PetscFunctionReturn(0);
 }

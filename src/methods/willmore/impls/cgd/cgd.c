@@ -60,6 +60,14 @@ static PetscErrorCode DestroyCGD(CSWillmoreFlow F)
   PetscFunctionReturn(0);
 }
 
+/* the kind's strategy (willmore_impl.h), grouped: identity, the step, hooks, its own data and options */
+static const struct _CSWillmoreFlowOps CGDOps = {
+  .id = 0, .conformal = PETSC_TRUE,
+  .trial = CSWFTrialCGD, .filter = CSWFFilterLagrangian, .accept = CSWFAcceptCGD, .grow = CSWFGrowCGD, .shrink = CSWFShrinkCGD,
+  .dual = CSWFMultiplierLS, .get_switch = CSWFDualStepGetSwitch, .set_switch = CSWFDualStepSetSwitch, .scale = ScaleCGD,
+  .setfromoptions = SetFromOptionsCGD, .setup = CSWFSetUpCGD, .view = ViewCGD, .destroy = DestroyCGD,
+};
+
 PetscErrorCode CSWillmoreFlowCreate_CGD(CSWillmoreFlow F)
 {
   CSWF_CGD *cgd;
@@ -69,20 +77,6 @@ PetscErrorCode CSWillmoreFlowCreate_CGD(CSWillmoreFlow F)
   cgd->ls_every         = 0;
   cgd->ls_tmu           = 1e12;
   F->data               = cgd;
-  F->ops.id             = 0;
-  F->ops.conformal      = PETSC_TRUE;
-  F->ops.setfromoptions = SetFromOptionsCGD;
-  F->ops.setup          = CSWFSetUpCGD;
-  F->ops.scale          = ScaleCGD;
-  F->ops.view           = ViewCGD;
-  F->ops.destroy        = DestroyCGD;
-  F->ops.trial          = CSWFTrialCGD;
-  F->ops.filter         = CSWFFilterLagrangian;
-  F->ops.accept         = CSWFAcceptCGD;
-  F->ops.grow           = CSWFGrowCGD;
-  F->ops.shrink         = CSWFShrinkCGD;
-  F->ops.dual           = CSWFMultiplierLS;
-  F->ops.get_switch     = CSWFDualStepGetSwitch;
-  F->ops.set_switch     = CSWFDualStepSetSwitch;
+  F->ops                = CGDOps;
   PetscFunctionReturn(0);
 }

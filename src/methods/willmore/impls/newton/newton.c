@@ -445,6 +445,15 @@ static PetscErrorCode ShrinkNewton(CSWillmoreFlow F)
   PetscFunctionReturn(0);
 }
 
+/* the kind's strategy (willmore_impl.h), grouped: identity, the step, hooks, its own data and options */
+static const struct _CSWillmoreFlowOps NewtonOps = {
+  .id = 3, .conformal = PETSC_FALSE, .fold_guard = PETSC_TRUE, .own_metric = PETSC_TRUE,
+  .max_step = 2, /* mean edge lengths per step (willmore_guards.c) */
+  .trial = TrialNewton, .filter = CSWFFilterEnergy, .accept = AcceptNewton, .grow = GrowNewton, .shrink = ShrinkNewton,
+  .residual = NewtonResidual, .start = StartNewton,
+  .setfromoptions = SetFromOptionsNewton, .setup = SetUpNewton, .view = ViewNewton, .destroy = DestroyNewton,
+};
+
 PetscErrorCode CSWillmoreFlowCreate_Newton(CSWillmoreFlow F)
 {
   Newton *d;
@@ -455,22 +464,7 @@ PetscErrorCode CSWillmoreFlowCreate_Newton(CSWillmoreFlow F)
   d->relax_sweeps       = 1;
   d->reuse_its          = 0; /* refactor every iteration: kept factors change the inexact steps, and the final mesh quality moved both ways (docs/willmore_flow.md) */
   F->data               = d;
-  F->ops.setfromoptions = SetFromOptionsNewton;
-  F->ops.view           = ViewNewton;
-  F->ops.id             = 3;
-  F->ops.conformal      = PETSC_FALSE;
-  F->ops.setup          = SetUpNewton;
-  F->ops.start          = StartNewton;
-  F->ops.trial          = TrialNewton;
-  F->ops.filter         = CSWFFilterEnergy;
-  F->ops.accept         = AcceptNewton;
-  F->ops.grow           = GrowNewton;
-  F->ops.shrink         = ShrinkNewton;
-  F->ops.residual       = NewtonResidual;
-  F->ops.destroy        = DestroyNewton;
-  F->ops.max_step       = 2; /* mean edge lengths per step (willmore_guards.c) */
-  F->ops.fold_guard     = PETSC_TRUE;
-  F->ops.own_metric     = PETSC_TRUE;
+  F->ops                = NewtonOps;
   F->tmax               = 1; /* the full Newton step */
   PetscFunctionReturn(0);
 }

@@ -92,18 +92,16 @@ static PetscErrorCode ViewPGD(CSWillmoreFlow F, PetscViewer viewer)
   PetscFunctionReturn(0);
 }
 
+/* the kind's strategy (willmore_impl.h), grouped: identity, the step, hooks, its own data and options */
+static const struct _CSWillmoreFlowOps PGDOps = {
+  .id = 1, .conformal = PETSC_TRUE,
+  .trial = TrialPGD, .filter = CSWFFilterEnergy, .accept = AcceptPGD, .grow = CSWFGrowPrimal, .shrink = CSWFShrinkPrimal,
+  .setup = SetUpPGD, .start = StartPGD, .view = ViewPGD,
+};
+
 PetscErrorCode CSWillmoreFlowCreate_PGD(CSWillmoreFlow F)
 {
   PetscFunctionBeginUser;
-  F->ops.id        = 1;
-  F->ops.conformal = PETSC_TRUE;
-  F->ops.setup     = SetUpPGD;
-  F->ops.start     = StartPGD;
-  F->ops.trial     = TrialPGD;
-  F->ops.filter    = CSWFFilterEnergy;
-  F->ops.accept    = AcceptPGD;
-  F->ops.grow      = CSWFGrowPrimal;
-  F->ops.shrink    = CSWFShrinkPrimal;
-  F->ops.view      = ViewPGD;
+  F->ops = PGDOps;
   PetscFunctionReturn(0);
 }

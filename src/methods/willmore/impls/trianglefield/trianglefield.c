@@ -457,37 +457,30 @@ PetscErrorCode CSWillmoreFlowTriangleFieldGetInfo(CSWillmoreFlow F, CSWillmoreFl
   PetscFunctionReturn(0);
 }
 
+/* the kind's strategy (willmore_impl.h): CGD's step on its own variables (the triangle field), grouped: identity, the
+   step, the variables' pipeline, its own data and options */
+static const struct _CSWillmoreFlowOps TriangleFieldOps = {
+  .id = 6, .conformal = PETSC_TRUE,
+  /* the predictive step model was fitted on the vertex kinds; on triangle fields it fell behind (Morin 24 x 12, 7
+     iterations: W 165.59 against 150.73 halving; Fig. 8's spiky sphere did not reach 1 % of the round icosphere's W
+     in 40), so halving stays this kind's default until the model knows the integrability rows */
+  .step_halving = PETSC_TRUE,
+  /* the peak RSS of one step (docs/hardening.md "Memory per flow kind"): its 18 unknowns per vertex against the vertex
+     kinds' 3, the same bytes per unknown (bunny_closed_cgal 5.7 GB, icosphere 5 1.6 GB, 48 x 48 lattice 397 MB / 2304) */
+  .bytes_per_vertex = 160000,
+  .trial = CSWFTrialCGD, .filter = CSWFFilterLagrangian, .accept = Accept, .grow = CSWFGrowCGD, .shrink = CSWFShrinkCGD,
+  .get_switch = CSWFDualStepGetSwitch, .set_switch = CSWFDualStepSetSwitch,
+  .setup_problem = SetUpTriangleField, .evaluate = CSTFEvaluate, .operators = CSTFOperators, .constraints = CSTFConstraints, .positions = Positions,
+  .setfromoptions = CSTFSetFromOptions, .setup = CSTFCheckOptions, .view = CSTFView, .destroy = Destroy,
+};
+
 PetscErrorCode CSWillmoreFlowCreate_TriangleField(CSWillmoreFlow F)
 {
   CSTriangleField *d;
   PetscFunctionBeginUser;
   PetscCall(PetscNew(&d));
   F->data              = d;
-  F->ops.id            = 6;
-  F->ops.conformal     = PETSC_TRUE;
-  F->ops.trial         = CSWFTrialCGD;
-  F->ops.filter        = CSWFFilterLagrangian;
-  F->ops.accept        = Accept;
-  F->ops.grow          = CSWFGrowCGD;
-  F->ops.shrink        = CSWFShrinkCGD;
-  F->ops.get_switch    = CSWFDualStepGetSwitch;
-  F->ops.set_switch    = CSWFDualStepSetSwitch;
-  /* the predictive step model was fitted on the vertex kinds; on triangle fields it fell behind (Morin 24 x 12, 7
-     iterations: W 165.59 against 150.73 halving; Fig. 8's spiky sphere did not reach 1 % of the round icosphere's W
-     in 40), so halving stays this kind's default until the model knows the integrability rows */
-  F->ops.step_halving  = PETSC_TRUE;
-  /* the peak RSS of one step (docs/hardening.md "Memory per flow kind"): its 18 unknowns per vertex against the vertex
-     kinds' 3, the same bytes per unknown (bunny_closed_cgal 5.7 GB, icosphere 5 1.6 GB, 48 x 48 lattice 397 MB / 2304) */
-  F->ops.bytes_per_vertex = 160000;
-  F->ops.destroy       = Destroy;
-  F->ops.setup_problem = SetUpTriangleField;
-  F->ops.evaluate      = CSTFEvaluate;
-  F->ops.operators     = CSTFOperators;
-  F->ops.constraints   = CSTFConstraints;
-  F->ops.positions     = Positions;
-  F->ops.setfromoptions = CSTFSetFromOptions;
-  F->ops.setup         = CSTFCheckOptions;
-  F->ops.view          = CSTFView;
+  F->ops               = TriangleFieldOps;
   CSWFDualStepInitialize(&d->ds);
   d->wint              = 1e-4;
   d->restore_near      = 0.5;
