@@ -102,6 +102,16 @@ PETSC_EXTERN PetscErrorCode CSMonitorListCancel(CSMonitorList *l);
     PetscFunctionReturn(0); \
   }
 
+/* the same getter for a member that exists only once obj->ready is set: before, an ORDER error naming the call to
+   make first (after) */
+#define CS_OBJECT_GETTER_AFTER(Type, Name, T, member, ready, after) \
+  PetscErrorCode Type##Get##Name(Type obj, T *value) \
+  { \
+    PetscFunctionBeginUser; \
+    PetscCheck(obj->ready, obj->hdr.comm, PETSC_ERR_ORDER, #Type "Get" #Name " before " after); \
+    *value = obj->member; \
+    PetscFunctionReturn(0); \
+  }
 /* PetscErrorCode Type##Set##Name(Type obj, T value): obj->member = value (a plain value, no check) */
 #define CS_OBJECT_SETTER(Type, Name, T, member) \
   PetscErrorCode Type##Set##Name(Type obj, T value) \

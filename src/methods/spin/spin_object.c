@@ -56,6 +56,9 @@ PetscErrorCode CSSpinCreate(CSMesh mesh, CSSpin *spin)
 
 /* SetOptionsPrefix, GetOptionsPrefix, MonitorSet, Destroy: the skeleton of every method object (include/cs_object.h) */
 CS_OBJECT_DEFINE(CSSpin, CSSpinMonitorFn)
+/* the transformed surface and the eigenvector of the last Solve (owned by the object) */
+CS_OBJECT_GETTER_AFTER(CSSpin, Solution, Vec, xnew, setupcalled, "CSSpinSolve")
+CS_OBJECT_GETTER_AFTER(CSSpin, Spinor, Vec, lambda, setupcalled, "CSSpinSolve")
 
 PetscErrorCode CSSpinSubPrefix(CSSpin s, const char suffix[], char prefix[], size_t len)
 {
@@ -147,22 +150,6 @@ PetscErrorCode CSSpinSolve(CSSpin s, Vec x, Vec rho)
   /* a painted rho fixes the shape, not its size */
   if (!s->xtarget && s->restore_area) PetscCall(CSSpinRestoreArea(s, x, s->xnew));
   for (PetscInt i = 0; i < s->hdr.monitors.n; i++) PetscCall(((CSSpinMonitorFn)s->hdr.monitors.fn[i])(s, s->hdr.monitors.ctx[i]));
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSSpinGetSolution(CSSpin s, Vec *xnew)
-{
-  PetscFunctionBeginUser;
-  PetscCheck(s->setupcalled, s->hdr.comm, PETSC_ERR_ORDER, "CSSpinGetSolution: call CSSpinSolve first");
-  *xnew = s->xnew;
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSSpinGetSpinor(CSSpin s, Vec *lambda)
-{
-  PetscFunctionBeginUser;
-  PetscCheck(s->setupcalled, s->hdr.comm, PETSC_ERR_ORDER, "CSSpinGetSpinor: call CSSpinSolve first");
-  *lambda = s->lambda;
   PetscFunctionReturn(0);
 }
 

@@ -236,6 +236,8 @@ CS_OBJECT_GETTER(CSWillmoreFlow, ConvergedReason, CSWillmoreFlowConvergedReason,
 CS_OBJECT_GETTER(CSWillmoreFlow, Mesh, CSMesh, mesh)
 CS_OBJECT_GETTER(CSWillmoreFlow, Conformal, PetscBool, conformal)
 CS_OBJECT_GETTER(CSWillmoreFlow, EnergyName, const char *, energy_name)
+CS_OBJECT_GETTER_AFTER(CSWillmoreFlow, Variables, Vec, x, setupcalled, "CSWillmoreFlowSetUp")
+CS_OBJECT_GETTER_AFTER(CSWillmoreFlow, Energy, CSEnergy, energy, setupcalled, "CSWillmoreFlowSetUp")
 
 PetscErrorCode CSWillmoreFlowMonitorCancel(CSWillmoreFlow F)
 {
@@ -268,26 +270,10 @@ PetscErrorCode CSWillmoreFlowGetInitial(CSWillmoreFlow F, Vec *x0)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CSWillmoreFlowGetVariables(CSWillmoreFlow F, Vec *x)
-{
-  PetscFunctionBeginUser;
-  PetscCheck(F->setupcalled, F->hdr.comm, PETSC_ERR_ORDER, "CSWillmoreFlowGetVariables before CSWillmoreFlowSetUp");
-  *x = F->x;
-  PetscFunctionReturn(0);
-}
-
 PetscErrorCode CSWillmoreFlowGetLastSolution(CSWillmoreFlow F, Vec *x)
 {
   PetscFunctionBeginUser;
   *x = F->best_used ? F->last_x : NULL;
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSWillmoreFlowGetEnergy(CSWillmoreFlow F, CSEnergy *e)
-{
-  PetscFunctionBeginUser;
-  PetscCheck(F->setupcalled, F->hdr.comm, PETSC_ERR_ORDER, "CSWillmoreFlowSetUp first");
-  *e = F->energy;
   PetscFunctionReturn(0);
 }
 
