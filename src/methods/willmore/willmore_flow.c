@@ -133,7 +133,6 @@ static PetscErrorCode DestroyMembers(CSObject obj)
   PetscCall(VecDestroy(&F->cN));
   PetscCall(VecDestroy(&F->iqE));
   PetscCall(VecDestroy(&F->iqN));
-  PetscCall(MatDestroy(&F->Xn));
   PetscCall(MatDestroy(&F->Xext));
   PetscCall(ISDestroy(&F->isM[0]));
   PetscCall(ISDestroy(&F->isM[1]));
