@@ -3,17 +3,16 @@
    Sec. 6.4.2) and what a summary reads after it (the eigenvalue, its residual, iterations, times). */
 #include "spin_impl.h"
 
+CS_OBJECT_GETTER(CSSpin, RhoLocation, CSRhoLocation, rho_loc)
+CS_OBJECT_GETTER(CSSpin, BoundaryType, CSSpinBoundary, boundary)
+CS_OBJECT_GETTER(CSSpin, DM, DM, dm)
+CS_OBJECT_GETTER(CSSpin, Mesh, CSMesh, mesh)
+CS_OBJECT_GETTER(CSSpin, Shift, PetscReal, target)
+
 PetscErrorCode CSSpinSetRhoLocation(CSSpin s, CSRhoLocation loc)
 {
   PetscFunctionBeginUser;
   s->rho_loc = loc;
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSSpinGetRhoLocation(CSSpin s, CSRhoLocation *loc)
-{
-  PetscFunctionBeginUser;
-  *loc = s->rho_loc;
   PetscFunctionReturn(0);
 }
 
@@ -44,13 +43,6 @@ PetscErrorCode CSSpinSetBoundaryType(CSSpin s, CSSpinBoundary b)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CSSpinGetBoundaryType(CSSpin s, CSSpinBoundary *b)
-{
-  PetscFunctionBeginUser;
-  *b = s->boundary;
-  PetscFunctionReturn(0);
-}
-
 PetscErrorCode CSSpinSetInverseIteration(CSSpin s, PetscBool inverse, PetscInt its)
 {
   PetscFunctionBeginUser;
@@ -65,27 +57,6 @@ PetscErrorCode CSSpinGetInverseIteration(CSSpin s, PetscBool *inverse, PetscInt 
   PetscFunctionBeginUser;
   if (inverse) *inverse = s->inverse;
   if (its) *its = s->inverse_its;
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSSpinGetDM(CSSpin s, DM *dm)
-{
-  PetscFunctionBeginUser;
-  *dm = s->dm;
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSSpinGetMesh(CSSpin s, CSMesh *mesh)
-{
-  PetscFunctionBeginUser;
-  *mesh = s->mesh;
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSSpinGetShift(CSSpin s, PetscReal *shift)
-{
-  PetscFunctionBeginUser;
-  *shift = s->target;
   PetscFunctionReturn(0);
 }
 

@@ -186,18 +186,15 @@ PetscErrorCode CSWillmoreFlowGetType(CSWillmoreFlow F, CSWillmoreFlowType *type)
 
 /* SetOptionsPrefix, GetOptionsPrefix, MonitorSet, Destroy: the skeleton of every method object (include/cs_object.h) */
 CS_OBJECT_DEFINE(CSWillmoreFlow, CSWillmoreFlowMonitorFn)
+CS_OBJECT_GETTER(CSWillmoreFlow, ConvergedReason, CSWillmoreFlowConvergedReason, reason)
+CS_OBJECT_GETTER(CSWillmoreFlow, Mesh, CSMesh, mesh)
+CS_OBJECT_GETTER(CSWillmoreFlow, Conformal, PetscBool, conformal)
+CS_OBJECT_GETTER(CSWillmoreFlow, EnergyName, const char *, energy_name)
 
 PetscErrorCode CSWillmoreFlowMonitorCancel(CSWillmoreFlow F)
 {
   PetscFunctionBeginUser;
   PetscCall(CSMonitorListCancel(&F->hdr.monitors));
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSWillmoreFlowGetConvergedReason(CSWillmoreFlow F, CSWillmoreFlowConvergedReason *reason)
-{
-  PetscFunctionBeginUser;
-  *reason = F->reason;
   PetscFunctionReturn(0);
 }
 
@@ -231,27 +228,6 @@ PetscErrorCode CSWillmoreFlowGetInitial(CSWillmoreFlow F, Vec *x0)
   PetscCheck(F->setupcalled, F->hdr.comm, PETSC_ERR_ORDER, "CSWillmoreFlowGetInitial before CSWillmoreFlowSetUp");
   if (F->ops.positions) PetscCall((*F->ops.positions)(F, PETSC_TRUE, x0));
   else *x0 = F->x0;
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSWillmoreFlowGetMesh(CSWillmoreFlow F, CSMesh *mesh)
-{
-  PetscFunctionBeginUser;
-  *mesh = F->mesh;
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSWillmoreFlowGetConformal(CSWillmoreFlow F, PetscBool *conformal)
-{
-  PetscFunctionBeginUser;
-  *conformal = F->conformal;
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode CSWillmoreFlowGetEnergyName(CSWillmoreFlow F, const char **name)
-{
-  PetscFunctionBeginUser;
-  *name = F->energy_name;
   PetscFunctionReturn(0);
 }
 
