@@ -175,7 +175,8 @@ PETSC_EXTERN PetscErrorCode CSWillmoreFlowSetState(CSWillmoreFlow flow, PetscInt
    start omega of -flow_type trianglefield (fixed by the input and -flow_init_*, -flow_seed). */
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetStart(CSWillmoreFlow flow, Vec *x);
 
-/* Flow kinds: a strategy per file in src/methods/willmore/ (cgd.c, pgd.c, gd.c), registered by name. */
+/* Flow kinds: each in its folder src/methods/willmore/impls/<kind>/ (cgd, pgd, gd, newton, alm, trianglefield, and
+   the fairing baselines), registered by name. */
 typedef struct _CSWillmoreFlowOps *CSWillmoreFlowOps;
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowRegister(const char name[], PetscErrorCode (*create)(CSWillmoreFlow));
 PETSC_EXTERN PetscErrorCode CSWillmoreFlowGetTypeList(PetscFunctionList *list); /* the registered kinds (not to be freed) */

@@ -1,7 +1,7 @@
 /* The common header of the method objects (src/util/object.c), as PETSc's _p_PetscObject is of its objects: the
    communicator, the options prefix, the monitor list and the destroy op, embedded as the first member `hdr` of a
-   method object (CSBSFlow, CSConformalFlow, CSCurveFlow, CSHarmonicBasis), which is created by CSObjectCreate and
-   freed by CSObjectDestroy (as PetscHeaderCreate and PetscHeaderDestroy do).
+   method object (CSBSFlow, CSConformalFlow, CSCurveFlow, CSWillmoreFlow, CSSpin, CSHarmonicBasis), which is created
+   by CSObjectCreate and freed by CSObjectDestroy (as PetscHeaderCreate and PetscHeaderDestroy do).
 
    The skeleton every method object shares is written once, here: CS_OBJECT_DECLARE(Type, MonitorFn) in the
    object's public header declares, and CS_OBJECT_DEFINE(Type, MonitorFn) in its .c file defines,

@@ -1,4 +1,4 @@
-# issue 35 (a stopping rule that recognises the stationary state): the drift test (stop_reason drift, stop.c
+# issue 35 (a stopping rule that recognises the stationary state): the drift test (stop_reason drift, willmore_stop.c
 # CSWFCheckDrift) stops a run whose W has become stationary while its el_residual_scaled rises from its smallest
 # value, inside the class, and -flow_keep_best (default guard) returns the state of smallest residual. The input is
 # the R/r = 2 torus remeshed by CGAL (2268 faces), held in its class by the large fixed dual step (-flow_t_mu_final

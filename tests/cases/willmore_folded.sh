@@ -1,4 +1,4 @@
-# issue 35: the stop reason `folded` (the fold guard, -flow_fold_guard, on for gd and newton; guards.c CSWFCheckFolds)
+# issue 35: the stop reason `folded` (the fold guard, -flow_fold_guard, on for gd and newton; willmore_guards.c CSWFCheckFolds)
 # reached by genuine inputs. Newton on the cow (meshes/cow_cgal.obj: 5804 faces, smallest angle 2.8 degrees):
 # (a) -flow_newton_relax 0.05: the tangential relaxation after the accepted step of iteration 1 (newton's accept
 #     hook, which moves the vertices after the trial step's check) turns a face over; the guard stops at iteration 2

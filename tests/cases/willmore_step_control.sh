@@ -1,4 +1,4 @@
-# Issue 35 item 2: the step size control rarely rejects (-flow_step_model predictive, the default; step_model.c,
+# Issue 35 item 2: the step size control rarely rejects (-flow_step_model predictive, the default; willmore_step_model.c,
 # docs/willmore_flow.md "The step size model"). The bumped torus of the issue (R 3, r 1, 88 x 44 = 7744 faces, bump
 # 0.2), default CGD, 20 iterations: at most 3 rejected trials and W <= 60 at iteration 20 (the issue's acceptance;
 # with the halving rule: 20 rejections, W 106.3). Serially also -flow_step_model halving for one iteration: the old

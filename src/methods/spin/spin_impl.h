@@ -32,7 +32,6 @@ struct _p_CSSpin {
   PetscBool      pin;         /* Poisson: pin one vertex instead of mean-zero */
   CSSpinBoundary boundary;
   PetscReal      target;      /* shift toward 0 (dimensionless: in units of the unit sphere's spectrum) */
-  PetscBool      target_set;
 
   /* what CSSpinSolve transforms with (setters): where rho lives, the target of Sec. 7.2, the area rule */
   CSRhoLocation rho_loc;

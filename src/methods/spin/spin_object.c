@@ -105,7 +105,7 @@ PetscErrorCode CSSpinSetFromOptions(CSSpin s)
   PetscCall(CSOptionsEList("-solver", "Smallest eigenpair: EPS preconditioned by the scalar Laplacian (Davidson), EPS with shift-and-invert (a factorisation of K - sigma), or inverse iteration", NULL, solvers, 3, solvers[is], &is, &solver_set));
   PetscCall(CSOptionsInt("-iterations", "Inverse iteration steps", NULL, s->inverse_its, &s->inverse_its, NULL));
   PetscCall(PetscOptionsBool("-keep_inverse_factor", "Inverse iteration: keep the first factorisation as preconditioner for later solves", NULL, s->keep_factor, &s->keep_factor, NULL));
-  PetscCall(CSOptionsReal("-shift", "Shift toward 0 (negative target), in units of the unit sphere's spectrum", NULL, s->target, &s->target, &s->target_set));
+  PetscCall(CSOptionsReal("-shift", "Shift toward 0 (negative target), in units of the unit sphere's spectrum", NULL, s->target, &s->target, NULL));
   PetscCall(CSOptionsReal("-lap_shift", "-spin_solver precond: the mass shift c of L + c M, in units of 4 pi / area", NULL, s->lap_shift, &s->lap_shift, NULL));
   PetscCall(PetscOptionsBool("-pin_vertex", "Fix the translation by pinning the first vertex instead of matching the mean", NULL, s->pin, &s->pin, NULL));
   PetscCall(CSOptionsEList("-boundary", "Boundary condition (Sec. 5.7): none (free), keep tangents, tangents from a file, or from the target mesh (the driver's -spin_boundary_file, -spin_target_mesh)", NULL, bnames, 4, bnames[ib], &ib, NULL));

@@ -48,6 +48,25 @@ PetscErrorCode CSSpinPoissonRHS(CSSpin s, Vec x, Vec lambda, Vec b)
   PetscFunctionReturn(0);
 }
 
+/* The KSP of the Poisson solves, prefix "<spin prefix>poisson_", made once and kept for the next solves */
+static PetscErrorCode PoissonKSPCreate(CSSpin s)
+{
+  PC   pc;
+  char prefix[256];
+  PetscFunctionBeginUser;
+  PetscCall(CSSpinSubPrefix(s, "poisson_", prefix, sizeof(prefix)));
+  PetscCall(KSPCreate(s->mesh->comm, &s->kpois));
+  PetscCall(KSPSetOptionsPrefix(s->kpois, prefix));
+  PetscCall(KSPGetPC(s->kpois, &pc));
+  /* a Cholesky factorisation (CHOLMOD; the substructured cssubchol on several ranks): serially 2-3x faster than
+     CG + GAMG at 4k-38k vertices (runs/bench_spin.sh) */
+  PetscCall(KSPSetType(s->kpois, KSPPREONLY));
+  PetscCall(CSSetDefaultCholesky(pc));
+  PetscCall(KSPSetTolerances(s->kpois, 1e-12, 1e-14, PETSC_DEFAULT, 1000));
+  PetscCall(KSPSetFromOptions(s->kpois));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode CSSpinReconstruct(CSSpin s, Vec x, Vec lambda, Vec xcenter, Vec xnew)
 {
   CSMesh         mesh = s->mesh;
@@ -69,20 +88,7 @@ PetscErrorCode CSSpinReconstruct(CSSpin s, Vec x, Vec lambda, Vec xcenter, Vec x
      the translation: vertex mean of xcenter (default) or vertex 0 at its xcenter position (-spin_pin_vertex). */
   PetscCall(CSOperatorLaplacian(mesh, x, s->L ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX, &s->L));
   PetscCall(MatZeroRowsColumns(s->L, rank ? 0 : 1, &row, 1.0, NULL, NULL));
-  if (!s->kpois) {
-    PC   pc;
-    char prefix[256];
-    PetscCall(CSSpinSubPrefix(s, "poisson_", prefix, sizeof(prefix)));
-    PetscCall(KSPCreate(mesh->comm, &s->kpois));
-    PetscCall(KSPSetOptionsPrefix(s->kpois, prefix));
-    PetscCall(KSPGetPC(s->kpois, &pc));
-    /* a Cholesky factorisation (CHOLMOD; the substructured cssubchol on several ranks): serially 2-3x faster than
-       CG + GAMG at 4k-38k vertices (runs/bench_spin.sh) */
-    PetscCall(KSPSetType(s->kpois, KSPPREONLY));
-    PetscCall(CSSetDefaultCholesky(pc));
-    PetscCall(KSPSetTolerances(s->kpois, 1e-12, 1e-14, PETSC_DEFAULT, 1000));
-    PetscCall(KSPSetFromOptions(s->kpois));
-  }
+  if (!s->kpois) PetscCall(PoissonKSPCreate(s));
   PetscCall(KSPSetOperators(s->kpois, s->L, s->L));
   PetscCall(DMCreateGlobalVector(mesh->dmV1, &b1));
   PetscCall(VecDuplicate(b1, &u1));

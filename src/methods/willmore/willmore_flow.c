@@ -1,5 +1,6 @@
-/* The Willmore flow object: creation, kind (PetscFunctionList of strategies), prefix, monitors, getters,
-   checkpoint state, destruction. The method itself: willmore_step.c, willmore_filter.c, willmore_projection.c, willmore_guards.c, willmore_solve.c. */
+/* The Willmore flow object (soliman2021 Sec. 4, Algorithm 1): creation, kind (PetscFunctionList of the kinds in
+   impls/<kind>/), prefix, monitors, getters, checkpoint state, destruction. The method itself: willmore_step.c,
+   willmore_filter.c, willmore_projection.c, willmore_guards.c, willmore_solve.c. */
 #include "willmore_impl.h"
 #include "cs_package.h"
 #include "cs_util.h"
@@ -176,7 +177,6 @@ static PetscErrorCode DestroyMembers(CSObject obj)
   PetscCall(VecDestroy(&F->cN));
   PetscCall(VecDestroy(&F->iqE));
   PetscCall(VecDestroy(&F->iqN));
-  PetscCall(MatDestroy(&F->Xn));
   PetscCall(MatDestroy(&F->Xext));
   PetscCall(ISDestroy(&F->isM[0]));
   PetscCall(ISDestroy(&F->isM[1]));

@@ -161,7 +161,7 @@ struct _p_CSWillmoreFlow {
   CSConformalConstraint cc;
   PetscBool             normals; /* boundary-face normal constraint: its rows follow the edge rows */
   CSNormalConstraint    nc;
-  Mat                   Xn, Xext, Xc; /* nest [X; DN], its AIJ form, and the Jacobian in use (X or Xext) */
+  Mat                   Xext, Xc; /* [X; DN] stacked by rows (AIJ), and the Jacobian in use (X or Xext) */
   IS                    isM[2];       /* edge / normal rows in the multiplier layout */
   Vec                   cE, cN, iqE, iqN;
   PetscInt              ng, ngmax, k; /* global constraints (ng of ngmax slots), their rows */

@@ -4,7 +4,7 @@
 #define CS_WILLMORE_CGD_IMPL_H
 #include "../../willmore_impl.h"
 
-/* -t_mu_final: a fixed dual step once the EL residual is small (cgd.c). A kind whose ops are CSWFGrowCGD,
+/* -t_mu_final: a fixed dual step once the EL residual is small (cgd_dual_step.c). A kind whose ops are CSWFGrowCGD,
    CSWFShrinkCGD, CSWFDualStepGetSwitch or CSWFDualStepSetSwitch has a CSWFDualStep as the FIRST member of its
    F->data (as PETSc's derived types begin with their base struct): those ops find it there. */
 typedef struct {

@@ -287,7 +287,7 @@ static PetscErrorCode SetUpTriangleField(CSWillmoreFlow F)
   PetscFunctionBeginUser;
   PetscCheck(m->topo.boundary_loops == 0, F->hdr.comm, PETSC_ERR_SUP, "-%stype trianglefield: the mesh %s has %" PetscInt_FMT " boundary loop(s); triangle-field flows are built for closed surfaces", F->hdr.prefix, m->name, m->topo.boundary_loops);
   PetscCall(CheckOptions(F));
-  d->ds.final_from = d->istart; /* -flow_t_mu_final (cgd.c): armed once the rows are enforced (the relaxed phase before) */
+  d->ds.final_from = d->istart; /* -flow_t_mu_final (cgd_dual_step.c): armed once the rows are enforced (the relaxed phase before) */
   d->noconf    = (PetscBool)!F->conformal; /* unconstrained W~ (Fig. 8): integrability rows only */
   F->conformal = PETSC_TRUE;               /* the multiplier block holds the integrability rows either way */
   PetscCall(CSLensCreateHalfedgeDM(m, 1, &d->dmH1));
