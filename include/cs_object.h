@@ -33,12 +33,13 @@ struct _CSObjectHeader {
   MPI_Comm      comm;
   char         *prefix; /* never NULL after CSObjectCreate */
   CSMonitorList monitors;
-  PetscErrorCode (*destroy)(CSObject); /* frees the object's own members (NULL: it has none); set in its Create */
+  PetscErrorCode (*destroy)(CSObject); /* frees the object's own members (NULL: it has none); given to CSObjectCreate */
 };
 
-/* *obj = a zeroed object of size bytes (its header first) with comm and the default prefix, no monitors; obj is
-   the address of the object's pointer, e.g. CSObjectCreate(sizeof(*F), comm, "curve_", &F) */
-PETSC_EXTERN PetscErrorCode CSObjectCreate(size_t size, MPI_Comm comm, const char prefix[], void *obj);
+/* *obj = a zeroed object of size bytes (its header first) with comm, the default prefix and the destroy op of its own
+   members (NULL: none), no monitors, as PetscHeaderCreate takes the object's destroy; obj is the address of the
+   object's pointer, e.g. CSObjectCreate(sizeof(*F), comm, "curve_", DestroyMembers, &F) */
+PETSC_EXTERN PetscErrorCode CSObjectCreate(size_t size, MPI_Comm comm, const char prefix[], PetscErrorCode (*destroy)(CSObject), void *obj);
 /* NULL sets the empty prefix */
 PETSC_EXTERN PetscErrorCode CSObjectSetOptionsPrefix(CSObjectHeader *h, const char prefix[]);
 PETSC_EXTERN PetscErrorCode CSObjectGetOptionsPrefix(CSObjectHeader *h, const char *prefix[]);

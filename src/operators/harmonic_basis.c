@@ -51,7 +51,7 @@ PetscErrorCode CSHarmonicBasisCreate(CSMesh mesh, Vec x, CSHarmonicBasis *hb)
   PetscInt        g;
   PetscFunctionBeginUser;
   PetscCall(CSMeshGetClosedGenus(mesh, "CSHarmonicBasisCreate", &g));
-  PetscCall(CSObjectCreate(sizeof(*h), mesh->comm, "harmonic_", &h));
+  PetscCall(CSObjectCreate(sizeof(*h), mesh->comm, "harmonic_", NULL, &h));
   h->mesh = mesh;
   h->seed = 1;
   h->g    = g;

@@ -1,12 +1,13 @@
 /* The common header of the method objects and their monitor list (include/cs_object.h). */
 #include "cs_object.h"
 
-PetscErrorCode CSObjectCreate(size_t size, MPI_Comm comm, const char prefix[], void *obj)
+PetscErrorCode CSObjectCreate(size_t size, MPI_Comm comm, const char prefix[], PetscErrorCode (*destroy)(CSObject), void *obj)
 {
   CSObject *h = (CSObject *)obj;
   PetscFunctionBeginUser;
   PetscCall(PetscCalloc(size, h));
-  (*h)->comm = comm;
+  (*h)->comm    = comm;
+  (*h)->destroy = destroy;
   PetscCall(PetscStrallocpy(prefix ? prefix : "", &(*h)->prefix));
   PetscFunctionReturn(0);
 }

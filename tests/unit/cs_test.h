@@ -88,4 +88,30 @@ PETSC_UNUSED static PetscErrorCode CSTestMesh(MPI_Comm comm, CSTestMeshSpec s, P
   PetscFunctionReturn(0);
 }
 
+/* v_i = fn(f_i, a) at every owned vertex i of mesh (v on the vertex dofs, one per vertex): a test field from positions */
+typedef PetscReal (*CSTestPointFn)(const PetscReal f[3], PetscReal a);
+PETSC_UNUSED static PetscErrorCode CSTestVertexField(CSMesh mesh, CSTestPointFn fn, PetscReal a, Vec v)
+{
+  const PetscScalar *x;
+  PetscScalar       *r;
+  PetscInt           n;
+  PetscFunctionBeginUser;
+  PetscCall(VecGetLocalSize(v, &n));
+  PetscCall(VecGetArrayRead(mesh->x, &x));
+  PetscCall(VecGetArray(v, &r));
+  for (PetscInt i = 0; i < n; i++) {
+    const PetscReal f[3] = {PetscRealPart(x[3 * i]), PetscRealPart(x[3 * i + 1]), PetscRealPart(x[3 * i + 2])};
+    r[i]                 = fn(f, a);
+  }
+  PetscCall(VecRestoreArray(v, &r));
+  PetscCall(VecRestoreArrayRead(mesh->x, &x));
+  PetscFunctionReturn(0);
+}
+
+/* h exp(-|f - (0,0,1)|^2 / 0.25): a painted bump on the unit sphere's north pole (crane2011 Fig. 1), the spin tests'
+   curvature change rho */
+PETSC_UNUSED static PetscReal CSTestBump(const PetscReal f[3], PetscReal h)
+{
+  return h * PetscExpReal(-(PetscSqr(f[0]) + PetscSqr(f[1]) + PetscSqr(f[2] - 1)) / 0.25);
+}
 #endif

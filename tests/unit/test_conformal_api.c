@@ -12,23 +12,11 @@
 #include "cs_geometry.h"
 #include "cs_test.h"
 
-/* v_i = Y_l(f_i) */
-static PetscErrorCode Harmonic(CSMesh mesh, PetscInt l, Vec v)
+/* Y_l(f): the test fields of the conformal flow's checks (l = 1, 2, 3: x, xy, xyz; else x^4 + y^4 + z^4 - 3/5) */
+static PetscReal Harmonic(const PetscReal f[3], PetscReal l)
 {
-  const PetscScalar *x;
-  PetscScalar       *a;
-  PetscInt           n;
-  PetscFunctionBeginUser;
-  PetscCall(VecGetLocalSize(v, &n));
-  PetscCall(VecGetArrayRead(mesh->x, &x));
-  PetscCall(VecGetArray(v, &a));
-  for (PetscInt i = 0; i < n; i++) {
-    PetscReal p = x[3 * i], q = x[3 * i + 1], r = x[3 * i + 2];
-    a[i] = l == 1 ? p : l == 2 ? p * q : l == 3 ? p * q * r : p * p * p * p + q * q * q * q + r * r * r * r - 0.6;
-  }
-  PetscCall(VecRestoreArray(v, &a));
-  PetscCall(VecRestoreArrayRead(mesh->x, &x));
-  PetscFunctionReturn(0);
+  const PetscReal p = f[0], q = f[1], r = f[2];
+  return l == 1 ? p : l == 2 ? p * q : l == 3 ? p * q * r : p * p * p * p + q * q * q * q + r * r * r * r - 0.6;
 }
 
 static PetscErrorCode FilterGains(MPI_Comm comm)
@@ -52,7 +40,7 @@ static PetscErrorCode FilterGains(MPI_Comm comm)
     for (PetscInt l = 1; l <= 4; l++) {
       PetscReal s = sig[k] * PetscPowReal(A / (4 * PETSC_PI), (PetscReal)k), sw = s * PetscPowReal((PetscReal)(l * (l + 1)), (PetscReal)k), want = sw / (1 + sw), num, den, gain;
       char      what[64];
-      PetscCall(Harmonic(mesh, l, v));
+      PetscCall(CSTestVertexField(mesh, Harmonic, (PetscReal)l, v));
       PetscCall(VecCopy(v, w));
       PetscCall(CSConformalFlowApplyFilter(flow, w));
       PetscCall(VecPointwiseMult(w, w, M));

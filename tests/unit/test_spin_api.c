@@ -84,22 +84,6 @@ static PetscErrorCode CheckSurface(MPI_Comm comm, const char name[], Surface s, 
   PetscFunctionReturn(0);
 }
 
-/* rho = h exp(-|f - (0,0,1)|^2 / 0.25), a painted bump (crane2011 Fig. 1) */
-static PetscErrorCode Bump(CSMesh mesh, PetscReal h, Vec rho)
-{
-  const PetscScalar *p;
-  PetscScalar       *r;
-  PetscInt           n;
-  PetscFunctionBeginUser;
-  PetscCall(VecGetLocalSize(rho, &n));
-  PetscCall(VecGetArrayRead(mesh->x, &p));
-  PetscCall(VecGetArray(rho, &r));
-  for (PetscInt i = 0; i < n; i++) r[i] = h * PetscExpReal(-(PetscSqr(p[3 * i]) + PetscSqr(p[3 * i + 1]) + PetscSqr(p[3 * i + 2] - 1)) / 0.25);
-  PetscCall(VecRestoreArray(rho, &r));
-  PetscCall(VecRestoreArrayRead(mesh->x, &p));
-  PetscFunctionReturn(0);
-}
-
 /* Factor once, solve many: a second CSSpinSolve on one object (its operators rebuilt, its factorisations and
    start vector kept) gives the surface a fresh object gives for the same rho. A stale operator or start would
    leave an O(h) difference. */
@@ -118,9 +102,9 @@ static PetscErrorCode CheckSolveMany(MPI_Comm comm)
   PetscCall(CSSpinSetRhoLocation(b, CS_RHO_VERTEX));
   PetscCall(CSSpinSetFromOptions(a));
   PetscCall(CSSpinSetFromOptions(b));
-  PetscCall(Bump(mesh, 1, rho));
+  PetscCall(CSTestVertexField(mesh, CSTestBump, 1, rho));
   PetscCall(CSSpinSolve(a, mesh->x, rho));
-  PetscCall(Bump(mesh, 2, rho));
+  PetscCall(CSTestVertexField(mesh, CSTestBump, 2, rho));
   PetscCall(CSSpinSolve(a, mesh->x, rho));
   PetscCall(CSSpinSolve(b, mesh->x, rho));
   PetscCall(CSSpinGetSolution(a, &xa));

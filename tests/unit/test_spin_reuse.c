@@ -5,26 +5,9 @@
    Run: build/tests/test_spin_reuse   (also under mpirun -n 2) */
 #include <slepcsys.h>
 #include "cs_methods_spin.h"
+#include "cs_test.h"
 
 static PetscInt nfail = 0;
-
-static PetscErrorCode Bump(CSMesh mesh, PetscReal h, Vec rho)
-{
-  const PetscScalar *p;
-  PetscScalar       *r;
-  PetscInt           n;
-  PetscFunctionBeginUser;
-  PetscCall(VecGetLocalSize(rho, &n));
-  PetscCall(VecGetArrayRead(mesh->x, &p));
-  PetscCall(VecGetArray(rho, &r));
-  for (PetscInt i = 0; i < n; i++) {
-    PetscReal d2 = PetscSqr(PetscRealPart(p[3 * i])) + PetscSqr(PetscRealPart(p[3 * i + 1])) + PetscSqr(PetscRealPart(p[3 * i + 2]) - 1);
-    r[i]         = h * PetscExpReal(-d2 / 0.25);
-  }
-  PetscCall(VecRestoreArray(rho, &r));
-  PetscCall(VecRestoreArrayRead(mesh->x, &p));
-  PetscFunctionReturn(0);
-}
 
 /* gamma for rho = h1 bump then h2 bump with one CSSpin configured by the given options */
 static PetscErrorCode TwoSolves(CSMesh mesh, const char opts[], PetscReal h1, PetscReal h2, PetscReal *g2)
@@ -40,10 +23,10 @@ static PetscErrorCode TwoSolves(CSMesh mesh, const char opts[], PetscReal h1, Pe
   PetscCall(CSSpinGetDM(spin, &dm));
   PetscCall(DMCreateGlobalVector(dm, &lambda));
   if (h1 != 0) {
-    PetscCall(Bump(mesh, h1, rho));
+    PetscCall(CSTestVertexField(mesh, CSTestBump, h1, rho));
     PetscCall(CSSpinSolveEigen(spin, mesh->x, CS_RHO_VERTEX, rho, lambda));
   }
-  PetscCall(Bump(mesh, h2, rho));
+  PetscCall(CSTestVertexField(mesh, CSTestBump, h2, rho));
   PetscCall(CSSpinSolveEigen(spin, mesh->x, CS_RHO_VERTEX, rho, lambda));
   PetscCall(CSSpinGetEigenvalue(spin, g2, NULL));
   PetscCall(VecDestroy(&rho));

@@ -34,8 +34,7 @@ PetscErrorCode CSBSFlowCreate(CSMesh mesh, CSBSFlow *flow)
   CSBSFlow F;
   PetscFunctionBeginUser;
   PetscCall(CSInitializePackage()); /* as KSPCreate does: events, PCs and solver types before any use */
-  PetscCall(CSObjectCreate(sizeof(*F), mesh->comm, "bs_", &F));
-  F->hdr.destroy = DestroyMembers;
+  PetscCall(CSObjectCreate(sizeof(*F), mesh->comm, "bs_", DestroyMembers, &F));
   PetscCall(CSFlowLoopInit(&F->loop, mesh->comm, &LoopOps, CS_BS_DIVERGED_MAX_IT, CS_EVENT_BSStep, CS_EVENT_BSSolve));
   F->loop.own_rejection_limit = PETSC_TRUE; /* semi: -bs_max_rejections in a row and -bs_dt_min_rel */
   F->mesh       = mesh;

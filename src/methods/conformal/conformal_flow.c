@@ -21,8 +21,7 @@ PetscErrorCode CSConformalFlowCreate(CSMesh mesh, CSConformalFlow *flow)
   CSConformalFlow F;
   PetscFunctionBeginUser;
   PetscCall(CSInitializePackage());
-  PetscCall(CSObjectCreate(sizeof(*F), mesh->comm, "flow_", &F));
-  F->hdr.destroy = DestroyMembers;
+  PetscCall(CSObjectCreate(sizeof(*F), mesh->comm, "flow_", DestroyMembers, &F));
   PetscCall(CSFlowLoopInit(&F->loop, mesh->comm, &LoopOps, CS_CONFORMAL_DIVERGED_MAX_IT, CS_EVENT_ConformalStep, CS_EVENT_ConformalSolve));
   F->mesh          = mesh;
   F->tau           = 0.95; /* stable for tau < 1 (Sec. 4: |1 - 2 tau| < 1) */

@@ -18,8 +18,7 @@ PetscErrorCode CSCurveFlowCreate(CSCurve curve, CSCurveFlow *flow)
   CSCurveFlow F;
   PetscFunctionBeginUser;
   PetscCall(CSInitializePackage());
-  PetscCall(CSObjectCreate(sizeof(*F), curve->comm, "curve_", &F));
-  F->hdr.destroy = DestroyMembers;
+  PetscCall(CSObjectCreate(sizeof(*F), curve->comm, "curve_", DestroyMembers, &F));
   PetscCall(CSFlowLoopInit(&F->loop, curve->comm, &LoopOps, CS_CURVE_DIVERGED_MAX_IT, CS_EVENT_CurveStep, CS_EVENT_CurveSolve));
   F->curve       = curve;
   F->tau         = 0.95; /* the default; stable for tau < 1 (Sec. 5: |1 - 2 tau| < 1) */

@@ -41,8 +41,7 @@ PetscErrorCode CSSpinCreate(CSMesh mesh, CSSpin *spin)
   CSSpin s;
   PetscFunctionBeginUser;
   PetscCall(CSInitializePackage());
-  PetscCall(CSObjectCreate(sizeof(*s), mesh->comm, "spin_", &s));
-  s->hdr.destroy  = DestroyMembers;
+  PetscCall(CSObjectCreate(sizeof(*s), mesh->comm, "spin_", DestroyMembers, &s));
   s->mesh         = mesh;
   s->inverse_its  = 1;
   s->target       = 1e-2;

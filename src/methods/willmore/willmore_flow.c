@@ -190,14 +190,21 @@ static PetscErrorCode DestroyMembers(CSObject obj)
   PetscFunctionReturn(0);
 }
 
+/* ops.destroy of a kind whose data (F->data) is one allocation holding no objects (cgd, gd, alm) */
+PetscErrorCode CSWFDestroyData(CSWillmoreFlow F)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscFree(F->data));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode CSWillmoreFlowCreate(CSMesh mesh, CSWillmoreFlow *flow)
 {
   CSWillmoreFlow F;
   PetscFunctionBeginUser;
   PetscCall(CSInitializePackage()); /* as KSPCreate does: events, PCs and solver types before any use */
   PetscCall(RegisterAll());
-  PetscCall(CSObjectCreate(sizeof(*F), mesh->comm, "flow_", &F));
-  F->hdr.destroy = DestroyMembers;
+  PetscCall(CSObjectCreate(sizeof(*F), mesh->comm, "flow_", DestroyMembers, &F));
   F->mesh        = mesh;
   SetDefaults(F);
   PetscCall(PetscStrncpy(F->energy_name, "willmore", sizeof(F->energy_name)));

@@ -314,6 +314,7 @@ PETSC_INTERN PetscErrorCode CSWFSetUpVectors(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFSetUpScaling(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFCreateEnergy(CSWillmoreFlow F);
 /* kinds */
+PETSC_INTERN PetscErrorCode CSWFDestroyData(CSWillmoreFlow F); /* ops.destroy of a kind whose F->data holds no objects */
 PETSC_INTERN PetscErrorCode CSWillmoreFlowCreate_CGD(CSWillmoreFlow);
 PETSC_INTERN PetscErrorCode CSWillmoreFlowCreate_PGD(CSWillmoreFlow);
 PETSC_INTERN PetscErrorCode CSWillmoreFlowCreate_GD(CSWillmoreFlow);

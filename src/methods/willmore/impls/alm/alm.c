@@ -147,13 +147,6 @@ static PetscErrorCode ViewALM(CSWillmoreFlow F, PetscViewer viewer)
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode DestroyALM(CSWillmoreFlow F)
-{
-  PetscFunctionBeginUser;
-  PetscCall(PetscFree(F->data));
-  PetscFunctionReturn(0);
-}
-
 /* The Gauss-Newton metric needs the unweighted penalty: I_Q replaced by the identity. */
 static PetscErrorCode StartALM(CSWillmoreFlow F)
 {
@@ -218,7 +211,7 @@ static const struct _CSWillmoreFlowOps ALMOps = {
   .id = 4, .conformal = PETSC_TRUE, /* id: its own (newton has 3; unique: checked at CSWillmoreFlowRegister) */
   .trial = TrialALM, .filter = FilterALM, .accept = AcceptALM, .grow = CSWFGrowPrimal, .shrink = CSWFShrinkPrimal,
   .residual = ResidualALM, .multipliers = MultipliersALM, .weights = WeightsALM, .saddle_blocks = SaddleBlocksALM, .scale = ScaleALM, .storable = StorableALM, .start = StartALM,
-  .setfromoptions = SetFromOptionsALM, .setup = SetUpALM, .view = ViewALM, .destroy = DestroyALM,
+  .setfromoptions = SetFromOptionsALM, .setup = SetUpALM, .view = ViewALM, .destroy = CSWFDestroyData,
 };
 
 PetscErrorCode CSWillmoreFlowCreate_ALM(CSWillmoreFlow F)

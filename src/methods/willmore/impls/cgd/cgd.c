@@ -53,19 +53,12 @@ static PetscErrorCode ViewCGD(CSWillmoreFlow F, PetscViewer viewer)
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode DestroyCGD(CSWillmoreFlow F)
-{
-  PetscFunctionBeginUser;
-  PetscCall(PetscFree(F->data));
-  PetscFunctionReturn(0);
-}
-
 /* the kind's strategy (willmore_impl.h), grouped: identity, the step, hooks, its own data and options */
 static const struct _CSWillmoreFlowOps CGDOps = {
   .id = 0, .conformal = PETSC_TRUE,
   .trial = CSWFTrialCGD, .filter = CSWFFilterLagrangian, .accept = CSWFAcceptCGD, .grow = CSWFGrowCGD, .shrink = CSWFShrinkCGD,
   .dual = CSWFMultiplierLS, .get_switch = CSWFDualStepGetSwitch, .set_switch = CSWFDualStepSetSwitch, .scale = ScaleCGD,
-  .setfromoptions = SetFromOptionsCGD, .setup = CSWFSetUpCGD, .view = ViewCGD, .destroy = DestroyCGD,
+  .setfromoptions = SetFromOptionsCGD, .setup = CSWFSetUpCGD, .view = ViewCGD, .destroy = CSWFDestroyData,
 };
 
 PetscErrorCode CSWillmoreFlowCreate_CGD(CSWillmoreFlow F)
