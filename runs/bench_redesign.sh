@@ -14,7 +14,7 @@
 #   git worktree add /tmp/pre b83cb41 && make -C /tmp/pre -j2
 #   OLD=/tmp/pre/bin/confsurf bash runs/bench_redesign.sh
 # A later redesign step compares two builds that share the option names: OLD_OPTIONS=new gives OLD the new
-# spellings (issue 37: OLD=<build of 7d1ad92> OLD_OPTIONS=new OUT=runs/results/bench_redesign2.md).
+# spellings (issue 37: OLD=<build of 7d1ad92> OLD_OPTIONS=new; the results of 2026-12-06 in runs/bench_redesign2.md).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
