@@ -9,8 +9,9 @@ WERROR ?= -Werror
 deps:
 	bash scripts/install-deps.sh
 
-# `make run`/`make demo` from a fresh clone: build only the program, on every core
-ifneq ($(filter run demo,$(MAKECMDGOALS)),)
+# `make run`/`make demo`/`make test` from a fresh clone: build on every core (the test runner then shares the cores
+# out itself, tests/run.sh)
+ifneq ($(filter run demo test test-serial,$(MAKECMDGOALS)),)
 MAKEFLAGS += -j$(shell nproc)
 endif
 
