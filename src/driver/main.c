@@ -8,7 +8,7 @@ static const char help[] = "confsurf: conformal geometry processing of triangle 
 /* The tasks and what they do, for -help (the same names as RegisterTasks). */
 static const char *const task_help[][2] = {
   {"info",     "facts of a mesh: counts, genus, boundary loops, area, volume, Willmore energies"},
-  {"flow",     "-flow_type cgd|pgd|gd|alm: conformally constrained Willmore (area, fairing) flow (soliman2021); bs: Bobenko-Schroeder flow"},
+  {"flow",     "-flow_type KIND: conformally constrained Willmore (area, fairing) flow (soliman2021), KIND a registered kind; bs: Bobenko-Schroeder flow"},
   {"spin",     "spin transformation (crane2011): curvature change rho, or the nearest one to -spin_target_mesh"},
   {"spectrum", "the smallest eigenvalues of the Dirac problem with rho = 0 (crane2011 Fig. 8)"},
   {"curveflow", "isometric curvature flow of a closed planar curve (crane2013 Sec. 5): -curve FILE or -gen_curve SHAPE"},
@@ -20,6 +20,7 @@ static const char *const task_help[][2] = {
 #include <unistd.h>
 #include "cs_driver.h"
 #include "cs_package.h"
+#include "cs_methods_willmore.h"
 
 /* -help. PETSc's own -help prints its banner, the options of every PETSc program, and then those of whatever
    the run reaches (and fails without a mesh). Here -help is taken out of argv before PETSc starts: alone it prints
@@ -96,9 +97,18 @@ static PetscBool HelpFromArgs(int *argc, char **argv)
 
 static PetscErrorCode HelpTaskList(void)
 {
+  PetscFunctionList kinds;
+  char              names[512];
   PetscFunctionBeginUser;
+  PetscCall(CSWillmoreFlowGetTypeList(&kinds)); /* the kinds as registered, not a list written here */
+  PetscCall(CSFunctionListJoin(kinds, "|", names, sizeof(names)));
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s\nTasks (-task NAME; `bin/confsurf -task NAME -help` lists that task's options and their defaults):\n", help));
-  for (size_t i = 0; i < sizeof(task_help) / sizeof(task_help[0]); i++) PetscCall(PetscPrintf(PETSC_COMM_WORLD, "  %-9s %s\n", task_help[i][0], task_help[i][1]));
+  for (size_t i = 0; i < sizeof(task_help) / sizeof(task_help[0]); i++) {
+    PetscBool flow;
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "  %-9s %s\n", task_help[i][0], task_help[i][1]));
+    PetscCall(PetscStrcmp(task_help[i][0], "flow", &flow));
+    if (flow) PetscCall(PetscPrintf(PETSC_COMM_WORLD, "  %-9s the kinds registered: %s\n", "", names));
+  }
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "Experiments: options/*.opts (bin/confsurf -options_file F); PETSc's own help with every solver option a run reaches: -help all added to a run (e.g. -task flow -gen icosphere -flow_max_it 1 -help all)\n"));
   PetscFunctionReturn(0);
 }

@@ -7,6 +7,12 @@ source tests/lib.sh
 for t in info flow spin spectrum curveflow; do grep -q "^  $t " "$TMP/h.txt" || { echo "BAD: task $t not listed"; exit 1; }; done
 ! grep -q "Options for all PETSc programs" "$TMP/h.txt" || { echo "BAD: PETSc's banner"; exit 1; }
 echo "ok  -help lists the tasks ($(wc -l < "$TMP/h.txt") lines)"
+# the flow's kinds in the task list are the registry's (the -flow_type list of the flow's own block), none written by hand
+"$CS_BIN" -task flow -help > "$TMP/f.txt" 2>&1 || { cat "$TMP/f.txt"; echo "BAD: -task flow -help failed"; exit 1; }
+reg=$(grep -m1 -- "-flow_type <.*Flow kind (one of)" "$TMP/f.txt" | sed 's/.*(one of) //; s/ ((null))//' | tr ' ' '|')
+listed=$(grep -m1 "the kinds registered:" "$TMP/h.txt" | sed 's/.*registered: //')
+[ -n "$reg" ] && [ "$reg" = "$listed" ] || { echo "BAD: -help's kinds '$listed' are not the registry's '$reg'"; exit 1; }
+echo "ok  -help's flow kinds are the registry's: $listed"
 check() { # task-args, must-have regex list, must-not regex
   local args=$1 want=$2 not=$3
   $CS_BIN $args -help > "$TMP/t.txt" 2>&1 || { cat "$TMP/t.txt"; echo "BAD: $args -help failed"; exit 1; }
