@@ -86,6 +86,7 @@ for name, good, v in checks:
 sys.exit(bad)
 PY
 EXPECT="-flow_constraint_add volumes: unknown constraint \(registered: area\|volume\|mobius\|rotation" expect_fail $MPIEXEC "$CS_BIN" -task flow $D -flow_constraint_add area,volumes
+EXPECT="-flow_constraint_add area and -flow_constraint_area: the same constraint twice" expect_fail $MPIEXEC "$CS_BIN" -task flow $D -flow_constraint_add area -flow_constraint_area
 # (e) -flow_t_mu_final acts on the rows of CGD's step: gd with a volume constraint has one and is accepted (checked
 #     once the constraints are set up; it was refused while the check ran before them), the switch fires and the
 #     volume is held; gd with no constraint row is refused naming the option

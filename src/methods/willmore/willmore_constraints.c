@@ -107,6 +107,21 @@ PetscErrorCode CSWillmoreFlowAddConstraint(CSWillmoreFlow F, const char name[])
   PetscFunctionReturn(0);
 }
 
+
+/* A built-in given both by its own option and by name would add its rows twice (a singular bordered system): one
+   way only. */
+static PetscErrorCode RefuseTwice(CSWillmoreFlow F, const char name[])
+{
+  const char *opt[]  = {"area", "volume", "mobius", "rotation"};
+  PetscBool   made[] = {F->area_set, F->vol_set, F->mobius, F->rotation};
+  PetscFunctionBeginUser;
+  for (int i = 0; i < 4; i++) {
+    PetscBool same;
+    PetscCall(PetscStrcmp(name, opt[i], &same));
+    PetscCheck(!same || !made[i], F->hdr.comm, PETSC_ERR_ARG_INCOMP, "-%sconstraint_add %s and -%sconstraint_%s: the same constraint twice; give it one way", F->hdr.prefix, name, F->hdr.prefix, opt[i]);
+  }
+  PetscFunctionReturn(0);
+}
 /* The constraints added by name, after the built-in ones of the options (willmore_setup.c). */
 PetscErrorCode CSWFSetUpAddedConstraints(CSWillmoreFlow F)
 {
@@ -115,6 +130,7 @@ PetscErrorCode CSWFSetUpAddedConstraints(CSWillmoreFlow F)
   char               prefix[128];
   PetscFunctionBeginUser;
   for (PetscInt j = 0; j < F->nadded; j++) {
+    PetscCall(RefuseTwice(F, F->added[j]));
     PetscCall(PetscFunctionListFind(F->constraint_list, F->added[j], &create));
     PetscCall(PetscSNPrintf(prefix, sizeof(prefix), "%sconstraint_%s_", F->hdr.prefix, F->added[j]));
     PetscCall((*create)(F->mesh, F->x0, prefix, &g));
