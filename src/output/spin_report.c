@@ -4,54 +4,56 @@
 #include "cs_geometry.h"
 #include "cs_linalg.h"
 
-static PetscErrorCode SpinLines(CSSpin spin, MPI_Comm comm)
-{
-  PetscReal      gamma, res;
-  PetscInt       eps_its, inner_its, poisson_its;
-  PetscLogDouble t[3], c[3];
-  PetscBool      generalized;
-  PetscFunctionBeginUser;
-  PetscCall(CSSpinGetEigenvalue(spin, &gamma, &res));
-  PetscCall(CSSpinGetIterationNumbers(spin, &eps_its, &inner_its, &poisson_its));
-  PetscCall(CSSpinGetTimes(spin, t, c));
-  PetscCall(CSSpinGetProblem(spin, &generalized, NULL));
-  PetscCall(PetscPrintf(comm, "spin: gamma=%.10g (%s problem, residual %.2e) eigensolver its=%" PetscInt_FMT " inner its=%" PetscInt_FMT "; poisson its=%" PetscInt_FMT "\n", (double)gamma, generalized ? "generalized Eq. 6" : "standard Eq. 7", (double)res, eps_its, inner_its, poisson_its));
-  PetscCall(PetscPrintf(comm, "spin: seconds setup=%.4f eigen=%.4f poisson=%.4f (cpu %.4f %.4f %.4f)\n", t[0], t[1], t[2], c[0], c[1], c[2]));
-  PetscFunctionReturn(0);
-}
-
-/* the keys in the order of the summaries written before spin_report.c existed */
-static PetscErrorCode SolverKeys(CSSpin spin, CSJSON json)
-{
-  const char    *bnames[] = {"none", "keep", "file", "target"};
+/* What the summary and the stdout lines report of the solve, read once through the CSSpin getters. */
+typedef struct {
   PetscReal      gamma, res;
   PetscInt       eps_its, inner_its, poisson_its;
   PetscLogDouble t[3], c[3];
   PetscBool      generalized, shell;
-  CSSpinBoundary b;
+  CSSpinBoundary boundary;
   CSRhoLocation  loc;
+} SpinFacts;
+
+static PetscErrorCode GetFacts(CSSpin spin, SpinFacts *f)
+{
   PetscFunctionBeginUser;
-  PetscCall(CSSpinGetEigenvalue(spin, &gamma, &res));
-  PetscCall(CSSpinGetIterationNumbers(spin, &eps_its, &inner_its, &poisson_its));
-  PetscCall(CSSpinGetTimes(spin, t, c));
-  PetscCall(CSSpinGetProblem(spin, &generalized, &shell));
-  PetscCall(CSSpinGetBoundaryType(spin, &b));
-  PetscCall(CSSpinGetRhoLocation(spin, &loc));
-  PetscCall(CSJSONAddReal(json, "eigenvalue", gamma));
-  PetscCall(CSJSONAddReal(json, "eigen_residual", res));
-  PetscCall(CSJSONAddInt(json, "eps_its", eps_its));
-  PetscCall(CSJSONAddInt(json, "inner_its", inner_its));
-  PetscCall(CSJSONAddInt(json, "poisson_its", poisson_its));
-  PetscCall(CSJSONAddReal(json, "seconds_setup", (PetscReal)t[0]));
-  PetscCall(CSJSONAddReal(json, "seconds_eigen", (PetscReal)t[1]));
-  PetscCall(CSJSONAddReal(json, "seconds_poisson", (PetscReal)t[2]));
-  PetscCall(CSJSONAddReal(json, "cpu_seconds_setup", (PetscReal)c[0]));
-  PetscCall(CSJSONAddReal(json, "cpu_seconds_eigen", (PetscReal)c[1]));
-  PetscCall(CSJSONAddReal(json, "cpu_seconds_poisson", (PetscReal)c[2]));
-  PetscCall(CSJSONAddString(json, "problem", generalized ? "generalized" : "standard"));
-  PetscCall(CSJSONAddString(json, "dirac_type", shell ? "shell" : "aij"));
-  PetscCall(CSJSONAddString(json, "boundary", bnames[b]));
-  PetscCall(CSJSONAddString(json, "rho_location", loc == CS_RHO_NONE ? "none" : (loc == CS_RHO_VERTEX ? "vertex" : "face")));
+  PetscCall(CSSpinGetEigenvalue(spin, &f->gamma, &f->res));
+  PetscCall(CSSpinGetIterationNumbers(spin, &f->eps_its, &f->inner_its, &f->poisson_its));
+  PetscCall(CSSpinGetTimes(spin, f->t, f->c));
+  PetscCall(CSSpinGetProblem(spin, &f->generalized, &f->shell));
+  PetscCall(CSSpinGetBoundaryType(spin, &f->boundary));
+  PetscCall(CSSpinGetRhoLocation(spin, &f->loc));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode SpinLines(const SpinFacts *f, MPI_Comm comm)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscPrintf(comm, "spin: gamma=%.10g (%s problem, residual %.2e) eigensolver its=%" PetscInt_FMT " inner its=%" PetscInt_FMT "; poisson its=%" PetscInt_FMT "\n", (double)f->gamma, f->generalized ? "generalized Eq. 6" : "standard Eq. 7", (double)f->res, f->eps_its, f->inner_its, f->poisson_its));
+  PetscCall(PetscPrintf(comm, "spin: seconds setup=%.4f eigen=%.4f poisson=%.4f (cpu %.4f %.4f %.4f)\n", f->t[0], f->t[1], f->t[2], f->c[0], f->c[1], f->c[2]));
+  PetscFunctionReturn(0);
+}
+
+/* the keys in the order of the summaries written before spin_report.c existed */
+static PetscErrorCode SolverKeys(const SpinFacts *f, CSJSON json)
+{
+  const char *bnames[] = {"none", "keep", "file", "target"};
+  PetscFunctionBeginUser;
+  PetscCall(CSJSONAddReal(json, "eigenvalue", f->gamma));
+  PetscCall(CSJSONAddReal(json, "eigen_residual", f->res));
+  PetscCall(CSJSONAddInt(json, "eps_its", f->eps_its));
+  PetscCall(CSJSONAddInt(json, "inner_its", f->inner_its));
+  PetscCall(CSJSONAddInt(json, "poisson_its", f->poisson_its));
+  PetscCall(CSJSONAddReal(json, "seconds_setup", (PetscReal)f->t[0]));
+  PetscCall(CSJSONAddReal(json, "seconds_eigen", (PetscReal)f->t[1]));
+  PetscCall(CSJSONAddReal(json, "seconds_poisson", (PetscReal)f->t[2]));
+  PetscCall(CSJSONAddReal(json, "cpu_seconds_setup", (PetscReal)f->c[0]));
+  PetscCall(CSJSONAddReal(json, "cpu_seconds_eigen", (PetscReal)f->c[1]));
+  PetscCall(CSJSONAddReal(json, "cpu_seconds_poisson", (PetscReal)f->c[2]));
+  PetscCall(CSJSONAddString(json, "problem", f->generalized ? "generalized" : "standard"));
+  PetscCall(CSJSONAddString(json, "dirac_type", f->shell ? "shell" : "aij"));
+  PetscCall(CSJSONAddString(json, "boundary", bnames[f->boundary]));
+  PetscCall(CSJSONAddString(json, "rho_location", f->loc == CS_RHO_NONE ? "none" : (f->loc == CS_RHO_VERTEX ? "vertex" : "face")));
   PetscFunctionReturn(0);
 }
 
@@ -89,14 +91,12 @@ static PetscErrorCode ViewerAddRho(CSViewer v, CSRhoLocation loc, Vec rho)
 }
 
 /* step 0: the input with rho; step 1: the result with rho, |lambda| and Q */
-static PetscErrorCode SpinView(CSSpin spin, CSMesh mesh, Vec x, Vec rho, Vec xnew, const char dir[])
+static PetscErrorCode SpinView(CSSpin spin, CSMesh mesh, Vec x, CSRhoLocation loc, Vec rho, Vec xnew, const char dir[])
 {
-  CSViewer      v;
-  Vec           la, q, la0, lambda;
-  CSRhoLocation loc;
+  CSViewer v;
+  Vec      la, q, la0, lambda;
   PetscFunctionBeginUser;
   PetscCall(CSSpinGetSpinor(spin, &lambda));
-  PetscCall(CSSpinGetRhoLocation(spin, &loc));
   PetscCall(DMCreateGlobalVector(mesh->dmV1, &la));
   PetscCall(DMCreateGlobalVector(mesh->dmF1, &q));
   PetscCall(CSVecBlockNorms(lambda, 4, la)); /* |lambda| per vertex */
@@ -120,16 +120,18 @@ static PetscErrorCode SpinView(CSSpin spin, CSMesh mesh, Vec x, Vec rho, Vec xne
 
 PetscErrorCode CSSpinReport(CSSpin spin, Vec x, Vec rho, Vec xt, CSOutput *out)
 {
-  CSMesh mesh;
-  Vec    xnew;
+  CSMesh    mesh;
+  Vec       xnew;
+  SpinFacts f;
   PetscFunctionBeginUser;
   PetscCall(CSSpinGetMesh(spin, &mesh));
   PetscCall(CSSpinGetSolution(spin, &xnew));
-  PetscCall(SpinLines(spin, mesh->comm));
-  PetscCall(SolverKeys(spin, out->json));
+  PetscCall(GetFacts(spin, &f));
+  PetscCall(SpinLines(&f, mesh->comm));
+  PetscCall(SolverKeys(&f, out->json));
   PetscCall(InputKeys(mesh, rho, xt, xnew, out->json));
   PetscCall(CSOutputAddMeshFacts(out, mesh, xnew, x));
-  if (out->has_viewer) PetscCall(SpinView(spin, mesh, x, rho, xnew, out->viewer_dir));
+  if (out->has_viewer) PetscCall(SpinView(spin, mesh, x, f.loc, rho, xnew, out->viewer_dir));
   PetscCall(CSOutputFinish(out, mesh, xnew));
   PetscFunctionReturn(0);
 }
