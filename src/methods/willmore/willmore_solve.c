@@ -101,7 +101,7 @@ static PetscErrorCode ProjectAtStop(CSWillmoreFlow F)
   Vec       keep;
   PetscFunctionBeginUser;
   if (!F->project_at_stop || (!F->conformal && !F->k) || v < F->ctol) PetscFunctionReturn(0);
-  if (F->ops.evaluate) PetscFunctionReturn(0); /* a kind with its own variables (trianglefield): the projection works on positions */
+  if (CSWFOwnVariables(F)) PetscFunctionReturn(0); /* the projection works on positions, not on a kind's own variables */
   PetscCall(VecDuplicate(F->x, &keep));
   PetscCall(VecCopy(F->x, keep));
   PetscCall(CSWFProject(F, F->x, &ok, &its));
