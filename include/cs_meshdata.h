@@ -14,6 +14,11 @@ typedef struct {
   PetscReal *cr;                      /* NULL, or 3*nf: log length cross ratios c0 (soliman2021 Eq. 3/14), cr[3f+a] =
                                          c0 of the edge opposite corner a of face f, in f's orientation (the flows'
                                          target class, -mesh_cross_ratios); both faces of an edge hold the same value */
+  PetscInt   nuv;                     /* texture coordinates (issue 38): 0 when the input has none */
+  PetscReal *uv;                      /* NULL, or 2*nuv: (u, v) pairs, in the order the file lists them */
+  PetscInt  *fuv;                     /* NULL, or 3*nf: fuv[3f+a] = index into uv of corner a of face f; per face
+                                         corner, so a seam vertex carries different UVs in different faces. Every
+                                         method keeps the connectivity, so the input's UVs are the result's. */
 } CSMeshData;
 
 /* The edges of serial triangle data as groups of half-edges (meshdata_edges.c): half-edge h = 3f + c runs from

@@ -82,6 +82,9 @@ PetscErrorCode CSMeshDataDestroy(CSMeshData *md)
   PetscCall(PetscFree(md->f));
   PetscCall(PetscFree(md->len));
   PetscCall(PetscFree(md->cr));
+  PetscCall(PetscFree(md->uv));
+  PetscCall(PetscFree(md->fuv));
+  md->nuv     = 0;
   md->nv      = 0;
   md->nf      = 0;
   md->name[0] = 0;
@@ -106,6 +109,13 @@ PetscErrorCode CSMeshDataDuplicate(const CSMeshData *in, CSMeshData *out)
   if (in->cr) {
     PetscCall(PetscMalloc1(3 * in->nf, &out->cr));
     PetscCall(PetscArraycpy(out->cr, in->cr, 3 * in->nf));
+  }
+  if (in->fuv) { /* texture coordinates per face corner (issue 38) */
+    out->nuv = in->nuv;
+    PetscCall(PetscMalloc1(2 * in->nuv, &out->uv));
+    PetscCall(PetscMalloc1(3 * in->nf, &out->fuv));
+    PetscCall(PetscArraycpy(out->uv, in->uv, 2 * in->nuv));
+    PetscCall(PetscArraycpy(out->fuv, in->fuv, 3 * in->nf));
   }
   PetscFunctionReturn(0);
 }
