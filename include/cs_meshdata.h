@@ -54,8 +54,9 @@ PETSC_EXTERN PetscErrorCode CSMeshDataDestroy(CSMeshData *md);
 PETSC_EXTERN PetscErrorCode CSMeshDataDuplicate(const CSMeshData *in, CSMeshData *out);
 
 /* Refuses (with md->name, element and reason): NaN/Inf coordinates, indices out of range, repeated-vertex
-   or zero-area faces, duplicate faces, non-manifold edges, pinched vertices, inconsistent orientation.
-   Drops unreferenced vertices with a warning (renumbering f). Fills topo. */
+   or zero-area faces, duplicate faces, non-manifold edges, pinched vertices, inconsistent orientation,
+   non-finite texture coordinates or a face corner's uv index out of range. Drops unreferenced vertices with a
+   warning (renumbering f; fuv and uv unchanged). Fills topo. */
 PETSC_EXTERN PetscErrorCode CSMeshDataValidate(CSMeshData *md, CSTopology *topo);
 
 /* Generators (all outward-oriented). */
@@ -90,7 +91,9 @@ PETSC_EXTERN PetscErrorCode CSMeshDataDisk(PetscReal radius, PetscInt rings, CSM
    md->name gets the suffix "(loop refined 2x)". Serial (rank 0 data). */
 PETSC_EXTERN PetscErrorCode CSMeshDataRefine(CSMeshData *md, PetscInt levels, PetscBool loop);
 /* One such split: the new vertex of edge e is nv + e, in the order the faces first meet the edges; face i becomes
-   faces 4i..4i+3 (the corners, then the middle). */
+   faces 4i..4i+3 (the corners, then the middle). Texture coordinates: a new corner gets the mean of its edge's two
+   corner UVs, one new UV per edge, or two on a seam edge (its faces give its ends different uv indices), appended
+   to uv in the order the half-edges first meet them. */
 PETSC_EXTERN PetscErrorCode CSMeshDataSplitOnce(CSMeshData *md, PetscBool loop);
 
 /* Isotropic remeshing in place (CGAL Polygon_mesh_processing::isotropic_remeshing, src/mesh/meshdata_remesh.c) to

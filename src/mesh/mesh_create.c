@@ -356,6 +356,11 @@ static PetscErrorCode OrientOutward(CSMeshData *md, const CSTopology *topo, Pets
     PetscInt t       = md->f[3 * f + 1];
     md->f[3 * f + 1] = md->f[3 * f + 2];
     md->f[3 * f + 2] = t;
+    if (md->fuv) { /* the corners' UVs go with them */
+      t                  = md->fuv[3 * f + 1];
+      md->fuv[3 * f + 1] = md->fuv[3 * f + 2];
+      md->fuv[3 * f + 2] = t;
+    }
     if (md->len) { /* corners 1 and 2 swapped: so are the edges opposite them */
       PetscReal l        = md->len[3 * f + 1];
       md->len[3 * f + 1] = md->len[3 * f + 2];

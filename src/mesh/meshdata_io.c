@@ -44,10 +44,7 @@ PetscErrorCode CSMeshDataRead(const char path[], CSMeshData *md)
     SETERRQ(PETSC_COMM_SELF, ierr ? ierr : PETSC_ERR_FILE_UNEXPECTED, "%s", r.msg);
   }
   PetscCall(PetscFree(r.buf));
-  md->nv = r.nv;
-  md->nf = r.nf;
-  md->x  = r.x;
-  md->f  = r.f;
+  PetscCall(CSReaderTake(&r, md));
   PetscCall(PetscStrncpy(md->name, name, sizeof(md->name))); /* printed and written into headers: sanitised */
   PetscFunctionReturn(0);
 }

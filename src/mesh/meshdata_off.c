@@ -95,9 +95,12 @@ PetscErrorCode CSMeshDataReadOFF(Reader *r)
   PetscFunctionReturn(0);
 }
 
+/* OFF has no texture coordinates: a textured mesh is written without them, with a warning (not refused: -o_input
+   of a textured mesh to .off is a plain geometry export) */
 PetscErrorCode CSMeshDataWriteOFF(FILE *fp, const CSMeshData *md)
 {
   PetscFunctionBeginUser;
+  if (md->fuv) PetscCall(PetscPrintf(PETSC_COMM_SELF, "Warning: %s: OFF has no texture coordinates: its %" PetscInt_FMT " UVs are not written (write .obj or .ply to keep them)\n", md->name, md->nuv));
   fprintf(fp, "OFF\n# %s (written by confsurf)\n%" PetscInt_FMT " %" PetscInt_FMT " 0\n", md->name, md->nv, md->nf);
   for (PetscInt i = 0; i < md->nv; i++) fprintf(fp, "%.17g %.17g %.17g\n", (double)md->x[3 * i], (double)md->x[3 * i + 1], (double)md->x[3 * i + 2]);
   for (PetscInt i = 0; i < md->nf; i++) fprintf(fp, "3 %" PetscInt_FMT " %" PetscInt_FMT " %" PetscInt_FMT "\n", md->f[3 * i], md->f[3 * i + 1], md->f[3 * i + 2]);

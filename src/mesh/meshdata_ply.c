@@ -1,6 +1,8 @@
 /* PLY: ascii or binary_little_endian. The header describes every element; the vertex element's x y z and the
    face element's vertex_indices (or vertex_index) list are kept, every other property and element is read
-   and skipped according to its declared type. */
+   and skipped according to its declared type. Texture coordinates (issue 38): per vertex, the first pair of
+   u v, s t or texture_u texture_v (then fuv = f); per face corner, the face list texcoord of 6 values u0 v0 u1 v1
+   u2 v2 (then uv has 3 nf pairs and fuv[h] = h), which wins when a file has both. */
 #include "meshdata_reader.h"
 #include <errno.h>
 #include <stdarg.h>
@@ -43,13 +45,20 @@ static const struct {
 };
 static const int PlyTypeSize[] = {0, 1, 1, 2, 2, 4, 4, 4, 8};
 
+enum {
+  PLY_ROLE_X = 0, /* 0, 1, 2: x, y, z of the vertex element */
+  PLY_ROLE_FACE = 3, /* the face's vertex list */
+  PLY_ROLE_U = 4, /* 4, 5: u, v of the vertex element */
+  PLY_ROLE_TEXCOORD = 6 /* the face's list of 6 texture coordinates */
+};
+
 #define PLY_MAX_ELEMS 16
 #define PLY_MAX_PROPS 64
 
 typedef struct {
   char    name[64];
   PlyType type, count_type; /* count_type != PLY_NONE: a list */
-  int     role;             /* 0,1,2 = x,y,z of the vertex element; 3 = face vertex list; -1 skipped */
+  int     role;             /* PLY_ROLE_*: what the property is kept as; -1 skipped */
 } PlyProp;
 
 typedef struct {
@@ -292,44 +301,164 @@ static double PlyMinimumBytes(const PlyHeader *h)
   return h->binary ? total : total - 1; /* the last ascii value may end the file */
 }
 
+/* the vertex element's first pair of scalar texture coordinate properties (u v, s t, texture_u texture_v) gets the
+   roles PLY_ROLE_U, PLY_ROLE_U + 1 */
+static void PlyVertexUV(PlyElem *el)
+{
+  static const char *const pairs[][2] = {
+    {"u",         "v"        },
+    {"s",         "t"        },
+    {"texture_u", "texture_v"}
+  };
+  for (size_t k = 0; k < sizeof(pairs) / sizeof(pairs[0]); k++) {
+    PlyProp *found[2] = {NULL, NULL};
+    for (PetscInt q = 0; q < el->nprops; q++)
+      for (int d = 0; d < 2; d++)
+        if (el->props[q].count_type == PLY_NONE && !found[d] && !strcmp(el->props[q].name, pairs[k][d])) found[d] = &el->props[q];
+    if (found[0] && found[1]) {
+      found[0]->role = PLY_ROLE_U;
+      found[1]->role = PLY_ROLE_U + 1;
+      return;
+    }
+  }
+}
+
+static void PlyVertexRoles(Reader *r, PlyElem *el, PetscInt line)
+{
+  int found[3] = {0, 0, 0};
+  for (PetscInt q = 0; q < el->nprops; q++) {
+    PlyProp *p = &el->props[q];
+    for (int d = 0; d < 3; d++)
+      if (p->count_type == PLY_NONE && !found[d] && p->name[0] == "xyz"[d] && !p->name[1]) {
+        p->role  = PLY_ROLE_X + d;
+        found[d] = 1;
+      }
+  }
+  if (!found[0] || !found[1] || !found[2]) CSReaderFail(r, "%s:%" PetscInt_FMT ": the vertex element lacks a scalar x, y or z property", r->path, line);
+  PlyVertexUV(el);
+}
+
+/* the vertex list (vertex_indices or vertex_index) and the texcoord list; *texcoord says whether there is one */
+static void PlyFaceRoles(Reader *r, PlyElem *el, PetscInt line, PetscBool *texcoord)
+{
+  PetscBool ok = PETSC_FALSE;
+  *texcoord    = PETSC_FALSE;
+  for (PetscInt q = 0; q < el->nprops && !r->msg[0]; q++) {
+    PlyProp *p = &el->props[q];
+    if (p->count_type == PLY_NONE) continue;
+    if (!ok && (!strcmp(p->name, "vertex_indices") || !strcmp(p->name, "vertex_index"))) {
+      if (!PlyIsInteger(p->type)) CSReaderFail(r, "%s:%" PetscInt_FMT ": the face list %s has a non-integer item type", r->path, line, p->name);
+      p->role = PLY_ROLE_FACE;
+      ok      = PETSC_TRUE;
+    } else if (!*texcoord && !strcmp(p->name, "texcoord")) {
+      p->role   = PLY_ROLE_TEXCOORD;
+      *texcoord = PETSC_TRUE;
+    }
+  }
+  if (!ok) CSReaderFail(r, "%s:%" PetscInt_FMT ": the face element has no vertex_indices list", r->path, line);
+}
+
 /* Marks the properties kept (roles) and checks the header has what a triangle mesh needs. */
 static void PlyAssignRoles(Reader *r, PlyHeader *h, PetscInt line, PlyElem **ev, PlyElem **ef)
 {
+  PetscBool texcoord = PETSC_FALSE;
   *ev = *ef = NULL;
-  for (PetscInt e = 0; e < h->nelem; e++) {
+  for (PetscInt e = 0; e < h->nelem && !r->msg[0]; e++) {
     PlyElem *el = &h->elem[e];
     if (!*ev && !strcmp(el->name, "vertex")) {
-      int found[3] = {0, 0, 0};
-      *ev          = el;
-      for (PetscInt q = 0; q < el->nprops; q++) {
-        PlyProp *p = &el->props[q];
-        for (int d = 0; d < 3; d++)
-          if (p->count_type == PLY_NONE && !found[d] && p->name[0] == "xyz"[d] && !p->name[1]) {
-            p->role  = d;
-            found[d] = 1;
-          }
-      }
-      if (!found[0] || !found[1] || !found[2]) CSReaderFail(r, "%s:%" PetscInt_FMT ": the vertex element lacks a scalar x, y or z property", r->path, line);
+      *ev = el;
+      PlyVertexRoles(r, el, line);
     } else if (!*ef && !strcmp(el->name, "face")) {
       *ef = el;
-      for (PetscInt q = 0; q < el->nprops; q++) {
-        PlyProp *p = &el->props[q];
-        if (p->count_type != PLY_NONE && (!strcmp(p->name, "vertex_indices") || !strcmp(p->name, "vertex_index"))) {
-          if (!PlyIsInteger(p->type)) CSReaderFail(r, "%s:%" PetscInt_FMT ": the face list %s has a non-integer item type", r->path, line, p->name);
-          p->role = 3;
-          break;
-        }
-      }
-      if (!r->msg[0]) {
-        PetscBool ok = PETSC_FALSE;
-        for (PetscInt q = 0; q < el->nprops; q++) ok = (PetscBool)(ok || el->props[q].role == 3);
-        if (!ok) CSReaderFail(r, "%s:%" PetscInt_FMT ": the face element has no vertex_indices list", r->path, line);
-      }
+      PlyFaceRoles(r, el, line, &texcoord);
     }
   }
+  if (r->msg[0]) return;
   if (!*ev) CSReaderFail(r, "%s:%" PetscInt_FMT ": no vertex element", r->path, line);
   else if (!*ef) CSReaderFail(r, "%s:%" PetscInt_FMT ": no face element", r->path, line);
   else if (!(*ef)->count) CSReaderFail(r, "%s:%" PetscInt_FMT ": no faces (the header says 0)", r->path, line);
+  else if (texcoord) /* per corner wins over per vertex */
+    for (PetscInt q = 0; q < (*ev)->nprops; q++)
+      if ((*ev)->props[q].role >= PLY_ROLE_U) (*ev)->props[q].role = -1;
+}
+
+/* The arrays of the kept data; UVs when the header has them (per vertex: nuv = nv; per corner: nuv = 3 nf) */
+static PetscErrorCode PlyAllocate(Reader *r, const PlyElem *ev, const PlyElem *ef, PetscBool *vuv)
+{
+  PetscBool fuv = PETSC_FALSE;
+  PetscFunctionBeginUser;
+  *vuv  = PETSC_FALSE;
+  r->nv = ev->count;
+  r->nf = ef->count;
+  PetscCall(PetscMalloc1(3 * r->nv, &r->x));
+  PetscCall(PetscMalloc1(3 * r->nf, &r->f));
+  for (PetscInt q = 0; q < ev->nprops; q++) *vuv = (PetscBool)(*vuv || ev->props[q].role == PLY_ROLE_U);
+  for (PetscInt q = 0; q < ef->nprops; q++) fuv = (PetscBool)(fuv || ef->props[q].role == PLY_ROLE_TEXCOORD);
+  if (!*vuv && !fuv) PetscFunctionReturn(0);
+  r->nuv = fuv ? 3 * r->nf : r->nv;
+  PetscCall(PetscMalloc1(2 * r->nuv, &r->uv));
+  PetscCall(PetscMalloc1(3 * r->nf, &r->fuv));
+  if (fuv)
+    for (PetscInt h = 0; h < 3 * r->nf; h++) r->fuv[h] = h;
+  PetscFunctionReturn(0);
+}
+
+/* a scalar of entry k of the vertex element: a coordinate or a texture coordinate */
+static void PlyKeepScalar(PlySource *src, const PlyProp *p, PetscInt k, double dv)
+{
+  Reader *r = src->r;
+  if (p->role < 0) return;
+  if (PetscIsInfOrNanReal((PetscReal)dv)) PlyFail(src, "non-finite %s (%s)", p->role >= PLY_ROLE_U ? "texture coordinate" : "coordinate", PetscIsNanReal((PetscReal)dv) ? "NaN" : "Inf");
+  else if (p->role >= PLY_ROLE_U) r->uv[2 * k + p->role - PLY_ROLE_U] = (PetscReal)dv;
+  else r->x[3 * k + p->role] = (PetscReal)dv;
+}
+
+/* the length n of a list: not negative; 3 vertices, 6 texture coordinates when kept; 1 after recording an error */
+static int PlyListLength(PlySource *src, const PlyProp *p, long long n)
+{
+  if (n < 0) PlyFail(src, "negative length of the list %s", p->name);
+  else if (p->role == PLY_ROLE_FACE && n != 3) PlyFail(src, "face with %lld vertices (only triangles are supported)", n);
+  else if (p->role == PLY_ROLE_TEXCOORD && n != 6) PlyFail(src, "texcoord list with %lld values (6 expected: u v of each corner of a triangle)", n);
+  return src->r->msg[0] ? 1 : 0;
+}
+
+/* item i of a kept list of face k */
+static void PlyKeepItem(PlySource *src, const PlyProp *p, PetscInt k, long long i, double dv, long long iv)
+{
+  Reader *r = src->r;
+  if (p->role == PLY_ROLE_FACE) {
+    if (iv < 0 || iv >= r->nv) PlyFail(src, "vertex index %lld out of range [0, %" PetscInt_FMT ")", iv, r->nv);
+    else r->f[3 * k + i] = (PetscInt)iv;
+  } else if (p->role == PLY_ROLE_TEXCOORD) {
+    if (PetscIsInfOrNanReal((PetscReal)dv)) PlyFail(src, "non-finite texture coordinate (%s)", PetscIsNanReal((PetscReal)dv) ? "NaN" : "Inf");
+    else r->uv[6 * k + i] = (PetscReal)dv;
+  }
+}
+
+/* every entry of element el: its kept values stored, the others read and skipped */
+static void PlyReadElement(PlySource *src, const PlyElem *el)
+{
+  Reader *r   = src->r;
+  src->ename  = el->name;
+  src->count  = el->count;
+  for (PetscInt k = 0; k < el->count && el->nprops && !r->msg[0]; k++) { /* an element without properties has no data */
+    src->k = k;
+    for (PetscInt q = 0; q < el->nprops && !r->msg[0]; q++) {
+      const PlyProp *p = &el->props[q];
+      double         dv;
+      long long      iv, n;
+      if (p->count_type == PLY_NONE) {
+        if (!PlyRead(src, p->type, &dv, &iv)) PlyKeepScalar(src, p, k, dv);
+        continue;
+      }
+      if (PlyRead(src, p->count_type, &dv, &n)) break;
+      if (PlyListLength(src, p, n)) break;
+      for (long long i = 0; i < n && !r->msg[0]; i++) {
+        if (PlyRead(src, p->type, &dv, &iv)) break;
+        PlyKeepItem(src, p, k, i, dv, iv);
+      }
+    }
+  }
 }
 
 PetscErrorCode CSMeshDataReadPLY(Reader *r)
@@ -339,6 +468,7 @@ PetscErrorCode CSMeshDataReadPLY(Reader *r)
   PlyElem   *ev = NULL, *ef = NULL;
   PlySource  src;
   char      *data;
+  PetscBool  vuv;
 
   PetscFunctionBeginUser;
   PetscCall(PetscCalloc1(1, &h));
@@ -349,10 +479,7 @@ PetscErrorCode CSMeshDataReadPLY(Reader *r)
     PetscCall(PetscFree(h));
     PetscFunctionReturn(0);
   }
-  r->nv = ev->count;
-  r->nf = ef->count;
-  PetscCall(PetscMalloc1(3 * r->nv, &r->x));
-  PetscCall(PetscMalloc1(3 * r->nf, &r->f));
+  PetscCall(PlyAllocate(r, ev, ef, &vuv));
   PetscCall(PetscMemzero(&src, sizeof(src)));
   src.r      = r;
   src.binary = h->binary;
@@ -360,43 +487,8 @@ PetscErrorCode CSMeshDataReadPLY(Reader *r)
   src.end    = (const unsigned char *)(r->buf + r->len);
   src.L      = L;
   src.L.line = L.line + 1; /* the data starts on the line after end_header */
-  for (PetscInt e = 0; e < h->nelem && !r->msg[0]; e++) {
-    PlyElem *el = &h->elem[e];
-    src.ename   = el->name;
-    src.count   = el->count;
-    for (PetscInt k = 0; k < el->count && el->nprops && !r->msg[0]; k++) { /* an element without properties has no data */
-      src.k = k;
-      for (PetscInt q = 0; q < el->nprops && !r->msg[0]; q++) {
-        const PlyProp *p = &el->props[q];
-        double         dv;
-        long long      iv, n;
-        if (p->count_type == PLY_NONE) {
-          if (PlyRead(&src, p->type, &dv, &iv)) break;
-          if (el == ev && p->role >= 0) {
-            if (PetscIsInfOrNanReal((PetscReal)dv)) PlyFail(&src, "non-finite coordinate (%s)", PetscIsNanReal((PetscReal)dv) ? "NaN" : "Inf");
-            else r->x[3 * k + p->role] = (PetscReal)dv;
-          }
-          continue;
-        }
-        if (PlyRead(&src, p->count_type, &dv, &n)) break;
-        if (n < 0) {
-          PlyFail(&src, "negative length of the list %s", p->name);
-          break;
-        }
-        if (el == ef && p->role == 3 && n != 3) {
-          PlyFail(&src, "face with %lld vertices (only triangles are supported)", n);
-          break;
-        }
-        for (long long i = 0; i < n && !r->msg[0]; i++) {
-          if (PlyRead(&src, p->type, &dv, &iv)) break;
-          if (el == ef && p->role == 3) {
-            if (iv < 0 || iv >= r->nv) PlyFail(&src, "vertex index %lld out of range [0, %" PetscInt_FMT ")", iv, r->nv);
-            else r->f[3 * k + i] = (PetscInt)iv;
-          }
-        }
-      }
-    }
-  }
+  for (PetscInt e = 0; e < h->nelem && !r->msg[0]; e++) PlyReadElement(&src, &h->elem[e]);
+  if (!r->msg[0] && vuv) PetscCall(PetscArraycpy(r->fuv, r->f, 3 * r->nf)); /* UVs per vertex */
   PetscCall(PetscFree(h));
   PetscFunctionReturn(0);
 }
@@ -406,27 +498,52 @@ static void StoreLE(unsigned char *p, uint64_t u, int n)
   for (int i = 0; i < n; i++, u >>= 8) p[i] = (unsigned char)(u & 0xff);
 }
 
-/* binary_little_endian, double x y z, list uchar int vertex_indices: exact and compact */
+static void StoreDouble(unsigned char *p, PetscReal v)
+{
+  double   d = (double)v;
+  uint64_t u;
+  memcpy(&u, &d, sizeof(u));
+  StoreLE(p, u, 8);
+}
+
+/* UVs per vertex: one per vertex and each face corner takes its vertex's */
+static PetscBool UVPerVertex(const CSMeshData *md)
+{
+  if (!md->fuv || md->nuv != md->nv) return PETSC_FALSE;
+  for (PetscInt h = 0; h < 3 * md->nf; h++)
+    if (md->fuv[h] != md->f[h]) return PETSC_FALSE;
+  return PETSC_TRUE;
+}
+
+/* binary_little_endian, double x y z, list uchar int vertex_indices: exact and compact. Texture coordinates as
+   doubles: per vertex (double u v) when each vertex has one, else per face corner (list uchar double texcoord) */
 PetscErrorCode CSMeshDataWritePLY(FILE *fp, const CSMeshData *md, PetscBool *ok)
 {
   unsigned char *b, *p;
-  size_t         n = (size_t)md->nv * 24 + (size_t)md->nf * 13;
+  PetscBool      vuv = UVPerVertex(md), fuv = (PetscBool)(md->fuv && !vuv);
+  size_t         vb = vuv ? 40 : 24, fb = fuv ? 13 + 49 : 13, n = (size_t)md->nv * vb + (size_t)md->nf * fb;
 
   PetscFunctionBeginUser;
   fprintf(fp, "ply\nformat binary_little_endian 1.0\ncomment %s (written by confsurf)\n", md->name);
   fprintf(fp, "element vertex %" PetscInt_FMT "\nproperty double x\nproperty double y\nproperty double z\n", md->nv);
-  fprintf(fp, "element face %" PetscInt_FMT "\nproperty list uchar int vertex_indices\nend_header\n", md->nf);
+  if (vuv) fprintf(fp, "property double u\nproperty double v\n");
+  fprintf(fp, "element face %" PetscInt_FMT "\nproperty list uchar int vertex_indices\n", md->nf);
+  if (fuv) fprintf(fp, "property list uchar double texcoord\n");
+  fprintf(fp, "end_header\n");
   PetscCall(PetscMalloc1(n, &b));
   p = b;
-  for (PetscInt i = 0; i < 3 * md->nv; i++, p += 8) {
-    double   d = (double)md->x[i];
-    uint64_t u;
-    memcpy(&u, &d, sizeof(u));
-    StoreLE(p, u, 8);
+  for (PetscInt i = 0; i < md->nv; i++) {
+    for (int d = 0; d < 3; d++, p += 8) StoreDouble(p, md->x[3 * i + d]);
+    if (vuv)
+      for (int d = 0; d < 2; d++, p += 8) StoreDouble(p, md->uv[2 * i + d]);
   }
   for (PetscInt i = 0; i < md->nf; i++) {
     *p++ = 3;
     for (int k = 0; k < 3; k++, p += 4) StoreLE(p, (uint64_t)(uint32_t)(int32_t)md->f[3 * i + k], 4);
+    if (!fuv) continue;
+    *p++ = 6;
+    for (int k = 0; k < 3; k++)
+      for (int d = 0; d < 2; d++, p += 8) StoreDouble(p, md->uv[2 * md->fuv[3 * i + k] + d]);
   }
   *ok = (PetscBool)(fwrite(b, 1, n, fp) == n);
   PetscCall(PetscFree(b));

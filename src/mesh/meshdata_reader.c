@@ -20,6 +20,25 @@ PetscErrorCode CSReaderFree(Reader *r)
   PetscCall(PetscFree(r->buf));
   PetscCall(PetscFree(r->x));
   PetscCall(PetscFree(r->f));
+  PetscCall(PetscFree(r->uv));
+  PetscCall(PetscFree(r->fuv));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CSReaderTake(Reader *r, CSMeshData *md)
+{
+  PetscFunctionBeginUser;
+  md->nv  = r->nv;
+  md->nf  = r->nf;
+  md->x   = r->x;
+  md->f   = r->f;
+  md->nuv = r->fuv ? r->nuv : 0;
+  md->uv  = r->fuv ? r->uv : NULL;
+  md->fuv = r->fuv;
+  if (!r->fuv) PetscCall(PetscFree(r->uv)); /* texture coordinates no face refers to are no texture */
+  r->x = r->uv = NULL;
+  r->f = r->fuv = NULL;
+  r->nuv        = 0;
   PetscFunctionReturn(0);
 }
 

@@ -19,12 +19,17 @@ typedef struct {
   PetscInt    nv, nf;
   PetscReal  *x;
   PetscInt   *f;
+  PetscInt    nuv;  /* texture coordinates (issue 38): 0 when the file has none */
+  PetscReal  *uv;   /* 2*nuv */
+  PetscInt   *fuv;  /* 3*nf, per face corner */
   char        msg[CS_MSG_LEN]; /* the first error, empty while the file is fine */
 } Reader;
 
 /* Records the first error only: later ones are consequences. */
 PETSC_INTERN void           CSReaderFail(Reader *r, const char fmt[], ...);
 PETSC_INTERN PetscErrorCode CSReaderFree(Reader *r);
+/* Moves what a successful parse read (positions, faces, UVs) into md, leaving r without them. */
+PETSC_INTERN PetscErrorCode CSReaderTake(Reader *r, CSMeshData *md);
 
 /* Line and token helpers (text formats). Lines are cut in place; '\r' counts as blank (CRLF files). */
 typedef struct {

@@ -5,7 +5,10 @@
    midpoint: the new vertices at the edge midpoints, the old ones kept (the piecewise-flat shape is unchanged).
    loop: Loop subdivision (Loop 1987, Warren's weights): edge points 3/8 (a + b) + 1/8 (c + d), vertex points
    (1 - n beta) v + beta sum of neighbours with beta = 3/16 (n = 3), 3/(8n) (n > 3). Boundary edges get their
-   midpoint and boundary vertices stay where they are (a Dirichlet boundary keeps its curve's vertices). */
+   midpoint and boundary vertices stay where they are (a Dirichlet boundary keeps its curve's vertices).
+   Texture coordinates (issue 38), both types: the midpoint of the edge's UVs in each face, the old corners' UVs
+   kept. For Loop subdivision that is linear interpolation of the UVs, not Loop's rule: the texture map of the
+   refined mesh is the coarse one's, piecewise linear on the coarse faces, which is what a texture means. */
 #include "cs_meshdata.h"
 #include <stdio.h>
 
@@ -69,6 +72,42 @@ static PetscErrorCode LoopPositions(const CSMeshData *md, const PetscInt *mid, P
   PetscFunctionReturn(0);
 }
 
+/* The new UVs: midt[h] = index of the UV of half-edge h's new corner, numbered from md->nuv on. The two half-edges
+   of an edge share it when they give the edge's ends the same uv indices (no seam there), else each has its own. */
+static PetscErrorCode SplitUV(const CSMeshData *md, const PetscInt *mid, PetscInt ne, PetscInt *midt, PetscInt *nuv_out, PetscReal **uv_out)
+{
+  PetscInt   nh = 3 * md->nf, *first, n = md->nuv;
+  PetscReal *uv;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscMalloc1(ne, &first));
+  for (PetscInt e = 0; e < ne; e++) first[e] = -1;
+  for (PetscInt h = 0; h < nh; h++) {
+    PetscInt e = mid[h] - md->nv, g = first[e];
+    if (g >= 0 && md->fuv[h] == md->fuv[CSHalfedgeNext(g)] && md->fuv[CSHalfedgeNext(h)] == md->fuv[g]) midt[h] = midt[g];
+    else midt[h] = n++;
+    if (g < 0) first[e] = h;
+  }
+  PetscCall(PetscFree(first));
+  PetscCall(PetscMalloc1(2 * n, &uv));
+  PetscCall(PetscArraycpy(uv, md->uv, 2 * md->nuv));
+  for (PetscInt h = 0; h < nh; h++)
+    for (int d = 0; d < 2; d++) uv[2 * midt[h] + d] = 0.5 * (md->uv[2 * md->fuv[h] + d] + md->uv[2 * md->fuv[CSHalfedgeNext(h)] + d]);
+  *nuv_out = n;
+  *uv_out  = uv;
+  PetscFunctionReturn(0);
+}
+
+/* The 4 faces of each face (the corners, then the middle) from the corners t and the new corners m of each face
+   (m[k] on the edge t[k] t[k+1]): the vertex indices with (t, m) = (f, mid), the uv indices with (fuv, midt) */
+static void SplitFaces(PetscInt nf, const PetscInt *t, const PetscInt *m, PetscInt *out)
+{
+  for (PetscInt i = 0; i < nf; i++, t += 3, m += 3) {
+    PetscInt n[12] = {t[0], m[0], m[2], m[0], t[1], m[1], m[2], m[1], t[2], m[0], m[1], m[2]};
+    for (int k = 0; k < 12; k++) out[12 * i + k] = n[k];
+  }
+}
+
 /* One 1-to-4 split of md in place (also the icosphere generator's split, with its new vertices projected). */
 PetscErrorCode CSMeshDataSplitOnce(CSMeshData *md, PetscBool loop)
 {
@@ -88,10 +127,20 @@ PetscErrorCode CSMeshDataSplitOnce(CSMeshData *md, PetscBool loop)
       for (int d = 0; d < 3; d++) x[3 * mid[h] + d] = 0.5 * (md->x[3 * a + d] + md->x[3 * b + d]);
     }
   }
-  for (PetscInt i = 0; i < nf; i++) {
-    const PetscInt *t = md->f + 3 * i, *m = mid + 3 * i; /* m[k] is the new vertex of t[k] t[k+1] */
-    PetscInt        n[12] = {t[0], m[0], m[2], m[0], t[1], m[1], m[2], m[1], t[2], m[0], m[1], m[2]};
-    PetscCall(PetscArraycpy(f + 12 * i, n, 12));
+  SplitFaces(nf, md->f, mid, f);
+  if (md->fuv) {
+    PetscInt  *midt, *fuv, nuv = 0;
+    PetscReal *uv = NULL;
+    PetscCall(PetscMalloc1(3 * nf, &midt));
+    PetscCall(PetscMalloc1(12 * nf, &fuv));
+    PetscCall(SplitUV(md, mid, ne, midt, &nuv, &uv));
+    SplitFaces(nf, md->fuv, midt, fuv);
+    PetscCall(PetscFree(midt));
+    PetscCall(PetscFree(md->uv));
+    PetscCall(PetscFree(md->fuv));
+    md->fuv = fuv;
+    md->uv  = uv;
+    md->nuv = nuv;
   }
   PetscCall(PetscFree(mid));
   PetscCall(PetscFree(md->x));

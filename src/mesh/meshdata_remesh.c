@@ -108,6 +108,7 @@ PetscErrorCode CSMeshDataRemesh(CSMeshData *md, CSTopology *topo, PetscInt faces
   char           name[PETSC_MAX_PATH_LEN + 64];
 
   PetscFunctionBeginUser;
+  PetscCheck(!md->fuv, PETSC_COMM_SELF, PETSC_ERR_ARG_INCOMP, "-mesh_remesh of %s: the input has texture coordinates (%" PetscInt_FMT " UVs), and CGAL's isotropic remeshing makes new vertices and faces that no UV transfer here would give UVs: not remeshed (remesh a copy without vt/texcoord, or use -mesh_refine, which interpolates them)", md->name, md->nuv);
   PetscCheck(!md->len && !md->cr, PETSC_COMM_SELF, PETSC_ERR_ARG_INCOMP, "-mesh_remesh of %s: the input carries a target class given for its own edges (-mesh_lengths, -mesh_cross_ratios, -gen lattice, -gen_spike_round_class): not remeshed", md->name);
   if (faces > 0) h = EdgeOfFaces(A, (PetscReal)faces);
   est = FacesOfEdge(A, h);

@@ -89,6 +89,17 @@ static void CheckFaces(const CSMeshData *md, Work *w)
   }
 }
 
+/* Texture coordinates (issue 38): finite, and every face corner's index into them in range. Unreferenced UVs
+   are kept (the vt list is written back as it was read). */
+static void CheckUV(const CSMeshData *md, Work *w)
+{
+  if (!md->fuv) return;
+  for (PetscInt t = 0; t < 2 * md->nuv && !w->msg[0]; t++)
+    if (PetscIsInfOrNanReal(md->uv[t])) Fail(w, "%s: texture coordinate %" PetscInt_FMT " has a non-finite %c (%s)", md->name, t / 2, "uv"[t % 2], PetscIsNanReal(md->uv[t]) ? "NaN" : "Inf");
+  for (PetscInt h = 0; h < 3 * md->nf && !w->msg[0]; h++)
+    if (md->fuv[h] < 0 || md->fuv[h] >= md->nuv) Fail(w, "%s: " FACEFMT ", corner %" PetscInt_FMT ": texture coordinate index %" PetscInt_FMT " out of range [0, %" PetscInt_FMT ")", md->name, FACEARG(md, h / 3), h % 3, md->fuv[h], md->nuv);
+}
+
 /* Groups the half-edges by undirected edge (CSMeshDataEdgesCreate), and the out-going half-edges per vertex. */
 static PetscErrorCode BuildEdges(const CSMeshData *md, Work *w)
 {
@@ -202,7 +213,8 @@ static void CountLoopsAndComponents(const CSMeshData *md, Work *w, PetscInt *loo
     if (par[i] == i) (*comps)++;
 }
 
-/* Drops vertices no face uses, keeping the order of the others. */
+/* Drops vertices no face uses, keeping the order of the others. The texture coordinates are indexed per face
+   corner, not per vertex: fuv and uv stay as they are. */
 static PetscErrorCode DropUnreferenced(CSMeshData *md, PetscInt *dropped)
 {
   PetscInt *map, n = 0;
@@ -237,6 +249,7 @@ PetscErrorCode CSMeshDataValidate(CSMeshData *md, CSTopology *topo)
   PetscCall(PetscMemzero(topo, sizeof(*topo)));
   PetscCheck(md->nf > 0 && md->nv > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%s: no faces (%" PetscInt_FMT " vertices, %" PetscInt_FMT " faces)", md->name, md->nv, md->nf);
   CheckFaces(md, &w);
+  CheckUV(md, &w);
   if (!w.msg[0]) {
     PetscCall(BuildEdges(md, &w));
     CheckEdges(md, &w, &E, &B);
