@@ -50,12 +50,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     CSMeshData md;
     CSTopology topo;
     memset(&md, 0, sizeof(md));
-    md.nv = r.nv;
-    md.nf = r.nf;
-    md.x  = r.x;
-    md.f  = r.f;
-    r.x = NULL;
-    r.f = NULL;
+    (void)CSReaderTake(&r, &md); /* positions, faces and texture coordinates, as CSMeshDataRead */
     strcpy(md.name, r.path);
     (void)CSMeshDataValidate(&md, &topo);
     (void)CSMeshDataDestroy(&md);
