@@ -5,6 +5,7 @@
 # (b) a checkpointed cgd run resumed (the resume rereads -mesh) writes the same vt and f lines;
 # (c) PLY: OBJ -> PLY (the face list texcoord, seams) -> OBJ keeps every corner's UV (as text); the per-vertex s t of
 #     tests/data/tetra_uv_vertex.ply are written as vertex u v and read back the same; texcoord wins over texture_u v;
+#     an inward copy of the sphere is flipped outward with each corner's UV;
 # (d) -mesh_refine 1 (midpoint and loop): every new corner's UV is the mean of its edge's two corner UVs in that face
 #     (so a seam edge gets two, one per side), the old corners keep theirs;
 # (e) -mesh_remesh of a textured input refused; -o_input .off warns that it drops the UVs;
@@ -69,6 +70,14 @@ check("binary texcoord (float) over texture_u v: the corners of tetra_uv.obj", c
 sys.exit(bad)
 PY
 fi
+# (c') an inward copy of $M (corners 1 and 2 of each face swapped) is flipped outward with its UVs: -o = $M's lines
+if [ "$NP" = 1 ]; then
+  awk '$1 == "f" { print $1, $2, $4, $3; next } { print }' $M > "$TMP/inward.obj"
+  run -task info -mesh "$TMP/inward.obj" -o "$TMP/outward.obj"
+  grep -q "flipped to outward" "$TMP/log" || { echo "BAD: the inward copy was not flipped"; exit 1; }
+  diff <(grep -E '^(vt|f) ' $M) <(grep -E '^(vt|f) ' "$TMP/outward.obj") > /dev/null || { echo "BAD: the flip lost a corner's UV"; exit 1; }
+  echo "ok  an inward copy flipped outward: every corner keeps its UV (the vt and f lines of the outward input)"
+fi
 # (d) refinement: new corners at the UV midpoints of their face's edge
 types="midpoint loop"; [ "$NP" = 1 ] || types=midpoint
 for t in $types; do
@@ -115,7 +124,7 @@ fi
 bad() { # file line reason
   local out; out=$(EXPECT="tests/data/$1:$2: $3" expect_fail $MPIEXEC "$CS_BIN" -task info -mesh "tests/data/$1") || { echo "$out"; exit 1; }
   [ "$(grep -c "error:" <<< "$out")" = 1 ] || { echo "$out"; echo "BAD: $1: not one error line"; exit 1; }
-  echo "ok  $1 refused: line $2, $3"
+  echo "ok  $1 refused: line $2, ${3//\\/}"
 }
 bad bad_uv_mixed_faces.obj 9 "face without vt indices \(v or v//vn\) but the first face, on line 8, has them"
 bad bad_uv_texcoord_count.ply 14 "texcoord list with 4 values \(6 expected"
