@@ -10,6 +10,9 @@
              (the multiplier of the volume, the mean of H) solved by Newton so that V(f') = V(input) to round-off
      isobend Willmore flow of the isometric bending model (Wardetzky et al. 2007): (M_0 + tau K_0) f' = M_0 f,
              K_0 = L_0 M_0^-1 L_0, the Hessian of W under isometric deformations, constant: factored once
+             (the isometry is the model's assumption, not a constraint of the flow: all edge lengths kept would leave
+             a generic closed mesh only rigid motions, Gluck 1975; the flow leaves the model's range and W, not
+             E_b, rises again after a while: the iterates tend to K_0's lowest eigenvector in every coordinate)
    after each step f' is recentred and rescaled to the input's area (as Kazhdan et al. do for cmcf); vmcf is only
    recentred (its volume is the constraint; a translation keeps it).
    L = the positive cotan Laplacian, M = the barycentric vertex areas, both at the current f (L_0, M_0 at the input).
