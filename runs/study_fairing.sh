@@ -4,7 +4,9 @@
 # level LEVEL). Rows:
 #   emcf   explicit mean curvature flow          ebilap explicit bi-Laplacian flow (Taubin)
 #   imcf   implicit mean curvature flow (Desbrun) ibilap implicit bi-Laplacian flow (backward Euler)
-#   cmcf   conformalized MCF (Kazhdan et al.)     (the five baselines: src/methods/willmore/impls/fairing/fairing_baselines.c)
+#   cmcf   conformalized MCF (Kazhdan et al.)     vmcf   volume-controlled MCF (Eckstein et al. 2007; Fig. 17 F)
+#   isobend  Willmore flow of the isometric bending model (Wardetzky et al. 2007; Fig. 17 I: the input's Hessian
+#          L_0 M_0^-1 L_0, factored once)  (the seven baselines: src/methods/willmore/impls/fairing/fairing_baselines.c)
 #   bs     Bobenko-Schroeder discrete Willmore flow (semi-implicit, its own step control)
 #   cgd    conformally constrained Willmore flow (soliman2021; an H^2 Willmore flow that keeps the conformal class)
 #   conformal  the conformal curvature flow of crane2013 (-flow_type conformal), when this binary has it; skipped
@@ -23,7 +25,8 @@ BIN=$PWD/bin/confsurf; PY=$(bash scripts/find-python.sh 2>/dev/null || echo /usr
 out=runs/results/fairing; mkdir -p "$out"
 IN="-gen icosphere -gen_level $LEVEL -gen_deform_bump 0.2 -gen_deform_stretch 1.5,1,0.8"
 declare -A CAND=([emcf]="0.4 0.2 0.1 0.05 0.02 0.01" [ebilap]="0.05 0.02 0.01 0.005 0.002 0.001" [imcf]="100 30 10 3 1 0.3"
-                 [ibilap]="1000 300 100 30 10 3 1" [cmcf]="1000 300 100 30 10")
+                 [ibilap]="1000 300 100 30 10 3 1" [cmcf]="1000 300 100 30 10" [vmcf]="100 30 10 3 1 0.3"
+                 [isobend]="10000 1000 300 100 30 10 3 1")
 t0=$(date +%s)
 "$BIN" -task info $IN -o "$out/input.obj" > /dev/null
 W0=$("$BIN" -task info $IN -summary "$out/input.json" > /dev/null && python3 -c "import json; print(json.load(open('$out/input.json'))['willmore'])")
@@ -33,7 +36,7 @@ run_ok() { # kind t: the budget run, kept when neither stopped by the guard nor 
   python3 -c "import json,sys; s=json.load(open('$out/$1.json')); sys.exit(0 if s['stop_reason'] in ('max_it','converged') and s['willmore'] < $W0 else 1)"
 }
 runs=(); curves=(); shapes=()
-for k in emcf ebilap imcf ibilap cmcf; do
+for k in emcf ebilap imcf ibilap cmcf vmcf isobend; do
   tk=""; for t in ${CAND[$k]}; do if run_ok $k $t; then tk=$t; break; fi; done
   [ -z "$tk" ] && { echo "$k: no stable step among ${CAND[$k]} (the last run is kept)"; tk="${CAND[$k]##* }"; }
   echo "$k (t = $tk h^p): $(grep -E 'converged|resolution' "$out/$k.log" | tail -1 | cut -c1-150)"
@@ -65,7 +68,7 @@ ref=$(printf '%s\n' "${runs[@]}" | grep "^imcf" | cut -d= -f1)
   echo
   echo "W(input) = $W0. t: the largest stable step found (units h^2 for the MCF kinds, h^4 for the bi-Laplacian ones). step_cost_rel: seconds per step relative to implicit MCF (each step includes the same monitoring: W, its gradient, the history)."
   echo
-  "$PY" scripts/plots.py table - willmore,q_mean,q_max,min_angle,iterations,seconds,s_per_step,step_cost_rel,stop_reason --ref "$ref" "${runs[@]}"
+  "$PY" scripts/plots.py table - willmore,q_mean,q_max,min_angle,area,volume,iterations,pc_setups,seconds,s_per_step,step_cost_rel,stop_reason --ref "$ref" "${runs[@]}"
 } > "$out/fairing.md"
 "$PY" scripts/plots.py panel "$out/fairing_shapes.png" --title "fairing, $BUDGET s each" --input "$out/input.obj" "${shapes[@]}"
 "$PY" scripts/plots.py curves "$out/fairing_vs_seconds.png" --x seconds --title "fairing, $BUDGET s each" "${curves[@]}"

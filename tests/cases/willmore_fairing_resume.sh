@@ -6,7 +6,7 @@
 source tests/lib.sh
 if [ "$NP" = 1 ]; then OTHER="mpirun -n 2"; else OTHER=""; fi # the resumed half runs on the other rank count
 G="-task flow -gen icosphere -gen_level 3 -gen_deform_bump 0.2 -flow_stationary_window 0"
-for k in emcf ebilap imcf ibilap cmcf; do
+for k in emcf ebilap imcf ibilap cmcf vmcf isobend; do
   timeout 60 $MPIEXEC "$CS_BIN" $G -flow_type $k -flow_max_it 6 > "$TMP/$k-full.log" 2>&1 || { echo "FAIL: $k straight"; tail -3 "$TMP/$k-full.log"; exit 1; }
   timeout 60 $MPIEXEC "$CS_BIN" $G -flow_type $k -flow_max_it 3 -checkpoint "$TMP/$k.ck" -checkpoint_every 3 > "$TMP/$k-a.log" 2>&1 || { echo "FAIL: $k first half"; tail -3 "$TMP/$k-a.log"; exit 1; }
   timeout 60 $OTHER "$CS_BIN" $G -flow_type $k -flow_max_it 6 -resume "$TMP/$k.ck" -malloc_debug -malloc_dump > "$TMP/$k-b.log" 2>&1 || { echo "FAIL: $k -resume (exit $?)"; tail -3 "$TMP/$k-b.log"; exit 1; }

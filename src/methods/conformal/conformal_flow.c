@@ -83,7 +83,7 @@ static PetscErrorCode CheckOptions(CSConformalFlow F)
     /* the filter removes the modes with sigma lambda^k < 1: below 1e-12 that is every mode of any mesh, so v = 0 */
     {"filter_sigma", F->sigma, F->sigma == 0 || (F->sigma >= 1e-12 && F->sigma <= 1e12), "must be 0 (no filter) or lie in [1e-12, 1e12] (a smaller sigma removes every mode: no step)"},
     {"filter_k", (PetscReal)F->fk, F->fk >= 0 && F->fk <= 4, "must lie in 0..4"},
-    {"curvature_factor", F->hfactor, F->hfactor > 0 && F->hfactor <= 1e3, "must lie in (0, 1e3] (2: the gradient of |mu|^2)"},
+    {"curvature_factor", F->hfactor, F->hfactor >= 0 && F->hfactor <= 1e3, "must lie in [0, 1e3] (2: the gradient of |mu|^2; 0: rho = 0, the boundary data alone)"},
     {"mobius_weight", F->mobius_weight, F->mobius_weight >= 0 && F->mobius_weight <= 1e6, "must lie in [0, 1e6]"},
     {"max_seconds", F->loop.max_seconds, F->loop.max_seconds >= 0, "use 0 (no limit) or a positive number of seconds"},
     {"max_nonexact", F->max_nonexact, F->max_nonexact >= 0, "must be >= 0 (0: off)"},
@@ -117,7 +117,7 @@ PetscErrorCode CSConformalFlowSetFromOptions(CSConformalFlow F)
   PetscCall(PetscOptionsBool("-mobius", "Moebius balancing v += w <a, N> toward the input's area distribution (App. E, E.1)", NULL, F->mobius, &F->mobius, NULL));
   PetscCall(CSOptionsEnum("-mobius_step", "Moebius balancing step: newton (the least-squares inversion that removes the balanceable part of the area distortion in one step) or paper (App. E.1's unit direction)", NULL, CSConformalMobiusSteps, (PetscEnum)F->mobius_step, (PetscEnum *)&F->mobius_step, NULL));
   PetscCall(CSOptionsReal("-mobius_weight", "Moebius balancing: the weight w of the unit-norm direction", NULL, F->mobius_weight, &F->mobius_weight, NULL));
-  PetscCall(CSOptionsReal("-curvature_factor", "c in rho' = -c H: 2 is the gradient of |mu|^2 (Eq. 1, stable for tau < 1); 1 is the paper's (D + tau H) lambda = gamma lambda", NULL, F->hfactor, &F->hfactor, NULL));
+  PetscCall(CSOptionsReal("-curvature_factor", "c in rho' = -c H: 2 is the gradient of |mu|^2 (Eq. 1, stable for tau < 1); 1 is the paper's (D + tau H) lambda = gamma lambda; 0: rho = 0, only the boundary data of -flow_boundary vector move the surface (Sec. 6.3.1, Fig. 14 top)", NULL, F->hfactor, &F->hfactor, NULL));
   PetscCall(PetscOptionsBool("-keep_area", "Scale every new surface to the input's area", NULL, F->keep_area, &F->keep_area, NULL));
   {
     PetscInt  nf = 4; /* room for one more than three, to tell a longer list */

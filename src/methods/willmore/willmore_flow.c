@@ -80,8 +80,8 @@ static PetscErrorCode RegisterAll(void)
   PetscCall(CSWillmoreFlowRegister(CSWILLMOREFLOWALM, CSWillmoreFlowCreate_ALM));
   PetscCall(CSWillmoreFlowRegister(CSWILLMOREFLOWTRIANGLEFIELD, CSWillmoreFlowCreate_TriangleField));
   /* baselines of the fairing comparison (crane2013 Fig. 17; fairing_baselines.c) */
-  for (int k = 0; k < 5; k++) {
-    const char *baseline[] = {"emcf", "ebilap", "imcf", "ibilap", "cmcf"};
+  for (int k = 0; k < 7; k++) {
+    const char *baseline[] = {"emcf", "ebilap", "imcf", "ibilap", "cmcf", "vmcf", "isobend"};
     PetscCall(CSWillmoreFlowRegister(baseline[k], CSWillmoreFlowCreate_Fairing));
   }
   PetscFunctionReturn(0);

@@ -6,23 +6,34 @@
      imcf    implicit mean curvature flow (Desbrun 1999):      (M + tau L) f' = M f
      ibilap  implicit bi-Laplacian flow (backward Euler):      (M + tau L M^-1 L) f' = M f
      cmcf    conformalized MCF (Kazhdan et al. 2012):          (M + tau L_0) f' = M f, L_0 of the input
-   after each step f' is recentred and rescaled to the input's area (as Kazhdan et al. do for cmcf).
-   L = the positive cotan Laplacian, M = the barycentric vertex areas, both at the current f (L_0 at the input).
+     vmcf    volume-controlled MCF (Eckstein et al. 2007):     (M + tau L) f' = M f + tau lambda grad V(f), lambda
+             (the multiplier of the volume, the mean of H) solved by Newton so that V(f') = V(input) to round-off
+     isobend Willmore flow of the isometric bending model (Wardetzky et al. 2007): (M_0 + tau K_0) f' = M_0 f,
+             K_0 = L_0 M_0^-1 L_0, the Hessian of W under isometric deformations, constant: factored once
+             (the isometry is the model's assumption, not a constraint of the flow: all edge lengths kept would leave
+             a generic closed mesh only rigid motions, Gluck 1975; the flow leaves the model's range and W, not
+             E_b, rises again after a while: the iterates tend to K_0's lowest eigenvector in every coordinate)
+   after each step f' is recentred and rescaled to the input's area (as Kazhdan et al. do for cmcf); vmcf is only
+   recentred (its volume is the constraint; a translation keeps it).
+   L = the positive cotan Laplacian, M = the barycentric vertex areas, both at the current f (L_0, M_0 at the input).
    tau = -flow_t h^2 (MCF kinds) or -flow_t h^4 (bi-Laplacian kinds), h the mean edge length of the input, so that
    -flow_t is in units of the explicit stability scale; the step is fixed (a non-finite step is halved). Linear
    solves: KSP prefix <flow prefix>fair_, default Cholesky (CHOLMOD) on one rank, CG + hypre on several. */
 #include "../../willmore_impl.h"
 #include "cs_operators.h"
 
-typedef enum { FAIR_EMCF, FAIR_EBILAP, FAIR_IMCF, FAIR_IBILAP, FAIR_CMCF } FairKind;
+typedef enum { FAIR_EMCF, FAIR_EBILAP, FAIR_IMCF, FAIR_IBILAP, FAIR_CMCF, FAIR_VMCF, FAIR_ISOBEND } FairKind;
 
 typedef struct {
   FairKind  kind;
   Mat       L, L0, A, ML; /* L (3V), the input's L (cmcf), the implicit matrix, M^-1 L (bi-Laplacian) */
   Vec       m, y, b;      /* vertex areas on the 3 components, work */
+  Vec       gV;           /* the volume's gradient (vmcf) */
+  CSEnergy  vol;          /* the enclosed volume (vmcf) */
   KSP       ksp;
-  PetscReal h, A0;        /* mean edge length and area of the input */
+  PetscReal h, A0, V0;    /* mean edge length, area and volume of the input */
   PetscReal c0[3];        /* centroid of the input (cmcf) */
+  PetscReal tauA;         /* the tau of the implicit matrix A (isobend rebuilds it only when tau changes) */
 } Fair;
 
 /* m (3V) = the barycentric vertex areas of x, repeated on the 3 components (dmV1 and dmV3 order their owned
@@ -79,7 +90,9 @@ static PetscErrorCode NewKSP(CSWillmoreFlow F, Fair *fa)
   } else {
     PetscCall(KSPSetType(fa->ksp, KSPCG));
     PetscCall(PCSetType(pc, PCHYPRE));
-    PetscCall(KSPSetTolerances(fa->ksp, 1e-10, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
+    /* isobend: 1e-12, K_0 = L_0 M_0^-1 L_0 is the worst conditioned; at 1e-10 W at step 6 differed from the
+       serial Cholesky run's in the 10th digit (willmore_fairing_resume) */
+    PetscCall(KSPSetTolerances(fa->ksp, fa->kind == FAIR_ISOBEND ? 1e-12 : 1e-10, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
   }
   PetscCall(KSPSetFromOptions(fa->ksp));
   PetscFunctionReturn(0);
@@ -90,30 +103,38 @@ static PetscErrorCode NewKSP(CSWillmoreFlow F, Fair *fa)
    counted in F->k only at the flow's set-up) is refused here: the option-made ones are refused by SetUpFair. */
 static PetscErrorCode SetUpFairData(CSWillmoreFlow F)
 {
-  Fair     *fa = (Fair *)F->data;
-  PetscReal V;
+  Fair *fa = (Fair *)F->data;
   PetscFunctionBeginUser;
   if (fa->m) PetscFunctionReturn(0);
   PetscCheck(F->k == 0, F->hdr.comm, PETSC_ERR_ARG_INCOMP, "-%stype %s is an unconstrained baseline fairing flow: the constraint %s added by CSWillmoreFlowAddConstraint is not supported", F->hdr.prefix, F->type, F->nadded ? F->added[0] : "(global)");
   PetscCall(CSGeometryMeanEdgeLength(F->mesh, F->x0, &fa->h));
-  PetscCall(CSGeometryAreaVolume(F->mesh, F->x0, &fa->A0, &V));
+  PetscCall(CSGeometryAreaVolume(F->mesh, F->x0, &fa->A0, &fa->V0));
   PetscCall(Centroid(F, F->x0, fa->c0));
   PetscCall(VecDuplicate(F->x, &fa->m));
   PetscCall(VecDuplicate(F->x, &fa->y));
   PetscCall(VecDuplicate(F->x, &fa->b));
   PetscCall(CSOperatorLaplacian3(F->mesh, F->x0, MAT_INITIAL_MATRIX, &fa->L));
   if (fa->kind == FAIR_CMCF) PetscCall(MatDuplicate(fa->L, MAT_COPY_VALUES, &fa->L0));
+  if (fa->kind == FAIR_ISOBEND) PetscCall(Mass3(F, F->x0, fa->m)); /* M_0: L and m stay the input's */
+  if (fa->kind == FAIR_VMCF) {
+    PetscCheck(F->mesh->topo.boundary_edges == 0 && fa->V0 != 0, F->hdr.comm, PETSC_ERR_ARG_WRONG, "-%stype vmcf keeps the enclosed volume: it needs a closed mesh enclosing a volume (this one: volume %g)", F->hdr.prefix, (double)fa->V0);
+    PetscCall(CSEnergyCreateVolume(F->mesh, &fa->vol));
+    PetscCall(VecDuplicate(F->x, &fa->gV));
+  }
   if (fa->kind >= FAIR_IMCF) PetscCall(NewKSP(F, fa));
   PetscFunctionReturn(0);
 }
 
-/* The implicit matrix A = M + tau K with K = L, L M^-1 L or L_0 (fixed pattern after the first step). */
+/* The implicit matrix A = M + tau K with K = L, L M^-1 L or L_0 (fixed pattern after the first step); isobend's
+   M_0 + tau L_0 M_0^-1 L_0 is built once per tau, so its factorisation is kept across the steps. */
 static PetscErrorCode ImplicitMatrix(CSWillmoreFlow F, Fair *fa, PetscReal tau)
 {
   Mat       K = fa->kind == FAIR_CMCF ? fa->L0 : fa->L;
   PetscBool first = fa->A ? PETSC_FALSE : PETSC_TRUE;
   PetscFunctionBeginUser;
-  if (fa->kind == FAIR_IBILAP) {
+  if (fa->kind == FAIR_ISOBEND && fa->A && fa->tauA == tau) PetscFunctionReturn(0);
+  fa->tauA = tau;
+  if (fa->kind == FAIR_IBILAP || fa->kind == FAIR_ISOBEND) {
     PetscCall(VecCopy(fa->m, fa->y));
     PetscCall(VecReciprocal(fa->y));
     if (!fa->ML) PetscCall(MatDuplicate(fa->L, MAT_COPY_VALUES, &fa->ML));
@@ -128,11 +149,13 @@ static PetscErrorCode ImplicitMatrix(CSWillmoreFlow F, Fair *fa, PetscReal tau)
   PetscCall(MatDiagonalSet(fa->A, fa->m, ADD_VALUES));
   PetscCall(MatSetOption(fa->A, MAT_SPD, PETSC_TRUE));
   if (first) PetscCall(KSPSetOperators(fa->ksp, fa->A, fa->A));
+  F->saddle.setups++; /* a new operator: its factorisation (preconditioner) is built at the next solve */
   PetscFunctionReturn(0);
 }
 
 /* Back to the input's centroid and area after every step (Kazhdan et al. 2012 normalise cmcf so): MCF would
-   shrink a sphere to a point in finite time; W is scale-invariant, so this changes no measure of the study. */
+   shrink a sphere to a point in finite time; W is scale-invariant, so this changes no measure of the study.
+   vmcf is only recentred. */
 static PetscErrorCode Normalise(CSWillmoreFlow F, Fair *fa, Vec x)
 {
   PetscReal    c[3], A, V, s;
@@ -141,7 +164,7 @@ static PetscErrorCode Normalise(CSWillmoreFlow F, Fair *fa, Vec x)
   PetscFunctionBeginUser;
   PetscCall(Centroid(F, x, c));
   PetscCall(CSGeometryAreaVolume(F->mesh, x, &A, &V));
-  s = PetscSqrtReal(fa->A0 / A);
+  s = fa->kind == FAIR_VMCF ? 1 : PetscSqrtReal(fa->A0 / A); /* vmcf: the volume is kept, not the area */
   PetscCall(VecGetLocalSize(x, &n));
   PetscCall(VecGetArray(x, &xa));
   for (PetscInt i = 0; i < n; i++) xa[i] = fa->c0[i % 3] + s * (xa[i] - c[i % 3]); /* x, y, z interleaved */
@@ -149,17 +172,65 @@ static PetscErrorCode Normalise(CSWillmoreFlow F, Fair *fa, Vec x)
   PetscFunctionReturn(0);
 }
 
+static PetscBool BiLaplacian(FairKind k)
+{
+  return (PetscBool)(k == FAIR_EBILAP || k == FAIR_IBILAP || k == FAIR_ISOBEND);
+}
+
+/* One solve with the implicit matrix A (z = A^-1 r), counted in the flow's linear solves and KSP iterations. */
+static PetscErrorCode SolveFair(CSWillmoreFlow F, Fair *fa, Vec r, Vec z, PetscBool *ok)
+{
+  KSPConvergedReason reason;
+  PetscInt           its;
+  PetscFunctionBeginUser;
+  PetscCall(KSPSolve(fa->ksp, r, z));
+  PetscCall(KSPGetConvergedReason(fa->ksp, &reason));
+  PetscCall(KSPGetIterationNumber(fa->ksp, &its));
+  F->saddle.solves++;
+  F->kspits += its;
+  *ok = (PetscBool)(reason > 0);
+  PetscFunctionReturn(0);
+}
+
+/* vmcf (Eckstein et al. 2007): f' = f_a + lambda f_b with (M + tau L) f_a = M f (in F->xt) and (M + tau L) f_b =
+   tau grad V(f) (in fa->y); lambda by Newton on the cubic V(f_a + lambda f_b) = V_0, dV/dlambda = grad V(f') . f_b,
+   to 1e-14 V_0 (a few iterations: lambda ~ tau times the mean of H). Not met in 30: *ok false (the step is halved). */
+static PetscErrorCode VolumeControl(CSWillmoreFlow F, Fair *fa, PetscReal tau, PetscBool *ok)
+{
+  PetscReal   V, A, lambda = 0;
+  PetscScalar dV;
+  PetscFunctionBeginUser;
+  PetscCall(CSEnergyGradient(fa->vol, F->x, NULL, fa->gV));
+  PetscCall(VecScale(fa->gV, tau));
+  PetscCall(SolveFair(F, fa, fa->gV, fa->y, ok));
+  if (!*ok) PetscFunctionReturn(0);
+  *ok = PETSC_FALSE;
+  for (PetscInt it = 0; it < 30 && !*ok; it++) {
+    PetscCall(CSGeometryAreaVolume(F->mesh, F->xt, &A, &V));
+    if (PetscAbsReal(V - fa->V0) <= 1e-14 * PetscAbsReal(fa->V0)) *ok = PETSC_TRUE;
+    else {
+      PetscCall(CSEnergyGradient(fa->vol, F->xt, NULL, fa->gV));
+      PetscCall(VecDot(fa->gV, fa->y, &dV));
+      if (PetscRealPart(dV) == 0) break;
+      lambda = -(V - fa->V0) / PetscRealPart(dV);
+      PetscCall(VecAXPY(F->xt, lambda, fa->y));
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode TrialFair(CSWillmoreFlow F, PetscBool *accept)
 {
-  Fair              *fa  = (Fair *)F->data;
-  PetscReal          tau;
-  KSPConvergedReason reason;
+  Fair     *fa = (Fair *)F->data;
+  PetscReal tau;
   PetscFunctionBeginUser;
   PetscCall(SetUpFairData(F));
-  tau = F->t * PetscPowReal(fa->h, (fa->kind == FAIR_EBILAP || fa->kind == FAIR_IBILAP) ? 4 : 2);
+  tau     = F->t * PetscPowReal(fa->h, BiLaplacian(fa->kind) ? 4 : 2);
   *accept = PETSC_TRUE;
-  PetscCall(CSOperatorLaplacian3(F->mesh, F->x, MAT_REUSE_MATRIX, &fa->L));
-  PetscCall(Mass3(F, F->x, fa->m));
+  if (fa->kind != FAIR_ISOBEND) { /* isobend keeps the input's L_0 and M_0 */
+    PetscCall(CSOperatorLaplacian3(F->mesh, F->x, MAT_REUSE_MATRIX, &fa->L));
+    PetscCall(Mass3(F, F->x, fa->m));
+  }
   if (fa->kind == FAIR_EMCF || fa->kind == FAIR_EBILAP) {
     PetscCall(MatMult(fa->L, F->x, fa->y));
     PetscCall(VecPointwiseDivide(fa->y, fa->y, fa->m));
@@ -172,9 +243,8 @@ static PetscErrorCode TrialFair(CSWillmoreFlow F, PetscBool *accept)
     PetscCall(ImplicitMatrix(F, fa, tau));
     PetscCall(VecPointwiseMult(fa->b, fa->m, F->x));
     PetscCall(VecCopy(F->x, F->xt));
-    PetscCall(KSPSolve(fa->ksp, fa->b, F->xt));
-    PetscCall(KSPGetConvergedReason(fa->ksp, &reason));
-    *accept = (PetscBool)(reason > 0);
+    PetscCall(SolveFair(F, fa, fa->b, F->xt, accept));
+    if (*accept && fa->kind == FAIR_VMCF) PetscCall(VolumeControl(F, fa, tau, accept));
   }
   if (*accept) PetscCall(Normalise(F, fa, F->xt));
   PetscFunctionReturn(0);
@@ -198,6 +268,8 @@ static PetscErrorCode DestroyFair(CSWillmoreFlow F)
   PetscCall(VecDestroy(&fa->m));
   PetscCall(VecDestroy(&fa->y));
   PetscCall(VecDestroy(&fa->b));
+  PetscCall(VecDestroy(&fa->gV));
+  PetscCall(CSEnergyDestroy(&fa->vol));
   PetscCall(KSPDestroy(&fa->ksp));
   PetscCall(PetscFree(F->data));
   PetscFunctionReturn(0);
@@ -215,7 +287,7 @@ static PetscErrorCode SetUpFair(CSWillmoreFlow F)
 static PetscErrorCode ViewFair(CSWillmoreFlow F, PetscViewer viewer)
 {
   Fair     *fa    = (Fair *)F->data;
-  PetscBool bilap = (PetscBool)(fa->kind == FAIR_EBILAP || fa->kind == FAIR_IBILAP);
+  PetscBool bilap = BiLaplacian(fa->kind);
   PetscFunctionBeginUser;
   PetscCall(PetscViewerASCIIPrintf(viewer, "  baseline fairing flow %s: fixed step tau = t h^%d (h the input's mean edge length), linear solves with KSP prefix -%sfair_\n", F->type, bilap ? 4 : 2, F->hdr.prefix));
   PetscFunctionReturn(0);
@@ -230,12 +302,12 @@ PetscErrorCode CSWillmoreFlowCreate_Fairing(CSWillmoreFlow F)
     const char *name;
     FairKind    kind;
     PetscReal   t;
-  } kinds[] = {{"emcf", FAIR_EMCF, 0.02}, {"ebilap", FAIR_EBILAP, 0.01}, {"imcf", FAIR_IMCF, 1}, {"ibilap", FAIR_IBILAP, 100}, {"cmcf", FAIR_CMCF, 100}};
+  } kinds[] = {{"emcf", FAIR_EMCF, 0.02}, {"ebilap", FAIR_EBILAP, 0.01}, {"imcf", FAIR_IMCF, 1}, {"ibilap", FAIR_IBILAP, 100}, {"cmcf", FAIR_CMCF, 100}, {"vmcf", FAIR_VMCF, 1}, {"isobend", FAIR_ISOBEND, 100}};
   Fair     *fa;
   PetscBool match = PETSC_FALSE;
   PetscInt  k;
   PetscFunctionBeginUser;
-  for (k = 0; k < 5 && !match; k++) PetscCall(PetscStrcmp(F->type, kinds[k].name, &match));
+  for (k = 0; k < (PetscInt)PETSC_STATIC_ARRAY_LENGTH(kinds) && !match; k++) PetscCall(PetscStrcmp(F->type, kinds[k].name, &match));
   PetscCheck(match, F->hdr.comm, PETSC_ERR_PLIB, "fairing baseline %s not in the table", F->type);
   k--;
   PetscCall(PetscNew(&fa));
