@@ -22,9 +22,10 @@ A computed eigenvector is some element of the eigenspace: the distance is to the
 lam = sum_a c_a phi_a (c real, phi_a a real basis; this includes every similarity: lam q gives conj(q) f~ q) and
 translations, with the vertex x_i of the input matched to the point x_i of the sphere."""
 import json
+import os
 import sys
 import numpy as np
-sys.path.insert(0, "scripts")
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts"))
 from objio import read_obj  # noqa: E402
 
 
