@@ -189,6 +189,20 @@ def distance(inp, res, n, closed=None):
             "size": float(R), "coefficient_norm": float(np.linalg.norm(c))}
 
 
+def cluster_distances(inp, results, n):
+    """dist_max of each of several results of one eigenvalue n on one input (the closed forms integrated once)"""
+    X, Fc = (np.array(a, dtype=float) for a in read_obj(inp))
+    X /= np.linalg.norm(X, axis=1)[:, None]
+    F = path_pieces(n, X, np.array([0.3, 0.5, 0.8]) / np.linalg.norm([0.3, 0.5, 0.8]))
+    out = []
+    for res in results:
+        Y = np.array(read_obj(res)[0], dtype=float)
+        c, t = fit(F, Y)
+        R = np.sqrt(area(Y, Fc.astype(int)) / (4 * np.pi))
+        out.append(float((np.linalg.norm(surface(F, c) + t - Y, axis=1) / R).max()))
+    return out
+
+
 def check(inp, n):
     """the closed forms satisfy the discrete Eq. 5 to O(h) (||D lam - n B lam|| / ||B lam|| on the faces) and the
     1-form conj(lam) dx lam is closed (two base points give the same surface up to a translation)"""
