@@ -42,21 +42,28 @@ def _declare(lib):
         f.restype, f.argtypes = res, args
 
 
-_lib = None
+def _load():
+    """The library (RTLD_GLOBAL: Open MPI's plugins need libmpi's symbols); at import, so that a missing build fails
+    there with the command that makes it."""
+    path = _find()
+    if not os.path.exists(path):
+        raise ImportError(f"confsurf: {path} not found: run `make` in the checkout (or set CONFSURF_LIB)")
+    handle = ctypes.CDLL(path, mode=ctypes.RTLD_GLOBAL)
+    _declare(handle)
+    return handle
+
+
+_handle = _load()
+_started = False
 
 
 def lib():
-    """The library, loaded and PETSc started on first use (RTLD_GLOBAL: Open MPI's plugins need libmpi's symbols)."""
-    global _lib
-    if _lib is None:
-        path = _find()
-        if not os.path.exists(path):
-            raise ImportError(f"confsurf: {path} not found: run `make` in the checkout (or set CONFSURF_LIB)")
-        handle = ctypes.CDLL(path, mode=ctypes.RTLD_GLOBAL)
-        _declare(handle)
-        rc = handle.CSApiInitialize()
+    """The library, PETSc/SLEPc (and MPI, unless mpi4py started it) initialised on first use."""
+    global _started
+    if not _started:
+        rc = _handle.CSApiInitialize()
         if rc:
             raise RuntimeError(f"confsurf: PETSc/SLEPc initialisation failed (error {rc})")
-        atexit.register(handle.CSApiFinalize)
-        _lib = handle
-    return _lib
+        atexit.register(_handle.CSApiFinalize)
+        _started = True
+    return _handle
