@@ -12,7 +12,7 @@
 #include "cs_package.h"
 #include "cs_curve.h"
 
-static PetscBool       Started = PETSC_FALSE; /* we called SlepcInitialize (and so finalize) */
+static PetscBool       Started = PETSC_FALSE; /* CSApiInitialize ran (SlepcFinalize ends what it started) */
 static char            LastError[2048];
 static int             Refused; /* the last error is the caller's refusal of its input (every rank) */
 static CSOutputCapture Result;
@@ -44,13 +44,10 @@ int CSApiInitialize(void)
   static char  arg0[]  = "confsurf", arg1[] = "-no_signal_handler"; /* the caller's (Python's) signals stay its own */
   static char *args[]  = {arg0, arg1, NULL};
   static char **argv   = args;
-  PetscBool    petsc;
   PetscErrorCode ierr;
-  if (PetscInitializeCalled) return 0;
-  CSSingletonDefaults(); /* as bin/confsurf: a serial run's Open MPI defaults (nothing under mpirun) */
-  ierr = PetscInitialized(&petsc);
-  if (ierr) return (int)ierr;
-  ierr = SlepcInitialize(&argc, &argv, NULL, NULL);
+  if (Started) return 0;
+  if (!PetscInitializeCalled) CSSingletonDefaults(); /* as bin/confsurf: a serial run's Open MPI defaults (none under mpirun) */
+  ierr = SlepcInitialize(&argc, &argv, NULL, NULL); /* PETSc too unless the caller (petsc4py) started it: then theirs to end */
   if (ierr) return (int)ierr;
   Started = PETSC_TRUE;
   ierr    = CSLimitThreads(PETSC_COMM_WORLD);
@@ -234,7 +231,7 @@ int CSApiRun(const char *task, const char *options, int quiet, long nv, const do
   Input          in;
   PetscErrorCode ierr = 0, ierr2;
   PetscMPIInt    rank = 0;
-  if (!PetscInitializeCalled) {
+  if (!Started) {
     snprintf(LastError, sizeof(LastError), "confsurf is not initialised (CSApiInitialize)");
     return PETSC_ERR_ORDER;
   }
