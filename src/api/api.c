@@ -163,10 +163,11 @@ static PetscErrorCode CheckLeft(MPI_Comm comm, PetscOptions db)
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsLeftGet(db, &n, &names, &values));
   if (n) {
-    char name[256];
+    char     name[256];
+    PetscInt count = n; /* the restore zeroes n */
     PetscCall(PetscSNPrintf(name, sizeof(name), "-%s%s%s", names[0], values[0] ? " " : "", values[0] ? values[0] : ""));
     PetscCall(PetscOptionsLeftRestore(db, &n, &names, &values));
-    SETERRQ(comm, PETSC_ERR_ARG_WRONG, "unknown or unused option %s (%" PetscInt_FMT " option(s) not used: misspelled, or not valid for this task)", name, n);
+    SETERRQ(comm, PETSC_ERR_ARG_WRONG, "unknown or unused option %s (%" PetscInt_FMT " option(s) not used: misspelled, or not valid for this task)", name, count);
   }
   PetscCall(PetscOptionsLeftRestore(db, &n, &names, &values));
   PetscFunctionReturn(0);

@@ -1,8 +1,9 @@
 # The Python interface's bad arguments and repeated calls (tests/cases/python_tools.py): wrong shapes, dtypes,
 # non-finite values and out-of-range indices raise ValueError naming the array and row; an unknown option, an
-# unknown flow, a rho of the wrong length, a missing -options_file, a duplicate face and -gen beside the arrays raise
-# confsurf.Error with bin/confsurf's one-line message; the next call gives the first call's result. Then 60 small
-# calls (flows, a failing call, curve flows) under -malloc_debug: PETSc's allocated bytes after call 6 and call 60
+# unknown flow, a solver option no solver reads, a rho of the wrong length or beyond 1e12, a missing
+# -options_file, a duplicate face and -gen beside the arrays raise confsurf.Error with bin/confsurf's one-line
+# message; the next call gives the first call's result. Then 60 small calls (flows, a failing call, curve flows)
+# under -malloc_debug: PETSc's allocated bytes after call 6 and call 60
 # are equal, the global options database is unchanged, and an option of one call (-flow_max_it 0) is not seen by the
 # next (runs/python_leak.sh makes 1000 calls and quotes the RSS). 60 calls serially, 12 on 2 ranks (each rank spins
 # in MPI on the shared cores: 2.6 s a call under load 20). `import confsurf` from a fresh shell works.

@@ -151,6 +151,9 @@ def errors():
         expect(ValueError, "P: shape (", lambda: confsurf.curve_flow(V)),
         expect(confsurf.Error, "unknown option -flow_nosuch 3", lambda: confsurf.flow(V, F, "-flow_type cgd -flow_nosuch 3 -flow_max_it 1")),
         expect(confsurf.Error, "-flow_type nosuch: unknown flow", lambda: confsurf.flow(V, F, "-flow_type nosuch")),
+        # a solver option no solver of the run reads: found after the run (bin/confsurf: exit 2 then), an error here
+        expect(confsurf.Error, "unknown or unused option -flow_saddle_ksp_nosuch 1 (1 option(s) not used", lambda: confsurf.flow(V, F, "-flow_type cgd -flow_max_it 1 -flow_saddle_ksp_nosuch 1")),
+        expect(confsurf.Error, "rho (array): value 0 is 1e+13, beyond 1e12", lambda: confsurf.spin(V, F, np.full(42, 1e13))),
         expect(confsurf.Error, "rho (array): 5 values, expected 42", lambda: confsurf.spin(V, F, np.ones(5))),
         expect(confsurf.Error, "Unable to open options file /nonexistent/x.opts", lambda: confsurf.info(V, F, "-options_file /nonexistent/x.opts")),
         expect(confsurf.Error, "duplicate faces", lambda: confsurf.info(V, np.vstack([F, F[:1]]) if ROOT else None)),
