@@ -30,7 +30,7 @@ CFLAGS   += -std=gnu11 -Wall -Wextra -Wno-unused-parameter $(WERROR) -MMD -MP
 LDLIBS   := $(shell pkg-config --libs slepc petsc) -lcholmod -llapack -lblas -lz -lm
 
 LIB_SRC  := $(sort $(wildcard src/*/*.c src/*/*/*.c src/*/*/*/*/*.c))
-LIB_SRC  := $(filter-out src/driver/%,$(LIB_SRC))
+LIB_SRC  := $(filter-out src/driver/% src/api/%,$(LIB_SRC))
 
 # CGAL (header-only, with GMP/MPFR) for -mesh_remesh: its .pc if it ships one, else the header probe. Without it
 # the build still succeeds and -mesh_remesh refuses with a line naming `make deps` (src/mesh/meshdata_remesh.c).
@@ -56,11 +56,19 @@ TESTS    := $(TEST_SRC:tests/unit/%.c=build/tests/%)
 BENCH_SRC:= $(wildcard runs/*.c)
 BENCHES  := $(BENCH_SRC:runs/%.c=build/runs/%)
 LIB      := build/libconfsurf.a
+# The shared library of the Python interface (python/confsurf, docs/python.md): the library, the driver's tasks
+# (not main.c) and the entry layer src/api/, compiled once more with -fPIC into build/pic/ so that the binary and
+# the unit programs keep their static, non-PIC objects (same code, same speed).
+API_SRC  := $(wildcard src/api/*.c)
+SO_OBJ   := $(patsubst %.c,build/pic/%.o,$(LIB_SRC) $(filter-out src/driver/main.c,$(DRV_SRC)) $(API_SRC)) $(CXX_SRC:%.cc=build/pic/%.o)
+SO       := build/libconfsurf.so
 
-all: bin/confsurf $(TESTS) $(BENCHES)
+all: bin/confsurf $(TESTS) $(BENCHES) $(SO)
 
 # the quaternion Cholesky's dense loops need -O3 to be vectorised (gcc 12 does not at -O2)
-build/obj/src/linalg/quaternion_cholesky.o: CFLAGS += -O3
+build/obj/src/linalg/quaternion_cholesky.o build/pic/src/linalg/quaternion_cholesky.o: CFLAGS += -O3
+build/pic/src/mesh/meshdata_remesh.o: build/cgal.flag
+build/pic/src/mesh/meshdata_remesh.o: CPPFLAGS += $(CPPFLAGS_CGAL)
 
 build/obj/%.o: %.c
 	@mkdir -p $(dir $@)
@@ -69,6 +77,20 @@ build/obj/%.o: %.c
 build/obj/%.o: %.cc
 	@mkdir -p $(dir $@)
 	$(CXX) $(CPPFLAGS_CGAL) $(CXXFLAGS) -c $< -o $@
+
+build/pic/%.o: %.c
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) $(CFLAGS) -fPIC -c $< -o $@
+
+build/pic/%.o: %.cc
+	@mkdir -p $(dir $@)
+	$(CXX) $(CPPFLAGS_CGAL) $(CXXFLAGS) -fPIC -c $< -o $@
+
+# linked against PETSc, SLEPc, MPI and the rest as the binary is (-lstdc++ with CGAL: the remeshing unit is C++);
+# Python loads it with ctypes (python/confsurf/_lib.py)
+$(SO): $(SO_OBJ)
+	$(CC) $(CFLAGS) -shared -o $@ $(SO_OBJ) $(LDLIBS)
+	@echo "make: built $@; the Python package: PYTHONPATH=$(CURDIR)/python python3 -c 'import confsurf'"
 
 $(LIB): $(LIB_OBJ)
 	@rm -f $@
@@ -107,7 +129,7 @@ bench: all
 clean:
 	rm -rf build bin
 
--include $(LIB_OBJ:.o=.d) $(DRV_OBJ:.o=.d) $(TESTS:=.d) $(BENCHES:=.d)
+-include $(LIB_OBJ:.o=.d) $(DRV_OBJ:.o=.d) $(TESTS:=.d) $(BENCHES:=.d) $(SO_OBJ:.o=.d)
 include mk/hardening.mk
 endif
 

@@ -57,6 +57,10 @@ PETSC_EXTERN PetscErrorCode CSCurveCreate(MPI_Comm comm, const CSCurveData *cd, 
    _petals, _noise, _seed); -curve_open (the flow of an open curve), -curve_close (close an open input line).
    Errors on rank 0 are raised on every rank. Collective. */
 PETSC_EXTERN PetscErrorCode CSCurveCreateFromOptions(MPI_Comm comm, CSCurve *curve);
+/* The points of a caller of the library (src/api: the Python interface's array P), used by
+   CSCurveCreateFromOptions instead of -curve/-gen_curve (refused then) while set; read on rank 0 (other ranks pass
+   any non-NULL cd), copied and validated as a file is. NULL: off. Set and cleared on every rank. */
+PETSC_EXTERN PetscErrorCode CSCurveDataSetArraySource(const CSCurveData *cd);
 /* The values of the left and right neighbour vertices of this rank's block of v (block size 1 or 2):
    lr[0..bs-1] left, lr[bs..2bs-1] right (zero at an open end). Collective. */
 PETSC_EXTERN PetscErrorCode CSCurveGhosts(CSCurve curve, Vec v, PetscReal lr[4]);

@@ -9,7 +9,12 @@ PETSC_EXTERN void CSSingletonDefaults(void);
 /* before MPI starts: 0 (after one line on stderr) when a file PetscInitialize opens cannot be used */
 PETSC_EXTERN int CSStartupFilesUsable(int argc, char **argv);
 
+/* the task of -task (default info) on comm (src/driver/task_run.c): bin/confsurf and the library's callers (src/api) */
+PETSC_EXTERN PetscErrorCode CSDriverRun(MPI_Comm comm);
 PETSC_EXTERN PetscErrorCode CSTaskInfo(MPI_Comm comm);
+/* -task spin's rho as an array of n values on rank 0 in place of -rho FILE (vertex order, or faces with
+   -rho_location face) while set; set and cleared on every rank (src/driver/spin_input.c; src/api) */
+PETSC_EXTERN PetscErrorCode CSDriverSpinSetRhoArray(PetscBool set, PetscInt n, const PetscReal rho[]);
 PETSC_EXTERN PetscErrorCode CSTaskFlow(MPI_Comm comm);
 PETSC_EXTERN PetscErrorCode CSTaskSpin(MPI_Comm comm);
 PETSC_EXTERN PetscErrorCode CSTaskSpectrum(MPI_Comm comm);

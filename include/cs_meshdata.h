@@ -113,6 +113,10 @@ PETSC_EXTERN PetscErrorCode CSMeshDataRemesh(CSMeshData *md, CSTopology *topo, P
    then validates it (topo filled on rank 0). Collective on comm: options are read on every rank, the data is
    loaded on rank 0 only (other ranks get an empty md); an error on rank 0 is raised on every rank (no hang). */
 PETSC_EXTERN PetscErrorCode CSMeshDataFromOptions(MPI_Comm comm, const char prefix[], CSMeshData *md, CSTopology *topo);
+/* The mesh of a caller of the library (src/api: the Python interface's arrays V, F), used by CSMeshDataFromOptions
+   instead of -mesh/-gen (which it then refuses) while set; md is read on rank 0 (the other ranks pass any non-NULL
+   md), copied, and validated as a file is. NULL: off. Set and cleared on every rank. */
+PETSC_EXTERN PetscErrorCode CSMeshDataSetArraySource(const CSMeshData *md);
 /* A task that takes its conformal class from the positions (the conformal flow, spin transformations, the
    Bobenko-Schroeder flow) refuses -mesh_lengths and -mesh_cross_ratios with one line naming the option and the task,
    rather than ignoring them (issue 36, item 12). Collective on comm. */

@@ -53,6 +53,25 @@ PETSC_EXTERN PetscErrorCode CSOutputResume(CSOutput *o, CSMesh mesh, Vec x0, Pet
 PETSC_EXTERN PetscErrorCode CSOutputCheckpoint(CSOutput *o, CSMesh mesh, Vec x0, PetscInt it, PetscBool force, PetscInt nreal, const PetscReal reals[], const CSCheckpointFields *v);
 PETSC_EXTERN PetscErrorCode CSOutputHistoryCreate(CSOutput *o, MPI_Comm comm, const char header[], PetscInt next, CSHistory *h);
 
+/* The results of one run in memory for a caller of the library (src/api; src/output/output_capture.c), set on
+   every rank before the task runs: the summary (JSON text), the final positions x (dim 3: a mesh, the input's
+   vertex order, with the faces f as -o writes them; dim 2: a curve) and the history rows, all on rank 0. Filled by
+   CSOutputWriteSummary, CSOutputFinish, the curve report and the histories (made even without -history_csv). */
+typedef struct {
+  char            *summary;
+  PetscInt         dim, nv, nf;
+  PetscReal       *x;
+  PetscInt        *f;
+  CSHistoryCapture history;
+} CSOutputCapture;
+PETSC_EXTERN PetscErrorCode CSOutputCaptureSet(CSOutputCapture *c); /* NULL: off */
+PETSC_EXTERN PetscBool      CSOutputCaptureActive(void);
+PETSC_EXTERN PetscErrorCode CSOutputCaptureReset(CSOutputCapture *c); /* frees what was kept */
+PETSC_EXTERN PetscErrorCode CSOutputCaptureSummary(CSJSON js, MPI_Comm comm);
+PETSC_EXTERN PetscErrorCode CSOutputCaptureMesh(CSMesh mesh, Vec x);
+struct _p_CSCurve; /* CSCurve (cs_curve.h) */
+PETSC_EXTERN PetscErrorCode CSOutputCaptureCurve(struct _p_CSCurve *curve, Vec x);
+
 /* after a solver error ierr: the last accepted state x (iteration it) to -o and -summary; ierr's message in msg */
 PETSC_EXTERN PetscErrorCode CSOutputSaveAfterError(CSOutput *o, CSMesh mesh, Vec x, PetscInt it, PetscErrorCode ierr, char msg[], size_t len);
 

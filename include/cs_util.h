@@ -40,10 +40,23 @@ PETSC_EXTERN PetscErrorCode CSJSONAddBool(CSJSON js, const char key[], PetscBool
 PETSC_EXTERN PetscErrorCode CSJSONAddString(CSJSON js, const char key[], const char v[]);
 PETSC_EXTERN PetscErrorCode CSJSONAddRealArray(CSJSON js, const char key[], PetscInt n, const PetscReal v[]);
 PETSC_EXTERN PetscErrorCode CSJSONWrite(CSJSON js, const char path[]);
+/* the object as CSJSONWrite writes it, in a PetscMalloc'd string (the Python interface's summary, src/api) */
+PETSC_EXTERN PetscErrorCode CSJSONGetString(CSJSON js, char **text);
 PETSC_EXTERN PetscErrorCode CSJSONDestroy(CSJSON *js);
 
-/* CSV history: header fixed at creation, one row of reals per call; rank 0 writes, flushed per row. */
+/* CSV history: header fixed at creation, one row of reals per call; rank 0 writes, flushed per row. path NULL: no
+   file, the rows only go to the capture (below). */
 typedef struct _p_CSHistory *CSHistory;
+/* The rows of the histories of one run kept in memory on rank 0 for a caller of the library (src/api): while a
+   capture is set, every history created starts it afresh (header, ncol) and each row appended is kept. */
+typedef struct {
+  char      *header;
+  PetscInt   ncol, nrows, cap;
+  PetscReal *rows; /* nrows x ncol, row-major */
+} CSHistoryCapture;
+PETSC_EXTERN PetscErrorCode CSHistoryCaptureSet(CSHistoryCapture *c); /* NULL: off */
+PETSC_EXTERN PetscBool      CSHistoryCaptureActive(void);
+PETSC_EXTERN PetscErrorCode CSHistoryCaptureReset(CSHistoryCapture *c);  /* frees the rows and the header */
 PETSC_EXTERN PetscErrorCode CSHistoryCreate(MPI_Comm comm, const char path[], const char header[], CSHistory *h);
 PETSC_EXTERN PetscErrorCode CSHistoryAppend(CSHistory h, PetscInt n, const PetscReal row[]);
 PETSC_EXTERN PetscErrorCode CSHistoryDestroy(CSHistory *h);

@@ -155,18 +155,6 @@ static PetscErrorCode HelpTaskEnd(PetscOptions *help)
   PetscFunctionReturn(0);
 }
 
-/* Every task of bin/confsurf, by -task name (like KSPSetType); later issues register theirs here. */
-static PetscErrorCode RegisterTasks(PetscFunctionList *tasks)
-{
-  PetscFunctionBeginUser;
-  PetscCall(PetscFunctionListAdd(tasks, "info", CSTaskInfo));
-  PetscCall(PetscFunctionListAdd(tasks, "flow", CSTaskFlow));
-  PetscCall(PetscFunctionListAdd(tasks, "spin", CSTaskSpin));
-  PetscCall(PetscFunctionListAdd(tasks, "spectrum", CSTaskSpectrum));
-  PetscCall(PetscFunctionListAdd(tasks, "curveflow", CSTaskCurveFlow));
-  PetscFunctionReturn(0);
-}
-
 /* Options nobody asked for are typos: name them and fail, instead of silently running something else. */
 static PetscErrorCode CheckUnusedOptions(MPI_Comm comm, PetscBool *bad)
 {
@@ -208,28 +196,6 @@ static PetscErrorCode ConciseErrorHandler(MPI_Comm comm, int line, const char *f
   return n;
 }
 
-static PetscErrorCode Run(MPI_Comm comm)
-{
-  char              task[64] = "info";
-  PetscFunctionList tasks    = NULL;
-  PetscErrorCode (*run)(MPI_Comm) = NULL;
-  PetscFunctionBeginUser;
-  PetscCall(RegisterTasks(&tasks));
-  PetscOptionsBegin(comm, NULL, "confsurf", NULL);
-  PetscCall(PetscOptionsFList("-task", "What to do", NULL, tasks, task, task, sizeof(task), NULL));
-  PetscOptionsEnd();
-  PetscCall(PetscFunctionListFind(tasks, task, &run));
-  if (!run) {
-    char known[256];
-    PetscCall(CSFunctionListNames(tasks, known, sizeof(known)));
-    PetscCall(PetscFunctionListDestroy(&tasks));
-    SETERRQ(comm, PETSC_ERR_ARG_UNKNOWN_TYPE, "-task %s: unknown task (known: %s)", task, known);
-  }
-  PetscCall(PetscFunctionListDestroy(&tasks));
-  PetscCall((*run)(comm));
-  PetscFunctionReturn(0);
-}
-
 int main(int argc, char **argv)
 {
   PetscErrorCode ierr;
@@ -256,7 +222,7 @@ int main(int argc, char **argv)
   PetscCall(CSInitializePackage()); /* events, PCs and solver types, before any options are read */
   PetscCall(PetscOptionsHasName(NULL, NULL, "-cs_traceback", &traceback));
   if (!traceback) PetscCall(PetscPushErrorHandler(ConciseErrorHandler, NULL));
-  ierr = Run(PETSC_COMM_WORLD);
+  ierr = CSDriverRun(PETSC_COMM_WORLD); /* src/driver/task_run.c */
   if (!traceback) PetscCall(PetscPopErrorHandler());
   if (!ierr && !helpmode) PetscCall(CheckUnusedOptions(PETSC_COMM_WORLD, &bad));
   if (helpmode) PetscCall(HelpTaskEnd(&helpdb));

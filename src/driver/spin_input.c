@@ -35,6 +35,31 @@ static PetscErrorCode ReadValuesFile(const char option[], const char path[], Pet
   PetscFunctionReturn(0);
 }
 
+/* rho as an array of a caller of the library (src/api: the Python interface's spin(V, F, rho)), on rank 0, in
+   place of -rho FILE while set (on every rank); read as the file would be, with the same checks. */
+static const PetscReal *RhoArray = NULL;
+static PetscInt         RhoArrayN = 0;
+
+PetscErrorCode CSDriverSpinSetRhoArray(PetscBool set, PetscInt n, const PetscReal rho[])
+{
+  PetscFunctionBeginUser;
+  RhoArray  = set ? (rho ? rho : (const PetscReal *)&RhoArrayN) : NULL; /* non-NULL on every rank while set */
+  RhoArrayN = set ? n : 0;
+  PetscFunctionReturn(0);
+}
+
+/* Rank 0: the array's values as ReadValuesFile reads a file's */
+static PetscErrorCode CopyValues(PetscInt n, const char what[], PetscScalar a[])
+{
+  PetscFunctionBeginUser;
+  PetscCheck(RhoArrayN == n, PETSC_COMM_SELF, PETSC_ERR_ARG_SIZ, "rho (array): %" PetscInt_FMT " values, expected %" PetscInt_FMT " (%s)", RhoArrayN, n, what);
+  for (PetscInt i = 0; i < n; i++) {
+    PetscCheck(!PetscIsInfOrNanReal(RhoArray[i]) && PetscAbsReal(RhoArray[i]) <= 1e12, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "rho (array): value %" PetscInt_FMT " is %g, %s", i, (double)RhoArray[i], PetscIsInfOrNanReal(RhoArray[i]) ? "not finite" : "beyond 1e12 in absolute value");
+    a[i] = RhoArray[i];
+  }
+  PetscFunctionReturn(0);
+}
+
 /* Reads a per-vertex (ncomp 1 or 3) or per-face field in file order into the global vector g. */
 static PetscErrorCode ReadField(CSMesh mesh, const char option[], const char path[], PetscInt depth, PetscInt ncomp, const char what[], Vec g)
 {
@@ -43,7 +68,8 @@ static PetscErrorCode ReadField(CSMesh mesh, const char option[], const char pat
   PetscInt       n = depth == 2 ? mesh->Nf : mesh->Nv;
   PetscFunctionBeginUser;
   PetscCall(VecGetArray(field->vec, &a));
-  CSRootCall(mesh->comm, ReadValuesFile(option, path, n, ncomp, what, a));
+  if (RhoArray && !strcmp(option, "-rho")) CSRootCall(mesh->comm, CopyValues(n, what, a)); /* -rho's values as an array (src/api) */
+  else CSRootCall(mesh->comm, ReadValuesFile(option, path, n, ncomp, what, a));
   PetscCall(VecRestoreArray(field->vec, &a));
   PetscCall(CSMeshScatter(field, field->vec, g));
   PetscFunctionReturn(0);
@@ -100,6 +126,8 @@ PetscErrorCode CSDriverSpinRhoFromOptions(CSSpin spin, Vec x, CSRhoLocation *loc
   PetscCall(CSOptionsString("-spin_target_mesh", "Nearest spin transformation of this deformation (same connectivity; crane2011 Sec. 7.2)", NULL, target, target, sizeof(target), &hastarget));
   PetscOptionsEnd();
   if (!hasbump) nc = 0;
+  PetscCheck(!RhoArray || !hasfile, mesh->comm, PETSC_ERR_ARG_INCOMP, "-rho %s: rho is given as an array", file);
+  if (RhoArray) hasfile = PETSC_TRUE; /* the array takes -rho FILE's place */
   {
     /* finite and bounded (issue 36, item 16: inf or nan failed later inside the factorisation, naming nothing):
        rho beyond 1e12 swamps the Dirac operator's O(1/h) entries and the factorisation loses every digit */

@@ -7,8 +7,33 @@
 typedef struct {
   char             file[PETSC_MAX_PATH_LEN], shape[32];
   PetscBool        has_file, has_gen, open, close;
+  PetscBool        arrays; /* the points of CSCurveDataSetArraySource (src/api) */
   CSCurveGenParams p;
 } CurveOptions;
+
+/* The points of a caller of the library (src/api: the Python interface's P), on rank 0, while set. */
+static const CSCurveData *ArraySource = NULL;
+
+PetscErrorCode CSCurveDataSetArraySource(const CSCurveData *cd)
+{
+  PetscFunctionBeginUser;
+  ArraySource = cd;
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode CopyArrays(CSCurveData *cd)
+{
+  const CSCurveData *a = ArraySource;
+  PetscFunctionBeginUser;
+  PetscCall(PetscMemzero(cd, sizeof(*cd)));
+  cd->m      = a->m;
+  cd->closed = a->closed;
+  PetscCall(PetscStrncpy(cd->name, a->name, sizeof(cd->name)));
+  PetscCall(PetscMalloc2(2 * a->m, &cd->x, a->m, &cd->line)); /* as the readers (CSCurveDataDestroy) */
+  PetscCall(PetscArraycpy(cd->x, a->x, 2 * a->m));
+  PetscCall(PetscArrayzero(cd->line, a->m)); /* line 0: no file line in the messages */
+  PetscFunctionReturn(0);
+}
 
 static PetscErrorCode ReadOptions(MPI_Comm comm, CurveOptions *o)
 {
@@ -36,7 +61,9 @@ static PetscErrorCode ReadOptions(MPI_Comm comm, CurveOptions *o)
   PetscCall(PetscOptionsBool("-curve_open", "Treat the input as an open curve (no closure constraints)", NULL, o->open, &o->open, NULL));
   PetscCall(PetscOptionsBool("-curve_close", "Close an open input line with the edge last -> first", NULL, o->close, &o->close, NULL));
   PetscOptionsEnd();
-  PetscCheck(o->has_file != o->has_gen, comm, PETSC_ERR_ARG_WRONG, "give exactly one of -curve FILE and -gen_curve circle|ellipse|star|noisy|limacon");
+  o->arrays = (PetscBool)(ArraySource != NULL); /* set on every rank */
+  PetscCheck(!o->arrays || (!o->has_file && !o->has_gen), comm, PETSC_ERR_ARG_WRONG, "-%s: the curve is given as an array (P); -curve and -gen_curve are for the command line", o->has_file ? "curve" : "gen_curve");
+  PetscCheck(o->arrays || o->has_file != o->has_gen, comm, PETSC_ERR_ARG_WRONG, "give exactly one of -curve FILE and -gen_curve circle|ellipse|star|noisy|limacon");
   PetscCheck(!(o->open && o->close), comm, PETSC_ERR_ARG_INCOMP, "-curve_open and -curve_close exclude each other");
   PetscFunctionReturn(0);
 }
@@ -47,7 +74,8 @@ static PetscErrorCode Load(const CurveOptions *o, CSCurveData *cd)
   PetscErrorCode ierr;
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(CS_EVENT_MeshRead, 0, 0, 0, 0));
-  if (o->has_file) PetscCall(CSCurveDataRead(o->file, cd));
+  if (o->arrays) PetscCall(CopyArrays(cd));
+  else if (o->has_file) PetscCall(CSCurveDataRead(o->file, cd));
   else PetscCall(CSCurveDataGenerate(o->shape, &o->p, cd));
   if (o->close) cd->closed = PETSC_TRUE;
   if (o->open) cd->closed = PETSC_FALSE;

@@ -18,6 +18,7 @@ static const char *const GenNames[] = {"icosphere", "torus", "flattorus", "cylin
 typedef struct {
   char      path[PETSC_MAX_PATH_LEN];
   PetscBool file;
+  PetscBool arrays; /* the mesh of CSMeshDataSetArraySource (the library's callers, src/api) */
   GenType   gen;
   PetscInt  level, n, m, rings;
   PetscReal radius, R, r, tau_re, tau_im, height, tau[2]; /* tau: -gen lattice */
@@ -34,13 +35,24 @@ typedef struct {
 } MeshSource;
 static const char *const RefineNames[] = {"midpoint", "loop"};
 
+/* The arrays of a caller of the library (src/api: the Python interface's V, F), on rank 0, while set. */
+static const CSMeshData *ArraySource = NULL;
+
+PetscErrorCode CSMeshDataSetArraySource(const CSMeshData *md)
+{
+  PetscFunctionBeginUser;
+  ArraySource = md;
+  PetscFunctionReturn(0);
+}
+
 /* Rank 0, under PetscReturnErrorHandler: on failure nothing stays allocated in md. */
 static PetscErrorCode MeshSourceLoad(const MeshSource *src, CSMeshData *md, CSTopology *topo)
 {
   PetscErrorCode ierr;
 
   PetscFunctionBeginUser;
-  if (src->file) PetscCall(CSMeshDataRead(src->path, md));
+  if (src->arrays) PetscCall(CSMeshDataDuplicate(ArraySource, md)); /* validated below as a file is */
+  else if (src->file) PetscCall(CSMeshDataRead(src->path, md));
   else {
     switch (src->gen) {
     case GEN_ICOSPHERE: PetscCall(CSMeshDataIcosphere(src->level, src->radius, src->project, md)); break;
@@ -188,7 +200,9 @@ PetscErrorCode CSMeshDataFromOptions(MPI_Comm comm, const char prefix[], CSMeshD
   src.refine_loop = rtype == 1 ? PETSC_TRUE : PETSC_FALSE;
   PetscCall(RemeshOptions(comm, prefix, &src));
   PetscCheck(!(src.remesh_faces || src.remesh_h > 0) || (!src.lengths[0] && !src.crossratios[0]), comm, PETSC_ERR_ARG_INCOMP, "-%smesh_remesh with -%smesh_lengths or -%smesh_cross_ratios: the target class is given for the input's own edges", pre, pre, pre);
-  PetscCheck(src.file != genset, comm, PETSC_ERR_ARG_WRONG, "give exactly one of -%smesh FILE and -%sgen icosphere|torus|flattorus|cylinder|disk|lattice|spiky|morin (%s)", pre, pre, src.file ? "both were given" : "neither was given");
+  src.arrays = (PetscBool)(ArraySource != NULL); /* set on every rank */
+  PetscCheck(!src.arrays || (!src.file && !genset), comm, PETSC_ERR_ARG_WRONG, "-%s%s: the mesh is given as arrays (V, F); -%smesh and -%sgen are for the command line", pre, src.file ? "mesh" : "gen", pre, pre);
+  PetscCheck(src.arrays || src.file != genset, comm, PETSC_ERR_ARG_WRONG, "give exactly one of -%smesh FILE and -%sgen icosphere|torus|flattorus|cylinder|disk|lattice|spiky|morin (%s)", pre, pre, src.file ? "both were given" : "neither was given");
   src.gen = (GenType)gen;
   CSRootCall(comm, MeshSourceLoad(&src, md, topo));
   PetscFunctionReturn(0);

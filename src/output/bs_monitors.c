@@ -72,7 +72,7 @@ PetscErrorCode CSBSFlowMonitorSetHistory(CSBSFlow flow, CSOutput *out)
   CSMesh       mesh;
   CSBSFlowInfo i;
   PetscFunctionBeginUser;
-  if (!out->has_history) PetscFunctionReturn(0);
+  if (!out->has_history && !CSHistoryCaptureActive()) PetscFunctionReturn(0); /* a library caller keeps it in memory (src/api) */
   PetscCall(CSBSFlowGetMesh(flow, &mesh));
   PetscCall(CSBSFlowGetInfo(flow, &i));
   PetscCall(PetscNew(&H));

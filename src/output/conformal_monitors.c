@@ -68,7 +68,7 @@ PetscErrorCode CSConformalFlowMonitorSetHistory(CSConformalFlow flow, CSOutput *
   HistoryCtx *H;
   CSMesh      mesh;
   PetscFunctionBeginUser;
-  if (!out->has_history) PetscFunctionReturn(0);
+  if (!out->has_history && !CSHistoryCaptureActive()) PetscFunctionReturn(0); /* a library caller keeps it in memory (src/api) */
   PetscCall(CSConformalFlowGetMesh(flow, &mesh));
   PetscCall(PetscNew(&H));
   PetscCall(CSOutputHistoryCreate(out, mesh->comm, "it,willmore,willmore_bs,E_H,gamma,q_mean,q_max,area,res_total,res_inversion,res_exact,closing_error,log_area_spread,vnorm,tau,step_seconds,seconds,H_spread,boundary_error,nonexact,halvings,q_step", 0, &H->hist));

@@ -37,7 +37,7 @@ PetscErrorCode CSCurveFlowMonitorSetHistory(CSCurveFlow flow, CSOutput *out)
   CSCurve   curve;
   CSHistory h;
   PetscFunctionBeginUser;
-  if (!out->has_history) PetscFunctionReturn(0);
+  if (!out->has_history && !CSHistoryCaptureActive()) PetscFunctionReturn(0); /* a library caller keeps it in memory (src/api) */
   PetscCall(CSCurveFlowGetCurve(flow, &curve));
   PetscCall(CSOutputHistoryCreate(out, curve->comm, "it,energy,turning_number,closure_gap,length_distortion,kappa_spread,kappa_spread_rel,stationarity,change,step_seconds,seconds", 0, &h));
   PetscCall(CSCurveFlowMonitorSet(flow, MonitorHistory, h, CSHistoryMonitorDestroy));
@@ -132,6 +132,7 @@ PetscErrorCode CSCurveFlowReport(CSCurveFlow flow, CSOutput *out)
     PetscCall(CSCurveWrite(curve, x, NULL, out->out));
     PetscCall(PetscPrintf(curve->comm, "wrote curve %s\n", out->out));
   }
+  PetscCall(CSOutputCaptureCurve(curve, x));
   PetscCall(CSOutputWriteSummary(out, curve->comm));
   PetscFunctionReturn(0);
 }

@@ -183,6 +183,7 @@ PetscErrorCode CSOutputAddRunFacts(CSOutput *o, MPI_Comm comm)
 PetscErrorCode CSOutputWriteSummary(CSOutput *o, MPI_Comm comm)
 {
   PetscFunctionBeginUser;
+  PetscCall(CSOutputCaptureSummary(o->json, comm)); /* a caller of the library (src/api) takes it in memory */
   if (!o->has_summary) PetscFunctionReturn(0);
   PetscCall(CSJSONWrite(o->json, o->summary));
   PetscCall(PetscPrintf(comm, "wrote summary %s\n", o->summary));
@@ -198,6 +199,7 @@ PetscErrorCode CSOutputFinish(CSOutput *o, CSMesh mesh, Vec x)
     PetscCall(CSMeshWrite(mesh, x, o->out));
     PetscCall(PetscPrintf(mesh->comm, "wrote mesh %s\n", o->out));
   }
+  PetscCall(CSOutputCaptureMesh(mesh, x));
   PetscCall(CSOutputWriteSummary(o, mesh->comm));
   PetscFunctionReturn(0);
 }
@@ -317,13 +319,13 @@ PetscErrorCode CSOutputHistoryCreate(CSOutput *o, MPI_Comm comm, const char head
   PetscMPIInt rank;
   PetscFunctionBeginUser;
   *h = NULL;
-  if (!o->has_history) PetscFunctionReturn(0);
+  if (!o->has_history && !CSHistoryCaptureActive()) PetscFunctionReturn(0);
   for (const char *c = header; *c; c++) ncol += (*c == ',');
   PetscCheck(ncol <= 64, comm, PETSC_ERR_SUP, "history with %" PetscInt_FMT " columns: at most 64", ncol);
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   if (o->resumed && !rank) PetscCall(ReadHistoryRows(o->history, header, ncol, next, &nrows, &rows));
   PetscCallMPI(MPI_Bcast(&nrows, 1, MPIU_INT, 0, comm)); /* appending is collective; the rows are read on rank 0 */
-  PetscCall(CSHistoryCreate(comm, o->history, header, h));
+  PetscCall(CSHistoryCreate(comm, o->has_history ? o->history : NULL, header, h)); /* NULL: the capture only (src/api) */
   for (PetscInt i = 0; i < nrows; i++) PetscCall(CSHistoryAppend(*h, ncol, rows ? rows + i * ncol : NULL));
   PetscCall(PetscFree(rows));
   PetscFunctionReturn(0);

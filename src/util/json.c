@@ -132,6 +132,18 @@ PetscErrorCode CSJSONWrite(CSJSON js, const char path[])
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode CSJSONGetString(CSJSON js, char **text)
+{
+  size_t len = 4, k = 0;
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < js->n; i++) len += strlen(js->e[i].key) + strlen(js->e[i].val) + 8;
+  PetscCall(PetscMalloc1(len, text));
+  k += (size_t)sprintf(*text + k, "{\n");
+  for (PetscInt i = 0; i < js->n; i++) k += (size_t)sprintf(*text + k, "  \"%s\": %s%s\n", js->e[i].key, js->e[i].val, i + 1 < js->n ? "," : "");
+  (void)sprintf(*text + k, "}\n");
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode CSJSONDestroy(CSJSON *js)
 {
   PetscFunctionBeginUser;
