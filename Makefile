@@ -57,18 +57,23 @@ BENCH_SRC:= $(wildcard runs/*.c)
 BENCHES  := $(BENCH_SRC:runs/%.c=build/runs/%)
 LIB      := build/libconfsurf.a
 # The shared library of the Python interface (python/confsurf, docs/python.md): the library, the driver's tasks
-# (not main.c) and the entry layer src/api/, compiled once more with -fPIC into build/pic/ so that the binary and
-# the unit programs keep their static, non-PIC objects (same code, same speed).
+# (not main.c) and the entry layer src/api/. Every object is compiled once, position-independent, and serves the
+# static library, the binary and the .so alike (a second -fPIC copy doubled the build of `make test`);
+# -fno-semantic-interposition keeps gcc inlining and calling our own global functions directly, as without -fPIC.
+CFLAGS   += -fPIC -fno-semantic-interposition
+CXXFLAGS += -fPIC
 API_SRC  := $(wildcard src/api/*.c)
-SO_OBJ   := $(patsubst %.c,build/pic/%.o,$(LIB_SRC) $(filter-out src/driver/main.c,$(DRV_SRC)) $(API_SRC)) $(CXX_SRC:%.cc=build/pic/%.o)
+API_OBJ  := $(API_SRC:%.c=build/obj/%.o)
+SO_OBJ   := $(LIB_OBJ) $(filter-out build/obj/src/driver/main.o,$(DRV_OBJ)) $(API_OBJ)
 SO       := build/libconfsurf.so
+# every object is compiled again when the compiler flags change (as meshdata_remesh.o with build/cgal.flag)
+$(shell (echo "$(CFLAGS) $(CXXFLAGS)" | cmp -s - build/cflags.flag || echo "$(CFLAGS) $(CXXFLAGS)" > build/cflags.flag))
+$(LIB_OBJ) $(DRV_OBJ) $(API_OBJ): build/cflags.flag
 
 all: bin/confsurf $(TESTS) $(BENCHES) $(SO)
 
 # the quaternion Cholesky's dense loops need -O3 to be vectorised (gcc 12 does not at -O2)
-build/obj/src/linalg/quaternion_cholesky.o build/pic/src/linalg/quaternion_cholesky.o: CFLAGS += -O3
-build/pic/src/mesh/meshdata_remesh.o: build/cgal.flag
-build/pic/src/mesh/meshdata_remesh.o: CPPFLAGS += $(CPPFLAGS_CGAL)
+build/obj/src/linalg/quaternion_cholesky.o: CFLAGS += -O3
 
 build/obj/%.o: %.c
 	@mkdir -p $(dir $@)
@@ -77,14 +82,6 @@ build/obj/%.o: %.c
 build/obj/%.o: %.cc
 	@mkdir -p $(dir $@)
 	$(CXX) $(CPPFLAGS_CGAL) $(CXXFLAGS) -c $< -o $@
-
-build/pic/%.o: %.c
-	@mkdir -p $(dir $@)
-	$(CC) $(CPPFLAGS) $(CFLAGS) -fPIC -c $< -o $@
-
-build/pic/%.o: %.cc
-	@mkdir -p $(dir $@)
-	$(CXX) $(CPPFLAGS_CGAL) $(CXXFLAGS) -fPIC -c $< -o $@
 
 # linked against PETSc, SLEPc, MPI and the rest as the binary is (-lstdc++ with CGAL: the remeshing unit is C++);
 # Python loads it with ctypes (python/confsurf/_lib.py)
