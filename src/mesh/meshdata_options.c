@@ -53,6 +53,12 @@ static PetscErrorCode MeshSourceLoad(const MeshSource *src, CSMeshData *md, CSTo
     case GEN_MORIN: PetscCall(CSMeshDataMorin(src->n, src->m, src->morin_eps, md)); break;
     }
   }
+  if (md->fuv && (src->refine || src->remesh_faces || src->remesh_h > 0)) { /* STOPGAP (tex-show): a generator's UVs
+    are dropped before -mesh_refine / -mesh_remesh until those carry them (issue 38, the tex-io branch) */
+    PetscCall(PetscFree(md->uv));
+    PetscCall(PetscFree(md->fuv));
+    md->nuv = 0;
+  }
   ierr = CSMeshDataValidate(md, topo);
   if (!ierr && (src->remesh_faces || src->remesh_h > 0)) ierr = CSMeshDataRemesh(md, topo, src->remesh_faces, src->remesh_h, src->remesh_iterations);
   if (!ierr && src->lengths[0]) ierr = CSMeshDataReadLengths("-mesh_lengths", src->lengths, md);
