@@ -100,11 +100,14 @@ def camera(view):
     return d, right, up
 
 
-def draw_surface(ax, V, F, values, cmap, norm, view, frame_box):
-    """Orthographic render into a 2-D axes; frame_box (centre, radius) fixes the camera's extent."""
+def draw_surface(ax, V, F, values, cmap, norm, view, frame_box, two_sided=False):
+    """Orthographic render into a 2-D axes; frame_box (centre, radius) fixes the camera's extent. two_sided: back
+    faces drawn too, shaded by their flipped normal (open surfaces, which a map may turn over)."""
     d, right, up = camera(view)
     T, n, _ = face_geometry(V, F)
-    vis = (n @ d) > 0
+    if two_sided:
+        n = n * np.where(n @ d < 0, -1.0, 1.0)[:, None]
+    vis = (n @ d) > 0 if not two_sided else np.ones(len(F), dtype=bool)
     P = np.stack([T @ right, T @ up], axis=-1)[vis]
     depth = (T @ d).mean(axis=1)[vis]
     order = np.argsort(depth)
@@ -132,7 +135,15 @@ def pixel_box(fig, ax, lo, hi):
     return [int(np.floor(min(x0, x1))), int(np.floor(H - max(y0, y1))), int(np.ceil(max(x0, x1))), int(np.ceil(H - min(y0, y1)))]
 
 
+def is_open(F):
+    """Some edge has one face (a boundary): drawn two-sided, as a map may turn the surface over."""
+    e = np.sort(np.concatenate([F[:, [0, 1]], F[:, [1, 2]], F[:, [2, 0]]]), axis=1)
+    _, count = np.unique(e, axis=0, return_counts=True)
+    return bool((count == 1).any())
+
+
 def surfaces(outdir, V0, V, F, view, title, info):
+    two = is_open(F)
     both = np.vstack([V0, V])
     lo, hi = both.min(0), both.max(0)
     box = ((lo + hi) / 2, 0.55 * np.linalg.norm(hi - lo) / np.sqrt(3) * 1.05)
@@ -146,7 +157,7 @@ def surfaces(outdir, V0, V, F, view, title, info):
     fig, axs = plt.subplots(1, 2, figsize=(9, 4.6))
     boxes = []
     for ax, X, h, lab in ((axs[0], V0, h0, "input"), (axs[1], V, h1, "final")):
-        lo2, hi2 = draw_surface(ax, X, F, h, cmap, norm, view, box)
+        lo2, hi2 = draw_surface(ax, X, F, h, cmap, norm, view, box, two)
         ax.set_title(lab, fontsize=10)
         boxes.append((ax, lo2, hi2))
     fig.colorbar(matplotlib.cm.ScalarMappable(norm=norm, cmap=cmap), ax=list(axs), shrink=0.8, label="mean curvature H")
@@ -166,7 +177,7 @@ def surfaces(outdir, V0, V, F, view, title, info):
     fig, axs = plt.subplots(1, 2, figsize=(9, 4.6))
     boxes = []
     for ax, vw, lab in ((axs[0], view, "final"), (axs[1], (-view[0], view[1] + 180), "final, from the other side")):
-        lo2, hi2 = draw_surface(ax, V, F, q, qcmap, qnorm, vw, box)
+        lo2, hi2 = draw_surface(ax, V, F, q, qcmap, qnorm, vw, box, two)
         ax.set_title(lab, fontsize=10)
         boxes.append((ax, lo2, hi2))
     fig.colorbar(matplotlib.cm.ScalarMappable(norm=qnorm, cmap=qcmap), ax=list(axs), shrink=0.8,
@@ -282,10 +293,10 @@ def texture_q(V, F, UV):
 
 
 def checker_subdivide(V, F, UV, checks, budget=400000):
-    """Each triangle cut into L^2 in UV (L from the largest UV edge, at least 4 pieces a square, within budget
+    """Each triangle cut into L^2 in UV (L from the largest UV edge: 16 pieces across a square, at least 3 a face, within budget
     sub-triangles): the sub-triangles' positions and their checker colour (0/1) at the UV centroid."""
     emax = max(np.linalg.norm(UV[:, (k + 1) % 3] - UV[:, k], axis=1).max() for k in range(3))
-    L = int(max(1, min(np.ceil(emax * checks * 4), np.floor(np.sqrt(budget / len(F))))))
+    L = int(max(1, min(max(3, np.ceil(emax * checks * 16)), np.floor(np.sqrt(budget / len(F))))))
     tris = []
     for i in range(L):
         for j in range(L - i):
@@ -302,7 +313,7 @@ def checker_subdivide(V, F, UV, checks, budget=400000):
 def texture(path, V0, V, F, UV, view, checks, title, info):
     both = np.vstack([V0, V])
     lo, hi = both.min(0), both.max(0)
-    box = ((lo + hi) / 2, 0.55 * np.linalg.norm(hi - lo) / np.sqrt(3) * 1.05)
+    box = ((lo + hi) / 2, 0.55 * np.linalg.norm(hi - lo) / np.sqrt(3) * 1.2)  # room for a flat disk seen at an angle
     cmap = matplotlib.colors.ListedColormap(["#1d3557", "#f1faee"])
     norm = matplotlib.colors.Normalize(0, 1)
     fig, axs = plt.subplots(1, 2, figsize=(9, 4.8))
@@ -311,7 +322,7 @@ def texture(path, V0, V, F, UV, view, checks, title, info):
         q, a = texture_q(X, F, UV)
         qs.append((float((q * a).sum() / a.sum()), float(q.max())))
         P, T, colour, L = checker_subdivide(X, F, UV, checks)
-        lo2, hi2 = draw_surface(ax, P, T, colour, cmap, norm, view, box)
+        lo2, hi2 = draw_surface(ax, P, T, colour, cmap, norm, view, box, two_sided=True)
         ax.set_title("%s: texture_q_mean %.4f, max %.4f" % (lab, qs[-1][0], qs[-1][1]), fontsize=9)
         boxes.append((ax, lo2, hi2))
     fig.suptitle((title + ": " if title else "") + "checkerboard in UV (%d squares per unit), input and final (same camera)" % checks, fontsize=10)
