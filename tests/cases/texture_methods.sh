@@ -18,10 +18,6 @@ print(("ok  " if ok else "BAD ") + "%s: texture_q_mean %.6f, input %.6f, q_mean 
 sys.exit(0 if ok else 1)
 PY
 }
-# info: the result is the input
-run -task info -gen torus -gen_torus_R 2 -gen_tube_r 1 -gen_n 24 -gen_m 24 -summary "$TMP/info.json"
-check_close "$(json texture_q_mean "$TMP/info.json")" "$(json texture_q_mean_input "$TMP/info.json")" 0 "info: texture_q_mean = input" || exit 1
-check_close "$(json texture_q_mean "$TMP/info.json")" 2 0.05 "info: torus R=2 r=1: texture_q_mean ~ R/r" || exit 1
 # spin transformation of the cylinder: arc-length UVs (Q_in ~ 1), so texture_q_mean ~ q_mean
 run -task spin -gen cylinder -gen_n 24 -gen_m 8 -rho_bump_center 1,0,0 -rho_bump_radius 0.5 -summary "$TMP/spin.json"
 bounds "$TMP/spin.json" spin || exit 1
@@ -36,7 +32,11 @@ run -task flow -flow_type conformal -gen torus -gen_n 24 -gen_m 12 -gen_deform_b
 bounds "$TMP/conf.json" "conformal flow" || exit 1
 run -task flow -options_file options/flow_fig2_twist.opts -flow_max_it 4 -summary "$TMP/cgd.json"
 bounds "$TMP/cgd.json" "cgd, class kept" || exit 1
-if [ "$NP" = 1 ]; then # the keys alone: serial (each run costs ~3 s of mpirun start-up on 2 ranks under load)
+if [ "$NP" = 1 ]; then # the keys alone, serial (each run costs ~3 s of mpirun start-up on 2 ranks under load)
+  # info: the result is the input (the distributed measure itself: foundation_texture)
+  run -task info -gen torus -gen_torus_R 2 -gen_tube_r 1 -gen_n 24 -gen_m 24 -summary "$TMP/info.json"
+  check_close "$(json texture_q_mean "$TMP/info.json")" "$(json texture_q_mean_input "$TMP/info.json")" 0 "info: texture_q_mean = input" || exit 1
+  check_close "$(json texture_q_mean "$TMP/info.json")" 2 0.05 "info: torus R=2 r=1: texture_q_mean ~ R/r" || exit 1
   run -task flow -flow_type bs -gen torus -gen_n 16 -gen_m 8 -bs_max_it 2 -summary "$TMP/bs.json"
   json texture_q_mean_input "$TMP/bs.json" > /dev/null || { echo "BAD: -flow_type bs: no texture_q_mean_input"; exit 1; }
   run -task info -gen icosphere -gen_level 1 -summary "$TMP/ico.json"
