@@ -71,6 +71,31 @@ static inline void CSTriangleFrame(const PetscReal *const p[3], PetscReal F[9], 
   s[3] = CSVecDot(e2, F + 3);
 }
 
+/* Q = sigma_max / sigma_min >= 1 of the affine map A = E E0^{-1} taking a triangle with edges E0 to one with edges E
+   (each given as the two edge vectors of CSTriangleFrame's s: columns (s[0], s[1]) and (s[2], s[3])); 1 for a
+   similarity (crane2011 Sec. 6.1). Singular values without cancellation: with E = |(a+d, c-b)|/2 and
+   F = |(a-d, c+b)|/2, sigma_max = E + F and sigma_min = |E - F| (the conformal and anti-conformal parts of A). */
+static inline PetscReal CSAffineQ(const PetscReal t[4], const PetscReal t0[4])
+{
+  PetscReal E[2][2], E0[2][2], det0, A[2][2], Em, Fm;
+  E[0][0]  = t[0];
+  E[1][0]  = t[1];
+  E[0][1]  = t[2];
+  E[1][1]  = t[3];
+  E0[0][0] = t0[0];
+  E0[1][0] = t0[1];
+  E0[0][1] = t0[2];
+  E0[1][1] = t0[3];
+  det0     = E0[0][0] * E0[1][1] - E0[0][1] * E0[1][0];
+  A[0][0]  = (E[0][0] * E0[1][1] - E[0][1] * E0[1][0]) / det0;
+  A[0][1]  = (-E[0][0] * E0[0][1] + E[0][1] * E0[0][0]) / det0;
+  A[1][0]  = (E[1][0] * E0[1][1] - E[1][1] * E0[1][0]) / det0;
+  A[1][1]  = (-E[1][0] * E0[0][1] + E[1][1] * E0[0][0]) / det0;
+  Em       = 0.5 * PetscSqrtReal(PetscSqr(A[0][0] + A[1][1]) + PetscSqr(A[1][0] - A[0][1]));
+  Fm       = 0.5 * PetscSqrtReal(PetscSqr(A[0][0] - A[1][1]) + PetscSqr(A[1][0] + A[0][1]));
+  return (Em + Fm) / PetscAbsReal(Em - Fm);
+}
+
 /* cot of the interior angle at each corner: cot = (u.v)/|u x v| with u, v the two edges leaving the corner. */
 static inline void CSTriangleCotans(const PetscReal *const p[3], PetscReal cot[3])
 {
@@ -179,6 +204,11 @@ PETSC_EXTERN PetscErrorCode CSGeometryBoundaryLength(CSMesh mesh, Vec x, PetscRe
 /* Quasi-conformal error (crane2011 Sec. 6.1): per face the ratio sigma_max/sigma_min of the affine map from
    the reference triangle to the current one; q_mean is weighted by reference face area. q may be NULL. */
 PETSC_EXTERN PetscErrorCode CSGeometryQuasiConformal(CSMesh mesh, Vec xref, Vec x, Vec q, PetscReal *qmean, PetscReal *qmax);
+/* The quasi-conformal distortion of the texture (issue 38): per face Q = sigma_max/sigma_min of the affine map from
+   the face's UV triangle (mesh->faceUV) to its triangle in x (CSAffineQ), into q (dmF1, or NULL); the mean weighted
+   by the UV area (the same weights for the input and every result with these UVs) and the max over faces.
+   mesh->faceUV must be set (CSMeshTextureCreate). Collective (src/geometry/texture_quality.c). */
+PETSC_EXTERN PetscErrorCode CSGeometryTextureQ(CSMesh mesh, Vec x, Vec q, PetscReal *qmean, PetscReal *qmax);
 /* The conformal stress of an edge field q (dmE1; soliman2021 Eq. 20): per face the principal stress direction
    (unit, 3 per face, a vector laid out like dmF1 times 3), the larger and smaller eigenvalues (dmF1). */
 PETSC_EXTERN PetscErrorCode CSGeometryConformalStress(CSMesh mesh, Vec x, Vec q, Vec dir, Vec smax, Vec smin);

@@ -46,6 +46,8 @@ struct _p_CSMesh {
   Vec x;  /* positions, global vector of dmV3 */
   Vec lt; /* NULL, or the input's intrinsic edge lengths (CSMeshData len, dmE1): the target class of the flows */
   Vec ct; /* NULL, or the input's target log length cross ratios c0 (CSMeshData cr, dmE1; -mesh_cross_ratios) */
+  PetscReal *faceUV; /* NULL, or 6*nf: the input's texture coordinates (u, v) of each local face's corners in faceVert
+                        order (CSMeshData uv, fuv; issue 38); every rank has them or none does */
 
   /* Natural-order fields (rank 0 holds the whole field in file order) for I/O of vertex/face/edge fields. */
   CSMeshNatural natV3, natV1, natF1, natE1;
@@ -92,6 +94,9 @@ PETSC_EXTERN PetscErrorCode CSMeshCreateFromOptions(MPI_Comm comm, const char pr
 /* Distributes md (significant on rank 0 only; consumed: md is emptied). */
 PETSC_EXTERN PetscErrorCode CSMeshCreateFromData(MPI_Comm comm, CSMeshData *md, const CSTopology *topo, CSMesh *mesh);
 PETSC_EXTERN PetscErrorCode CSMeshDestroy(CSMesh *mesh);
+/* mesh->faceUV from rank 0's md->uv, md->fuv (nothing when md has none): a per-face field scattered from the file
+   order, each UV matched to its corner by vertex number (src/mesh/mesh_texture.c). Collective. */
+PETSC_EXTERN PetscErrorCode CSMeshTextureCreate(CSMesh mesh, const CSMeshData *md);
 /* A clone of mesh->dm with dof unknowns on every point of the given depth (0 vertices, 1 edges, 2 faces),
    e.g. 4 per vertex for quaternion fields. Local dof block v of its local vectors is local vertex v. */
 PETSC_EXTERN PetscErrorCode CSMeshCreateFieldDM(DM dm, PetscInt depth, PetscInt dof, const char name[], DM *out);

@@ -8,7 +8,7 @@ pkgs="petsc-dev slepc-dev libsuitesparse-dev openmpi-bin libopenblas0 pkg-config
 # --check requires, so `make` installs it before it builds (a build that finds no CGAL still succeeds, and then
 # -mesh_remesh refuses with one line naming `make deps`)
 pkgs="$pkgs libcgal-dev libgmp-dev libmpfr-dev g++"
-[ "${1:-}" = "--test" ] && pkgs="$pkgs paraview python3-paraview"
+[ "${1:-}" = "--test" ] && pkgs="$pkgs paraview python3-paraview xvfb"
 missing=""
 for p in $pkgs; do dpkg -s "$p" >/dev/null 2>&1 || missing="$missing $p"; done
 if [ -z "$missing" ]; then exit 0; fi

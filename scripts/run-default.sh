@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # `make run`: the default experiment (options/run_sphere.opts: a conformally constrained Willmore flow to
-# convergence), its pictures (scripts/pictures.py), then where the results went and a two-line reading.
+# convergence), its pictures (scripts/pictures.py), a textured input's checkerboard picture (a spin transformation of
+# a disk, docs/textures.md), then where the results went and a two-line reading.
 # OUT=dir (default out/run), NP=ranks (default 2), OPTS=options file.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -18,6 +19,11 @@ echo "+ ${cmd[*]}"
 py=$(bash scripts/find-python.sh)
 "$py" scripts/pictures.py "$out/pictures" --input "$out/input.obj" --result "$out/final.obj" \
   --history "$out/history.csv" --summary "$out/summary.json" --title "$(basename "$opts" .opts)"
+# a textured input (issue 38): a spin transformation adds a bump to a disk whose UVs are its planar coordinates
+# (about 1 s); its checkerboard in UV, input and result from one camera
+bin/confsurf -options_file options/texture_spin_fig10.opts -viewer_dir "$out/texture/vtu" -summary "$out/texture/summary.json" > "$out/texture.log" 2>&1 || { cat "$out/texture.log"; exit 1; }
+"$py" scripts/pictures.py "$out/texture/pictures" --series "$out/texture/vtu/series.pvd" --summary "$out/texture/summary.json" \
+  --title "spin transformation of a textured disk" --view 35,-60 --texture_check "$out/pictures/texture.png" > /dev/null
 t1=$(date +%s.%N)
 echo
 echo "Results ($(printf '%.0f' "$(echo "$t1 - $t0" | bc)") s):"
@@ -28,6 +34,7 @@ echo "  $out/vtu/series.pvd                ParaView series (every 5 iterations a
 echo "  $out/pictures/mean_curvature.png   input and final, coloured by mean curvature"
 echo "  $out/pictures/quasi_conformal.png  final, coloured by the quasi-conformal error Q against the input"
 echo "  $out/pictures/history.png          energy, EL residual, constraint violation, step size per iteration"
+echo "  $out/pictures/texture.png          a textured disk and its spin transformation (checkerboard in UV; $out/texture/)"
 "$py" - "$out/summary.json" <<'PY'
 import json, math, sys
 s = json.load(open(sys.argv[1]))

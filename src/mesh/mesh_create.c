@@ -323,6 +323,7 @@ PetscErrorCode CSMeshCreateFromData(MPI_Comm comm, CSMeshData *md, const CSTopol
   PetscCall(CSMeshNaturalCreate(m, m->dmE1, 1, 1, &m->natE1));
   PetscCall(EdgeFieldFromData(m, md, md->len, "target_lengths", &m->lt));
   PetscCall(EdgeFieldFromData(m, md, md->cr, "target_cross_ratios", &m->ct));
+  PetscCall(CSMeshTextureCreate(m, md));
 
   /* rank 0 keeps the connectivity for output; the coordinates now live in the distributed vector */
   m->serial = *md;
@@ -365,6 +366,11 @@ static PetscErrorCode OrientOutward(CSMeshData *md, const CSTopology *topo, Pets
       PetscReal l        = md->len[3 * f + 1];
       md->len[3 * f + 1] = md->len[3 * f + 2];
       md->len[3 * f + 2] = l;
+    }
+    if (md->fuv) { /* each corner keeps its texture coordinates */
+      PetscInt t         = md->fuv[3 * f + 1];
+      md->fuv[3 * f + 1] = md->fuv[3 * f + 2];
+      md->fuv[3 * f + 2] = t;
     }
     if (md->cr) { /* the same swap, and c0 changes sign with the orientation (the faces ijk and jil trade places) */
       PetscReal c       = md->cr[3 * f + 1];
@@ -451,6 +457,7 @@ PetscErrorCode CSMeshDestroy(CSMesh *mesh)
   PetscCall(PetscFree3(m->faceVert, m->faceEdge, m->edgeVert));
   PetscCall(PetscFree4(m->vertOwned, m->edgeOwned, m->vertBoundary, m->edgeBoundary));
   PetscCall(PetscFree(m->vertNatural));
+  PetscCall(PetscFree(m->faceUV));
   PetscCall(PetscFree(m->faceNatural));
   PetscCall(CSMeshDataDestroy(&m->serial));
   PetscCall(DMDestroy(&m->dmV3));

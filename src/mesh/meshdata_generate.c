@@ -1,7 +1,7 @@
 /* Generated test surfaces: icosphere, torus of revolution, flat (rectangular-class) torus, lattice torus (any class),
    open cylinder,
    flat disk. All are outward oriented (normals by the right-hand rule on counter-clockwise corners) and have
-   no duplicate vertices. */
+   no duplicate vertices. All but the icosphere carry their natural parameters as texture coordinates (issue 38). */
 #include "meshdata_generate_impl.h"
 #include "cs_util.h"
 #include <stdio.h>
@@ -61,6 +61,39 @@ void CSMeshDataOrientOutward(CSMeshData *md)
       md->len[3 * i + 2] = l;
     }
   }
+}
+
+/* Grid offset of vertex b from vertex a along one periodic direction of k >= 3 segments: -1, 0 or 1. */
+static inline PetscInt GridStep(PetscInt a, PetscInt b, PetscInt k)
+{
+  return (b - a + k + 1) % k - 1;
+}
+
+/* Texture coordinates of a quad grid (issue 38): face f lies in quad q = f/2 at (qi, qj), and each corner gets the
+   UV of its grid point unwrapped from the quad's, (gi, gj) = (qi + di, qj + dj) with di, dj in {0, 1}, so a seam
+   column gi = n (or row gj = m) repeats gi = 0 with u = 1: uv(gi, gj) = (gi/n + a gj, b gj) on an (n+1) x (m+1) list.
+   Periodic in i (n around) and, unless cyl, in j; cyl: vertex j n + i and quad j n + i (-gen cylinder), else vertex
+   i m + j and quad i m + j (the tori). Found from the vertices of the final faces, so any orientation flip is kept. */
+PetscErrorCode CSMeshDataGridUVs(CSMeshData *md, PetscInt n, PetscInt m, PetscBool cyl, PetscReal a, PetscReal b)
+{
+  PetscFunctionBeginUser;
+  md->nuv = (n + 1) * (m + 1);
+  PetscCall(PetscMalloc1(2 * md->nuv, &md->uv));
+  PetscCall(PetscMalloc1(3 * md->nf, &md->fuv));
+  for (PetscInt gi = 0; gi <= n; gi++)
+    for (PetscInt gj = 0; gj <= m; gj++) {
+      md->uv[2 * (gi * (m + 1) + gj)]     = (PetscReal)gi / n + a * gj;
+      md->uv[2 * (gi * (m + 1) + gj) + 1] = b * gj;
+    }
+  for (PetscInt f = 0; f < md->nf; f++) {
+    PetscInt q = f / 2, qi = cyl ? q % n : q / m, qj = cyl ? q / n : q % m;
+    for (int k = 0; k < 3; k++) {
+      PetscInt w = md->f[3 * f + k], wi = cyl ? w % n : w / m, wj = cyl ? w / n : w % m;
+      PetscInt gi = qi + GridStep(qi, wi, n), gj = cyl ? wj : qj + GridStep(qj, wj, m);
+      md->fuv[3 * f + k] = gi * (m + 1) + gj;
+    }
+  }
+  PetscFunctionReturn(0);
 }
 
 static void Project(PetscReal *p, PetscReal radius)
@@ -130,6 +163,7 @@ PetscErrorCode CSMeshDataTorus(PetscReal R, PetscReal r, PetscInt n, PetscInt m,
     }
   TorusGrid(n, m, md->f);
   CSMeshDataOrientOutward(md);
+  PetscCall(CSMeshDataGridUVs(md, n, m, PETSC_FALSE, 0, 1.0 / m)); /* the angles u, v scaled to [0, 1]^2 */
   snprintf(md->name, sizeof(md->name), "torus(R=%g,r=%g,n=%" PetscInt_FMT ",m=%" PetscInt_FMT ")", (double)R, (double)r, n, m);
   PetscFunctionReturn(0);
 }
@@ -169,14 +203,9 @@ PetscErrorCode CSMeshDataFlatTorus(PetscReal tau_re, PetscReal tau_im, PetscInt 
   FlatTorusPositions(tau_im, n, m, md->x);
   TorusGrid(n, m, md->f);
   CSMeshDataOrientOutward(md);
+  PetscCall(CSMeshDataGridUVs(md, n, m, PETSC_FALSE, 0, tau_im / m)); /* the flat rectangle [0, 1] x [0, tau_im]: conformal */
   snprintf(md->name, sizeof(md->name), "flattorus(tau=%g+%gi,n=%" PetscInt_FMT ",m=%" PetscInt_FMT ")", (double)tau_re, (double)tau_im, n, m);
   PetscFunctionReturn(0);
-}
-
-/* Grid offset of vertex b from vertex a along one periodic direction of k >= 3 segments: -1, 0 or 1. */
-static inline PetscInt GridStep(PetscInt a, PetscInt b, PetscInt k)
-{
-  return (b - a + k + 1) % k - 1;
 }
 
 /* The flat torus C/(Z + tau Z) on the n x m grid of its fundamental domain: vertex (i, j) = i/n + j tau/m
@@ -220,6 +249,7 @@ PetscErrorCode CSMeshDataLattice(PetscReal tau_re, PetscReal tau_im, PetscInt n,
     }
     for (int k = 0; k < 3; k++) md->len[3 * f + k] = PetscSqrtReal(PetscSqr(zr[(k + 2) % 3] - zr[(k + 1) % 3]) + PetscSqr(zi[(k + 2) % 3] - zi[(k + 1) % 3]));
   }
+  PetscCall(CSMeshDataGridUVs(md, n, m, PETSC_FALSE, tau_re / m, tau_im / m)); /* the lattice positions i/n + j tau/m */
   snprintf(md->name, sizeof(md->name), "lattice(tau=%g%+gi,n=%" PetscInt_FMT ",m=%" PetscInt_FMT ")", (double)tau_re, (double)tau_im, n, m);
   PetscFunctionReturn(0);
 }
@@ -244,6 +274,8 @@ PetscErrorCode CSMeshDataCylinder(PetscReal radius, PetscReal height, PetscInt n
       PetscInt i1 = (i + 1) % n;
       Quad(md->f + 6 * (j * n + i), j * n + i, j * n + i1, (j + 1) * n + i1, (j + 1) * n + i);
     }
+  /* u = angle / 2 pi, v = height / circumference: arc length over 2 pi radius, so the UV map is conformal */
+  PetscCall(CSMeshDataGridUVs(md, n, m, PETSC_TRUE, 0, height / (2 * PETSC_PI * radius * m)));
   snprintf(md->name, sizeof(md->name), "cylinder(radius=%g,height=%g,n=%" PetscInt_FMT ",m=%" PetscInt_FMT ")", (double)radius, (double)height, n, m);
   PetscFunctionReturn(0);
 }
@@ -292,6 +324,13 @@ PetscErrorCode CSMeshDataDisk(PetscReal radius, PetscInt rings, CSMeshData *md)
     }
   }
   PetscCheck(nf == md->nf, PETSC_COMM_SELF, PETSC_ERR_PLIB, "disk: %" PetscInt_FMT " faces made, %" PetscInt_FMT " expected", nf, md->nf);
+  /* the planar coordinates as UVs, scaled to [0, 1]^2 (one UV per vertex, no seam) */
+  md->nuv = md->nv;
+  PetscCall(PetscMalloc1(2 * md->nuv, &md->uv));
+  PetscCall(PetscMalloc1(3 * md->nf, &md->fuv));
+  for (PetscInt v = 0; v < md->nv; v++)
+    for (int d = 0; d < 2; d++) md->uv[2 * v + d] = md->x[3 * v + d] / (2 * radius) + 0.5;
+  PetscCall(PetscArraycpy(md->fuv, md->f, 3 * md->nf));
   snprintf(md->name, sizeof(md->name), "disk(radius=%g,rings=%" PetscInt_FMT ")", (double)radius, rings);
   PetscFunctionReturn(0);
 }

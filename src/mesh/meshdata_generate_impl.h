@@ -7,4 +7,6 @@
 PETSC_INTERN PetscErrorCode CSMeshDataAlloc(const char what[], double nv, double nf, CSMeshData *md);
 /* closed surfaces: flip every face if the signed enclosed volume is negative */
 PETSC_INTERN void CSMeshDataOrientOutward(CSMeshData *md);
+/* texture coordinates of a quad grid of n x m cells (meshdata_generate.c, CSMeshDataGridUVs) */
+PETSC_INTERN PetscErrorCode CSMeshDataGridUVs(CSMeshData *md, PetscInt n, PetscInt m, PetscBool cyl, PetscReal a, PetscReal b);
 #endif

@@ -65,6 +65,14 @@ static PetscErrorCode MeshSourceLoad(const MeshSource *src, CSMeshData *md, CSTo
     case GEN_MORIN: PetscCall(CSMeshDataMorin(src->n, src->m, src->morin_eps, md)); break;
     }
   }
+  if (md->fuv && !src->file && !src->arrays && (src->remesh_faces || src->remesh_h > 0)) {
+    /* a generator's UVs are its parameters, not the user's texture: -mesh_remesh (which has no UV transfer and
+       refuses a file's UVs, meshdata_remesh.c) drops them with a note rather than refusing -gen torus -mesh_remesh */
+    PetscCall(PetscInfo(NULL, "%s: -mesh_remesh drops the generator's %" PetscInt_FMT " texture coordinates\n", md->name, md->nuv));
+    PetscCall(PetscFree(md->uv));
+    PetscCall(PetscFree(md->fuv));
+    md->nuv = 0;
+  }
   ierr = CSMeshDataValidate(md, topo);
   if (!ierr && (src->remesh_faces || src->remesh_h > 0)) ierr = CSMeshDataRemesh(md, topo, src->remesh_faces, src->remesh_h, src->remesh_iterations);
   if (!ierr && src->lengths[0]) ierr = CSMeshDataReadLengths("-mesh_lengths", src->lengths, md);

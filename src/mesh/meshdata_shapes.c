@@ -52,6 +52,41 @@ static void MorinPoint(PetscReal u, PetscReal v, PetscReal eps, PetscReal *x)
   x[2] = K * cu + eps * 0.5 * cu * PetscSinReal(v + 1);
 }
 
+/* Texture coordinates of the Morin grid (issue 38): (v / 2 pi, (u + pi/2) / pi) = (i/n, j/m) on the rings, unwrapped
+   per face so the seam column i = n repeats i = 0 with u = 1; each fan face's pole corner gets its own UV
+   ((i + 1/2)/n, 0 or 1), so no UV triangle is degenerate. Face order as CSMeshDataMorin makes them. */
+static PetscErrorCode MorinUVs(PetscInt n, PetscInt m, CSMeshData *md)
+{
+  PetscInt R = n * (m - 1), nring = (n + 1) * (m - 1);
+  PetscFunctionBeginUser;
+  md->nuv = nring + 2 * n;
+  PetscCall(PetscMalloc1(2 * md->nuv, &md->uv));
+  PetscCall(PetscMalloc1(3 * md->nf, &md->fuv));
+  for (PetscInt gi = 0; gi <= n; gi++)
+    for (PetscInt J = 1; J < m; J++) {
+      md->uv[2 * (gi * (m - 1) + J - 1)]     = (PetscReal)gi / n;
+      md->uv[2 * (gi * (m - 1) + J - 1) + 1] = (PetscReal)J / m;
+    }
+  for (PetscInt i = 0; i < n; i++)
+    for (PetscInt p = 0; p < 2; p++) {
+      md->uv[2 * (nring + p * n + i)]     = (i + 0.5) / n;
+      md->uv[2 * (nring + p * n + i) + 1] = p;
+    }
+  for (PetscInt f = 0; f < md->nf; f++) {
+    PetscBool fan = (PetscBool)(f >= 2 * n * (m - 2));
+    PetscInt  qi  = fan ? (f - 2 * n * (m - 2)) / 2 : (f / 2) % n;
+    for (int k = 0; k < 3; k++) {
+      PetscInt w = md->f[3 * f + k];
+      if (w >= R) md->fuv[3 * f + k] = nring + (w - R) * n + qi; /* a pole */
+      else {
+        PetscInt wi = w % n, gi = qi + (wi - qi + n + 1) % n - 1;
+        md->fuv[3 * f + k] = gi * (m - 1) + w / n;
+      }
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
 /* n around (v), m - 1 rings (u = -pi/2 + j pi/m, 0 < j < m) and the two poles: 2 + n(m - 1) vertices. */
 PetscErrorCode CSMeshDataMorin(PetscInt n, PetscInt m, PetscReal eps, CSMeshData *md)
 {
@@ -78,6 +113,7 @@ PetscErrorCode CSMeshDataMorin(PetscInt n, PetscInt m, PetscReal eps, CSMeshData
     t += 6;
   }
   CSMeshDataOrientOutward(md);
+  PetscCall(MorinUVs(n, m, md));
   snprintf(md->name, sizeof(md->name), "morin(n=%" PetscInt_FMT ",m=%" PetscInt_FMT ",perturb=%g)", n, m, (double)eps);
   PetscFunctionReturn(0);
 }

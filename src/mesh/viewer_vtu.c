@@ -220,15 +220,89 @@ static PetscErrorCode RealValues(const PetscScalar *a, PetscInt n, PetscBool sin
   PetscFunctionReturn(0);
 }
 
+/* The piece's points: the local vertices, or with texture coordinates (mesh->faceUV, issue 38) one point per distinct
+   (vertex, UV) pair, so a seam vertex is written once per side and ParaView's texture mapping sees each side's UV.
+   vert[i]: the local vertex of point i (NULL: point i = vertex i), tc: 2 per point, conn: 3 per face. */
+typedef struct {
+  PetscInt         np;
+  PetscInt        *vert, *conn;
+  PetscScalar     *tc;
+  const PetscInt  *c; /* conn, or the mesh's faceVert */
+} CSViewerPoints;
+
+static const PetscReal *cs_sort_uv; /* qsort has no context argument: the corners' UVs while sorting */
+static const PetscInt  *cs_sort_vert;
+static int CompareCorners(const void *a, const void *b)
+{
+  PetscInt i = *(const PetscInt *)a, j = *(const PetscInt *)b;
+  if (cs_sort_vert[i] != cs_sort_vert[j]) return cs_sort_vert[i] < cs_sort_vert[j] ? -1 : 1;
+  for (int d = 0; d < 2; d++)
+    if (cs_sort_uv[2 * i + d] != cs_sort_uv[2 * j + d]) return cs_sort_uv[2 * i + d] < cs_sort_uv[2 * j + d] ? -1 : 1;
+  return i < j ? -1 : (i > j);
+}
+
+static PetscErrorCode PointsCreate(CSMesh m, CSViewerPoints *P)
+{
+  PetscInt nc = 3 * m->nf, *order;
+  PetscFunctionBeginUser;
+  PetscCall(PetscMemzero(P, sizeof(*P)));
+  P->np = m->nv;
+  P->c  = m->faceVert;
+  if (!m->faceUV) PetscFunctionReturn(0);
+  PetscCall(PetscMalloc1(nc, &order));
+  PetscCall(PetscMalloc3(nc, &P->vert, nc, &P->conn, 2 * nc, &P->tc));
+  for (PetscInt k = 0; k < nc; k++) order[k] = k;
+  cs_sort_uv   = m->faceUV;
+  cs_sort_vert = m->faceVert;
+  qsort(order, (size_t)nc, sizeof(PetscInt), CompareCorners);
+  P->np = 0;
+  for (PetscInt k = 0; k < nc; k++) {
+    PetscInt i = order[k], j = k ? order[k - 1] : -1;
+    if (j < 0 || m->faceVert[i] != m->faceVert[j] || m->faceUV[2 * i] != m->faceUV[2 * j] || m->faceUV[2 * i + 1] != m->faceUV[2 * j + 1]) {
+      P->vert[P->np]       = m->faceVert[i];
+      P->tc[2 * P->np]     = m->faceUV[2 * i];
+      P->tc[2 * P->np + 1] = m->faceUV[2 * i + 1];
+      P->np++;
+    }
+    P->conn[i] = P->np - 1;
+  }
+  P->c = P->conn;
+  PetscCall(PetscFree(order));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode PointsDestroy(CSViewerPoints *P)
+{
+  PetscFunctionBeginUser;
+  if (P->vert) PetscCall(PetscFree3(P->vert, P->conn, P->tc));
+  PetscFunctionReturn(0);
+}
+
+/* a per-vertex array (ncomp values each) at the piece's points: a itself, or a copy in *copy (freed by the caller) */
+static PetscErrorCode PointValues(const CSViewerPoints *P, const PetscScalar *a, PetscInt ncomp, const PetscScalar **r, PetscScalar **copy)
+{
+  PetscFunctionBeginUser;
+  *copy = NULL;
+  *r    = a;
+  if (!P->vert) PetscFunctionReturn(0);
+  PetscCall(PetscMalloc1(ncomp * P->np, copy));
+  for (PetscInt i = 0; i < P->np; i++)
+    for (PetscInt c = 0; c < ncomp; c++) (*copy)[ncomp * i + c] = a[ncomp * P->vert[i] + c];
+  *r = *copy;
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode WritePiece(CSViewer v, Vec x, const char path[])
 {
   CSMesh             m = v->mesh;
   CSFile             file;
   FILE              *fp;
   Vec                xl;
-  const PetscScalar *p, *fa[CS_VIEWER_MAX_FIELDS];
-  Array              arr[4 + CS_VIEWER_MAX_FIELDS];
-  void              *copy[1 + CS_VIEWER_MAX_FIELDS];
+  const PetscScalar *p, *fa[CS_VIEWER_MAX_FIELDS], *pp;
+  Array              arr[5 + CS_VIEWER_MAX_FIELDS];
+  void              *copy[2 + CS_VIEWER_MAX_FIELDS];
+  PetscScalar       *expanded[1 + CS_VIEWER_MAX_FIELDS];
+  CSViewerPoints     P;
   const void        *r;
   const char        *ftype  = v->single ? "Float32" : "Float64";
   size_t             fsize  = v->single ? sizeof(float) : sizeof(double);
@@ -244,25 +318,35 @@ static PetscErrorCode WritePiece(CSViewer v, Vec x, const char path[])
   PetscCall(DMGetLocalVector(m->dmV3, &xl));
   PetscCall(DMGlobalToLocal(m->dmV3, x, INSERT_VALUES, xl));
   PetscCall(VecGetArrayRead(xl, &p));
-  PetscCall(RealValues(p, 3 * m->nv, v->single, &r, &copy[0]));
-  SetArray(&arr[na++], "positions", ftype, 3, 3 * m->nv, fsize, r);
+  PetscCall(PointsCreate(m, &P));
+  PetscCall(PetscMemzero(expanded, sizeof(expanded)));
+  PetscCall(PointValues(&P, p, 3, &pp, &expanded[0]));
+  PetscCall(RealValues(pp, 3 * P.np, v->single, &r, &copy[0]));
+  SetArray(&arr[na++], "positions", ftype, 3, 3 * P.np, fsize, r);
   PetscCall(PetscMalloc2(m->nf, &offs, m->nf, &types));
   for (PetscInt f = 0; f < m->nf; f++) {
     offs[f]  = 3 * f + 3;
     types[f] = 5; /* VTK_TRIANGLE */
   }
-  SetArray(&arr[na++], "connectivity", itype, 1, 3 * m->nf, sizeof(PetscInt), m->faceVert);
+  SetArray(&arr[na++], "connectivity", itype, 1, 3 * m->nf, sizeof(PetscInt), P.c);
   SetArray(&arr[na++], "offsets", itype, 1, m->nf, sizeof(PetscInt), offs);
   SetArray(&arr[na++], "types", "UInt8", 1, m->nf, sizeof(uint8_t), types);
   for (int pass = 0; pass < 2; pass++) { /* point data, then cell data */
     if (pass == 0) first_point = na;
     else first_cell = na;
+    if (pass == 0 && P.vert) { /* the texture coordinates, ParaView's active TCoords */
+      PetscCall(RealValues(P.tc, 2 * P.np, v->single, &r, &copy[na - 3]));
+      SetArray(&arr[na++], "TCoords", ftype, 2, 2 * P.np, fsize, r);
+    }
     for (PetscInt k = 0; k < v->nfields; k++) {
-      PetscInt n;
+      PetscInt           n;
+      const PetscScalar *fv;
       if (v->fields[k].face != (PetscBool)pass) continue;
-      n = (pass ? m->nf : m->nv) * v->fields[k].ncomp;
+      n = (pass ? m->nf : P.np) * v->fields[k].ncomp;
       PetscCall(VecGetArrayRead(v->fields[k].local, &fa[k]));
-      PetscCall(RealValues(fa[k], n, v->single, &r, &copy[na - 3]));
+      fv = fa[k];
+      if (!pass) PetscCall(PointValues(&P, fa[k], v->fields[k].ncomp, &fv, &expanded[1 + k]));
+      PetscCall(RealValues(fv, n, v->single, &r, &copy[na - 3]));
       SetArray(&arr[na++], v->fields[k].name, ftype, v->fields[k].ncomp, (size_t)n, fsize, r);
     }
   }
@@ -270,11 +354,11 @@ static PetscErrorCode WritePiece(CSViewer v, Vec x, const char path[])
     for (PetscInt k = 0; k < na; k++) PetscCall(EncodeArray(&arr[k], v->format));
 
   fprintf(fp, "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\"%s>\n<UnstructuredGrid>\n", v->format == CS_VIEWER_ZLIB ? " compressor=\"vtkZLibDataCompressor\"" : "");
-  fprintf(fp, "<Piece NumberOfPoints=\"%d\" NumberOfCells=\"%d\">\n<Points>\n", (int)m->nv, (int)m->nf);
+  fprintf(fp, "<Piece NumberOfPoints=\"%d\" NumberOfCells=\"%d\">\n<Points>\n", (int)P.np, (int)m->nf);
   WriteArrayHeader(fp, &arr[0], v->format, &offset);
   fprintf(fp, "</Points>\n<Cells>\n");
   for (PetscInt k = 1; k < 4; k++) WriteArrayHeader(fp, &arr[k], v->format, &offset);
-  fprintf(fp, "</Cells>\n<PointData>\n");
+  fprintf(fp, "</Cells>\n<PointData%s>\n", P.vert ? " TCoords=\"TCoords\"" : "");
   for (PetscInt k = first_point; k < first_cell; k++) WriteArrayHeader(fp, &arr[k], v->format, &offset);
   fprintf(fp, "</PointData>\n<CellData>\n");
   for (PetscInt k = first_cell; k < na; k++) WriteArrayHeader(fp, &arr[k], v->format, &offset);
@@ -288,6 +372,8 @@ static PetscErrorCode WritePiece(CSViewer v, Vec x, const char path[])
   for (PetscInt k = 0; k < na; k++) PetscCall(PetscFree(arr[k].blob));
   PetscCall(PetscFree(copy[0]));
   for (PetscInt k = 4; k < na; k++) PetscCall(PetscFree(copy[k - 3]));
+  for (PetscInt k = 0; k <= v->nfields; k++) PetscCall(PetscFree(expanded[k]));
+  PetscCall(PointsDestroy(&P));
   for (PetscInt k = 0; k < v->nfields; k++) PetscCall(VecRestoreArrayRead(v->fields[k].local, &fa[k]));
   PetscCall(VecRestoreArrayRead(xl, &p));
   PetscCall(DMRestoreLocalVector(m->dmV3, &xl));
@@ -310,7 +396,8 @@ static PetscErrorCode WriteIndex(CSViewer v, PetscMPIInt rank, PetscMPIInt size)
   PetscCall(CSFileOpen(comm, (PetscBool)!rank, "-viewer_dir", path, PETSC_FALSE, &file));
   if ((fp = file.fp)) {
     fprintf(fp, "<?xml version=\"1.0\"?>\n<VTKFile type=\"PUnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n<PUnstructuredGrid GhostLevel=\"0\">\n");
-    fprintf(fp, "<PPoints><PDataArray type=\"%s\" Name=\"positions\" NumberOfComponents=\"3\"/></PPoints>\n<PPointData>\n", ftype);
+    fprintf(fp, "<PPoints><PDataArray type=\"%s\" Name=\"positions\" NumberOfComponents=\"3\"/></PPoints>\n<PPointData%s>\n", ftype, v->mesh->faceUV ? " TCoords=\"TCoords\"" : "");
+    if (v->mesh->faceUV) fprintf(fp, "<PDataArray type=\"%s\" Name=\"TCoords\" NumberOfComponents=\"2\"/>\n", ftype);
     for (PetscInt k = 0; k < v->nfields; k++)
       if (!v->fields[k].face) fprintf(fp, "<PDataArray type=\"%s\" Name=\"%s\" NumberOfComponents=\"%d\"/>\n", ftype, v->fields[k].name, (int)v->fields[k].ncomp);
     fprintf(fp, "</PPointData>\n<PCellData>\n");

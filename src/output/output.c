@@ -105,6 +105,21 @@ PetscErrorCode CSOutputViewerEvery(MPI_Comm comm, const char prefix[], const cha
   PetscFunctionReturn(0);
 }
 
+/* With texture coordinates: texture_q_mean, texture_q_max of x and of the input (keys *_input), CSGeometryTextureQ */
+static PetscErrorCode AddTextureQ(CSOutput *o, CSMesh mesh, Vec x, Vec xin)
+{
+  PetscReal q[4];
+  PetscFunctionBeginUser;
+  PetscCall(CSGeometryTextureQ(mesh, x, NULL, &q[0], &q[1]));
+  PetscCall(CSGeometryTextureQ(mesh, xin, NULL, &q[2], &q[3]));
+  PetscCall(CSJSONAddReal(o->json, "texture_q_mean", q[0]));
+  PetscCall(CSJSONAddReal(o->json, "texture_q_max", q[1]));
+  PetscCall(CSJSONAddReal(o->json, "texture_q_mean_input", q[2]));
+  PetscCall(CSJSONAddReal(o->json, "texture_q_max_input", q[3]));
+  PetscCall(PetscPrintf(mesh->comm, "texture distortion (UV -> surface): texture_q_mean=%.12g texture_q_max=%.12g (input %.12g, %.12g)\n", (double)q[0], (double)q[1], (double)q[2], (double)q[3]));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode CSOutputAddMeshFacts(CSOutput *o, CSMesh mesh, Vec x, Vec xref)
 {
   PetscReal area, volume, W;
@@ -137,6 +152,7 @@ PetscErrorCode CSOutputAddMeshFacts(CSOutput *o, CSMesh mesh, Vec x, Vec xref)
     PetscCall(PetscPrintf(mesh->comm, "quasi-conformal error: q_mean=%.12g q_max=%.12g\n", (double)qmean, (double)qmax));
     if (!xref) PetscCall(VecDestroy(&r));
   }
+  if (mesh->faceUV) PetscCall(AddTextureQ(o, mesh, x, xref ? xref : mesh->x));
   PetscFunctionReturn(0);
 }
 
