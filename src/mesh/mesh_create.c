@@ -367,11 +367,6 @@ static PetscErrorCode OrientOutward(CSMeshData *md, const CSTopology *topo, Pets
       md->len[3 * f + 1] = md->len[3 * f + 2];
       md->len[3 * f + 2] = l;
     }
-    if (md->fuv) { /* each corner keeps its texture coordinates */
-      PetscInt t         = md->fuv[3 * f + 1];
-      md->fuv[3 * f + 1] = md->fuv[3 * f + 2];
-      md->fuv[3 * f + 2] = t;
-    }
     if (md->cr) { /* the same swap, and c0 changes sign with the orientation (the faces ijk and jil trade places) */
       PetscReal c       = md->cr[3 * f + 1];
       md->cr[3 * f + 1] = -md->cr[3 * f + 2];

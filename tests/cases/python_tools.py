@@ -33,6 +33,18 @@ def read_obj(path):
     return np.array(V), np.array(F, dtype=np.int64)
 
 
+def read_uv(path):
+    """the texture coordinates of an OBJ (vt lines, f v/vt corners): uv, fuv (0-based); the generator's torus has them"""
+    uv, fuv = [], []
+    for line in open(path):
+        t = line.split()
+        if t and t[0] == "vt":
+            uv.append([float(x) for x in t[1:3]])
+        elif t and t[0] == "f" and "/" in t[1]:
+            fuv.append([int(x.split("/")[1]) - 1 for x in t[1:4]])
+    return np.array(uv), np.array(fuv, dtype=np.int64)
+
+
 def read_points(path):
     return np.array([[float(x) for x in line.split()[:2]] for line in open(path) if line.strip() and not line.startswith("#")])
 
@@ -104,13 +116,14 @@ def compare(name, r, files, skip=()):
 def equal(d):
     f = lambda n: os.path.join(d, n)
     V, F = read_obj(f("torus.obj"))
+    T = dict(zip(("uv", "fuv"), read_uv(f("torus.obj"))))  # -gen torus gives its angles as UVs, -mesh reads them
     S, G = read_obj(f("sphere.obj"))
     rho = np.loadtxt(f("rho.txt"))
     P = read_points(f("star.txt"))[:-1]
     runs = [
-        ("info", lambda: confsurf.info(V, F), dict(obj=f("info.obj"), summary=f("info.json"))),
-        ("flow cgd", lambda: confsurf.flow(V, F, "-flow_type cgd -flow_max_it 3"), dict(obj=f("flow.obj"), summary=f("flow.json"), csv=f("flow.csv"))),
-        ("flow bs", lambda: confsurf.flow(V, F, "-flow_type bs -bs_max_it 3"), dict(obj=f("bs.obj"), summary=f("bs.json"), csv=f("bs.csv"))),
+        ("info", lambda: confsurf.info(V, F, **T), dict(obj=f("info.obj"), summary=f("info.json"))),
+        ("flow cgd", lambda: confsurf.flow(V, F, "-flow_type cgd -flow_max_it 3", **T), dict(obj=f("flow.obj"), summary=f("flow.json"), csv=f("flow.csv"))),
+        ("flow bs", lambda: confsurf.flow(V, F, "-flow_type bs -bs_max_it 3", **T), dict(obj=f("bs.obj"), summary=f("bs.json"), csv=f("bs.csv"))),
         ("conformal_flow", lambda: confsurf.conformal_flow(S, G, "-flow_max_it 2"), dict(obj=f("conformal.obj"), summary=f("conformal.json"), csv=f("conformal.csv"))),
         ("spin", lambda: confsurf.spin(S, G, rho), dict(obj=f("spin.obj"), summary=f("spin.json"))),
         ("curve_flow", lambda: confsurf.curve_flow(P, "-curve_max_it 5"), dict(points=f("curve.txt"), summary=f("curve.json"), csv=f("curve.csv"))),
@@ -159,7 +172,7 @@ def errors():
         expect(confsurf.Error, "duplicate faces", lambda: confsurf.info(V, np.vstack([F, F[:1]]) if ROOT else None)),
         expect(confsurf.Error, "the mesh is given as arrays", lambda: confsurf.info(V, F, "-gen icosphere")),
     ]
-    r1 = confsurf.info(V, F)  # the library goes on: the same result as before the errors
+    r1 = confsurf.info(V, F, **T)  # the library goes on: the same result as before the errors
     if ROOT:
         same = np.array_equal(r1.V, r0.V) and r1.summary["willmore"] == r0.summary["willmore"]
         say(("ok  " if same else "BAD ") + "a call after the errors gives the result of the first call")
