@@ -10,12 +10,15 @@ The figures are stated in a machine-readable header line (the prose above it say
 Keys are the keys of the run's -summary JSON. A comparison is KEY=VALUE (an integer, true/false or a word: equal;
 a decimal number: equal to the digits written, i.e. within half a unit of its last digit: energy=12.50680 accepts
 [12.506795, 12.506805]), KEY=VALUE±TOL (absolute) or KEY=VALUE±P% (relative), KEY<VALUE, KEY>VALUE, KEY<=VALUE,
-KEY>=VALUE. In ARGS and CMD, @T is the run's temporary directory. The options file's own outputs (-o, -summary,
+KEY>=VALUE; KEY# is the length of a list (eigenvalues#=444). In ARGS and CMD, @T is the run's temporary directory. The options file's own outputs (-o, -summary,
 -history_csv, -viewer_dir, the spin prefixes) are redirected into @T. A run that fails (non-zero exit: bad or
 unused options are refused by the driver) fails its file.
 
   python3 runs/check_options_headers.py [--slow] [--np N] [--bin bin/confsurf] [--timeout S] [FILE ...]
   python3 runs/check_options_headers.py --measure FILE ...   (run, print the summary; no comparison)
+First, without running anything long: every option named in a command line quoted in a header (`#   bin/confsurf
+-options_file ... -bs_scheme tao`) must be one that `-help` lists for some task and flow type (PETSc's solver
+options excepted); a file with an unknown name counts as failed (--names-only does only this).
 Prints one line per comparison and per file, and `N passed, N failed, N skipped (slow)`; exit status 1 if any
 failed."""
 import argparse
@@ -31,7 +34,7 @@ import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 OUTPUTS = ("-o", "-summary", "-history_csv", "-viewer_dir", "-spectrum_reconstruct_prefix", "-spin_interpolate_prefix")
-TOKEN = re.compile(r"^([A-Za-z_][A-Za-z0-9_]*)(<=|>=|=|<|>)(.+)$")
+TOKEN = re.compile(r"^([A-Za-z_][A-Za-z0-9_]*#?)(<=|>=|=|<|>)(.+)$")
 
 
 def header(path):
@@ -77,9 +80,13 @@ def check(tok, summary):
     if not m:
         return False, "cannot parse %r" % tok
     key, op, val = m.groups()
-    if key not in summary:
+    if key.rstrip("#") not in summary:
         return False, "%s: not in the summary" % key
-    got = summary[key]
+    got = summary[key.rstrip("#")]
+    if key.endswith("#"):  # the length of a list (eigenvalues#=444)
+        if not isinstance(got, list):
+            return False, "%s: %s is not a list" % (key, key.rstrip("#"))
+        got = len(got)
     if op == "=":
         if isinstance(got, bool) or val in ("true", "false"):
             ok = str(got).lower() == val.lower()
@@ -97,12 +104,12 @@ def check(tok, summary):
             if isinstance(got, int) and re.match(r"^[+-]?\d+$", val):
                 t = 0
         if not isinstance(got, (int, float)):
-            return False, "%s = %r is not a number (header %s)" % (key, got, val)
+            return False, "%s = %.60s is not a number (header %s)" % (key, repr(got), val)
         ok = abs(got - ref) <= t * (1 + 1e-12)
         return ok, "%s = %.10g (header %s)" % (key, got, val)
     ref = float(val)
     if not isinstance(got, (int, float)) or isinstance(got, bool):
-        return False, "%s = %r is not a number (header %s%s)" % (key, got, op, val)
+        return False, "%s = %.60s is not a number (header %s%s)" % (key, repr(got), op, val)
     ok = {"<": got < ref, ">": got > ref, "<=": got <= ref, ">=": got >= ref}[op]
     return ok, "%s = %.6g (header %s%s)" % (key, got, op, val)
 
@@ -180,6 +187,40 @@ def run_file(path, a):
         shutil.rmtree(tmp, ignore_errors=True)
 
 
+TASKS = ("info", "spin", "spectrum", "curveflow")
+FLOWS = ("cgd", "pgd", "gd", "newton", "alm", "trianglefield", "emcf", "cmcf", "bs", "conformal")
+# PETSc's own options and its solvers' (read lazily or by PETSc itself, not listed by -help of the tasks)
+PETSC_NAMES = re.compile(r"^-(n|np|options_file|help|log_view.*|malloc_.*|.*_(ksp|pc|eps|st|mat|snes|tao)_.*)$")
+
+
+def option_names(binary):
+    """Every option name that -help lists for some task and flow type."""
+    names = set()
+    runs = [["-task", t] for t in TASKS] + [["-task", "flow", "-flow_type", f] for f in FLOWS]
+    for r in runs:
+        out = subprocess.run([binary] + r + ["-help"], cwd=ROOT, capture_output=True, text=True).stdout
+        names |= set(re.findall(r"^\s*(-[A-Za-z][A-Za-z0-9_]*)", out, re.M))
+    return names
+
+
+def check_names(files, binary):
+    """The option names of the command lines quoted in the headers (# ... bin/confsurf ...) exist: a renamed option
+    leaves no stale command in a header. Returns the number of files with an unknown name."""
+    known, bad = option_names(binary), 0
+    for f in files:
+        unknown = []
+        for line in open(f):
+            if line.startswith("#") and "bin/confsurf" in line:
+                cmd = line.split("bin/confsurf", 1)[1]
+                unknown += [t for t in re.findall(r"(?<!\S)(-[A-Za-z][A-Za-z0-9_]*)", cmd)
+                            if t not in known and not PETSC_NAMES.match(t)]
+        if unknown:
+            bad += 1
+            print("FAIL %-40s header command names unknown options: %s" % (os.path.basename(f), " ".join(sorted(set(unknown)))))
+    print("header option names: %d of %d files with an unknown name" % (bad, len(files)))
+    return bad
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("files", nargs="*")
@@ -189,11 +230,13 @@ def main():
     ap.add_argument("--np", type=int, default=1)
     ap.add_argument("--bin", default=os.path.join(ROOT, "bin", "confsurf"))
     ap.add_argument("--timeout", type=float, default=1800)
+    ap.add_argument("--names-only", action="store_true", help="only the option names of the headers' commands")
     a = ap.parse_args()
     files = [os.path.abspath(f) for f in a.files] or sorted(glob.glob(os.path.join(ROOT, "options", "*.opts")))
     t0 = time.time()
-    res = [run_file(f, a) for f in files]
-    passed, failed, skipped = res.count(True), res.count(False), res.count("skip")
+    named = 0 if a.measure else check_names(files, a.bin)
+    res = [] if a.names_only else [run_file(f, a) for f in files]
+    passed, failed, skipped = res.count(True), res.count(False) + named, res.count("skip")
     print("%d passed, %d failed, %d skipped (slow) in %.0f s" % (passed, failed, skipped, time.time() - t0))
     sys.exit(1 if failed else 0)
 
