@@ -10,9 +10,9 @@ The figures are stated in a machine-readable header line (the prose above it say
 Keys are the keys of the run's -summary JSON. A comparison is KEY=VALUE (an integer, true/false or a word: equal;
 a decimal number: equal to the digits written, i.e. within half a unit of its last digit: energy=12.50680 accepts
 [12.506795, 12.506805]), KEY=VALUE±TOL (absolute) or KEY=VALUE±P% (relative), KEY<VALUE, KEY>VALUE, KEY<=VALUE,
-KEY>=VALUE; KEY# is the length of a list (eigenvalues#=444). In ARGS and CMD, @T is the run's temporary directory. The options file's own outputs (-o, -summary,
--history_csv, -viewer_dir, the spin prefixes) are redirected into @T. A run that fails (non-zero exit: bad or
-unused options are refused by the driver) fails its file.
+KEY>=VALUE; KEY# is the length of a list (eigenvalues#=444). In ARGS and CMD, @T is the run's temporary
+directory. The options file's own outputs (-o, -summary, -history_csv, -viewer_dir, the spin prefixes) are
+redirected into @T. A run that fails (non-zero exit: bad or unused options are refused by the driver) fails its file.
 
   python3 runs/check_options_headers.py [--slow] [--np N] [--bin bin/confsurf] [--timeout S] [FILE ...]
   python3 runs/check_options_headers.py --measure FILE ...   (run, print the summary; no comparison)
