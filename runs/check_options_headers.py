@@ -216,7 +216,8 @@ def check_names(files, binary):
                             if t not in known and not PETSC_NAMES.match(t)]
         if unknown:
             bad += 1
-            print("FAIL %-40s header command names unknown options: %s" % (os.path.basename(f), " ".join(sorted(set(unknown)))))
+            names = " ".join(sorted(set(unknown)))
+            print("FAIL %-40s header command names unknown options: %s" % (os.path.basename(f), names))
     print("header option names: %d of %d files with an unknown name" % (bad, len(files)))
     return bad
 
