@@ -1,9 +1,10 @@
 # confsurf: `make` builds, `make run` runs the default experiment (a constrained Willmore flow with its pictures,
 # scripts/run-default.sh), `make demo` one short example per method with a gallery (scripts/demo.sh), `make test` runs the test suite,
+# `make check-docs` runs the options files whose headers state measured figures and compares (runs/check_options_headers.py),
 # `make bench` runs the benchmarks in runs/ (runs/run-all.sh), `make deps` installs the system packages
 # (scripts/install-deps.sh; the other goals do it too when packages are missing). `make WERROR=` builds without -Werror.
 .DEFAULT_GOAL := all
-GOALS := all run demo test test-serial bench clean sanitize fuzz
+GOALS := all run demo test test-serial check-docs bench clean sanitize fuzz
 WERROR ?= -Werror
 
 deps:
@@ -119,6 +120,11 @@ test: all
 test-serial: all
 	bash scripts/install-deps.sh --test || echo "make test: could not install the test dependencies (paraview)"
 	CS_TEST_NPROCS=1 bash tests/run.sh
+
+# the options files' headers against the code (issue 39): every file with an `# expect:` line, serially;
+# CHECK_DOCS_ARGS=--slow adds the `# expect-slow:` ones (not in CI)
+check-docs: all
+	python3 runs/check_options_headers.py $(CHECK_DOCS_ARGS)
 
 bench: all
 	bash runs/run-all.sh

@@ -105,7 +105,9 @@ typedef struct {
   PetscReal integrability_violation; /* max of |d1 omega|, face closure, |<<Y_i|omega>>| (-1: not evaluated yet) */
   PetscReal immersion_tol;           /* -flow_immersion_tol: -o writes the reconstruction only at a violation <= this */
   PetscReal spin_energy;             /* E_tau(psi(omega)) (App. C.3), unweighted */
-  PetscInt  pinch_edges;             /* edges with |psi_jil - tau_ij psi_ijk| >= sqrt 2 (App. C.1; -1: not evaluated yet) */
+  PetscInt  pinch_edges;             /* edges with |psi_jil - tau_ij psi_ijk| >= sqrt 2 (App. C.1; -1: not evaluated yet),
+                                        in the signs the run's lifts followed: a sign flip on the way moves it */
+  PetscInt  pinch_vertices;          /* pinch points: interior vertices with an odd number of such edges (sign-independent) */
 } CSWillmoreFlowTriangleFieldInfo;
 /* As KSPGMRESGetRestart, for the trianglefield kind only: with is NULL, another kind is an error; else *is says
    whether flow is of this kind (info is then filled, else set to -1 throughout). */

@@ -53,6 +53,9 @@ PETSC_EXTERN PetscErrorCode CSSpinorDirichlet(CSSpinorSpace sp, Vec psi, PetscRe
 /* The pinch-point test (App. C.1): the number of edges with |psi_jil - tau_ij psi_ijk| >= sqrt(2) (global), and
    the largest |psi_jil - tau_ij psi_ijk| (dmax may be NULL). */
 PETSC_EXTERN PetscErrorCode CSSpinorPinchEdges(CSSpinorSpace sp, Vec psi, PetscInt *npinch, PetscReal *dmax);
+/* The pinch points (App. C.1) independent of the spinors' signs: the interior vertices at which an odd number of
+   edges fail the edge test above (global count). The edge count depends on the signs the lifts followed; this not. */
+PETSC_EXTERN PetscErrorCode CSSpinorPinchVertices(CSSpinorSpace sp, Vec psi, PetscInt *npinch);
 /* The regulariser on triangle fields: E_tau(psi(omega)) for the lift psi(omega) of CSSpinorFromTriangleField
    (signs nearer to psi_prev, may be NULL), its gradient with respect to omega (dmH3, may be NULL: the adjoint of
    the lift, exact for the lift as defined, whose rotation depends on omega_0, omega_1 of each face), and the lift

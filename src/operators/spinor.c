@@ -472,6 +472,51 @@ PetscErrorCode CSSpinorPinchEdges(CSSpinorSpace sp, Vec psi, PetscInt *npinch, P
   PetscFunctionReturn(0);
 }
 
+/* The gauge-invariant pinch-point test: an interior vertex is a pinch point when an odd number of its edges fail the
+   edge test (<psi_jil, tau_ij psi_ijk> <= 0, i.e. |psi_jil - tau_ij psi_ijk| >= sqrt 2): the spinor carried around
+   its star by tau returns with the sign -1 (the star turns once more than the reference's, Chern et al. 2018).
+   Flipping one face's spinor (the Z2 gauge) fails its 3 edges, 2 at each of its corners: the parity is unchanged,
+   so the count does not depend on the signs the run's lifts happened to follow, unlike CSSpinorPinchEdges. */
+PetscErrorCode CSSpinorPinchVertices(CSSpinorSpace sp, Vec psi, PetscInt *npinch)
+{
+  CSMesh             m = sp->mesh;
+  Vec                sl, pl, pg;
+  PetscScalar       *s, *par;
+  const PetscScalar *pa;
+  PetscInt           n = 0;
+  PetscFunctionBeginUser;
+  PetscCheck(sp->hasTau, m->comm, PETSC_ERR_ORDER, "CSSpinorSpaceSetConnection first");
+  PetscCall(DMGetLocalVector(sp->dmS4, &sl));
+  PetscCall(SpinorSides(sp, psi, sl));
+  PetscCall(VecGetArray(sl, &s));
+  PetscCall(DMGetLocalVector(m->dmV1, &pl));
+  PetscCall(VecZeroEntries(pl));
+  PetscCall(VecGetArray(pl, &par));
+  for (PetscInt e = 0; e < m->ne; e++) {
+    PetscReal r[4];
+    if (!m->edgeOwned[e] || m->edgeBoundary[e]) continue;
+    EdgeDefect(sp, e, s + 8 * e, r);
+    if (CSQuatNorm2(r) < 2) continue;
+    for (int k = 0; k < 2; k++) par[m->edgeVert[2 * e + k]] += 1;
+  }
+  PetscCall(VecRestoreArray(pl, &par));
+  PetscCall(VecRestoreArray(sl, &s));
+  PetscCall(DMRestoreLocalVector(sp->dmS4, &sl));
+  PetscCall(DMGetGlobalVector(m->dmV1, &pg));
+  PetscCall(VecZeroEntries(pg));
+  PetscCall(DMLocalToGlobal(m->dmV1, pl, ADD_VALUES, pg)); /* each edge counted once (owned): the star's failures */
+  PetscCall(DMGlobalToLocal(m->dmV1, pg, INSERT_VALUES, pl));
+  PetscCall(VecGetArrayRead(pl, &pa));
+  for (PetscInt v = 0; v < m->nv; v++)
+    if (m->vertOwned[v] && !m->vertBoundary[v] && ((PetscInt)(PetscRealPart(pa[v]) + 0.5)) % 2) n++;
+  PetscCall(VecRestoreArrayRead(pl, &pa));
+  PetscCall(DMRestoreGlobalVector(m->dmV1, &pg));
+  PetscCall(DMRestoreLocalVector(m->dmV1, &pl));
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &n, 1, MPIU_INT, MPI_SUM, m->comm));
+  *npinch = n;
+  PetscFunctionReturn(0);
+}
+
 /* E_tau(psi(omega)) with psi the lift of omega (signs nearer to psi_prev, NULL: Re psi >= 0), written to psi (dmF4,
    may be NULL), and its gradient with respect to omega (dmH3; may be NULL) through FaceSpinorAdjoint. */
 PetscErrorCode CSSpinorDirichletTriangleField(CSSpinorSpace sp, DM dmH3, Vec omega, Vec psi_prev, PetscReal *E, Vec grad, Vec psi)

@@ -14,6 +14,7 @@ static PetscErrorCode TriangleFieldKeys(CSWillmoreFlow flow, CSOutput *out)
   if (!is) PetscFunctionReturn(0);
   if (tf.integrability_violation >= 0) PetscCall(CSJSONAddReal(out->json, "integrability_violation", tf.integrability_violation));
   if (tf.pinch_edges >= 0) PetscCall(CSJSONAddInt(out->json, "pinch_edges", tf.pinch_edges));
+  if (tf.pinch_vertices >= 0) PetscCall(CSJSONAddInt(out->json, "pinch_vertices", tf.pinch_vertices));
   if (tf.pinch_edges >= 0) PetscCall(CSJSONAddReal(out->json, "spin_energy", tf.spin_energy));
   PetscFunctionReturn(0);
 }

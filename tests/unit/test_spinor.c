@@ -1,7 +1,8 @@
 /* Unit checks of the discrete spinors of soliman2021 App. C (include/cs_operators_spinor.h), serial and under
    mpirun, on a bumpy icosphere and a bumpy torus, with the background metric l0 = the lengths of df:
    - the lift psi(df) is exact: S(l0, psi(df)) = df to 1e-12, and has no pinch edges (tau from df's spin structure);
-   - flipping the spinor of one face makes exactly its 3 edges fail the pinch test |psi_jil - tau psi_ijk| < sqrt 2;
+   - flipping the spinor of one face makes exactly its 3 edges fail the pinch test |psi_jil - tau psi_ijk| < sqrt 2,
+     but no vertex (CSSpinorPinchVertices: the flip is a gauge, each corner sees 2 of the 3 edges);
    - S_c(u, psi) is conformal by construction: C~ lambda(S_c(u, psi)) = C~ lambda0 to 1e-12 for random u and unit
      psi (C~ A~ = 0), and its faces close;
    - the gradient of the spin Dirichlet energy E_tau against central differences (<= 1e-6 relative).
@@ -60,6 +61,9 @@ static PetscErrorCode CheckLiftAndPinch(CSMesh m, CSSpinorSpace sp, DM dmH3, Vec
   PetscCall(CSSpinorPinchEdges(sp, psi, &np, &dmax));
   PetscCall(PetscSNPrintf(what, sizeof(what), "%s: pinch edges of psi(df) = 0", name));
   PetscCall(CSTestCheck(m->comm, (PetscBool)(np == 0), what, (PetscReal)np, 0));
+  PetscCall(CSSpinorPinchVertices(sp, psi, &np));
+  PetscCall(PetscSNPrintf(what, sizeof(what), "%s: pinch vertices of psi(df) = 0", name));
+  PetscCall(CSTestCheck(m->comm, (PetscBool)(np == 0), what, (PetscReal)np, 0));
   /* smooth: psi_jil - tau psi_ijk is the half-angle rotation about the edge by the dihedral angle, small on a fine
      mesh whatever the signs (a wrong chart change r would leave O(1) defects on most edges) */
   PetscCall(PetscSNPrintf(what, sizeof(what), "%s: max |psi_jil - tau psi_ijk| of psi(df) is the dihedral half-angle (< 0.6)", name));
@@ -72,6 +76,10 @@ static PetscErrorCode CheckLiftAndPinch(CSMesh m, CSSpinorSpace sp, DM dmH3, Vec
   PetscCall(CSSpinorPinchEdges(sp, psi, &np, NULL));
   PetscCall(PetscSNPrintf(what, sizeof(what), "%s: one face's spinor flipped: 3 pinch edges", name));
   PetscCall(CSTestCheck(m->comm, (PetscBool)(np == 3), what, (PetscReal)np, 3));
+  /* the flip is a change of gauge, not a pinch point: 2 of the 3 edges at each corner, the vertices' parity kept */
+  PetscCall(CSSpinorPinchVertices(sp, psi, &np));
+  PetscCall(PetscSNPrintf(what, sizeof(what), "%s: one face's spinor flipped: 0 pinch vertices", name));
+  PetscCall(CSTestCheck(m->comm, (PetscBool)(np == 0), what, (PetscReal)np, 0));
   PetscCall(VecDestroy(&om));
   PetscFunctionReturn(0);
 }

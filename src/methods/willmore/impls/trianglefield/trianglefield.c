@@ -447,13 +447,14 @@ PetscErrorCode CSWillmoreFlowTriangleFieldGetInfo(CSWillmoreFlow F, CSWillmoreFl
   PetscCheck(tf || is, F->hdr.comm, PETSC_ERR_ARG_WRONG, "CSWillmoreFlowTriangleFieldGetInfo: -%stype %s is not trianglefield", F->hdr.prefix, F->type);
   if (is) *is = tf;
   info->integrability_violation = info->immersion_tol = info->spin_energy = -1;
-  info->pinch_edges             = -1;
+  info->pinch_edges = info->pinch_vertices = -1;
   if (!tf) PetscFunctionReturn(0);
   d                             = (CSTriangleField *)F->data;
   info->integrability_violation = d->integ;
   info->immersion_tol           = d->immersion_tol;
   info->spin_energy             = d->espin;
   info->pinch_edges             = d->pinch;
+  info->pinch_vertices          = d->pinchv;
   PetscFunctionReturn(0);
 }
 
@@ -498,5 +499,6 @@ PetscErrorCode CSWillmoreFlowCreate_TriangleField(CSWillmoreFlow F)
   d->immersion_tol     = 1e-6;
   d->integ             = -1; /* not evaluated yet */
   d->pinch             = -1;
+  d->pinchv            = -1;
   PetscFunctionReturn(0);
 }

@@ -108,6 +108,7 @@ static PetscErrorCode EvaluateSpinor(CSWillmoreFlow F, CSTriangleField *d)
   F->A = PetscRealPart(A);
   PetscCall(CSTFSpinorOmega(d, F->x, d->omt)); /* d->pg = psi of x */
   PetscCall(CSSpinorPinchEdges(d->sp, d->pg, &d->pinch, NULL));
+  PetscCall(CSSpinorPinchVertices(d->sp, d->pg, &d->pinchv));
   PetscCall(CSSpinorDirichlet(d->sp, d->pg, &d->espin, NULL));
   F->V = 0;
   /* the surface of this state against the input, as for the omega variables (area spread, q_max, the guard) */
@@ -135,6 +136,7 @@ static PetscErrorCode EvaluateAt(CSWillmoreFlow F, CSTriangleField *d)
   F->A      = PetscRealPart(A);
   PetscCall(CSSpinorFromTriangleField(d->sp, d->dmH3, F->x, d->psi, d->psit));
   PetscCall(CSSpinorPinchEdges(d->sp, d->psit, &d->pinch, NULL));
+  PetscCall(CSSpinorPinchVertices(d->sp, d->psit, &d->pinchv));
   PetscCall(CSSpinorDirichlet(d->sp, d->psit, &d->espin, NULL));
   F->V      = 0; /* not tracked: a triangle field encloses no volume until it is integrated (docs/triangle_fields.md) */
   /* the surface of this state (the Poisson reconstruction) against the input: vertex-area spread and q_max for the

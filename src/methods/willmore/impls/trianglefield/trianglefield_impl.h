@@ -62,6 +62,7 @@ typedef struct {
   PetscReal integ;         /* integrability violation: max of |d1 omega|, face closure, |<<Y_i|omega>>| (-1: none yet) */
   PetscReal espin;         /* E_tau(psi(omega)) (App. C.3), whatever its weight */
   PetscInt  pinch;         /* edges failing the spinor pinch test (App. C.1; -1: none yet) */
+  PetscInt  pinchv;        /* pinch points: vertices with an odd number of those edges (sign-independent; -1: none yet) */
   PetscReal immersion_tol; /* -flow_immersion_tol: the largest integ at which -o writes the reconstruction */
 } CSTriangleField;
 PETSC_INTERN const char *const CSTriangleFieldVariables[];
