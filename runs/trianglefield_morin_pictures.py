@@ -1,7 +1,11 @@
 #!/usr/bin/env python3
 """Pictures of soliman2021 Fig. 15 (the Morin surface flowing to a round sphere) from a run's ParaView series.
 
-  /usr/bin/python3 runs/trianglefield_morin_pictures.py SERIES.pvd HISTORY.csv OUT.png [--panels 7]
+  /usr/bin/python3 runs/trianglefield_morin_pictures.py SERIES.pvd[,SERIES2.pvd] HISTORY.csv[,HISTORY2.csv] OUT.png
+                                                       [--panels 7] [--view ELEV,AZIM]
+
+Several series / histories (the stages of a run resumed from a checkpoint) are joined by iteration, a later one
+replacing an earlier one's rows from its first iteration on.
 
 OUT.png: a row of iterations (the first, the last and the steps between them nearest to evenly spaced values of
 W, so the fast and the slow parts of the flow both show) and below it W and the EL residual against the iteration
@@ -64,8 +68,12 @@ def draw(ax, P, F, view, title):
     ax.set_title(title, fontsize=8)
 
 
-def history(path):
-    rows = list(csv.DictReader(open(path)))
+def history(paths):
+    rows = []
+    for path in paths.split(","):
+        more = list(csv.DictReader(open(path)))
+        first = float(more[0]["it"]) if more else math.inf
+        rows = [r for r in rows if float(r["it"]) < first] + more
     it = np.array([float(r["it"]) for r in rows])
     W = np.array([float(r["energy"]) for r in rows])
     el = np.array([float(r["el_residual"]) for r in rows])
@@ -89,7 +97,11 @@ def main():
     ap.add_argument("--panels", type=int, default=7)
     ap.add_argument("--view", default="25,-50")
     a = ap.parse_args()
-    steps = vtu.read_pvd(a.series)
+    steps = []
+    for path in a.series.split(","):
+        more = vtu.read_pvd(path)
+        first = more[0][0] if more else math.inf
+        steps = [st for st in steps if st[0] < first] + more
     it, W, el = history(a.history)
     chosen, Ws = pick(steps, it, W, min(a.panels, len(steps)))
     view = tuple(float(x) for x in a.view.split(","))
