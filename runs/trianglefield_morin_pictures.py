@@ -114,7 +114,7 @@ def main():
     ax.plot(it, W, "k-", lw=1)
     for k in range(1, 5):
         ax.axhline(4 * math.pi * k, color="gray", lw=0.5, ls=":")
-        ax.text(it[-1], 4 * math.pi * k, " %d·4π" % k if k > 1 else " 4π", fontsize=7, va="center")
+        ax.text(it[-1], 4 * math.pi * k, " %dπ" % (4 * k), fontsize=7, va="center")
     ax.set_xlabel("iteration", fontsize=8)
     ax.set_ylabel("W", fontsize=8)
     ax.tick_params(labelsize=7)
