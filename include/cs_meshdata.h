@@ -66,9 +66,16 @@ PETSC_EXTERN PetscErrorCode CSMeshDataLattice(PetscReal tau_re, PetscReal tau_im
 /* soliman2021 Fig. 8: the level-L icosphere with 12 spikes of height h and angular width w; round: md->len = the
    round icosphere's edge lengths (the target class of the flows) (meshdata_shapes.c). */
 PETSC_EXTERN PetscErrorCode CSMeshDataSpikySphere(PetscInt level, PetscReal height, PetscReal width, PetscBool round, CSMeshData *md);
-/* soliman2021 Fig. 15: Apery's Morin surface (an immersed sphere, fourfold symmetric) on n x (m - 1) rings and two
-   poles, plus a smooth symmetry-breaking perturbation of size eps (meshdata_shapes.c). */
-PETSC_EXTERN PetscErrorCode CSMeshDataMorin(PetscInt n, PetscInt m, PetscReal eps, CSMeshData *md);
+/* soliman2021 Fig. 15: a Morin surface (an immersed sphere, fourfold symmetric) on n x (m - 1) rings and two poles,
+   plus a symmetry-breaking perturbation of size eps: Apery's parametrisation (not conformal) or Kusner's Willmore
+   halfway model (W = 16 pi, conformally parametrised by the round sphere); round: md->len = the round UV sphere's
+   edge lengths on the same grid (the flows' target class) (meshdata_shapes.c). */
+typedef enum {
+  CS_MORIN_APERY,
+  CS_MORIN_KUSNER
+} CSMorinKind;
+PETSC_EXTERN const char *const CSMorinKinds[];
+PETSC_EXTERN PetscErrorCode    CSMeshDataMorin(PetscInt n, PetscInt m, PetscReal eps, CSMorinKind kind, PetscBool round, CSMeshData *md);
 /* md->len from a file of 3 |F| edge lengths (per face, opposite corners 0, 1, 2): the conformal class that the
    flows' conformal rows then target (-mesh_lengths FILE). One-line errors: wrong count, not a triangle, an edge
    given two lengths. Rank 0 (meshdata_lengths.c). */

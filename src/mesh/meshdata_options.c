@@ -24,6 +24,8 @@ typedef struct {
   PetscReal radius, R, r, tau_re, tau_im, height, tau[2]; /* tau: -gen lattice */
   PetscReal spike_h, spike_w, morin_eps;                 /* -gen spiky, -gen morin */
   PetscBool spike_round;                                  /* -gen_spike_round_class */
+  CSMorinKind morin_kind;                                 /* -gen_morin_kind */
+  PetscBool   morin_round;                                /* -gen_morin_round_class */
   PetscBool project;
   PetscInt  refine;      /* -mesh_refine: 1-to-4 splits after validation (meshdata_refine.c) */
   PetscBool refine_loop; /* -mesh_refine_type loop (default) or midpoint */
@@ -62,7 +64,7 @@ static PetscErrorCode MeshSourceLoad(const MeshSource *src, CSMeshData *md, CSTo
     case GEN_DISK: PetscCall(CSMeshDataDisk(src->radius, src->rings, md)); break;
     case GEN_LATTICE: PetscCall(CSMeshDataLattice(src->tau[0], src->tau[1], src->n, src->m, md)); break;
     case GEN_SPIKY: PetscCall(CSMeshDataSpikySphere(src->level, src->spike_h, src->spike_w, src->spike_round, md)); break;
-    case GEN_MORIN: PetscCall(CSMeshDataMorin(src->n, src->m, src->morin_eps, md)); break;
+    case GEN_MORIN: PetscCall(CSMeshDataMorin(src->n, src->m, src->morin_eps, src->morin_kind, src->morin_round, md)); break;
     }
   }
   if (md->fuv && !src->file && !src->arrays && (src->remesh_faces || src->remesh_h > 0)) {
@@ -190,6 +192,8 @@ PetscErrorCode CSMeshDataFromOptions(MPI_Comm comm, const char prefix[], CSMeshD
   PetscCall(CSOptionsReal("-gen_spike_width", "Spiky sphere: angular half-width of a spike (radians)", "CSMeshDataSpikySphere", src.spike_w, &src.spike_w, NULL));
   PetscCall(PetscOptionsBool("-gen_spike_round_class", "Spiky sphere: the target conformal class is the round icosphere's (its edge lengths), not the spiky mesh's", "CSMeshDataSpikySphere", src.spike_round, &src.spike_round, NULL));
   PetscCall(CSOptionsReal("-gen_morin_perturb", "Morin surface: size of the symmetry-breaking perturbation", "CSMeshDataMorin", src.morin_eps, &src.morin_eps, NULL));
+  PetscCall(CSOptionsEnum("-gen_morin_kind", "Morin surface: Apery's parametrisation (not conformal: its grid's class holds no round sphere) or Kusner's Willmore halfway model (W = 16 pi, conformal: the grid's class is the round sphere's up to O(h^2); docs/triangle_fields.md, Fig. 15)", "CSMeshDataMorin", CSMorinKinds, (PetscEnum)src.morin_kind, (PetscEnum *)&src.morin_kind, NULL));
+  PetscCall(PetscOptionsBool("-gen_morin_round_class", "Morin surface: the target conformal class is the round UV sphere's on the same grid (its edge lengths), not the Morin mesh's", "CSMeshDataMorin", src.morin_round, &src.morin_round, NULL));
   PetscCall(CSOptionsInt("-gen_rings", "Disk: number of rings", "CSMeshDataDisk", src.rings, &src.rings, NULL));
   PetscCall(CSOptionsString("-mesh_lengths", "File of 3 |F| edge lengths (per face, opposite corners 0, 1, 2): the conformal class the flows' conformal rows target", "CSMeshDataReadLengths", src.lengths, src.lengths, sizeof(src.lengths), NULL));
   PetscCall(CSOptionsString("-mesh_cross_ratios", "File of lines 'i j c0' (1-based vertices as in OBJ), the log length cross ratio of every interior edge: the conformal class the flows' conformal rows target", "CSMeshDataReadCrossRatios", src.crossratios, src.crossratios, sizeof(src.crossratios), NULL));
@@ -201,6 +205,7 @@ PetscErrorCode CSMeshDataFromOptions(MPI_Comm comm, const char prefix[], CSMeshD
   PetscCheck(src.refine >= 0 && src.refine <= 6, comm, PETSC_ERR_ARG_OUTOFRANGE, "-%smesh_refine %" PetscInt_FMT ": not in [0, 6] (each level multiplies the faces by 4)", pre, src.refine);
   PetscCheck(!tauset || ntau == 2, comm, PETSC_ERR_ARG_WRONG, "-%sgen_tau: give two numbers RE,IM (got %" PetscInt_FMT ")", pre, ntau);
   PetscCheck(!src.refine || !(gen == GEN_SPIKY && src.spike_round), comm, PETSC_ERR_ARG_INCOMP, "-%smesh_refine with -%sgen_spike_round_class: refine with -%sgen_level instead (the lengths are not refined)", pre, pre, pre);
+  PetscCheck(!src.refine || !(gen == GEN_MORIN && src.morin_round), comm, PETSC_ERR_ARG_INCOMP, "-%smesh_refine with -%sgen_morin_round_class: refine with -%sgen_n, -%sgen_m instead (the lengths are not refined)", pre, pre, pre, pre);
   PetscCheck(!src.refine || gen != GEN_LATTICE, comm, PETSC_ERR_ARG_INCOMP, "-%smesh_refine with -%sgen lattice: refine with -%sgen_n, -%sgen_m instead (the lattice's lengths are not refined)", pre, pre, pre, pre);
   PetscCheck(!src.refine || !src.lengths[0], comm, PETSC_ERR_ARG_INCOMP, "-%smesh_refine with -%smesh_lengths: the lengths are given for the unrefined faces", pre, pre);
   PetscCheck(!src.refine || !src.crossratios[0], comm, PETSC_ERR_ARG_INCOMP, "-%smesh_refine with -%smesh_cross_ratios: the cross ratios are given for the unrefined edges", pre, pre);
