@@ -78,7 +78,7 @@ static PetscErrorCode CheckGenerators(MPI_Comm comm)
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   if (rank) PetscFunctionReturn(0);
-  for (int g = 0; g < 7; g++) {
+  for (int g = 0; g < 8; g++) {
     CSMeshData md;
     PetscReal  bad;
     char       what[PETSC_MAX_PATH_LEN + 64];
@@ -89,7 +89,8 @@ static PetscErrorCode CheckGenerators(MPI_Comm comm)
     case 3: PetscCall(CSMeshDataLattice(-0.4, 0.9, 9, 8, &md)); break;
     case 4: PetscCall(CSMeshDataCylinder(1, 2, 12, 5, &md)); break;
     case 5: PetscCall(CSMeshDataDisk(1, 4, &md)); break;
-    default: PetscCall(CSMeshDataMorin(12, 8, 0.05, &md)); break;
+    case 6: PetscCall(CSMeshDataMorin(12, 8, 0.05, CS_MORIN_APERY, PETSC_FALSE, &md)); break;
+    default: PetscCall(CSMeshDataMorin(12, 8, 0.05, CS_MORIN_KUSNER, PETSC_TRUE, &md)); break;
     }
     PetscCall(CheckSeams(&md, &bad));
     PetscCall(PetscSNPrintf(what, sizeof(what), "%s: UV faces of the wrong sign or across a seam", md.name));
