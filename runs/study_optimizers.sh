@@ -11,8 +11,10 @@
 #   cgdv: cgd with the violation ceiling lifted (-flow_vmax 1): a step is accepted on descent of its merit function
 #        alone, the same rule as PGD's (descent of W) and the paper's "explicit forward steps" (soliman2021 Sec. 6)
 #   cgdf: cgd with the dual step large and fixed (-flow_t_mu 1e5 -flow_t_mu_grow 1 -flow_t_mu_max 1e5): a class
-#        direction of singular value s is restored by ~ t t_mu s^2 per step; with the default t_mu (1e3 t) the
-#        torus's first steps hit the violation ceiling (6 rejections in 30), with this none (docs/studies.md)
+#        direction of singular value s is restored by ~ t t_mu s^2 per step; with the old default t_mu (1e3 t) the
+#        torus's first steps hit the violation ceiling (6 rejections in 30), with this none (docs/studies.md). Since
+#        issue 39 cgd's default is t_mu = 1e5 t (following t), and cgd and cgdf agree to 1e-4 in W
+#        (runs/study_dual_step.sh compares the dual-step rules)
 # The ranking under each table (issue 21) compares like with like: only the runs that hold the conformal class at
 # the end (conformal_violation < HOLD, default 1e-5: ALM and GD do not), by W.
 # Outputs in runs/results/optimizers/: per run <shape>_<method>_<metric>_{its,time}.{csv,json,obj,log}; the table

@@ -101,7 +101,7 @@ PetscErrorCode CSWillmoreFlowGetTypeList(PetscFunctionList *list)
 static void SetDefaults(CSWillmoreFlow F)
 {
   F->t               = 1.0;
-  F->tmu             = 0; /* 0: 1e3 t */
+  F->tmu             = 0; /* 0: the kind's default, ops.tmu_ratio t (CheckOptions) */
   F->tmax            = 2.0;
   F->grow            = 2.0;
   F->rtol            = 5e-7; /* of el_residual_scaled: the median unit-scale input has el_residual_scaled ~ 0.3 el_residual, and 5e-7 stops the converged tests and golden cases of the old 1e-6 at the same iteration or within a few (docs/willmore_flow.md "Stopping") */

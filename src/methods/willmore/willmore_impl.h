@@ -91,6 +91,7 @@ struct _CSWillmoreFlowOps {
   PetscInt  id;             /* stored in checkpoints (a resume must use the same kind) */
   PetscBool conformal;      /* default of -flow_conformal */
   PetscBool step_halving;   /* default of -flow_step_model is halving (trianglefield: the model fell behind, docs/willmore_flow.md) */
+  PetscReal tmu_ratio;      /* default of -flow_t_mu as a multiple of t (0: 1e3; cgd 1e5, docs/studies.md "The dual step") */
   PetscErrorCode (*setup)(CSWillmoreFlow);               /* checks of the options against the kind */
   PetscErrorCode (*start)(CSWillmoreFlow);               /* before the first iteration (not after a resume) */
   PetscErrorCode (*trial)(CSWillmoreFlow, PetscBool *);  /* the trial point xt of step t (false: rejected) */

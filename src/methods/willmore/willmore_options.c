@@ -60,7 +60,7 @@ static PetscErrorCode StepOptions(CSWillmoreFlow F, PetscOptionItems *PetscOptio
   PetscBool   set;
   PetscFunctionBeginUser;
   PetscCall(CSOptionsReal("-t", "Initial primal step size t", NULL, F->t, &F->t, NULL));
-  PetscCall(CSOptionsReal("-t_mu", "Dual step size t_mu of the multipliers (0: the default, 1e3 t)", NULL, F->tmu, &F->tmu, NULL));
+  PetscCall(CSOptionsReal("-t_mu", "Dual step size t_mu of the multipliers, for a unit-size mesh (0: the kind's default, 1e5 t for cgd, 1e3 t for gd, newton and trianglefield)", NULL, F->tmu, &F->tmu, NULL));
   PetscCall(CSOptionsReal("-t_max", "Largest primal step", NULL, F->tmax, &F->tmax, NULL));
   PetscCall(CSOptionsReal("-t_mu_grow", "Grow t_mu by this factor after each accepted step, independently of t, up to t_mu_max (0: t_mu follows t)", NULL, F->tmu_grow, &F->tmu_grow, NULL));
   PetscCall(CSOptionsReal("-t_mu_max", "Largest t_mu (default: 1e3 t_max with t_mu_grow, else none; in the units of t_mu)", NULL, F->tmu_max, &F->tmu_max, NULL));
@@ -121,7 +121,7 @@ static PetscErrorCode CheckValues(CSWillmoreFlow F)
   const CSOptionCheck checks[] = {
     /* first, with a range: a t of 1e-300 was blamed on -t_min, one of 1e300 failed inside the factorisation */
     {"t", F->t, F->t >= 1e-12 && F->t <= 1e8, "must lie in [1e-12, 1e8] (a step size of the scaled flow)"},
-    {"t_mu", F->tmu, F->tmu >= 0 && F->tmu <= 1e15, "must lie in (0, 1e15] (0: the default, 1e3 t)"},
+    {"t_mu", F->tmu, F->tmu >= 0 && F->tmu <= 1e15, "must lie in (0, 1e15] (0: the kind's default)"},
     {"t_max", F->tmax, F->tmax >= F->t && F->tmax <= 1e8, "must lie in [-t, 1e8]"},
     {"t_grow", F->grow, F->grow >= 1, "must be >= 1"},
     {"t_mu_grow", F->tmu_grow, F->tmu_grow == 0 || F->tmu_grow >= 1, "use 0 (t_mu follows t) or a factor >= 1"},
@@ -164,7 +164,7 @@ static PetscErrorCode CheckOptions(CSWillmoreFlow F)
   const char *p = F->hdr.prefix;
   PetscFunctionBeginUser;
   PetscCall(CheckValues(F));
-  if (F->tmu == 0) F->tmu = 1e3 * F->t;
+  if (F->tmu == 0) F->tmu = (F->ops.tmu_ratio > 0 ? F->ops.tmu_ratio : 1e3) * F->t; /* the kind's default */
   PetscCheck(!F->target[0] || F->conformal, F->hdr.comm, PETSC_ERR_ARG_INCOMP, "-%starget_mesh %s needs the conformal constraint (cgd, or pgd with -%sconformal)", p, F->target, p);
   PetscCheck(!F->boundary_set || F->boundary != CS_FLOW_BOUNDARY_NORMALS || F->conformal, F->hdr.comm, PETSC_ERR_ARG_INCOMP, "-%sboundary normals needs the conformal constraint (cgd or pgd)", p);
   /* the step-geometry check and the fold guard measure vertex positions; a triangle field's variables are not */

@@ -82,7 +82,8 @@ static PetscErrorCode CheckScalars(CSWillmoreFlow F, PetscInt it, const PetscRea
     if (i <= 2) ok = (PetscBool)(ok && v > 0 && v < 1e300);
     else if (i == 7) ok = (PetscBool)(ok && v >= 0);
     else if (i == 8) ok = (PetscBool)(v == 0 || v == 1);
-    else if (i >= 9) ok = (PetscBool)(ok && v >= 0 && v < 1e300); /* willmore_step_model.c: 0 before the first accepted step */
+    else if (i == 9) ok = (PetscBool)(ok && v >= 0 && v < 1e300); /* willmore_step_model.c: 0 before the first accepted step */
+    else if (i == 10) ok = (PetscBool)(ok && PetscAbsReal(v) < 1e300); /* the added violation: negative when the step lowered it (CSWFStepModelGrow) */
     else ok = (PetscBool)(ok && v >= 0 && v <= 1e9 && v == PetscFloorReal(v));
     PetscCheck(ok, F->hdr.comm, PETSC_ERR_FILE_UNEXPECTED, "-resume: the checkpoint's %s is %g, out of range (a damaged or crafted file)", names[i - 1], (double)v);
   }

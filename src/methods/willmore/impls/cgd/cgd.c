@@ -41,6 +41,7 @@ static PetscErrorCode ScaleCGD(CSWillmoreFlow F, PetscReal sc, PetscReal E0)
   (void)E0;
   PetscCall(CSWFDualStepCheck(F, &cgd->ds));
   CSWFDualStepScale(&cgd->ds, sc);
+  PetscCall(CSWFDualStepDefault(F, &cgd->ds));
   PetscFunctionReturn(0);
 }
 
@@ -56,6 +57,10 @@ static PetscErrorCode ViewCGD(CSWillmoreFlow F, PetscViewer viewer)
 /* the kind's strategy (willmore_impl.h), grouped: identity, the step, hooks, its own data and options */
 static const struct _CSWillmoreFlowOps CGDOps = {
   .id = 0, .conformal = PETSC_TRUE,
+  /* t_mu = 1e5 t: with 1e3 t the bumpy torus's first steps hit the violation ceiling and CGD fell behind PGD at equal
+     iterations (soliman2021 Fig. 7); 1e4-1e6 t take every step (runs/study_dual_step.sh, docs/studies.md). A start
+     off its constraints keeps 1e3 t (CSWFDualStepDefault) */
+  .tmu_ratio = 1e5,
   .trial = CSWFTrialCGD, .filter = CSWFFilterLagrangian, .accept = CSWFAcceptCGD, .grow = CSWFGrowCGD, .shrink = CSWFShrinkCGD,
   .dual = CSWFMultiplierLS, .get_switch = CSWFDualStepGetSwitch, .set_switch = CSWFDualStepSetSwitch, .scale = ScaleCGD,
   .setfromoptions = SetFromOptionsCGD, .setup = CSWFSetUpCGD, .view = ViewCGD, .destroy = CSWFDestroyData,

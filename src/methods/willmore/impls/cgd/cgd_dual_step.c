@@ -29,6 +29,7 @@ void CSWFDualStepInitialize(CSWFDualStep *ds)
   ds->final_el   = 1e-3;
   ds->final_on   = PETSC_FALSE;
   ds->final_from = 0;
+  ds->tmu_default = PETSC_FALSE;
 }
 
 static PetscErrorCode CheckValues(CSWillmoreFlow F, const CSWFDualStep *ds)
@@ -46,6 +47,7 @@ static PetscErrorCode CheckValues(CSWillmoreFlow F, const CSWFDualStep *ds)
 PetscErrorCode CSWFDualStepSetFromOptions(CSWillmoreFlow F, CSWFDualStep *ds, PetscOptionItems *PetscOptionsObject)
 {
   PetscFunctionBeginUser;
+  ds->tmu_default = (PetscBool)(F->tmu == 0); /* read before CheckOptions sets the default */
   PetscCall(CSOptionsReal("-t_mu_final", "CGD: once an iterate's EL residual is below -t_mu_final_el, the dual step t_mu is max(t_mu, this), fixed (0: off; in the units of t_mu; docs/triangle_fields.md, \"The class floor\")", NULL, ds->final, &ds->final, NULL));
   PetscCall(CSOptionsReal("-t_mu_final_el", "CGD: the EL residual below which -t_mu_final takes over", NULL, ds->final_el, &ds->final_el, NULL));
   PetscCall(CheckValues(F, ds));
@@ -66,6 +68,26 @@ PetscErrorCode CSWFDualStepCheck(CSWillmoreFlow F, CSWFDualStep *ds)
 void CSWFDualStepScale(CSWFDualStep *ds, PetscReal sc)
 {
   ds->final /= sc;
+}
+
+/* The kind's default dual step (ops.tmu_ratio t: 1e5 t for cgd) is for a start on its constraints (soliman2021 Fig. 7;
+   runs/study_dual_step.sh: with 1e3 t the bumpy torus's first steps hit the violation ceiling). A start off them by
+   more than -vmax (a change of class, -target_mesh; a global row's target away from the input, the vesicle's volume)
+   keeps 1e3 t: a large t_mu there makes the first steps Gauss-Newton on the constraints and the violation ceiling
+   rejects them (options/flow_vesicle.opts stalled at t = 5e-6 with 1e5 t; docs/studies.md "The dual step"). Called
+   once the rows and the size scaling are set up (ScaleCGD); t_mu is then in the units of the mesh. */
+PetscErrorCode CSWFDualStepDefault(CSWillmoreFlow F, CSWFDualStep *ds)
+{
+  PetscReal conf, glob, ratio = F->ops.tmu_ratio;
+  PetscFunctionBeginUser;
+  if (!ds->tmu_default || ratio <= 1e3 || (!F->conformal && !F->k)) PetscFunctionReturn(0);
+  PetscCall(CSWFEvalConstraints(F, F->x0, F->ct, F->cxt, PETSC_FALSE));
+  PetscCall(CSWFViolation(F, F->ct, F->cxt, &conf, &glob));
+  if (!(PetscMax(conf, glob) > F->vmax)) PetscFunctionReturn(0);
+  F->tmu *= 1e3 / ratio;
+  F->tmu_ratio_max = 1e3 * F->tmu / F->t;
+  PetscCall(PetscPrintf(F->hdr.comm, "flow %s: the start is off its constraints (violation %.3e > -%svmax %g): the default dual step is t_mu = 1e3 t, not %.0e t (-%st_mu sets it)\n", F->type, (double)PetscMax(conf, glob), F->hdr.prefix, (double)F->vmax, (double)ratio, F->hdr.prefix));
+  PetscFunctionReturn(0);
 }
 
 PetscErrorCode CSWFDualStepView(CSWillmoreFlow F, CSWFDualStep *ds, PetscViewer viewer)

@@ -11,6 +11,7 @@ typedef struct {
   PetscReal final, final_el; /* -t_mu_final (0: off; size-scaled by CSWFDualStepScale), -t_mu_final_el */
   PetscBool final_on;        /* the switch fired (stored in checkpoints) */
   PetscInt  final_from;      /* the switch is armed from this iteration on (a kind's relaxed phase before) */
+  PetscBool tmu_default;     /* -t_mu not given: the kind's default (ops.tmu_ratio t), checked against the start */
 } CSWFDualStep;
 
 /* CGD's data (cgd, gd): the dual step first, then the least-squares multipliers (cgd_multiplier_ls.c) */
@@ -24,6 +25,7 @@ PETSC_INTERN void           CSWFDualStepInitialize(CSWFDualStep *ds);
 PETSC_INTERN PetscErrorCode CSWFDualStepSetFromOptions(CSWillmoreFlow F, CSWFDualStep *ds, PetscOptionItems *PetscOptionsObject);
 PETSC_INTERN PetscErrorCode CSWFDualStepCheck(CSWillmoreFlow F, CSWFDualStep *ds);
 PETSC_INTERN void           CSWFDualStepScale(CSWFDualStep *ds, PetscReal sc);
+PETSC_INTERN PetscErrorCode CSWFDualStepDefault(CSWillmoreFlow F, CSWFDualStep *ds);
 PETSC_INTERN PetscErrorCode CSWFDualStepView(CSWillmoreFlow F, CSWFDualStep *ds, PetscViewer viewer);
 PETSC_INTERN PetscErrorCode CSWFDualStepGetSwitch(CSWillmoreFlow F, PetscBool *on);
 PETSC_INTERN PetscErrorCode CSWFDualStepSetSwitch(CSWillmoreFlow F, PetscBool on);

@@ -20,5 +20,6 @@ PetscErrorCode CSWillmoreFlowCreate_GD(CSWillmoreFlow F)
   F->ops.setup      = SetUpGD;
   F->ops.max_step   = 0.5; /* the geometric step control and the fold guard (willmore_guards.c) */
   F->ops.fold_guard = PETSC_TRUE;
+  F->ops.tmu_ratio  = 0; /* t_mu = 1e3 t for its extra rows: cgd's 1e5 t was measured on the conformal rows only */
   PetscFunctionReturn(0);
 }
