@@ -3,6 +3,8 @@
 #ifndef CS_TEST_H
 #define CS_TEST_H
 #include "cs_mesh.h"
+#include <stdarg.h>
+#include <stdio.h>
 
 PETSC_UNUSED static PetscInt cs_test_failures = 0;
 
@@ -11,6 +13,24 @@ PETSC_UNUSED static PetscErrorCode CSTestCheck(MPI_Comm comm, PetscBool ok, cons
   PetscFunctionBeginUser;
   PetscCall(PetscPrintf(comm, "%s %s: %.3e (bound %.1e)\n", ok ? "ok  " : "FAIL", what, (double)value, (double)bound));
   if (!ok) cs_test_failures++;
+  PetscFunctionReturn(0);
+}
+
+/* One check with a printf-style detail: "ok NAME detail" or "FAIL NAME: detail" on comm's rank 0. */
+PETSC_UNUSED static PetscErrorCode CSTestCheckf(MPI_Comm comm, PetscBool ok, const char name[], const char fmt[], ...)
+{
+  char    detail[1024] = "";
+  va_list ap;
+
+  PetscFunctionBeginUser;
+  va_start(ap, fmt);
+  vsnprintf(detail, sizeof(detail), fmt, ap);
+  va_end(ap);
+  if (ok) PetscCall(PetscPrintf(comm, "ok %s%s%s\n", name, detail[0] ? " " : "", detail));
+  else {
+    cs_test_failures++;
+    PetscCall(PetscPrintf(comm, "FAIL %s: %s\n", name, detail));
+  }
   PetscFunctionReturn(0);
 }
 

@@ -5,6 +5,7 @@
    new UV per edge and two on a seam edge.
    Prints "ok <check>" or "FAIL <check>: detail"; the exit code is the number of failures. Option: -data_dir DIR. */
 #include "cs_meshdata.h"
+#include "cs_test.h"
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -12,24 +13,7 @@
 #include <string.h>
 #include <unistd.h>
 
-static int nfail = 0;
-
-static PetscErrorCode Check(PetscBool ok, const char name[], const char fmt[], ...)
-{
-  char    detail[1024] = "";
-  va_list ap;
-
-  PetscFunctionBeginUser;
-  va_start(ap, fmt);
-  vsnprintf(detail, sizeof(detail), fmt, ap);
-  va_end(ap);
-  if (ok) PetscCall(PetscPrintf(PETSC_COMM_WORLD, "ok %s%s%s\n", name, detail[0] ? " " : "", detail));
-  else {
-    nfail++;
-    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "FAIL %s: %s\n", name, detail));
-  }
-  PetscFunctionReturn(0);
-}
+#define Check(...) CSTestCheckf(PETSC_COMM_WORLD, __VA_ARGS__) /* tests/unit/cs_test.h */
 
 /* validation under the return handler: *ierr and PETSc's message of the first error */
 static PetscErrorCode TryValidate(CSMeshData *md, PetscErrorCode *ierr, char msg[], size_t len)
@@ -180,7 +164,7 @@ int main(int argc, char **argv)
   PetscCall(TestSplit(data, PETSC_FALSE));
   PetscCall(TestSplit(data, PETSC_TRUE));
   (void)rmdir(tmp);
-  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%d failure%s\n", nfail, nfail == 1 ? "" : "s"));
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%" PetscInt_FMT " failure%s\n", cs_test_failures, cs_test_failures == 1 ? "" : "s"));
   PetscCall(PetscFinalize());
-  return nfail;
+  return (int)cs_test_failures;
 }
