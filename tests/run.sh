@@ -22,13 +22,25 @@ export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_
 # idle per failing launch, ~200 launches in the bad-input cases. Our error paths exit on every rank by themselves (the
 # cases assert it), so the grace period only costs time; a hung rank is still killed, and caught by `timeout`.
 export OMPI_MCA_odls_base_sigkill_timeout=${OMPI_MCA_odls_base_sigkill_timeout:-0}
+# The ob1 PML (shared memory between the ranks of this one node) is the one Open MPI selects here anyway
+# (OMPI_MCA_pml_base_verbose=10: "selected ob1"); naming it skips opening the cm PML and its MTL components (psm,
+# psm2) in every rank of every mpirun: 0.22-0.31 s of wall per 2- or 4-rank launch (interleaved A/B, 8-10 launches
+# each, load 5), and the suite has hundreds of such launches (golden alone 58 on 2 ranks). Serial runs (singletons)
+# are unaffected (0.157 vs 0.160 CPU s).
+export OMPI_MCA_pml=${OMPI_MCA_pml:-ob1}
 export CS_ROOT=$PWD CS_BIN=${CS_BIN:-$PWD/bin/confsurf} CS_TESTS=${CS_TESTS:-$PWD/build/tests} # make sanitize: build/san/
 export CS_SHARED=${CS_SHARED:-$PWD/../shared}
 # python3 resolved once: the cases call it hundreds of times (json, check_close, the checks), and a version
 # manager's shim in PATH (pyenv's is a shell script running `pyenv exec`) costs 1.1-1.9 s per call on a loaded
-# 2-core machine against 0.1 s for the interpreter it picks. The same interpreter, first in PATH for the cases.
-if py=$(python3 -c 'import sys; print(sys.executable)' 2>/dev/null) && [ -x "$py" ] && [ "$(command -v python3)" != "$py" ]; then
-  py_dir=$(mktemp -d); ln -s "$py" "$py_dir/python3"; export PATH="$py_dir:$PATH"; trap 'rm -rf "$py_dir"' EXIT
+# 2-core machine against 0.1 s for the interpreter it picks. The same interpreter, first in PATH for the cases, run
+# with -S (no `site`): the cases' python3 is standard library only (numpy and matplotlib come from
+# scripts/find-python.sh's interpreter, not from this one), and `site` executes every site-packages .pth file: with
+# this machine's pyenv 3.11, whose .pth imports certifi, a bare `python3 -c 'import json,sys'` costs 79-85 ms of CPU
+# with site, 42 ms without, 48 ms through this wrapper (perf stat -r 20, under load average 20): ~33 ms saved per
+# call, ~500 calls in the suite (the python3, json and check_close lines of the cases, times their rank counts).
+if py=$(python3 -c 'import sys; print(sys.executable)' 2>/dev/null) && [ -x "$py" ]; then
+  py_dir=$(mktemp -d); printf '#!/bin/sh\nexec %q -S "$@"\n' "$py" > "$py_dir/python3"; chmod +x "$py_dir/python3"
+  export PATH="$py_dir:$PATH"; trap 'rm -rf "$py_dir"' EXIT
 fi
 jobs_max=${CS_TEST_JOBS:-$(nproc 2>/dev/null || echo 1)}
 [[ $jobs_max =~ ^[1-9][0-9]*$ ]] || { echo "tests/run.sh: CS_TEST_JOBS=$jobs_max is not a positive integer" >&2; exit 2; }
