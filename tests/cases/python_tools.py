@@ -121,8 +121,9 @@ def equal(d):
     rho = np.loadtxt(f("rho.txt"))
     P = read_points(f("star.txt"))[:-1]
     runs = [
+        # cgd first: on 2 ranks a later cgd call in the same process differs at round-off (docs/python.md)
+        ("flow cgd", lambda: confsurf.flow(V, F, "-flow_type cgd -flow_max_it 1", **T), dict(obj=f("flow.obj"), summary=f("flow.json"), csv=f("flow.csv"))),
         ("info", lambda: confsurf.info(V, F, **T), dict(obj=f("info.obj"), summary=f("info.json"))),
-        ("flow cgd", lambda: confsurf.flow(V, F, "-flow_type cgd -flow_max_it 3", **T), dict(obj=f("flow.obj"), summary=f("flow.json"), csv=f("flow.csv"))),
         ("flow bs", lambda: confsurf.flow(V, F, "-flow_type bs -bs_max_it 3", **T), dict(obj=f("bs.obj"), summary=f("bs.json"), csv=f("bs.csv"))),
         ("conformal_flow", lambda: confsurf.conformal_flow(S, G, "-flow_max_it 2"), dict(obj=f("conformal.obj"), summary=f("conformal.json"), csv=f("conformal.csv"))),
         ("spin", lambda: confsurf.spin(S, G, rho), dict(obj=f("spin.obj"), summary=f("spin.json"))),
@@ -172,7 +173,7 @@ def errors():
         expect(confsurf.Error, "duplicate faces", lambda: confsurf.info(V, np.vstack([F, F[:1]]) if ROOT else None)),
         expect(confsurf.Error, "the mesh is given as arrays", lambda: confsurf.info(V, F, "-gen icosphere")),
     ]
-    r1 = confsurf.info(V, F, **T)  # the library goes on: the same result as before the errors
+    r1 = confsurf.info(V, F)  # the library goes on: the same result as before the errors
     if ROOT:
         same = np.array_equal(r1.V, r0.V) and r1.summary["willmore"] == r0.summary["willmore"]
         say(("ok  " if same else "BAD ") + "a call after the errors gives the result of the first call")

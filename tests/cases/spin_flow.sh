@@ -13,7 +13,7 @@ V, F = [], []
 for l in open(sys.argv[1]):
     s = l.split()
     if s and s[0] == "v": V.append([float(c) for c in s[1:4]])
-    if s and s[0] == "f": F.append(s[1:4])
+    if s and s[0] == "f": F.append([c.split("/")[0] for c in s[1:4]])  # the disk has UVs (f v/vt): positions only here
 with open(sys.argv[2], "w") as fp:
     for x, y, z in V:
         t, ph = 1.2 * math.hypot(x, y), math.atan2(y, x)

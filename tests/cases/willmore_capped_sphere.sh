@@ -9,7 +9,11 @@
 # the free film shrinks anisotropically (q_mean - 1 over 3 times the constrained one's, measured 0.080 against
 # 0.0155) where the constrained one stays near a
 # similarity per face (q_max < 1.05, measured 1.023; exactly 1 is not expected: a discrete conformal map keeps the
-# length cross ratios, not each face's shape); the two results differ by more than a tenth of the radius.
+# length cross ratios, not each face's shape); the two results differ by more than 0.05 of the radius. That bound
+# was 0.1 (measured 0.143) until cgd's default dual step went from 1e3 t to 1e5 t (issue 39, Fig. 7): the constrained
+# flow then stops at another stationary film (area 7.44654 against 7.44499, both stationary at rtol 1e-9, 0.048 apart
+# at the vertices), 0.095 from the free one; the constrained problem has more than one stationary film here, so the
+# bound is set above their spread (0.048), not at one run's distance.
 # nprocs: 1 2
 source tests/lib.sh
 python3 tests/tools/gen_capped_sphere.py "$TMP/caps.obj" --n 4 --m 2
@@ -39,7 +43,7 @@ checks = [
   ("auxetic: constrained area loss < 1/3 of the free one", A0 - Ac < (A0 - Af) / 3, (A0 - Ac, A0 - Af)),
   ("free film anisotropic: q_mean - 1 over 3 times the constrained one's", S['free']['q_mean'] - 1 > 3 * (S['con']['q_mean'] - 1), (S['free']['q_mean'], S['con']['q_mean'])),
   ("constrained film isotropic: q_max < 1.05", S['con']['q_max'] < 1.05, S['con']['q_max']),
-  ("distinctly different shapes: max distance > 0.1", dist > 0.1, dist),
+  ("distinctly different shapes: max distance > 0.05 (the constrained stationary films spread 0.048)", dist > 0.05, dist),
 ]
 bad = 0
 for name, good, v in checks:
