@@ -203,6 +203,9 @@ PETSC_EXTERN PetscErrorCode CSGeometryAreaVolume(CSMesh mesh, Vec x, PetscReal *
 PETSC_EXTERN PetscErrorCode CSGeometryBoundaryLength(CSMesh mesh, Vec x, PetscReal *len); /* sum of the boundary edge lengths */
 /* Quasi-conformal error (crane2011 Sec. 6.1): per face the ratio sigma_max/sigma_min of the affine map from
    the reference triangle to the current one; q_mean is weighted by reference face area. q may be NULL. */
+/* The mean and max of a per-face distortion over the ranks: s = the local (sum of w Q, sum of w), mx the local max
+   (quasi_conformal.c; shared by CSGeometryQuasiConformal and CSGeometryTextureQ). */
+PETSC_EXTERN PetscErrorCode CSGeometryReduceQ(MPI_Comm comm, const PetscReal s[2], PetscReal mx, PetscReal *qmean, PetscReal *qmax);
 PETSC_EXTERN PetscErrorCode CSGeometryQuasiConformal(CSMesh mesh, Vec xref, Vec x, Vec q, PetscReal *qmean, PetscReal *qmax);
 /* The quasi-conformal distortion of the texture (issue 38): per face Q = sigma_max/sigma_min of the affine map from
    the face's UV triangle (mesh->faceUV) to its triangle in x (CSAffineQ), into q (dmF1, or NULL); the mean weighted

@@ -2,12 +2,23 @@
    taking the reference triangle to the current one (1 for a similarity). */
 #include "cs_geometry.h"
 
+PetscErrorCode CSGeometryReduceQ(MPI_Comm comm, const PetscReal s[2], PetscReal mx, PetscReal *qmean, PetscReal *qmax)
+{
+  PetscReal g[2], gmx;
+  PetscFunctionBeginUser;
+  PetscCall(MPIU_Allreduce(s, g, 2, MPIU_REAL, MPIU_SUM, comm));
+  PetscCall(MPIU_Allreduce(&mx, &gmx, 1, MPIU_REAL, MPIU_MAX, comm));
+  if (qmean) *qmean = g[0] / g[1];
+  if (qmax) *qmax = gmx;
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode CSGeometryQuasiConformal(CSMesh m, Vec xref, Vec x, Vec q, PetscReal *qmean, PetscReal *qmax)
 {
   Vec              xl, rl;
   const PetscReal *p, *r;
   PetscScalar     *qa = NULL;
-  PetscReal        s[2] = {0, 0}, g[2], mx = 1, gmx;
+  PetscReal        s[2] = {0, 0}, mx = 1;
   PetscFunctionBeginUser;
   PetscCall(CSMeshGetLocalPositions(m, x, &xl, &p));
   PetscCall(CSMeshGetLocalPositions(m, xref, &rl, &r));
@@ -28,9 +39,6 @@ PetscErrorCode CSGeometryQuasiConformal(CSMesh m, Vec xref, Vec x, Vec q, PetscR
   if (q) PetscCall(VecRestoreArray(q, &qa));
   PetscCall(CSMeshRestoreLocalPositions(m, xref, &rl, &r));
   PetscCall(CSMeshRestoreLocalPositions(m, x, &xl, &p));
-  PetscCall(MPIU_Allreduce(s, g, 2, MPIU_REAL, MPIU_SUM, m->comm));
-  PetscCall(MPIU_Allreduce(&mx, &gmx, 1, MPIU_REAL, MPIU_MAX, m->comm));
-  if (qmean) *qmean = g[0] / g[1];
-  if (qmax) *qmax = gmx;
+  PetscCall(CSGeometryReduceQ(m->comm, s, mx, qmean, qmax));
   PetscFunctionReturn(0);
 }

@@ -9,7 +9,7 @@ PetscErrorCode CSGeometryTextureQ(CSMesh m, Vec x, Vec q, PetscReal *qmean, Pets
   Vec              xl;
   const PetscReal *p;
   PetscScalar     *qa = NULL;
-  PetscReal        s[2] = {0, 0}, g[2], mx = 1, gmx;
+  PetscReal        s[2] = {0, 0}, mx = 1;
   PetscFunctionBeginUser;
   PetscCheck(m->faceUV, m->comm, PETSC_ERR_ARG_WRONGSTATE, "%s: the input has no texture coordinates", m->name);
   PetscCall(CSMeshGetLocalPositions(m, x, &xl, &p));
@@ -27,9 +27,6 @@ PetscErrorCode CSGeometryTextureQ(CSMesh m, Vec x, Vec q, PetscReal *qmean, Pets
   }
   if (q) PetscCall(VecRestoreArray(q, &qa));
   PetscCall(CSMeshRestoreLocalPositions(m, x, &xl, &p));
-  PetscCall(MPIU_Allreduce(s, g, 2, MPIU_REAL, MPIU_SUM, m->comm));
-  PetscCall(MPIU_Allreduce(&mx, &gmx, 1, MPIU_REAL, MPIU_MAX, m->comm));
-  if (qmean) *qmean = g[0] / g[1];
-  if (qmax) *qmax = gmx;
+  PetscCall(CSGeometryReduceQ(m->comm, s, mx, qmean, qmax));
   PetscFunctionReturn(0);
 }
