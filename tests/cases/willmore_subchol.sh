@@ -2,7 +2,7 @@
 # for the flow's Schur complement S: unit checks (tests/unit/test_subchol.c: direct-solve residual < 1e-11 on a
 # two-ring 3-dof matrix with METIS/AMD/NESDIS interiors, a refactorisation on the same pattern, the interface size,
 # an indefinite matrix ending the KSP with DIVERGED_PC_FAILED on every rank), then a cgd flow whose steps equal those
-# with the Schur complement factored by Cholesky (MUMPS on several ranks, CHOLMOD on one): positions within 1e-9,
+# with the Schur complement factored by Cholesky (MUMPS on several ranks, CHOLMOD on one): positions within 1e-9, W within 1e-10,
 # one FGMRES iteration per linear solve (an exact factorisation), the same number of iterations; the automatic
 # switch to MUMPS where the dense interface does not fit (forced by -pc_cssubchol_max_interface_ratio 0
 # -pc_cssubchol_fits_mb 0): a note on several ranks (none serially, where there is no interface), and the same steps;
@@ -17,7 +17,12 @@ timeout 120 $MPIEXEC "$CS_BIN" $S -flow_saddle_fieldsplit_1_pc_type cssubchol -s
 timeout 120 $MPIEXEC "$CS_BIN" $S -flow_saddle_fieldsplit_1_pc_type cholesky -summary "$TMP/b.json" -o "$TMP/b.obj" > "$TMP/b.log" 2>&1 || { tail "$TMP/b.log"; exit 1; }
 grep -E "flow cgd: (NOT )?converged" "$TMP/a.log"
 check_close "$(python3 $P rigid "$TMP/a.obj" "$TMP/b.obj")" 0 1e-9 "cssubchol vs Cholesky of S: positions after 4 steps"
-check_close "$(json willmore "$TMP/a.json")" "$(json willmore "$TMP/b.json")" 1e-12 "W"
+# W to 1e-10: the two factorisations differ at round-off, and 4 steps with the dual step 1e5 t carry that to about
+# 1e-11 in the positions (8.8e-12 here, 7.9e-12 on the CI machine, whose OpenBLAS kernels give MUMPS other round-off).
+# W moves with the positions at |grad W| = O(1) per vertex: measured |dW| 4.2e-12 here and 1.45e-11 (1.1e-12
+# relative) on CI, which failed the old 1e-12. 1e-10 is 10x tighter than the position bound 1e-9 implies.
+WTOL=1e-10
+check_close "$(json willmore "$TMP/a.json")" "$(json willmore "$TMP/b.json")" $WTOL "W"
 solves=$(json linear_solves "$TMP/a.json") # the steps, rejected ones and second-order corrections included
 its=$(json ksp_iterations "$TMP/a.json")
 echo "FGMRES iterations $its for $solves linear solves"
@@ -31,7 +36,7 @@ echo "fallback notes: $notes"
 if [ "$NP" = 1 ]; then [ "$notes" = 0 ] || { echo "BAD: a fallback note serially (no interface)"; exit 1; }
 else [ "$notes" -ge 1 ] || { echo "BAD: no note of the switch to MUMPS on $NP ranks"; exit 1; }; fi
 check_close "$(python3 $P rigid "$TMP/c.obj" "$TMP/b.obj")" 0 1e-9 "cssubchol falling back to MUMPS vs Cholesky of S: positions after 4 steps"
-check_close "$(json willmore "$TMP/c.json")" "$(json willmore "$TMP/b.json")" 1e-12 "W (fallback)"
+check_close "$(json willmore "$TMP/c.json")" "$(json willmore "$TMP/b.json")" $WTOL "W (fallback)"
 [ "$(json ksp_iterations "$TMP/c.json")" = "$(json ksp_iterations "$TMP/b.json")" ] || { echo "BAD: fallback iteration counts differ from the Cholesky run"; exit 1; }
 # bad option values: a clear error naming the option, non-zero exit
 EXPECT="Unknown option foo for -flow_saddle_fieldsplit_1_pc_cssubchol_ordering" expect_fail timeout 60 $MPIEXEC "$CS_BIN" $S -flow_saddle_fieldsplit_1_pc_type cssubchol -flow_saddle_fieldsplit_1_pc_cssubchol_ordering foo
