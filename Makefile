@@ -28,7 +28,7 @@ CC       := $(shell pkg-config --variable=ccompiler petsc)
 CPPFLAGS := -Iinclude $(shell pkg-config --cflags slepc petsc)
 CFLAGS   ?= -O2 -g
 CFLAGS   += -std=gnu11 -Wall -Wextra -Wno-unused-parameter $(WERROR) -MMD -MP
-LDLIBS   := $(shell pkg-config --libs slepc petsc) -lcholmod -llapack -lblas -lz -lm
+LDLIBS   := $(shell pkg-config --libs slepc petsc) -lptscotch -lscotch -lcholmod -llapack -lblas -lz -lm
 
 LIB_SRC  := $(sort $(wildcard src/*/*.c src/*/*/*.c src/*/*/*/*/*.c))
 LIB_SRC  := $(filter-out src/driver/% src/api/%,$(LIB_SRC))

@@ -3,6 +3,10 @@
 #include "cs_mesh_adjacency.h"
 #include "cs_mesh_deform.h"
 #include "cs_util.h"
+#if defined(PETSC_HAVE_PTSCOTCH)
+  #include <stdio.h>
+  #include <scotch/ptscotch.h>
+#endif
 
 /* A clone of the plex with `dof` unknowns on every point of depth `depth` (0 vertices, 1 edges, 2 faces). */
 PetscErrorCode CSMeshCreateFieldDM(DM dm, PetscInt depth, PetscInt dof, const char name[], DM *out)
@@ -258,6 +262,22 @@ static PetscErrorCode EdgeFieldFromData(CSMesh m, const CSMeshData *md, const Pe
   PetscFunctionReturn(0);
 }
 
+/* PT-Scotch draws from one random generator per process, seeded once at load: a second mesh distributed in the same
+   process (the Python interface's second call, a remesh) got another partition of the same input, so another order
+   of the parallel sums, and the flows amplified that to 1e-11 in the positions. Resetting the generator before each
+   partition makes the partition a function of the mesh alone (PETSc's own DMPlex tests and DOLFIN do the same); the
+   first partition of a process is the one it always was. */
+static PetscErrorCode ResetPartitionerRandom(PetscPartitioner part)
+{
+  PetscBool isScotch;
+  PetscFunctionBeginUser;
+  PetscCall(PetscObjectTypeCompare((PetscObject)part, PETSCPARTITIONERPTSCOTCH, &isScotch));
+#if defined(PETSC_HAVE_PTSCOTCH)
+  if (isScotch) SCOTCH_randomReset();
+#endif
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode CSMeshCreateFromData(MPI_Comm comm, CSMeshData *md, const CSTopology *topo, CSMesh *mesh)
 {
   CSMesh           m;
@@ -280,6 +300,7 @@ PetscErrorCode CSMeshCreateFromData(MPI_Comm comm, CSMeshData *md, const CSTopol
   PetscCall(DMPlexGetPartitioner(serial, &part));
   PetscCall(PetscPartitionerSetType(part, PETSCPARTITIONERPTSCOTCH));
   PetscCall(PetscPartitionerSetFromOptions(part));
+  PetscCall(ResetPartitionerRandom(part));
   PetscCall(DMPlexDistribute(serial, 0, &sfMig, &dist));
   m->dm = dist ? dist : serial;
   PetscCall(PetscObjectSetName((PetscObject)m->dm, "surface"));
