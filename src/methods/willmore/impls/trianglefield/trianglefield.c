@@ -469,7 +469,7 @@ static const struct _CSWillmoreFlowOps TriangleFieldOps = {
   /* the peak RSS of one step (docs/hardening.md "Memory per flow kind"): its 18 unknowns per vertex against the vertex
      kinds' 3, the same bytes per unknown (bunny_closed_cgal 5.7 GB, icosphere 5 1.6 GB, 48 x 48 lattice 397 MB / 2304) */
   .bytes_per_vertex = 160000,
-  .trial = CSWFTrialCGD, .filter = CSWFFilterLagrangian, .accept = Accept, .grow = CSWFGrowCGD, .shrink = CSWFShrinkCGD,
+  .trial = CSWFTrialCGD, .filter = CSWFFilterLagrangian, .accept = Accept, .grow = CSTFGrow, .shrink = CSWFShrinkCGD,
   .get_switch = CSWFDualStepGetSwitch, .set_switch = CSWFDualStepSetSwitch,
   .setup_problem = SetUpTriangleField, .evaluate = CSTFEvaluate, .operators = CSTFOperators, .constraints = CSTFConstraints, .positions = Positions,
   .setfromoptions = CSTFSetFromOptions, .setup = CSTFCheckOptions, .view = CSTFView, .destroy = Destroy,
@@ -500,5 +500,8 @@ PetscErrorCode CSWillmoreFlowCreate_TriangleField(CSWillmoreFlow F)
   d->integ             = -1; /* not evaluated yet */
   d->pinch             = -1;
   d->pinchv            = -1;
+  d->cap_rises         = 0; /* off: see trianglefield_stepcap.c */
+  d->cap_wtol          = 1e-6;
+  d->cap_it            = -2;
   PetscFunctionReturn(0);
 }

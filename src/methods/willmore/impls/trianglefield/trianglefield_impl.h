@@ -64,6 +64,11 @@ typedef struct {
   PetscInt  pinch;         /* edges failing the spinor pinch test (App. C.1; -1: none yet) */
   PetscInt  pinchv;        /* pinch points: vertices with an odd number of those edges (sign-independent; -1: none yet) */
   PetscReal immersion_tol; /* -flow_immersion_tol: the largest integ at which -o writes the reconstruction */
+  /* the step cap that learns from a sawtooth (trianglefield_stepcap.c) */
+  PetscInt  cap_rises;     /* -flow_t_max_rises: consecutive rises at the cap that halve it (0: off) */
+  PetscReal cap_wtol;      /* -flow_t_max_rises_wtol: W flat over a step (relative) */
+  PetscInt  cap_n, cap_it, cap_lowered; /* the current count, the iteration of the record, the halvings so far */
+  PetscReal cap_E, cap_el, cap_t;       /* the record: W, el_residual of state cap_it and the step accepted from it */
 } CSTriangleField;
 PETSC_INTERN const char *const CSTriangleFieldVariables[];
 
@@ -104,4 +109,8 @@ PETSC_INTERN PetscErrorCode CSTFStateDestroy(CSTriangleField *d);
 PETSC_INTERN PetscErrorCode CSTFContinuationSetFromOptions(CSWillmoreFlow F, CSTriangleField *d, PetscOptionItems *PetscOptionsObject);
 PETSC_INTERN PetscErrorCode CSTFContinuationCheck(CSWillmoreFlow F, CSTriangleField *d);
 PETSC_INTERN PetscErrorCode CSTFContinuationAdvance(CSWillmoreFlow F, CSTriangleField *d, PetscBool *next);
+/* trianglefield_stepcap.c: -flow_t_max halved after a sawtooth at the cap (issue 39, Fig. 15); the kind's ops.grow */
+PETSC_INTERN PetscErrorCode CSTFStepCapSetFromOptions(CSWillmoreFlow F, CSTriangleField *d, PetscOptionItems *PetscOptionsObject);
+PETSC_INTERN PetscErrorCode CSTFStepCapCheck(CSWillmoreFlow F, CSTriangleField *d);
+PETSC_INTERN PetscErrorCode CSTFGrow(CSWillmoreFlow F);
 #endif

@@ -45,6 +45,7 @@ PetscErrorCode CSTFSetFromOptions(CSWillmoreFlow F, PetscOptionItems *PetscOptio
   PetscOptionsHeadEnd();
   PetscCall(CSTFScheduleSetFromOptions(F, d, PetscOptionsObject));
   PetscCall(CSTFContinuationSetFromOptions(F, d, PetscOptionsObject));
+  PetscCall(CSTFStepCapSetFromOptions(F, d, PetscOptionsObject));
   PetscFunctionReturn(0);
 }
 
@@ -57,6 +58,7 @@ PetscErrorCode CSTFCheckOptions(CSWillmoreFlow F)
   PetscCall(CSWFDualStepCheck(F, &d->ds));
   PetscCall(CSTFScheduleCheck(F, d));
   PetscCall(CSTFContinuationCheck(F, d));
+  PetscCall(CSTFStepCapCheck(F, d));
   /* -flow_t_mu_final is armed once the rows are enforced (SetUp); a continuation's stages end at small EL residuals */
   PetscCheck(d->ds.final == 0 || d->wdecay == 1, F->hdr.comm, PETSC_ERR_SUP, "-%st_mu_final with -%sspin_weight_decay %g: the switch would fire at the end of the first stage of the continuation; use one or the other", p, p, (double)d->wdecay);
   PetscCheck(d->restore_near >= 0 && !PetscIsInfOrNanReal(d->restore_near), F->hdr.comm, PETSC_ERR_ARG_OUTOFRANGE, "-%srestore_near_ceiling %g: must be >= 0", p, (double)d->restore_near);
@@ -82,6 +84,7 @@ PetscErrorCode CSTFView(CSWillmoreFlow F, PetscViewer viewer)
   PetscCall(PetscViewerASCIIPushTab(viewer));
   PetscCall(PetscViewerASCIIPrintf(viewer, "triangle field: variables %s, start %s (seed %" PetscInt_FMT ", amplitude %g), %" PetscInt_FMT " period rows, conformal rows %s\n", CSTriangleFieldVariables[d->spinor ? 1 : 0], CSTriangleFieldInits[d->init], d->seed, (double)d->amp, 3 * d->nforms, d->noconf ? "off" : "on"));
   PetscCall(PetscViewerASCIIPrintf(viewer, "integrability weight %g from iteration %" PetscInt_FMT " (%g before), spin weight %g (decay %g), restore near %g vmax, immersion tol %g, max area ratio %g\n", (double)d->wint, d->istart, (double)d->wrelax, (double)d->wspin, (double)d->wdecay, (double)d->restore_near, (double)d->immersion_tol, (double)F->max_area_ratio));
+  if (d->cap_rises) PetscCall(PetscViewerASCIIPrintf(viewer, "step cap t_max halved after %" PetscInt_FMT " consecutive rises of el_residual at it with W flat to %g\n", d->cap_rises, (double)d->cap_wtol));
   PetscCall(PetscViewerASCIIPopTab(viewer));
   PetscCall(CSWFDualStepView(F, &d->ds, viewer));
   PetscFunctionReturn(0);
