@@ -7,7 +7,7 @@
 # at every iteration and below 1e-8 at the end, the centroid on z to 1e-10, while the start is not 3-fold symmetric
 # (the checker can fail); and a volume constraint without -flow_conformal is still refused. Not round-off as for cgd
 # (willmore_nfold_symmetry, 8e-15): the KKT matrix is nearly singular in directions the symmetry forbids, so
-# round-off of the inexact solves grows there (measured 1.6e-7 at iteration 3, 7.8e-10 at the end, serially).
+# round-off of the inexact solves grows there (measured 1.3e-7 at iteration 3, 2.3e-9 at the end, serially).
 # nprocs: 1 2
 source tests/lib.sh
 B="-task flow -flow_type newton -flow_conformal -gen lattice -gen_tau 0,0.5 -gen_n 12 -gen_m 6 -gen_deform_nfold 2,0.05 -flow_constraint_mobius -flow_constraint_area -flow_max_it 30 -flow_rtol 1e-6"

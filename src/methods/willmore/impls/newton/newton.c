@@ -15,7 +15,9 @@
    distribution (Relax, -flow_newton_relax), or with -flow_newton_relax_scaled toward spacing in proportion to the
    local edge length (the smallest angle: docs/bench_evolver.md). Step length: t = 1 first, halved on rejection (energy increase, -flow_max_step, a face turned
    over), doubled after an accepted step up to -flow_t_max (default 1 here). Stopping: the normal residual
-   ||N^T g||_2 < -flow_rtol (or -flow_energy_target). Constraints: none (no conformal, area, volume or point
+   ||N^T g||_2 < -flow_rtol (or -flow_energy_target). With -flow_conformal: Newton on
+   the KKT system of the constrained problem instead (newton_kkt.c; soliman2021 Fig. 17). Otherwise constraints:
+   none (no conformal, area, volume or point
    constraint; closed surfaces only): refused with a message. */
 #include "../cgd/cgd_impl.h"
 #include "newton_impl.h"
@@ -493,7 +495,7 @@ PetscErrorCode CSWillmoreFlowCreate_Newton(CSWillmoreFlow F)
   d->factored           = PETSC_TRUE;
   d->relax              = 0.3; /* bumpy level-4 sphere: smallest angle 22 -> 49 degrees, q_max 2.8 -> 1.6; torus unchanged */
   d->relax_sweeps       = 1;
-  d->kkt_pc_t           = 1; /* the H^2 metric against the Hessian of W: the same fourth-order leading term */
+  d->kkt_pc_t           = 4; /* FGMRES its per KKT solve, 48 x 24 torus of Fig. 17: 200+ (t_pc 0.25), 52-67 (1), 20-24 (4), 20-25 (8), 22-31 (16) */
   d->reuse_its          = 0; /* refactor every iteration: kept factors change the inexact steps, and the final mesh quality moved both ways (docs/willmore_flow.md) */
   F->data               = d;
   F->ops                = NewtonOps;
