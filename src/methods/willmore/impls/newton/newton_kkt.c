@@ -10,7 +10,11 @@
    (willmore_saddle.c) with H_L replaced by the H^2 metric H / t_pc (soliman2021 Eq. 26: the same leading order,
    fourth derivatives) and the dual block -I_Q / t_mu: a constraint preconditioner, exact on the rows of X and B.
    The step (dx, dmu, dnu) is taken with t = 1 first, halved while the KKT residual |r|^2 + |c|^2 + |xi|^2 at
-   (x + t dx, mu + t dmu, nu + t dnu) does not fall (a merit with no preference for minima: saddles are found). */
+   (x + t dx, mu + t dmu, nu + t dnu) does not fall (a merit with no preference for minima: saddles are found).
+   W and c are scale invariant (r(s x) = r(x) / s): a scale row (-flow_constraint_area) is needed, else the step grows
+   the surface. At isothermic surfaces (the homogeneous tori) X loses rank (soliman2021 Sec. 3, Lam-Pinkall 2017), the
+   KKT matrix is singular at the solution and the convergence only linear (x1/4 per iteration, docs/triangle_fields.md
+   "Fig. 17"); at the lobed tori it is quadratic. */
 #include "../cgd/cgd_impl.h"
 #include "newton_impl.h"
 #include "cs_geometry.h"
