@@ -15,9 +15,12 @@
    distribution (Relax, -flow_newton_relax), or with -flow_newton_relax_scaled toward spacing in proportion to the
    local edge length (the smallest angle: docs/bench_evolver.md). Step length: t = 1 first, halved on rejection (energy increase, -flow_max_step, a face turned
    over), doubled after an accepted step up to -flow_t_max (default 1 here). Stopping: the normal residual
-   ||N^T g||_2 < -flow_rtol (or -flow_energy_target). Constraints: none (no conformal, area, volume or point
+   ||N^T g||_2 < -flow_rtol (or -flow_energy_target). With -flow_conformal: Newton on
+   the KKT system of the constrained problem instead (newton_kkt.c; soliman2021 Fig. 17). Otherwise constraints:
+   none (no conformal, area, volume or point
    constraint; closed surfaces only): refused with a message. */
 #include "../cgd/cgd_impl.h"
+#include "newton_impl.h"
 #include "cs_geometry.h"
 #include "cs_util.h"
 
@@ -40,7 +43,14 @@ typedef struct {
   Mat       G1, G, PGP;                  /* graph Laplacian (dmV1), the same on each coordinate (MAIJ, dmV3), its tangential part (shell) */
   KSP       kspT;
   Vec       at, bt;
+  NewtonKKT *kkt;                        /* -flow_conformal: Newton on the KKT system (newton_kkt.c) */
+  PetscReal  kkt_pc_t;                   /* t of the H^2 metric in its preconditioner */
 } Newton;
+
+NewtonKKT *CSNewtonGetKKT(CSWillmoreFlow F)
+{
+  return ((Newton *)F->data)->kkt;
+}
 
 /* w = P v, P = I - n n^T at each vertex (w may be v). */
 static PetscErrorCode ProjectTangentTo(Newton *d, Vec v, Vec w)
@@ -208,6 +218,10 @@ static PetscErrorCode NewtonResidual(CSWillmoreFlow F, PetscReal *el)
 {
   Newton *d;
   PetscFunctionBeginUser;
+  if (F->conformal) { /* the Lagrangian's gradient r = g + X^T mu + B nu (soliman2021 Eq. 7), as CGD's */
+    PetscCall(CSWFResidual(F, el));
+    PetscFunctionReturn(0);
+  }
   d = (Newton *)F->data;
   if (!d->nrm) PetscCall(CreateData(F));
   PetscCall(FillNormals(F, d));
@@ -281,6 +295,11 @@ static PetscErrorCode TrialNewton(CSWillmoreFlow F, PetscBool *accept)
 {
   Newton *d = (Newton *)F->data;
   PetscFunctionBeginUser;
+  if (F->conformal) { /* the constrained problem: Newton on its first-order conditions (newton_kkt.c) */
+    if (!d->kkt) PetscCall(CSNewtonKKTCreate(F, d->kkt_pc_t, &d->kkt));
+    PetscCall(CSNewtonKKTTrial(F, d->kkt, accept));
+    PetscFunctionReturn(0);
+  }
   if (d->it_dir != F->it) PetscCall(Direction(F, d));
   PetscCall(MatMult(d->N, d->phi, F->df));
   PetscCall(VecScale(F->df, F->t));
@@ -344,10 +363,20 @@ static PetscErrorCode Relax(CSWillmoreFlow F, Newton *d)
   PetscFunctionReturn(0);
 }
 
+/* with the conformal rows the multipliers of the step, and no tangential relaxation (the rows fix the vertices' places) */
 static PetscErrorCode AcceptNewton(CSWillmoreFlow F)
 {
   PetscFunctionBeginUser;
-  PetscCall(Relax(F, (Newton *)F->data));
+  if (F->conformal) PetscCall(CSNewtonKKTAccept(F));
+  else PetscCall(Relax(F, (Newton *)F->data));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode FilterNewton(CSWillmoreFlow F, PetscBool *accept)
+{
+  PetscFunctionBeginUser;
+  if (F->conformal) PetscCall(CSNewtonKKTFilter(F, ((Newton *)F->data)->kkt, accept));
+  else PetscCall(CSWFFilterEnergy(F, accept));
   PetscFunctionReturn(0);
 }
 
@@ -359,6 +388,7 @@ static PetscErrorCode SetFromOptionsNewton(CSWillmoreFlow F, PetscOptionItems *P
   PetscCall(CSOptionsReal("-newton_relax", "Tangential relaxation toward the graph-harmonic vertex distribution after each accepted step: fraction of the way (0: off)", NULL, d->relax, &d->relax, NULL));
   PetscCall(CSOptionsInt("-newton_relax_sweeps", "Solves of the tangential relaxation per accepted step (weights recomputed before each)", NULL, d->relax_sweeps, &d->relax_sweeps, NULL));
   PetscCall(PetscOptionsBool("-newton_relax_scaled", "Weight the relaxation's edges by 1/sqrt(face area) (spacing in proportion to the local edge length: raises the smallest angle) instead of 1", NULL, d->relax_scaled, &d->relax_scaled, NULL));
+  PetscCall(CSOptionsReal("-newton_kkt_pc_t", "With -flow_conformal: t of the H^2 metric H / t that stands for the Hessian of the Lagrangian in the preconditioner of the KKT solve", NULL, d->kkt_pc_t, &d->kkt_pc_t, NULL));
   PetscCall(CSOptionsInt("-newton_reuse_its", "Keep the factored metric preconditioner of an earlier iteration while CG needed at most this many iterations (0: refactor every iteration)", NULL, d->reuse_its, &d->reuse_its, NULL));
   PetscFunctionReturn(0);
 }
@@ -372,8 +402,12 @@ static PetscErrorCode SetUpNewton(CSWillmoreFlow F)
   PetscCheck(d->relax >= 0 && d->relax <= 1, F->hdr.comm, PETSC_ERR_ARG_OUTOFRANGE, "-%snewton_relax %g: must lie in [0, 1]", p, (double)d->relax);
   PetscCheck(d->relax_sweeps >= 1, F->hdr.comm, PETSC_ERR_ARG_OUTOFRANGE, "-%snewton_relax_sweeps %" PetscInt_FMT ": must be >= 1", p, d->relax_sweeps);
   PetscCheck(d->reuse_its >= 0, F->hdr.comm, PETSC_ERR_ARG_OUTOFRANGE, "-%snewton_reuse_its %" PetscInt_FMT ": must be >= 0", p, d->reuse_its);
-  PetscCheck(!F->conformal, F->hdr.comm, PETSC_ERR_ARG_INCOMP, "-%stype newton is unconstrained: -%sconformal true is not supported (use cgd or pgd)", p, p);
-  PetscCheck(!F->area_set && !F->vol_set && !F->points[0] && !F->mobius && !F->target[0], F->hdr.comm, PETSC_ERR_ARG_INCOMP, "-%stype newton supports no constraints (area, volume, points, Moebius, target mesh): use gd or cgd", p);
+  PetscCheck(d->kkt_pc_t > 0, F->hdr.comm, PETSC_ERR_ARG_OUTOFRANGE, "-%snewton_kkt_pc_t %g: must be > 0", p, (double)d->kkt_pc_t);
+  PetscCheck(F->conformal || (!F->area_set && !F->vol_set && !F->points[0] && !F->mobius && !F->target[0]), F->hdr.comm, PETSC_ERR_ARG_INCOMP, "-%stype newton supports no constraints without -%sconformal (area, volume, points, Moebius, target mesh): add -%sconformal, or use gd or cgd", p, p, p);
+  PetscCheck(!F->conformal || !F->normals, F->hdr.comm, PETSC_ERR_ARG_INCOMP, "-%stype newton -%sconformal: the boundary normal rows are not supported (use cgd)", p, p);
+  /* W and the class are scale invariant, r(s x) = r(x) / s: without a scale row the KKT step grows the surface (the
+     48 x 24 torus of Fig. 17: area 22 -> 1069 in 15 iterations) */
+  if (F->conformal && !F->area_set && !F->vol_set) PetscCall(PetscPrintf(F->hdr.comm, "Warning: -%stype newton -%sconformal without -%sconstraint_area (or _volume): W and the conformal class are scale invariant, and the Newton step may grow the surface without bound\n", p, p, p));
   PetscCheck(F->mesh->topo.boundary_loops == 0, F->hdr.comm, PETSC_ERR_ARG_INCOMP, "-%stype newton: the mesh %s has %" PetscInt_FMT " boundary loop(s); newton supports closed surfaces only (use gd or cgd)", p, F->mesh->name, F->mesh->topo.boundary_loops);
   PetscFunctionReturn(0);
 }
@@ -384,7 +418,7 @@ static PetscErrorCode SetUpNewton(CSWillmoreFlow F)
 static PetscErrorCode StartNewton(CSWillmoreFlow F)
 {
   PetscFunctionBeginUser;
-  PetscCheck(F->k == 0, F->hdr.comm, PETSC_ERR_ARG_INCOMP, "-%stype newton supports no constraints: the constraint %s added by CSWillmoreFlowAddConstraint is not supported (use gd or cgd)", F->hdr.prefix, F->nadded ? F->added[0] : "(global)");
+  PetscCheck(F->k == 0 || F->conformal, F->hdr.comm, PETSC_ERR_ARG_INCOMP, "-%stype newton supports no constraints: the constraint %s added by CSWillmoreFlowAddConstraint is not supported (use gd or cgd)", F->hdr.prefix, F->nadded ? F->added[0] : "(global)");
   PetscFunctionReturn(0);
 }
 
@@ -392,6 +426,8 @@ static PetscErrorCode DestroyNewton(CSWillmoreFlow F)
 {
   Newton *d = (Newton *)F->data;
   PetscFunctionBeginUser;
+  if (d->kkt) PetscCall(PetscInfo(NULL, "newton: %" PetscInt_FMT " FGMRES iterations of the KKT solves\n", CSNewtonKKTIterations(d->kkt)));
+  PetscCall(CSNewtonKKTDestroy(&d->kkt));
   if (!d->nrm) {
     PetscCall(PetscFree(F->data));
     PetscFunctionReturn(0);
@@ -449,7 +485,7 @@ static PetscErrorCode ShrinkNewton(CSWillmoreFlow F)
 static const struct _CSWillmoreFlowOps NewtonOps = {
   .id = 3, .conformal = PETSC_FALSE, .fold_guard = PETSC_TRUE, .own_metric = PETSC_TRUE,
   .max_step = 2, /* mean edge lengths per step (willmore_guards.c) */
-  .trial = TrialNewton, .filter = CSWFFilterEnergy, .accept = AcceptNewton, .grow = GrowNewton, .shrink = ShrinkNewton,
+  .trial = TrialNewton, .filter = FilterNewton, .accept = AcceptNewton, .grow = GrowNewton, .shrink = ShrinkNewton,
   .residual = NewtonResidual, .start = StartNewton,
   .setfromoptions = SetFromOptionsNewton, .setup = SetUpNewton, .view = ViewNewton, .destroy = DestroyNewton,
 };
@@ -462,6 +498,7 @@ PetscErrorCode CSWillmoreFlowCreate_Newton(CSWillmoreFlow F)
   d->factored           = PETSC_TRUE;
   d->relax              = 0.3; /* bumpy level-4 sphere: smallest angle 22 -> 49 degrees, q_max 2.8 -> 1.6; torus unchanged */
   d->relax_sweeps       = 1;
+  d->kkt_pc_t           = 4; /* FGMRES its per KKT solve, 48 x 24 torus of Fig. 17: 200+ (t_pc 0.25), 52-67 (1), 20-24 (4), 20-25 (8), 22-31 (16) */
   d->reuse_its          = 0; /* refactor every iteration: kept factors change the inexact steps, and the final mesh quality moved both ways (docs/willmore_flow.md) */
   F->data               = d;
   F->ops                = NewtonOps;
