@@ -118,6 +118,9 @@ static void SetDefaults(CSWillmoreFlow F)
   F->drift_window    = 50;
   F->drift_wtol      = 2e-7;
   F->drift_rise      = 1.5;
+  /* a sustained rise, not a spike: the longest run of risen residuals of a non-drifting run measured is 6 steps (a
+     step-size sawtooth, trianglefield at t_max 5), a converging run's single spike 2 (docs/willmore_flow.md "Drift") */
+  F->drift_rise_steps = 10;
   F->els_min         = -1;
   F->els_min_it      = -1;
   F->keep_best       = CS_FLOW_KEEP_BEST_GUARD;
