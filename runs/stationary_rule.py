@@ -4,6 +4,7 @@ docs/willmore_flow.md "Drift"). Replays willmore_stop.c CSWFCheckDrift on flow h
 el_residual_scaled, the violations) and reports per history the first iteration k at which
    (a) max over the last w steps of |W_j - W_{j-1}| / |W_j|  <=  WTOL              (W stationary),
    (b) EL_j >= RISE * min_{1 <= i <= j} EL_i for each of the last m steps j <= k   (a sustained rise: m = -steps),
+       and EL_k >= EL at the first of these risen steps                        (still rising, not a spike decaying),
    (c) the violation max(conformal, constraint) < CTOL (-ctol 0: not tested, as the offline rule of issue 35)
 hold together, and the values it sees: the largest relative W change per iteration in the window, EL_k against the
 run's smallest EL (the input, iteration 0, excluded as in the code). (b) with m = 1 is the rule before the spike fix
@@ -21,18 +22,22 @@ def first_stop(path, w, wtol, rise, steps, ctol, col):
     EL = [float(r[col]) for r in rows]
     viol = [max(float(r.get("conformal_violation") or 0), float(r.get("constraint_violation") or 0)) for r in rows]
     it = [int(r["it"]) for r in rows]
-    elmin, kmin, risen, longest = float("inf"), 0, 0, 0
+    elmin, kmin, risen, longest, el0 = float("inf"), 0, 0, 0, 0
     for k in range(1, len(rows)):
         if EL[k] < elmin:
             elmin, kmin = EL[k], k
-        risen = risen + 1 if EL[k] >= rise * elmin else 0
+        if EL[k] >= rise * elmin:
+            el0 = EL[k] if risen == 0 else el0
+            risen += 1
+        else:
+            risen = 0
         longest = max(longest, risen)
-        if k < w or risen < steps or (ctol > 0 and not viol[k] < ctol):
+        if k < w or risen < steps or EL[k] < el0 or (ctol > 0 and not viol[k] < ctol):
             continue
         dw = max(abs(W[j] - W[j - 1]) / abs(W[j]) for j in range(k - w + 1, k + 1))
         if dw <= wtol:
-            return "stops at %d (EL %.2e = %.2f x the smallest %.2e at %d, risen for %d steps; largest rel. dW/it in the window %.1e; W %.10f)" % (
-                it[k], EL[k], EL[k] / elmin, elmin, it[kmin], risen, dw, W[k])
+            return "stops at %d (EL %.2e = %.2f x the smallest %.2e at %d, risen for %d steps from %.2e; largest rel. dW/it in the window %.1e; W %.10f)" % (
+                it[k], EL[k], EL[k] / elmin, elmin, it[kmin], risen, el0, dw, W[k])
     k = len(rows) - 1
     dw = max(abs(W[j] - W[j - 1]) / abs(W[j]) for j in range(max(1, k - w + 1), k + 1)) if k else 0
     return "never (last it. %d: EL %.2e, smallest %.2e at %d; longest rise above %g x the smallest %d steps; largest rel. dW/it in the last window %.1e)" % (
