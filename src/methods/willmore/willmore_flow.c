@@ -118,8 +118,9 @@ static void SetDefaults(CSWillmoreFlow F)
   F->drift_window    = 50;
   F->drift_wtol      = 2e-7;
   F->drift_rise      = 1.5;
-  /* a sustained rise, not a spike: the longest run of risen residuals of a non-drifting run measured is 6 steps (a
-     step-size sawtooth, trianglefield at t_max 5), a converging run's single spike 2 (docs/willmore_flow.md "Drift") */
+  /* a sustained rise, not a spike: the longest run of risen residuals measured in a run that does not drift is 6
+     steps (the step-size limit cycles of a triangle field at t_max 5-8); a drift rises for 100-250 steps, so 10 costs
+     it 9 (runs/stationary_rule.py on the histories of docs/willmore_flow.md "Drift") */
   F->drift_rise_steps = 10;
   F->els_min         = -1;
   F->els_min_it      = -1;

@@ -14,7 +14,7 @@ PetscErrorCode CSWFStopOptions(CSWillmoreFlow F, PetscOptionItems *PetscOptionsO
   PetscCall(CSOptionsEnum("-el_norm", "What -rtol tests: the scale-free residual el_residual_scaled = el_residual sqrt(A) / max(|E|, 1e-3 |E_input|) (scaled), or el_residual itself (absolute)", NULL, CSFlowELNormTypes, (PetscEnum)F->el_norm, (PetscEnum *)&F->el_norm, &F->el_norm_set));
   PetscCall(CSOptionsInt("-stationary_window", "Stop as converged (stop_reason stationary) when over this many accepted steps W changed by at most -stationary_rtol (relative) and the vertices moved by at most -stationary_xtol mean edge lengths in total, with the violation below -ctol (0: off)", NULL, F->stat_window, &F->stat_window, NULL));
   PetscCall(CSOptionsReal("-stationary_rtol", "Stationarity: largest relative spread (max - min) / |W| of W over the window", NULL, F->stat_rtol, &F->stat_rtol, NULL));
-  PetscCall(CSOptionsInt("-drift_window", "Stop (stop_reason drift, not converged) when over this many accepted steps W changed by at most -drift_wtol (relative, per step) while el_residual_scaled rose to -drift_rise times its smallest value of the run, the violation below -ctol (0: off)", NULL, F->drift_window, &F->drift_window, NULL));
+  PetscCall(CSOptionsInt("-drift_window", "Stop (stop_reason drift, not converged) when over this many accepted steps W changed by at most -drift_wtol (relative, per step) while el_residual_scaled stayed at least -drift_rise times its smallest value of the run for the last -drift_rise_steps steps, the violation below -ctol (0: off)", NULL, F->drift_window, &F->drift_window, NULL));
   PetscCall(CSOptionsReal("-drift_wtol", "Drift: largest relative change of W per step over the window", NULL, F->drift_wtol, &F->drift_wtol, NULL));
   PetscCall(CSOptionsReal("-drift_rise", "Drift: el_residual_scaled at least this many times its smallest value of the run", NULL, F->drift_rise, &F->drift_rise, NULL));
   PetscCall(CSOptionsInt("-drift_rise_steps", "Drift: the residual must have been -drift_rise times its smallest at each of the last this many accepted steps (a sustained rise, not a spike of a converging run; 1: the current step only)", NULL, F->drift_rise_steps, &F->drift_rise_steps, NULL));
@@ -76,8 +76,8 @@ static PetscErrorCode Displacement(CSWillmoreFlow F, Vec x, Vec y, PetscReal *d)
 /* After the evaluation at the top of an iteration: W and the largest displacement of the accepted step into the
    window (newest last, at most CS_WF_STAT_MAX steps kept), and the count of accepted steps in a row whose residual is
    at least -drift_rise times the smallest (a new smallest ends the run of risen steps) with the first one's residual.
-   A state evaluated again at
-   the same iteration (a resume from a checkpoint, which stores the window and the count) is not recorded twice. */
+   A state evaluated again at the same iteration (a resume from a checkpoint, which stores the window and the count)
+   is not recorded twice. */
 PetscErrorCode CSWFTrackStationarity(CSWillmoreFlow F)
 {
   Vec       x;
