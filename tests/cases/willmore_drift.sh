@@ -15,7 +15,8 @@
 # -flow_drift_rise_steps (10) accepted steps: the run goes on to -flow_max_it 70 although its history holds risen
 # residuals with W flat over the window (checked on the history with runs/stationary_rule.py -steps 1).
 # (c) serially: with -flow_drift_rise_steps 3 the replay stops it at K3 (64), and a run checkpointed at K3 - 1 (two
-# risen steps) and resumed stops there too: the count of risen steps is in the checkpoint (without it: K3 + 2).
+# risen steps) and resumed stops there too: the count of risen steps is in the checkpoint (without it the count
+# would restart at K3 and reach 3 only at K3 + 2, the sawtooth's cut, below the first risen residual: no stop).
 # nprocs: 1 2
 source tests/lib.sh
 S="-task flow -flow_type trianglefield -gen icosphere -gen_level 2 -gen_deform_stretch 1.3,1,1 -flow_t_max 5 -flow_max_it 70"
