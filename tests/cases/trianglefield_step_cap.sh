@@ -6,7 +6,7 @@
 # 1.3 x in x, whose own class also holds a round sphere up to the discretisation (a W band against 4 pi is a matter of
 # resolution and is not tested). At -flow_t_max 5 it saws like the Morin surface: a mode grows at t = 5 while W is
 # flat, each rejection (a step at 2.5) cuts it, t grows back (measured: EL scaled between 2e-6 and 9e-6 from iteration
-# 20 on, the drift rule stops it at 62).
+# 20 on; the drift rule stopped it at 62 until it asked for a sustained rise, docs/willmore_flow.md "Drift").
 # (off) serially: 40 iterations at t_max 5 without the rule: not converged, >= 5 rejected steps (measured 9).
 # (on)  -flow_t_max_rises 5 on 1 and 2 ranks: the cap is lowered (5 -> 2.5, measured at iteration 30) and the run
 #       converges (measured: 33 iterations); the class kept (violation < 1e-10), the field integrable (< 1e-10), W

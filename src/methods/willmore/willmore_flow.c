@@ -118,6 +118,10 @@ static void SetDefaults(CSWillmoreFlow F)
   F->drift_window    = 50;
   F->drift_wtol      = 2e-7;
   F->drift_rise      = 1.5;
+  /* a sustained rise, not a spike: the longest run of risen residuals measured in a run that does not drift is 6
+     steps (the step-size limit cycles of a triangle field at t_max 5-8); a drift rises for 100-250 steps, so 10 costs
+     it 9 (runs/stationary_rule.py on the histories of docs/willmore_flow.md "Drift") */
+  F->drift_rise_steps = 10;
   F->els_min         = -1;
   F->els_min_it      = -1;
   F->keep_best       = CS_FLOW_KEEP_BEST_GUARD;

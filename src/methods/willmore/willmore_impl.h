@@ -135,7 +135,7 @@ struct _CSWillmoreFlowOps {
 };
 
 #define CS_WF_STAT_MAX                64 /* largest -flow_stationary_window (its values are stored in checkpoints) */
-#define CS_WF_STAT_NREAL              (4 + 2 * (CS_WF_STAT_MAX + 1)) /* checkpoint scalars of the window and of the drift test */
+#define CS_WF_STAT_NREAL              (6 + 2 * (CS_WF_STAT_MAX + 1)) /* checkpoint scalars of the window and of the drift test */
 
 struct _p_CSWillmoreFlow {
   CSObjectHeader        hdr;  /* comm (the mesh's), prefix (default "flow_"), monitors (CSWillmoreFlowMonitorFn), destroy */
@@ -233,6 +233,9 @@ struct _p_CSWillmoreFlow {
   Vec                   stat_x;               /* the positions recorded last */
   PetscInt              drift_window;         /* -flow_drift_window (0: off; the W values of the window above) */
   PetscReal             drift_wtol, drift_rise; /* -flow_drift_wtol (largest relative W change per step), -flow_drift_rise */
+  PetscInt              drift_rise_steps;     /* -flow_drift_rise_steps: the rise must have lasted this many accepted steps */
+  PetscInt              drift_risen;          /* accepted steps in a row with el_residual_scaled >= drift_rise x els_min */
+  PetscReal             drift_risen_els;      /* el_residual_scaled at the first of them */
   PetscReal             els_min;              /* the smallest el_residual_scaled of the run (< 0: none yet) */
   PetscInt              els_min_it;           /* and its iteration */
   CSFlowKeepBestType    keep_best;            /* -flow_keep_best */

@@ -140,6 +140,7 @@ static PetscErrorCode CheckValues(CSWillmoreFlow F)
     {"drift_window", (PetscReal)F->drift_window, F->drift_window >= 0 && F->drift_window <= CS_WF_STAT_MAX, "use 0 (off) or a count of steps up to 64"},
     {"drift_wtol", F->drift_wtol, F->drift_wtol >= 0, "must be >= 0"},
     {"drift_rise", F->drift_rise, F->drift_rise >= 1, "must be >= 1"},
+    {"drift_rise_steps", (PetscReal)F->drift_rise_steps, F->drift_rise_steps >= 1, "must be >= 1 (1: a single risen residual is enough)"},
     {"pgd_t_mu", F->proj_tmu, F->proj_tmu > 0, "must be > 0"},
     {"pgd_projection_max_it", (PetscReal)F->proj_max_it, F->proj_max_it >= 1, "must be >= 1"},
     {"max_seconds", F->max_seconds, F->max_seconds >= 0, "use 0 (no limit) or a positive number of seconds"},

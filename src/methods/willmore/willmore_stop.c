@@ -14,9 +14,10 @@ PetscErrorCode CSWFStopOptions(CSWillmoreFlow F, PetscOptionItems *PetscOptionsO
   PetscCall(CSOptionsEnum("-el_norm", "What -rtol tests: the scale-free residual el_residual_scaled = el_residual sqrt(A) / max(|E|, 1e-3 |E_input|) (scaled), or el_residual itself (absolute)", NULL, CSFlowELNormTypes, (PetscEnum)F->el_norm, (PetscEnum *)&F->el_norm, &F->el_norm_set));
   PetscCall(CSOptionsInt("-stationary_window", "Stop as converged (stop_reason stationary) when over this many accepted steps W changed by at most -stationary_rtol (relative) and the vertices moved by at most -stationary_xtol mean edge lengths in total, with the violation below -ctol (0: off)", NULL, F->stat_window, &F->stat_window, NULL));
   PetscCall(CSOptionsReal("-stationary_rtol", "Stationarity: largest relative spread (max - min) / |W| of W over the window", NULL, F->stat_rtol, &F->stat_rtol, NULL));
-  PetscCall(CSOptionsInt("-drift_window", "Stop (stop_reason drift, not converged) when over this many accepted steps W changed by at most -drift_wtol (relative, per step) while el_residual_scaled rose to -drift_rise times its smallest value of the run, the violation below -ctol (0: off)", NULL, F->drift_window, &F->drift_window, NULL));
+  PetscCall(CSOptionsInt("-drift_window", "Stop (stop_reason drift, not converged) when over this many accepted steps W changed by at most -drift_wtol (relative, per step) while el_residual_scaled stayed at least -drift_rise times its smallest value of the run for the last -drift_rise_steps steps, the violation below -ctol (0: off)", NULL, F->drift_window, &F->drift_window, NULL));
   PetscCall(CSOptionsReal("-drift_wtol", "Drift: largest relative change of W per step over the window", NULL, F->drift_wtol, &F->drift_wtol, NULL));
   PetscCall(CSOptionsReal("-drift_rise", "Drift: el_residual_scaled at least this many times its smallest value of the run", NULL, F->drift_rise, &F->drift_rise, NULL));
+  PetscCall(CSOptionsInt("-drift_rise_steps", "Drift: the residual must have been -drift_rise times its smallest at each of the last this many accepted steps (a sustained rise, not a spike of a converging run; 1: the current step only)", NULL, F->drift_rise_steps, &F->drift_rise_steps, NULL));
   PetscCall(CSOptionsReal("-stationary_xtol", "Stationarity: largest sum over the window of the steps' largest vertex displacements, in mean edge lengths", NULL, F->stat_xtol, &F->stat_xtol, NULL));
   PetscCall(CSOptionsEnum("-keep_best", "Keep the state of smallest el_residual_scaled with the violation <= -ctol, and return it (-o, the summary) at the resolution guard's stops (guard), at every non-converged stop (all), or never (none)", NULL, CSFlowKeepBestTypes, (PetscEnum)F->keep_best, (PetscEnum *)&F->keep_best, &set));
   /* a triangle field's state is more than (x, mu, nu): its continuation and spinor data are not kept */
@@ -73,8 +74,10 @@ static PetscErrorCode Displacement(CSWillmoreFlow F, Vec x, Vec y, PetscReal *d)
 }
 
 /* After the evaluation at the top of an iteration: W and the largest displacement of the accepted step into the
-   window (newest last, at most CS_WF_STAT_MAX steps kept). A state evaluated again at the same iteration (a resume
-   from a checkpoint, which stores the window) is not recorded twice. */
+   window (newest last, at most CS_WF_STAT_MAX steps kept), and the count of accepted steps in a row whose residual is
+   at least -drift_rise times the smallest (a new smallest ends the run of risen steps) with the first one's residual.
+   A state evaluated again at the same iteration (a resume from a checkpoint, which stores the window and the count)
+   is not recorded twice. */
 PetscErrorCode CSWFTrackStationarity(CSWillmoreFlow F)
 {
   Vec       x;
@@ -90,9 +93,10 @@ PetscErrorCode CSWFTrackStationarity(CSWillmoreFlow F)
     if (!F->stat_x) PetscCall(VecDuplicate(x, &F->stat_x));
     PetscCall(VecCopy(x, F->stat_x));
     if (F->stat_it < 0 || F->it < F->stat_it) { /* the first state: the window starts here */
-      F->stat_n    = 0;
-      F->stat_W[0] = F->E;
-      F->stat_it   = F->it;
+      F->stat_n      = 0;
+      F->stat_W[0]   = F->E;
+      F->stat_it     = F->it;
+      F->drift_risen = 0;
     }
     PetscFunctionReturn(0);
   }
@@ -107,6 +111,10 @@ PetscErrorCode CSWFTrackStationarity(CSWillmoreFlow F)
   F->stat_n++;
   F->stat_W[F->stat_n] = F->E;
   F->stat_it           = F->it;
+  if (F->els_min > 0 && F->els >= F->drift_rise * F->els_min) {
+    if (!F->drift_risen) F->drift_risen_els = F->els;
+    F->drift_risen++;
+  } else F->drift_risen = 0;
   PetscFunctionReturn(0);
 }
 
@@ -142,8 +150,11 @@ static const char *DriftCause(CSWillmoreFlow F)
 }
 
 /* DIVERGED_DRIFT: over the last K = -drift_window accepted steps W changed by at most -drift_wtol per step
-   (relative) while el_residual_scaled is at least -drift_rise times its smallest value of the run, inside the class
-   (violation below -ctol). A converging run has a falling residual; a squeeze or a descent changes W faster. What
+   (relative) while el_residual_scaled has been at least -drift_rise times its smallest value of the run at each of
+   the last -drift_rise_steps accepted steps and is not below its value at the first of them (still rising: a spike
+   that decays slowly does not count), inside the class (violation below -ctol). A converging run has a falling
+   residual; the step-size limit cycles of a triangle field at t_max 5-8 stay risen for at most 6 steps (measured,
+   docs/willmore_flow.md "Drift"); a squeeze or a descent changes W faster. What
    is left is a slide along a direction of nearly constant W away from the nearest critical point: the remeshed
    fat torus's cos 2phi mode, a saddle of the discrete problem whose growth rate shrinks like h^2 (docs/real_meshes.md,
    issue 35). It cannot converge at this mesh, so it stops, and -flow_keep_best returns the smallest residual. */
@@ -152,15 +163,17 @@ PetscErrorCode CSWFCheckDrift(CSWillmoreFlow F, CSWillmoreFlowConvergedReason *r
   PetscInt  K = F->drift_window, n = F->stat_n;
   PetscReal dw = 0;
   PetscFunctionBeginUser;
-  if (!K || n < K || F->els_min <= 0 || !(F->els >= F->drift_rise * F->els_min) || !(PetscMax(F->conf, F->glob) < F->ctol)) PetscFunctionReturn(0);
+  if (!K || n < K || F->els_min <= 0 || F->drift_risen < F->drift_rise_steps || !(F->els >= F->drift_risen_els) || !(PetscMax(F->conf, F->glob) < F->ctol)) PetscFunctionReturn(0);
   for (PetscInt j = n - K + 1; j <= n; j++) dw = PetscMax(dw, PetscAbsReal(F->stat_W[j] - F->stat_W[j - 1]) / PetscMax(PetscAbsReal(F->stat_W[j]), PETSC_SMALL));
   if (!(dw <= F->drift_wtol)) PetscFunctionReturn(0);
-  PetscCall(PetscPrintf(F->hdr.comm, "flow: drifting at iteration %" PetscInt_FMT ", not converging: over the last %" PetscInt_FMT " steps W changed by at most %.1e per step (relative; -%sdrift_wtol %g) while el_residual_scaled rose to %.3e, %.2f times its smallest value %.3e at iteration %" PetscInt_FMT " (-%sdrift_rise %g), violation %.2e. The flow slides along a direction of nearly constant W (%s, docs/real_meshes.md)\n", F->it, K, (double)dw, F->hdr.prefix, (double)F->drift_wtol, (double)F->els, (double)(F->els / F->els_min), (double)F->els_min, F->els_min_it, F->hdr.prefix, (double)F->drift_rise, (double)PetscMax(F->conf, F->glob), DriftCause(F)));
+  PetscCall(PetscPrintf(F->hdr.comm, "flow: drifting at iteration %" PetscInt_FMT ", not converging: over the last %" PetscInt_FMT " steps W changed by at most %.1e per step (relative; -%sdrift_wtol %g) while el_residual_scaled rose to %.3e, %.2f times its smallest value %.3e at iteration %" PetscInt_FMT " and at least -%sdrift_rise %g times it for the last %" PetscInt_FMT " steps (-%sdrift_rise_steps %" PetscInt_FMT "), violation %.2e. The flow slides along a direction of nearly constant W (%s, docs/real_meshes.md)\n", F->it, K, (double)dw, F->hdr.prefix, (double)F->drift_wtol, (double)F->els, (double)(F->els / F->els_min), (double)F->els_min, F->els_min_it, F->hdr.prefix, (double)F->drift_rise, F->drift_risen, F->hdr.prefix, F->drift_rise_steps, (double)PetscMax(F->conf, F->glob), DriftCause(F)));
   *reason = CS_WILLMORE_FLOW_DIVERGED_DRIFT;
   PetscFunctionReturn(0);
 }
 
-/* checkpoint scalars of the window: [stat_it, stat_n, W[0..MAX], d[0..MAX], els_min, els_min_it] */
+/* checkpoint scalars of the window: [stat_it, stat_n, W[0..MAX], d[0..MAX], els_min, els_min_it, drift_risen,
+   drift_risen_els]. A checkpoint written before the run of risen steps was stored (134 scalars) is refused by its
+   count (mesh/checkpoint.c: "N scalars stored, M expected"). */
 void CSWFStationaryGetState(CSWillmoreFlow F, PetscReal ck[])
 {
   ck[0] = (PetscReal)F->stat_it;
@@ -169,6 +182,8 @@ void CSWFStationaryGetState(CSWillmoreFlow F, PetscReal ck[])
   for (PetscInt j = 0; j <= CS_WF_STAT_MAX; j++) ck[3 + CS_WF_STAT_MAX + j] = F->stat_d[j];
   ck[4 + 2 * CS_WF_STAT_MAX] = F->els_min;
   ck[5 + 2 * CS_WF_STAT_MAX] = (PetscReal)F->els_min_it;
+  ck[6 + 2 * CS_WF_STAT_MAX] = (PetscReal)F->drift_risen;
+  ck[7 + 2 * CS_WF_STAT_MAX] = F->drift_risen_els;
 }
 
 void CSWFStationarySetState(CSWillmoreFlow F, const PetscReal ck[])
@@ -177,8 +192,10 @@ void CSWFStationarySetState(CSWillmoreFlow F, const PetscReal ck[])
   F->stat_n  = (PetscInt)ck[1];
   for (PetscInt j = 0; j <= CS_WF_STAT_MAX; j++) F->stat_W[j] = ck[2 + j];
   for (PetscInt j = 0; j <= CS_WF_STAT_MAX; j++) F->stat_d[j] = ck[3 + CS_WF_STAT_MAX + j];
-  F->els_min    = ck[4 + 2 * CS_WF_STAT_MAX];
-  F->els_min_it = (PetscInt)ck[5 + 2 * CS_WF_STAT_MAX];
+  F->els_min         = ck[4 + 2 * CS_WF_STAT_MAX];
+  F->els_min_it      = (PetscInt)ck[5 + 2 * CS_WF_STAT_MAX];
+  F->drift_risen     = PetscMax((PetscInt)ck[6 + 2 * CS_WF_STAT_MAX], 0);
+  F->drift_risen_els = ck[7 + 2 * CS_WF_STAT_MAX];
 }
 
 /* -flow_keep_best: the state (x, mu, nu) of smallest el_residual_scaled among the evaluated states with the violation
