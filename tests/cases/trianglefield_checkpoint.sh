@@ -12,7 +12,7 @@
 # same collective checks as in flow_resume.sh and harden_files.sh).
 # nprocs: 1 2
 source tests/lib.sh
-if [ "$NP" = 1 ]; then OTHER="mpirun -n 2"; else OTHER=""; fi # serially: an MPI singleton, as tests/run.sh starts serial runs
+if [ "$NP" = 1 ]; then OTHER="mpirun -n 2"; else OTHER="mpirun -n 1"; fi
 run() { timeout 60 "$@" > "$TMP/run.log" 2>&1 || { tail -20 "$TMP/run.log"; exit 1; }; }
 L="-task flow -flow_type trianglefield -gen lattice -gen_tau 0,1 -gen_n 12 -gen_m 12 -flow_init smooth -flow_init_amplitude 1 -flow_constraint_mobius -flow_t_mu_final 4e9 -flow_t_mu_final_el 0.1"
 TIGHT="-flow_saddle_ksp_rtol 1e-13 -flow_factor_reuse_its 0"
