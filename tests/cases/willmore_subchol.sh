@@ -39,7 +39,7 @@ check_close "$(python3 $P rigid "$TMP/c.obj" "$TMP/b.obj")" 0 1e-9 "cssubchol fa
 check_close "$(json willmore "$TMP/c.json")" "$(json willmore "$TMP/b.json")" $WTOL "W (fallback)"
 [ "$(json ksp_iterations "$TMP/c.json")" = "$(json ksp_iterations "$TMP/b.json")" ] || { echo "BAD: fallback iteration counts differ from the Cholesky run"; exit 1; }
 # bad option values: a clear error naming the option, non-zero exit; serially and on 2 ranks (the options are read
-# the same way on every rank count; each 3-rank launch, oversubscribed on 2 cores, costs ~1 CPU s)
+# the same way on every rank count; the three 3-rank launches, oversubscribed on 2 cores, cost ~1.4 CPU s)
 [ "$NP" -le 2 ] || exit 0
 EXPECT="Unknown option foo for -flow_saddle_fieldsplit_1_pc_cssubchol_ordering" expect_fail timeout 60 $MPIEXEC "$CS_BIN" $S -flow_saddle_fieldsplit_1_pc_type cssubchol -flow_saddle_fieldsplit_1_pc_cssubchol_ordering foo
 EXPECT="Unknown option middle for -flow_saddle_fieldsplit_1_pc_cssubchol_interface" expect_fail timeout 60 $MPIEXEC "$CS_BIN" $S -flow_saddle_fieldsplit_1_pc_type cssubchol -flow_saddle_fieldsplit_1_pc_cssubchol_interface middle
