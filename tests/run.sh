@@ -30,7 +30,8 @@ export OMPI_MCA_odls_base_sigkill_timeout=${OMPI_MCA_odls_base_sigkill_timeout:-
 export OMPI_MCA_pml=${OMPI_MCA_pml:-ob1}
 # One OpenBLAS thread per process. A serial run is an MPI singleton, bound to no core, and OpenBLAS starts a thread
 # per core in it (src/util/threads.c sets 1 only with several ranks; mpirun binds its ranks, which then start one):
-# two serial runs side by side on 2 cores ran 4 spinning BLAS threads. Serially, at load 6-9: golden np 1 39.5 ->
+# two serial runs side by side on 2 cores ran 4 spinning BLAS threads. Four flow-heavy serial cases two at a time
+# through this runner: 81.6 / 86.3 -> 49.7 / 46.3 CPU s, 115 / 122 -> 66 / 67 s wall. Serially, at load 6-9: golden np 1 39.5 ->
 # 28.5 CPU s (57.6 -> 45.0 s wall), a 30-iteration pgd on eight_cgal 2.35 / 1.94 -> 0.93 / 0.98 CPU s, a 1-iteration
 # trianglefield run 0.71 -> 0.29 CPU s (8 each); docs/tests_time.md. The results move at round-off (the threads
 # split the BLAS reductions), so the golden case keeps the default its np 1 references were stored with
