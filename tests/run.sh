@@ -28,6 +28,15 @@ export OMPI_MCA_odls_base_sigkill_timeout=${OMPI_MCA_odls_base_sigkill_timeout:-
 # each, load 5), and the suite has hundreds of such launches (golden alone 58 on 2 ranks). Serial runs (singletons)
 # are unaffected (0.157 vs 0.160 CPU s).
 export OMPI_MCA_pml=${OMPI_MCA_pml:-ob1}
+# One OpenBLAS thread per process. A serial run is an MPI singleton, bound to no core, and OpenBLAS starts a thread
+# per core in it (src/util/threads.c sets 1 only with several ranks; mpirun binds its ranks, which then start one):
+# two serial runs side by side on 2 cores ran 4 spinning BLAS threads. Four flow-heavy serial cases two at a time
+# through this runner: 81.6 / 86.3 -> 49.7 / 46.3 CPU s, 115 / 122 -> 66 / 67 s wall. Serially, at load 6-9: golden np 1 39.5 ->
+# 28.5 CPU s (57.6 -> 45.0 s wall), a 30-iteration pgd on eight_cgal 2.35 / 1.94 -> 0.93 / 0.98 CPU s, a 1-iteration
+# trianglefield run 0.71 -> 0.29 CPU s (8 each); docs/tests_time.md. The results move at round-off (the threads
+# split the BLAS reductions); the golden suite pins 1 thread itself (tests/golden/run.py; its serial references were
+# re-stored at 1 thread, tests/golden/CHANGES). A value set by the caller is kept.
+if [ -z "${OPENBLAS_NUM_THREADS:-}" ]; then export OPENBLAS_NUM_THREADS=1; fi
 export CS_ROOT=$PWD CS_BIN=${CS_BIN:-$PWD/bin/confsurf} CS_TESTS=${CS_TESTS:-$PWD/build/tests} # make sanitize: build/san/
 export CS_SHARED=${CS_SHARED:-$PWD/../shared}
 # python3 resolved once: the cases call it hundreds of times (json, check_close, the checks), and a version

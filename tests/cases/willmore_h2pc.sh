@@ -24,7 +24,7 @@ C="-gen cylinder -gen_n 24 -gen_m 12 -gen_height 2 -flow_energy area -flow_bound
 run $C -o "$TMP/c1.obj"
 run $C -flow_saddle_pc_type cholesky -flow_saddle_pc_factor_mat_solver_type mumps -o "$TMP/c2.obj"
 check_close "$(python3 $P rigid "$TMP/c1.obj" "$TMP/c2.obj")" 0 1e-7 "Dirichlet cylinder: csh2 vs Cholesky, positions"
-S="-gen icosphere -gen_level 3 -gen_deform_bump 0.2"
+# the level-3 input of the loop above: its Cholesky run b3 is the reference (one launch fewer)
+S="-gen icosphere -gen_level 3 -gen_deform_bump 0.2 -gen_deform_stretch 1.5,1,0.8"
 run $S -flow_saddle_h2_ksp_type preonly -flow_saddle_h2_pc_type hypre -o "$TMP/h.obj"
-run $S -flow_saddle_pc_type cholesky -flow_saddle_pc_factor_mat_solver_type mumps -o "$TMP/hc.obj"
-check_close "$(python3 $P rigid "$TMP/h.obj" "$TMP/hc.obj")" 0 1e-7 "csh2 with hypre inner solves vs Cholesky, positions"
+check_close "$(python3 $P rigid "$TMP/h.obj" "$TMP/b3.obj")" 0 1e-7 "csh2 with hypre inner solves vs Cholesky, positions"

@@ -7,7 +7,7 @@
 # switch to MUMPS where the dense interface does not fit (forced by -pc_cssubchol_max_interface_ratio 0
 # -pc_cssubchol_fits_mb 0): a note on several ranks (none serially, where there is no interface), and the same steps;
 # unknown values of -pc_cssubchol_ordering / -pc_cssubchol_interface and a negative ratio fail with an error naming
-# the option.
+# the option (on 1 and 2 ranks).
 # nprocs: 1 2 3
 source tests/lib.sh
 P=tests/cases/spin_tools.py
@@ -38,7 +38,9 @@ else [ "$notes" -ge 1 ] || { echo "BAD: no note of the switch to MUMPS on $NP ra
 check_close "$(python3 $P rigid "$TMP/c.obj" "$TMP/b.obj")" 0 1e-9 "cssubchol falling back to MUMPS vs Cholesky of S: positions after 4 steps"
 check_close "$(json willmore "$TMP/c.json")" "$(json willmore "$TMP/b.json")" $WTOL "W (fallback)"
 [ "$(json ksp_iterations "$TMP/c.json")" = "$(json ksp_iterations "$TMP/b.json")" ] || { echo "BAD: fallback iteration counts differ from the Cholesky run"; exit 1; }
-# bad option values: a clear error naming the option, non-zero exit
+# bad option values: a clear error naming the option, non-zero exit; serially and on 2 ranks (the options are read
+# the same way on every rank count; the three 3-rank launches, oversubscribed on 2 cores, cost ~1.4 CPU s)
+[ "$NP" -le 2 ] || exit 0
 EXPECT="Unknown option foo for -flow_saddle_fieldsplit_1_pc_cssubchol_ordering" expect_fail timeout 60 $MPIEXEC "$CS_BIN" $S -flow_saddle_fieldsplit_1_pc_type cssubchol -flow_saddle_fieldsplit_1_pc_cssubchol_ordering foo
 EXPECT="Unknown option middle for -flow_saddle_fieldsplit_1_pc_cssubchol_interface" expect_fail timeout 60 $MPIEXEC "$CS_BIN" $S -flow_saddle_fieldsplit_1_pc_type cssubchol -flow_saddle_fieldsplit_1_pc_cssubchol_interface middle
 EXPECT="-flow_saddle_fieldsplit_1_pc_cssubchol_max_interface_ratio -1.*must be >= 0" expect_fail timeout 60 $MPIEXEC "$CS_BIN" $S -flow_saddle_fieldsplit_1_pc_type cssubchol -flow_saddle_fieldsplit_1_pc_cssubchol_max_interface_ratio -1
