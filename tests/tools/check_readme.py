@@ -36,7 +36,7 @@ for row in rows:
         m = re.search(r'^# nprocs: *(.*)$', open(f'tests/cases/{c}.sh').read(), re.M)
         actual = ' '.join((m.group(1) if m else '1 2').split())
         if (np or '1 2') != actual: problems.append(f'case {c}: marked np={np or "1 2"}, its script says nprocs {actual}')
-    for g in re.findall(r'`([a-z0-9_]+)`', gcell):
+    for g in re.findall(r'`([a-z0-9_.]+)`', gcell):
         if g not in golden: problems.append(f'golden case {g} in the table is not in tests/golden/cases.txt')
         seen_golden.add(g)
 for c in sorted(cases - seen_case): problems.append(f'case {c} is not in tests/README.md')
