@@ -17,21 +17,11 @@ and the mean | |x| - 1 | in bands of angle from the moved point's input directio
 with W, q_max and the stop reason of the summary."""
 import json
 import math
+import os
 import sys
 
-
-def read_obj(path):
-    V, F = [], []
-    for line in open(path):
-        t = line.split()
-        if not t:
-            continue
-        if t[0] == 'v':
-            V.append([float(s) for s in t[1:4]])
-        elif t[0] == 'f':
-            F.append([int(s.split('/')[0]) - 1 for s in t[1:4]])
-    return V, F
-
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "scripts"))
+from objio import read_obj  # noqa: E402  (scripts/objio.py, the project's OBJ reader)
 
 sub = lambda a, b: [a[i] - b[i] for i in range(3)]
 dot = lambda a, b: sum(a[i] * b[i] for i in range(3))
