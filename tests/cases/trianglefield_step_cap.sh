@@ -12,6 +12,11 @@
 #       converges (measured: 33 iterations); the class kept (violation < 1e-10), the field integrable (< 1e-10), W
 #       lower than the start's, and the vertices on a sphere: the rms of the relative distances from the least-squares
 #       sphere below 1e-2 and below a fifth of the start's (measured 6.2e-3 against 8.2e-2: the start is an ellipsoid).
+# (rejects) the other sawtooth, at t_max 6: the trial at the cap is rejected in every iteration, so no two steps at
+#       the cap are accepted in a row and -flow_t_max_rises never counts. Serially without a rule: not converged in 40
+#       iterations, >= 15 rejected trials (measured 20 of 107 solves); with -flow_t_max_rejects 5 (1 and 2 ranks): the
+#       cap lowered 6 -> 3 (measured at iteration 13), converged within 40 iterations with <= 10 rejections (measured
+#       26 iterations, 6 rejections, 76 solves), the class kept; -flow_t_max_rejects -1 refused naming the option.
 # nprocs: 1 2
 source tests/lib.sh
 G="-task flow -flow_type trianglefield -gen icosphere -gen_level 2 -gen_deform_stretch 1.3,1,1 -flow_t_max 5"
@@ -20,6 +25,13 @@ if [ "$NP" = 1 ]; then
 fi
 timeout 60 "$CS_BIN" $G -flow_max_it 0 -o "$TMP/start.obj" > "$TMP/start.log" 2>&1 || { tail "$TMP/start.log"; exit 1; }
 timeout 90 $MPIEXEC "$CS_BIN" $G -flow_t_max_rises 5 -flow_max_it 100 -summary "$TMP/on.json" -o "$TMP/on.obj" > "$TMP/on.log" 2>&1 || { tail "$TMP/on.log"; exit 1; }
+# the other sawtooth, at t_max 6: the trial at the cap rejected in every iteration (-flow_t_max_rejects)
+R="-task flow -flow_type trianglefield -gen icosphere -gen_level 2 -gen_deform_stretch 1.3,1,1 -flow_t_max 6 -flow_max_it 40"
+if [ "$NP" = 1 ]; then
+  timeout 60 "$CS_BIN" $R -summary "$TMP/roff.json" > "$TMP/roff.log" 2>&1 || { tail "$TMP/roff.log"; exit 1; }
+fi
+timeout 90 $MPIEXEC "$CS_BIN" $R -flow_t_max_rejects 5 -summary "$TMP/ron.json" > "$TMP/ron.log" 2>&1 || { tail "$TMP/ron.log"; exit 1; }
+EXPECT="-flow_t_max_rejects -1: must be >= 0" expect_fail timeout 60 $MPIEXEC "$CS_BIN" $R -flow_t_max_rejects -1
 python3 - "$TMP" <<'PY'
 import json, math, re, sys
 d = sys.argv[1]
@@ -51,6 +63,16 @@ if off:
              ("(off) it saws: >= 5 rejected steps", off['rejections'] >= 5, off['rejections'])]
 on, log = json.load(open(d + '/on.json')), open(d + '/on.log').read()
 f0, f1 = sphere_fit(d + '/start.obj'), sphere_fit(d + '/on.obj')
+try: roff = json.load(open(d + '/roff.json'))
+except OSError: roff = None
+if roff:
+  checks += [("(rejects off) not converged in 40 iterations at t_max 6", not roff['converged'], roff['stop_reason']),
+             ("(rejects off) >= 15 rejected trials", roff['rejections'] >= 15, roff['rejections'])]
+ron, rlog = json.load(open(d + '/ron.json')), open(d + '/ron.log').read()
+checks += [
+  ("(rejects on) the cap lowered 6 -> 3", re.search(r"step cap -flow_t_max is lowered 6\.? -> 3\.? at iteration [0-9]+: the trial at t_max was rejected", rlog) is not None, ""),
+  ("(rejects on) converged within 40 iterations, <= 10 rejected trials", ron['converged'] and ron['rejections'] <= 10, (ron['stop_reason'], ron['iterations'], ron['rejections'])),
+  ("(rejects on) the class kept (< 1e-10)", ron['conformal_violation'] < 1e-10, ron['conformal_violation'])]
 checks += [
   ("(on) the cap lowered 5 -> 2.5", re.search(r"step cap -flow_t_max is lowered 5\.? -> 2\.5 ", log) is not None, ""),
   ("(on) converged", on['converged'] and on['stop_reason'] == 'converged', (on['stop_reason'], on['iterations'])),

@@ -69,6 +69,9 @@ typedef struct {
   PetscReal cap_wtol;      /* -flow_t_max_rises_wtol: W flat over a step (relative) */
   PetscInt  cap_n, cap_it, cap_lowered; /* the current count, the iteration of the record, the halvings so far */
   PetscReal cap_E, cap_el, cap_t;       /* the record: W, el_residual of state cap_it and the step accepted from it */
+  PetscInt  cap_rejects;   /* -flow_t_max_rejects: consecutive iterations whose trial at the cap was rejected that halve it (0: off) */
+  PetscInt  cap_nrej, cap_rej0; /* the current count of such iterations, the run's rejections at the last observation */
+  PetscReal cap_tnext;     /* t after the last growth: the first trial of the next iteration */
 } CSTriangleField;
 PETSC_INTERN const char *const CSTriangleFieldVariables[];
 

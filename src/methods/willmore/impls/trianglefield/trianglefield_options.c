@@ -85,6 +85,7 @@ PetscErrorCode CSTFView(CSWillmoreFlow F, PetscViewer viewer)
   PetscCall(PetscViewerASCIIPrintf(viewer, "triangle field: variables %s, start %s (seed %" PetscInt_FMT ", amplitude %g), %" PetscInt_FMT " period rows, conformal rows %s\n", CSTriangleFieldVariables[d->spinor ? 1 : 0], CSTriangleFieldInits[d->init], d->seed, (double)d->amp, 3 * d->nforms, d->noconf ? "off" : "on"));
   PetscCall(PetscViewerASCIIPrintf(viewer, "integrability weight %g from iteration %" PetscInt_FMT " (%g before), spin weight %g (decay %g), restore near %g vmax, immersion tol %g, max area ratio %g\n", (double)d->wint, d->istart, (double)d->wrelax, (double)d->wspin, (double)d->wdecay, (double)d->restore_near, (double)d->immersion_tol, (double)F->max_area_ratio));
   if (d->cap_rises) PetscCall(PetscViewerASCIIPrintf(viewer, "step cap t_max halved after %" PetscInt_FMT " consecutive rises of el_residual at it with W flat to %g\n", d->cap_rises, (double)d->cap_wtol));
+  if (d->cap_rejects) PetscCall(PetscViewerASCIIPrintf(viewer, "step cap t_max halved after %" PetscInt_FMT " consecutive iterations whose trial at it was rejected\n", d->cap_rejects));
   PetscCall(PetscViewerASCIIPopTab(viewer));
   PetscCall(CSWFDualStepView(F, &d->ds, viewer));
   PetscFunctionReturn(0);

@@ -14,6 +14,7 @@ PetscErrorCode CSTFStepCapSetFromOptions(CSWillmoreFlow F, CSTriangleField *d, P
   PetscFunctionBeginUser;
   PetscOptionsHeadBegin(PetscOptionsObject, "Triangle-field step cap (issue 39, Fig. 15)");
   PetscCall(CSOptionsInt("-t_max_rises", "Halve -flow_t_max for the rest of the run after this many consecutive accepted steps at t_max that raised el_residual while W stayed flat (a mode the step amplifies); 0: never", NULL, d->cap_rises, &d->cap_rises, NULL));
+  PetscCall(CSOptionsInt("-t_max_rejects", "Halve -flow_t_max for the rest of the run after this many consecutive iterations whose first trial, at t_max, was rejected (every step at the cap fails, each iteration pays for it); 0: never", NULL, d->cap_rejects, &d->cap_rejects, NULL));
   PetscCall(CSOptionsReal("-t_max_rises_wtol", "-flow_t_max_rises: W is flat when it changed by at most this (relative) over the step", NULL, d->cap_wtol, &d->cap_wtol, NULL));
   PetscOptionsHeadEnd();
   PetscFunctionReturn(0);
@@ -24,6 +25,7 @@ PetscErrorCode CSTFStepCapCheck(CSWillmoreFlow F, CSTriangleField *d)
 {
   PetscFunctionBeginUser;
   PetscCheck(d->cap_rises >= 0, F->hdr.comm, PETSC_ERR_ARG_OUTOFRANGE, "-%st_max_rises %" PetscInt_FMT ": must be >= 0 (0: off)", F->hdr.prefix, d->cap_rises);
+  PetscCheck(d->cap_rejects >= 0, F->hdr.comm, PETSC_ERR_ARG_OUTOFRANGE, "-%st_max_rejects %" PetscInt_FMT ": must be >= 0 (0: off)", F->hdr.prefix, d->cap_rejects);
   PetscCheck(d->cap_wtol >= 0 && !PetscIsInfOrNanReal(d->cap_wtol), F->hdr.comm, PETSC_ERR_ARG_OUTOFRANGE, "-%st_max_rises_wtol %g: must be a finite number >= 0", F->hdr.prefix, (double)d->cap_wtol);
   PetscFunctionReturn(0);
 }
@@ -49,11 +51,34 @@ static PetscErrorCode Observe(CSWillmoreFlow F, CSTriangleField *d)
   PetscFunctionReturn(0);
 }
 
-/* ops.grow of the kind: the observation, then CGD's step sizes (t to the possibly lowered cap, t_mu kept there) */
+/* The other sawtooth: every trial at the cap is rejected and the step accepted below it, so no two steps at the cap
+   are accepted in a row and Observe never counts. The stretched level-2 icosphere at -flow_t_max 8 (the stand-in of
+   tests/cases/trianglefield_step_cap.sh) paid one rejected solve in 136 of 150 iterations and ended at max_it with the
+   EL cycling between 2.5e-6 and 7.3e-6. After -flow_t_max_rejects such iterations in a row the cap is halved: the
+   accepted steps were below it anyway, and the rejected trials stop. */
+static PetscErrorCode ObserveRejects(CSWillmoreFlow F, CSTriangleField *d)
+{
+  PetscBool rejected_at_cap = (PetscBool)(F->it > 0 && d->cap_tnext >= F->tmax && F->rejections > d->cap_rej0);
+  PetscFunctionBeginUser;
+  d->cap_nrej = rejected_at_cap ? d->cap_nrej + 1 : 0;
+  d->cap_rej0 = F->rejections;
+  if (!d->cap_rejects || d->cap_nrej < d->cap_rejects) PetscFunctionReturn(0);
+  PetscCall(PetscPrintf(F->hdr.comm, "flow: the step cap -%st_max is lowered %g -> %g at iteration %" PetscInt_FMT ": the trial at t_max was rejected in %" PetscInt_FMT " consecutive iterations (-%st_max_rejects %" PetscInt_FMT ")\n", F->hdr.prefix, (double)F->tmax, (double)(0.5 * F->tmax), F->it, d->cap_nrej, F->hdr.prefix, d->cap_rejects));
+  F->tmax *= 0.5;
+  d->cap_nrej = 0;
+  d->cap_n    = 0;
+  d->cap_lowered++;
+  PetscFunctionReturn(0);
+}
+
+/* ops.grow of the kind: the observations, then CGD's step sizes (t to the possibly lowered cap, t_mu kept there) */
 PetscErrorCode CSTFGrow(CSWillmoreFlow F)
 {
+  CSTriangleField *d = (CSTriangleField *)F->data;
   PetscFunctionBeginUser;
-  PetscCall(Observe(F, (CSTriangleField *)F->data));
+  PetscCall(Observe(F, d));
+  PetscCall(ObserveRejects(F, d));
   PetscCall(CSWFGrowCGD(F));
+  d->cap_tnext = F->t;
   PetscFunctionReturn(0);
 }
