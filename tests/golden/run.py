@@ -136,6 +136,7 @@ def main():
     for s in setups:
         subprocess.run(subst(s, a.bin, tmp), shell=True, cwd=ROOT, check=True)
     npass = nfail = 0
+    fails = []  # repeated at the end: tests/run.sh shows only the last lines of a failed case
     for name, ranks, args in cases:
         if a.np not in ranks or (a.filter and not re.search(a.filter, name)):
             continue
@@ -145,7 +146,8 @@ def main():
         ref_path = os.path.join(HERE, "ref", "%s.np%s.json" % (name, a.np))
         if err:
             nfail += 1
-            print("FAIL %-30s %s" % (name, err))
+            fails.append("FAIL %-30s %s" % (name, err))
+            print(fails[-1])
             continue
         if a.store:
             json.dump(res, open(ref_path, "w"), indent=1, sort_keys=True)
@@ -153,16 +155,20 @@ def main():
             continue
         if not os.path.exists(ref_path):
             nfail += 1
-            print("FAIL %-30s no stored result %s" % (name, ref_path))
+            fails.append("FAIL %-30s no stored result %s" % (name, ref_path))
+            print(fails[-1])
             continue
         bad = compare(res, json.load(open(ref_path)), removed)
         if bad:
             nfail += 1
-            print("FAIL %-30s %s" % (name, "; ".join(bad[:6])))
+            fails.append("FAIL %-30s %s" % (name, "; ".join(bad[:6])))
+            print(fails[-1])
         else:
             npass += 1
             print("ok   %-30s %5.1f s" % (name, dt))
     subprocess.run(["rm", "-rf", tmp])
+    for f in fails:
+        print(f)
     print("%d passed, %d failed" % (npass, nfail))
     sys.exit(1 if nfail else 0)
 
