@@ -13,6 +13,9 @@ import numpy as np
 
 import confsurf
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts"))
+import objio  # noqa: E402  (scripts/objio.py, the project's OBJ reader)
+
 ROOT = confsurf.rank() == 0
 TIMING = ("seconds", "time", "_ms", "ms_per")  # keys and columns that measure time, not results
 
@@ -23,13 +26,7 @@ def say(*a):
 
 
 def read_obj(path):
-    V, F = [], []
-    for line in open(path):
-        t = line.split()
-        if t and t[0] == "v":
-            V.append([float(x) for x in t[1:4]])
-        elif t and t[0] == "f":
-            F.append([int(x.split("/")[0]) - 1 for x in t[1:4]])
+    V, F = objio.read_obj(path)
     return np.array(V), np.array(F, dtype=np.int64)
 
 
