@@ -9,18 +9,16 @@
                               weighted by input face area, as confsurf's -reference), the smallest angle of RESULT's
                               own faces, as JSON"""
 import json
+import os
 import sys
 import numpy as np
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'scripts'))
+import objio  # noqa: E402  (scripts/objio.py, the project's OBJ reader)
+
 
 def read_obj(p):
-    V, F = [], []
-    for l in open(p):
-        s = l.split()
-        if s and s[0] == 'v':
-            V.append([float(t) for t in s[1:4]])
-        elif s and s[0] == 'f':
-            F.append([int(t.split('/')[0]) - 1 for t in s[1:4]])
+    V, F = objio.read_obj(p)
     return np.array(V), np.array(F)
 
 
