@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # soliman2021 Fig. 17 (issue 39): the Newton runs of options/newton_fig17_*.opts and their checks, one command:
-#   bash runs/fig17_nfold.sh [STEM ...]   (default: n2 n3 n4 lobed_n2 lobed_n3; serially, 10-40 s each under load)
+#   bash runs/fig17_nfold.sh [STEM ...]   (default: n2 n3 n4 lobed_n2 lobed_n3 lobed_n4; serially, 10-40 s each under load)
 # For each options/newton_fig17_STEM.opts: the run (runs/results/newton_fig17_STEM.{log,json,csv,obj}), its n-fold
 # symmetry error about the torus's own axis and the 48-fold one (runs/nfold_symmetry.py: a torus of revolution has
 # both small, a lobed one not), the lobe content (runs/fig17_modes.py), and W against the smooth homogeneous torus
@@ -9,7 +9,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 mkdir -p runs/results
 stems=("$@")
-[ ${#stems[@]} -gt 0 ] || stems=(n2 n3 n4 lobed_n2 lobed_n3)
+[ ${#stems[@]} -gt 0 ] || stems=(n2 n3 n4 lobed_n2 lobed_n3 lobed_n4)
 for s in "${stems[@]}"; do
   o=options/newton_fig17_$s.opts r=runs/results/newton_fig17_$s n=${s: -1}
   m=$(awk '$1 == "-gen_m" {print $2}' $o)
