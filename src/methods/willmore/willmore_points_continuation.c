@@ -150,9 +150,9 @@ PetscErrorCode CSWFPointsContinuationSetState(CSWillmoreFlow F, PetscInt it, con
 {
   CSWFPointsContinuation *pc = &F->pcont;
   PetscFunctionBeginUser;
-  PetscCheck(ck[0] == (PetscReal)pc->stages, F->hdr.comm, PETSC_ERR_ARG_INCOMP, "-resume: the checkpoint was written with -%spoints_stages %g, this run has %" PetscInt_FMT " (give the same)", F->hdr.prefix, (double)ck[0], pc->stages);
+  PetscCheck(ck[0] == (PetscReal)pc->stages, F->hdr.comm, PETSC_ERR_ARG_INCOMP, "-resume: the checkpoint was written with -%spoints_stages %.0f, this run has %" PetscInt_FMT " (give the same)", F->hdr.prefix, (double)ck[0], pc->stages);
   if (!pc->stages) PetscFunctionReturn(0);
-  PetscCheck(ck[1] >= 1 && ck[1] <= pc->stages && ck[1] == PetscFloorReal(ck[1]) && ck[2] >= 0 && ck[2] <= it && ck[2] == PetscFloorReal(ck[2]), F->hdr.comm, PETSC_ERR_FILE_UNEXPECTED, "-resume: the checkpoint's point stage %g (from iteration %g) is out of range (a damaged or crafted file)", (double)ck[1], (double)ck[2]);
+  PetscCheck(ck[1] >= 1 && ck[1] <= pc->stages && ck[1] == PetscFloorReal(ck[1]) && ck[2] >= 0 && ck[2] <= it && ck[2] == PetscFloorReal(ck[2]), F->hdr.comm, PETSC_ERR_FILE_UNEXPECTED, "-resume: the checkpoint's point stage %.0f (from iteration %.0f) is out of range (a damaged or crafted file)", (double)ck[1], (double)ck[2]);
   pc->stage = (PetscInt)ck[1];
   pc->it0   = (PetscInt)ck[2];
   PetscFunctionReturn(0);
