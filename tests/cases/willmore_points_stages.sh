@@ -5,6 +5,9 @@
 #   points' violation for class violation, docs/willmore_flow.md "Fig. 18");
 #  K = 10: converges (measured 194 iterations, W 14.8824106, q_max 1.15), the points met to 1e-10 of the file's
 #   targets, the class to 1e-10, the 9 stage ends reported in order;
+#  pgd: directly it does not start (measured: diverged at iteration 0, W 284); with K = 10 each stage begins with PGD's
+#   projection onto its targets and the run goes on (40 iterations: stop max_it, stages ended; to convergence it
+#   takes 182, W 14.882410623 as CGD's);
 #  checkpoint: stopped at iteration 30 inside a stage and resumed to 60: the resumed run continues that stage (the next
 #   stage end it reports is that stage's) and its history rows agree with the straight run's (W, violations, t to
 #   1e-8); a resume with another K is refused by name.
@@ -21,10 +24,12 @@ run direct
 run staged -flow_points_stages 10 -o "$TMP/staged.obj" -history_csv "$TMP/staged.csv"
 run part -flow_points_stages 10 -flow_max_it 30 -checkpoint "$TMP/c.ck" -history_csv "$TMP/split.csv"
 run resumed -flow_points_stages 10 -flow_max_it 60 -resume "$TMP/c.ck" -history_csv "$TMP/split.csv"
+run pgd_direct -flow_type pgd
+run pgd -flow_type pgd -flow_points_stages 10 -flow_max_it 40
 python3 - "$TMP" <<'PY'
 import csv, json, re, sys
 d = sys.argv[1]
-S = {k: json.load(open('%s/%s.json' % (d, k))) for k in ('direct', 'staged', 'part', 'resumed')}
+S = {k: json.load(open('%s/%s.json' % (d, k))) for k in ('direct', 'staged', 'part', 'resumed', 'pgd_direct', 'pgd')}
 log = {k: open('%s/%s.log' % (d, k)).read() for k in S}
 X = [[float(t) for t in l.split()[1:4]] for l in open(d + '/staged.obj') if l.startswith('v ')]
 miss = max(abs(X[int(p[0])][c] - float(p[1 + c])) for p in (l.split() for l in open(d + '/p.txt')) for c in range(3))
@@ -38,6 +43,8 @@ cols = {'energy': 1.0, 'conformal_violation': 1e-6, 'constraint_violation': 1e-6
 hd = max(rel(float(r[k]), float(q[k]), f) for r, q in zip(ha, hb) for k, f in cols.items())
 checks = [
   ("direct: not converged", not conv(S['direct']), (S['direct']['stop_reason'], S['direct']['iterations'])),
+  ("pgd direct: not converged", not conv(S['pgd_direct']), (S['pgd_direct']['stop_reason'], S['pgd_direct']['iterations'])),
+  ("pgd staged: goes on to max_it, stages ended", S['pgd']['stop_reason'] == 'max_it' and len(re.findall(r'point stage \d+ of 10 converged', log['pgd'])) >= 2, (S['pgd']['stop_reason'], len(re.findall(r'point stage \d+ of 10 converged', log['pgd'])))),
   ("staged: converged", conv(S['staged']), (S['staged']['stop_reason'], S['staged']['iterations'], S['staged']['willmore'])),
   ("staged: the points met to 1e-10 of the file's targets", miss < 1e-10, miss),
   ("staged: class kept to 1e-10", S['staged']['conformal_violation'] < 1e-10, S['staged']['conformal_violation']),

@@ -107,6 +107,18 @@ static PetscReal FileViolation(CSWillmoreFlow F)
   return v;
 }
 
+/* A kind whose filter compares energies only (PGD) steps from a state on the constraint set: x is projected onto the
+   new targets (a stage's move is small, so PGD's projection converges where it fails from the far start). */
+static PetscErrorCode StartFeasible(CSWillmoreFlow F)
+{
+  PetscBool ok;
+  PetscFunctionBeginUser;
+  if (F->ops.filter != CSWFFilterEnergy) PetscFunctionReturn(0);
+  PetscCall(CSWFProject(F, F->x, &ok, &F->kspits_total));
+  if (!ok) PetscCall(PetscPrintf(F->hdr.comm, "flow: the projection onto the targets of point stage %" PetscInt_FMT " did not converge; the flow goes on from the state as it is (more -%spoints_stages move the targets less per stage)\n", F->pcont.stage, F->hdr.prefix));
+  PetscFunctionReturn(0);
+}
+
 /* After the evaluation at x: the stage ends when converged to its tolerances or after its iterations; *moved when the
    targets moved (the caller evaluates again). */
 PetscErrorCode CSWFPointsContinuationAdvance(CSWillmoreFlow F, PetscBool *moved)
@@ -122,8 +134,11 @@ PetscErrorCode CSWFPointsContinuationAdvance(CSWillmoreFlow F, PetscBool *moved)
   if (!conv && !maxit) PetscFunctionReturn(0);
   PetscCall(PetscPrintf(F->hdr.comm, "flow: point stage %" PetscInt_FMT " of %" PetscInt_FMT " %s at iteration %" PetscInt_FMT ": W %.10g, el_residual_scaled %.3e, violation %.3e; the targets move to %g of the way from the input\n", pc->stage, pc->stages, conv ? "converged" : "ended (-points_stage_max_it)", F->it, (double)F->E, (double)F->els, (double)v, (double)(pc->stage + 1) / (double)pc->stages));
   pc->stage++;
-  pc->it0 = F->it;
-  *moved  = PETSC_TRUE;
+  pc->it0     = F->it;
+  F->els_min  = -1; /* the drift test's reference restarts with the new targets (an earlier stage's is no reference) */
+  F->drift_risen = 0;
+  *moved      = PETSC_TRUE;
+  PetscCall(StartFeasible(F));
   PetscFunctionReturn(0);
 }
 
