@@ -7,8 +7,8 @@
    the rows' Jacobian unchanged. A stage ends when el_residual_scaled < -points_stage_rtol and the violation <
    -points_stage_ctol, or after -points_stage_max_it iterations; the last (k = K) is the run itself, stopped by the
    flow's own rule. While k < K the flow neither converges nor stops as stationary or drifting, and keeps no best
-   state (willmore_solve.c, willmore_stop.c): those states meet other targets. The stage is stored in checkpoints
-   (willmore_state.c). */
+   state (willmore_solve.c, willmore_stop.c): those states meet other targets. PGD begins each stage with its
+   projection onto the new targets (StartFeasible). The stage is stored in checkpoints (willmore_state.c). */
 #include "willmore_impl.h"
 #include "cs_util.h"
 
