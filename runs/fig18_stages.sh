@@ -4,7 +4,8 @@
 # (1.075, 0.1, 0) and at the file's (1.15, 0.15, 0). Without the continuation the start is off the points by 0.1 / 0.15
 # (2-3 edges at level 5) and CGD stalls at the first iterations (docs/willmore_flow.md "Fig. 18"). Each run from the
 # sphere, measured by runs/fig18_spike.py. Writes runs/fig18_stages.md. About 20 min serial under load.
-#   bash runs/fig18_stages.sh            (after make; LEVELS="4" for a quicker look, K=20 the stages)
+#   bash runs/fig18_stages.sh            (after make; LEVELS="4" for a quicker look, K=20 the stages, BIG=1 the
+#                                         point at (1.3, 0.4, 0) on level 5 with K = 80 too)
 set -uo pipefail
 cd "$(dirname "$0")/.."
 tmp=$(mktemp -d)
@@ -40,4 +41,6 @@ for L in ${LEVELS:-4 5}; do
     for k in 0 "$K"; do run "L${L}_${xy/,/_}_K$k" "$L" "${xy%,*}" "${xy#*,}" "$k"; done
   done
 done
+# the large move on level 5 (BIG=1; about 18 min more): stages of 0.4 / 80 = 0.005
+if [ "${BIG:-0}" = 1 ]; then run "L5_1.3_0.4_K80" 5 1.3 0.4 80; fi
 echo "wrote $out"
