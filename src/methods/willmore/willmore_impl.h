@@ -134,6 +134,23 @@ struct _CSWillmoreFlowOps {
   PetscErrorCode (*set_state)(CSWillmoreFlow, const PetscReal ck[]);
 };
 
+/* the continuation of the point targets (willmore_points_continuation.c, -flow_points_stages) */
+typedef struct {
+  PetscInt   stages;     /* -points_stages K (0: off) */
+  PetscReal  rtol, ctol; /* a stage ends when el_residual_scaled < rtol and the violation < ctol ... */
+  PetscInt   max_it;     /* ... or after this many iterations (0: no limit) */
+  PetscInt   stage, it0; /* the stage k in 1..K (targets k/K of the way from the input) and its first iteration */
+  PetscReal *c0;         /* the point rows at the input, c(x0) (the staged constraint's) */
+  PetscInt   k, off;     /* their count and place among the global rows */
+} CSWFPointsContinuation;
+static inline PetscBool CSWFPointsFinal(const CSWFPointsContinuation *pc)
+{
+  return (PetscBool)(pc->stage >= pc->stages);
+}
+static inline PetscReal CSWFPointsFraction(const CSWFPointsContinuation *pc)
+{
+  return pc->stages ? (PetscReal)pc->stage / (PetscReal)pc->stages : 1;
+}
 #define CS_WF_STAT_MAX                64 /* largest -flow_stationary_window (its values are stored in checkpoints) */
 #define CS_WF_STAT_NREAL              (6 + 2 * (CS_WF_STAT_MAX + 1)) /* checkpoint scalars of the window and of the drift test */
 
@@ -246,6 +263,7 @@ struct _p_CSWillmoreFlow {
   PetscInt              last_it;
   PetscBool             best_used;
   Vec                   last_x;               /* the last state's variables once the best replaced them (written beside -o) */
+  CSWFPointsContinuation pcont;               /* -points_stages (willmore_points_continuation.c) */
 };
 
 /* A kind with its own variables (ops.setup_problem: trianglefield's triangle field), not vertex positions: the shared
@@ -308,6 +326,15 @@ PETSC_INTERN PetscErrorCode CSWFStopDestroy(CSWillmoreFlow F);
 /* willmore_setup.c */
 PETSC_INTERN PetscErrorCode CSWFSetUpBoundary(CSWillmoreFlow F);
 PETSC_INTERN PetscErrorCode CSWFSetUpConstraints(CSWillmoreFlow F);
+/* willmore_points_continuation.c */
+#define CS_WF_POINTS_NREAL 3 /* checkpoint scalars of the point stages */
+PETSC_INTERN PetscErrorCode CSWFPointsContinuationOptions(CSWillmoreFlow F, PetscOptionItems *PetscOptionsObject);
+PETSC_INTERN PetscErrorCode CSWFPointsContinuationCheck(CSWillmoreFlow F);
+PETSC_INTERN PetscErrorCode CSWFPointsContinuationWrap(CSWillmoreFlow F, CSGlobalConstraint *g);
+PETSC_INTERN PetscErrorCode CSWFPointsContinuationAdvance(CSWillmoreFlow F, PetscBool *moved);
+PETSC_INTERN PetscErrorCode CSWFPointsContinuationReport(CSWillmoreFlow F);
+PETSC_INTERN void           CSWFPointsContinuationGetState(CSWillmoreFlow F, PetscReal ck[]);
+PETSC_INTERN PetscErrorCode CSWFPointsContinuationSetState(CSWillmoreFlow F, PetscInt it, const PetscReal ck[]);
 /* willmore_constraints.c */
 PETSC_INTERN PetscErrorCode CSWFAddConstraint(CSWillmoreFlow F, CSGlobalConstraint g);
 PETSC_INTERN PetscErrorCode CSWFSetUpAddedConstraints(CSWillmoreFlow F);

@@ -170,6 +170,7 @@ static PetscErrorCode CheckOptions(CSWillmoreFlow F)
   PetscCheck(!F->boundary_set || F->boundary != CS_FLOW_BOUNDARY_NORMALS || F->conformal, F->hdr.comm, PETSC_ERR_ARG_INCOMP, "-%sboundary normals needs the conformal constraint (cgd or pgd)", p);
   /* the step-geometry check and the fold guard measure vertex positions; a triangle field's variables are not */
   PetscCheck(!CSWFOwnVariables(F) || (F->max_step == 0 && !F->fold_guard), F->hdr.comm, PETSC_ERR_SUP, "-%smax_step and -%sfold_guard work on vertex positions, not on -%stype %s (its reconstruction is guarded by -%smax_area_ratio)", p, p, p, F->type, p);
+  PetscCall(CSWFPointsContinuationCheck(F));
   if (F->ops.setup) PetscCall((*F->ops.setup)(F));
   PetscFunctionReturn(0);
 }
@@ -190,6 +191,7 @@ PetscErrorCode CSWillmoreFlowSetFromOptions(CSWillmoreFlow F)
   PetscCall(StepOptions(F, PetscOptionsObject));
   PetscCall(CSWFStopOptions(F, PetscOptionsObject));
   PetscCall(ProblemOptions(F, energies, PetscOptionsObject));
+  PetscCall(CSWFPointsContinuationOptions(F, PetscOptionsObject));
   PetscCall(ConstraintAddRead(F, added, &nadded, PetscOptionsObject));
   if (F->ops.setfromoptions) PetscCall((*F->ops.setfromoptions)(F, PetscOptionsObject));
   PetscOptionsEnd();

@@ -62,6 +62,7 @@ PetscErrorCode CSWFSetUpConstraints(CSWillmoreFlow F)
   PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%sconstraint_points", F->hdr.prefix));
   if (F->points[0]) {
     PetscCall(CSConstraintCreatePointsFromFile(m, opt, F->points, &g));
+    PetscCall(CSWFPointsContinuationWrap(F, &g)); /* -points_stages: the targets moved in stages */
     PetscCall(CSWFAddConstraint(F, g));
   }
   /* Moebius balancing on request: not the default, its 3 dense rows cost 3 more solves per step

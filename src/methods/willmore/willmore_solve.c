@@ -146,6 +146,11 @@ PetscErrorCode CSWillmoreFlowStep(CSWillmoreFlow F, CSWillmoreFlowConvergedReaso
      series and the progress line show the state the flow returns; a NaN state is left to the check below */
   if (!F->reason && F->E == F->E && F->el == F->el) PetscCall(CSWFCheckResolution(F, &F->reason));
   if (F->reason == CS_WILLMORE_FLOW_DIVERGED_MESH_DEGENERATE) PetscCall(ProjectAtStop(F));
+  if (!F->reason && F->E == F->E && F->el == F->el) { /* -points_stages: the next stage's targets once this one is done */
+    PetscBool moved;
+    PetscCall(CSWFPointsContinuationAdvance(F, &moved));
+    if (moved) PetscCall(Evaluate(F));
+  }
   /* the window and the kept best state before the monitors: a checkpoint written by them stores the window */
   PetscCall(CSWFTrackStationarity(F));
   PetscCall(CSWFTrackBest(F));
@@ -153,9 +158,12 @@ PetscErrorCode CSWillmoreFlowStep(CSWillmoreFlow F, CSWillmoreFlowConvergedReaso
   /* at the first state no step was taken yet: a smaller t cannot help, the start itself is degenerate */
   PetscCheck(F->E == F->E && F->el == F->el, F->hdr.comm, PETSC_ERR_FP, "flow: the energy or the residual is not a number at iteration %" PetscInt_FMT " (degenerate triangles?); %s%s%s", F->it, F->it == 0 && !F->resumed ? "the start state is degenerate: check the input mesh (or the initial field, -" : "try a smaller -", F->hdr.prefix, F->it == 0 && !F->resumed ? "init*)" : "t");
   /* -rtol tests el_residual_scaled (or el_residual with -el_norm absolute; willmore_stop.c) */
-  if (!F->reason && CSWFStopResidual(F) < F->rtol && PetscMax(F->conf, F->glob) < F->ctol) F->reason = CS_WILLMORE_FLOW_CONVERGED_RTOL;
-  if (!F->reason) PetscCall(CSWFCheckStationary(F, &F->reason));
-  if (!F->reason) PetscCall(CSWFCheckDrift(F, &F->reason));
+  /* before the last point stage the state meets other targets: it neither converges nor is stationary or drifting */
+  if (!F->reason && CSWFPointsFinal(&F->pcont)) {
+    if (CSWFStopResidual(F) < F->rtol && PetscMax(F->conf, F->glob) < F->ctol) F->reason = CS_WILLMORE_FLOW_CONVERGED_RTOL;
+    if (!F->reason) PetscCall(CSWFCheckStationary(F, &F->reason));
+    if (!F->reason) PetscCall(CSWFCheckDrift(F, &F->reason));
+  }
   if (!F->reason && F->energy_target_set && F->E <= F->energy_target) {
     PetscCall(PetscPrintf(F->hdr.comm, "flow: the energy %.10g reached -%senergy_target %.10g at iteration %" PetscInt_FMT "\n", (double)F->E, F->hdr.prefix, (double)F->energy_target, F->it));
     F->reason = CS_WILLMORE_FLOW_CONVERGED_ENERGY_TARGET;
@@ -183,6 +191,7 @@ PetscErrorCode CSWillmoreFlowStep(CSWillmoreFlow F, CSWillmoreFlowConvergedReaso
     PetscCall((*F->ops.grow)(F));
     F->it++;
   }
+  PetscCall(CSWFPointsContinuationReport(F)); /* a stop before the last point stage says so */
   PetscCall(PetscLogEventEnd(CS_EVENT_WillmoreStep, 0, 0, 0, 0));
   *reason = F->reason;
   PetscFunctionReturn(0);

@@ -2,7 +2,8 @@
    own, trianglefield_state.c): [flow kind, t, t_mu, rejections, KSP its in total, KSP its of the last step, edges
    with guarded I_Q weight, seconds, the kind's switch (ops.get_switch: whether CGD's -t_mu_final fired), the step
    model's last accepted t and the violation it added (willmore_step_model.c), nu_1..nu_k, the stationarity window and the drift test's smallest residual
-   (willmore_stop.c), the kind's own scalars]. The kept best state (-flow_keep_best) is not stored: a resumed run keeps the best
+   (willmore_stop.c), the point stage (willmore_points_continuation.c: a checkpoint written before it was stored is
+   refused by its count of scalars), the kind's own scalars]. The kept best state (-flow_keep_best) is not stored: a resumed run keeps the best
    of its own iterations. The rest (g, c, X, metric, residual) is
    recomputed from x at the top of the loop, so a resumed run continues exactly like the uninterrupted one. */
 #include "willmore_impl.h"
@@ -13,7 +14,7 @@ PetscErrorCode CSWillmoreFlowGetStateSize(CSWillmoreFlow F, PetscInt *nreal)
 {
   PetscFunctionBeginUser;
   PetscCheck(F->setupcalled, F->hdr.comm, PETSC_ERR_ORDER, "CSWillmoreFlowGetStateSize before CSWillmoreFlowSetUp");
-  *nreal = FLOW_CK_NREAL + F->k + CS_WF_STAT_NREAL + F->ops.state_nreal;
+  *nreal = FLOW_CK_NREAL + F->k + CS_WF_STAT_NREAL + CS_WF_POINTS_NREAL + F->ops.state_nreal;
   PetscFunctionReturn(0);
 }
 
@@ -58,9 +59,10 @@ PetscErrorCode CSWillmoreFlowGetState(CSWillmoreFlow F, PetscReal ck[], CSCheckp
     ck[10] = F->step_dacc;
     for (PetscInt j = 0; j < F->k; j++) ck[FLOW_CK_NREAL + j] = F->nu[j];
     CSWFStationaryGetState(F, ck + FLOW_CK_NREAL + F->k);
+    CSWFPointsContinuationGetState(F, ck + FLOW_CK_NREAL + F->k + CS_WF_STAT_NREAL);
   }
   if (F->ops.get_state) { /* a kind with its own variables packs them (and its scalars after the flow's) */
-    PetscCall((*F->ops.get_state)(F, ck ? ck + FLOW_CK_NREAL + F->k + CS_WF_STAT_NREAL : NULL, v));
+    PetscCall((*F->ops.get_state)(F, ck ? ck + FLOW_CK_NREAL + F->k + CS_WF_STAT_NREAL + CS_WF_POINTS_NREAL : NULL, v));
     PetscFunctionReturn(0);
   }
   v->x    = F->x;
@@ -107,9 +109,10 @@ PetscErrorCode CSWillmoreFlowSetState(CSWillmoreFlow F, PetscInt it, const Petsc
   F->t0          -= ck[7]; /* the seconds column of the history continues */
   for (PetscInt j = 0; j < F->k; j++) F->nu[j] = ck[FLOW_CK_NREAL + j];
   CSWFStationarySetState(F, ck + FLOW_CK_NREAL + F->k);
+  PetscCall(CSWFPointsContinuationSetState(F, it, ck + FLOW_CK_NREAL + F->k + CS_WF_STAT_NREAL));
   if (F->ops.set_switch) PetscCall((*F->ops.set_switch)(F, (PetscBool)(ck[8] != 0))); /* CGD: the -t_mu_final switch had fired */
   F->it      = it;
   F->resumed = PETSC_TRUE;
-  if (F->ops.set_state) PetscCall((*F->ops.set_state)(F, ck + FLOW_CK_NREAL + F->k + CS_WF_STAT_NREAL)); /* may override the above */
+  if (F->ops.set_state) PetscCall((*F->ops.set_state)(F, ck + FLOW_CK_NREAL + F->k + CS_WF_STAT_NREAL + CS_WF_POINTS_NREAL)); /* may override the above */
   PetscFunctionReturn(0);
 }

@@ -207,6 +207,7 @@ PetscErrorCode CSWFTrackBest(CSWillmoreFlow F)
   PetscFunctionBeginUser;
   if (F->keep_best == CS_FLOW_KEEP_BEST_NONE || PetscIsInfOrNanReal(F->els) || PetscIsInfOrNanReal(F->E)) PetscFunctionReturn(0);
   if (F->it == 0 && !F->resumed) PetscFunctionReturn(0); /* the input is no candidate: -o writes a state the flow computed */
+  if (!CSWFPointsFinal(&F->pcont)) PetscFunctionReturn(0); /* a point stage's state meets other targets */
   if (!(PetscMax(F->conf, F->glob) <= F->ctol) || (F->best_it >= 0 && !(F->els < F->best_els))) PetscFunctionReturn(0);
   if (!F->best_x) PetscCall(VecDuplicate(F->x, &F->best_x));
   PetscCall(VecCopy(F->x, F->best_x));
