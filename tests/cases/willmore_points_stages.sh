@@ -12,7 +12,7 @@
 #   stage end it reports is that stage's) and its history rows agree with the straight run's (W, violations, t to
 #   1e-8); a resume with another K is refused by name.
 # Bad values and combinations: one clear line, non-zero exit on every rank.
-# Cost: 6 s serial, 31 s on 2 ranks (under load 6-7; 194 + 30 + 30 iterations: the convergence and the exact resume
+# Cost: 6 s serial, 31 s on 2 ranks before PGD and all but one refusal became serial-only (under load 6-7; 194 + 30 + 30 iterations: the convergence and the exact resume
 # need them). -flow_factor_reuse_its 0 in every run: a resumed run starts with a new factorisation where the straight
 # run may keep an earlier one, and the kept factors moved the history by 5e-7 (docs of tests/cases/flow_resume.sh).
 # nprocs: 1 2
@@ -24,12 +24,16 @@ run direct
 run staged -flow_points_stages 10 -o "$TMP/staged.obj" -history_csv "$TMP/staged.csv"
 run part -flow_points_stages 10 -flow_max_it 30 -checkpoint "$TMP/c.ck" -history_csv "$TMP/split.csv"
 run resumed -flow_points_stages 10 -flow_max_it 60 -resume "$TMP/c.ck" -history_csv "$TMP/split.csv"
-run pgd_direct -flow_type pgd
-run pgd -flow_type pgd -flow_points_stages 10 -flow_max_it 40
+# PGD and most refusals serially only (the suite's budget): the 2-rank run keeps the staged CGD, the resume and one refusal
+if [ "$NP" = 1 ]; then
+  run pgd_direct -flow_type pgd
+  run pgd -flow_type pgd -flow_points_stages 10 -flow_max_it 40
+fi
 python3 - "$TMP" <<'PY'
 import csv, json, re, sys
 d = sys.argv[1]
-S = {k: json.load(open('%s/%s.json' % (d, k))) for k in ('direct', 'staged', 'part', 'resumed', 'pgd_direct', 'pgd')}
+import os
+S = {k: json.load(open('%s/%s.json' % (d, k))) for k in ('direct', 'staged', 'part', 'resumed', 'pgd_direct', 'pgd') if os.path.exists('%s/%s.json' % (d, k))}
 log = {k: open('%s/%s.log' % (d, k)).read() for k in S}
 X = [[float(t) for t in l.split()[1:4]] for l in open(d + '/staged.obj') if l.startswith('v ')]
 miss = max(abs(X[int(p[0])][c] - float(p[1 + c])) for p in (l.split() for l in open(d + '/p.txt')) for c in range(3))
@@ -43,8 +47,6 @@ cols = {'energy': 1.0, 'conformal_violation': 1e-6, 'constraint_violation': 1e-6
 hd = max(rel(float(r[k]), float(q[k]), f) for r, q in zip(ha, hb) for k, f in cols.items())
 checks = [
   ("direct: not converged", not conv(S['direct']), (S['direct']['stop_reason'], S['direct']['iterations'])),
-  ("pgd direct: not converged", not conv(S['pgd_direct']), (S['pgd_direct']['stop_reason'], S['pgd_direct']['iterations'])),
-  ("pgd staged: goes on to max_it, stages ended", S['pgd']['stop_reason'] == 'max_it' and len(re.findall(r'point stage \d+ of 10 converged', log['pgd'])) >= 2, (S['pgd']['stop_reason'], len(re.findall(r'point stage \d+ of 10 converged', log['pgd'])))),
   ("staged: converged", conv(S['staged']), (S['staged']['stop_reason'], S['staged']['iterations'], S['staged']['willmore'])),
   ("staged: the points met to 1e-10 of the file's targets", miss < 1e-10, miss),
   ("staged: class kept to 1e-10", S['staged']['conformal_violation'] < 1e-10, S['staged']['conformal_violation']),
@@ -53,6 +55,11 @@ checks = [
   ("resumed: continues that stage", stop is not None and first is not None and first.group(1) == stop.group(1), first and first.group(0)),
   ("resumed: history rows 0..60 agree with the straight run's (max rel %.1e <= 1e-8)" % hd, [r['it'] for r in hb] == [str(i) for i in range(61)] and hd <= 1e-8, len(hb)),
 ]
+if 'pgd' in S:
+  checks += [
+    ("pgd direct: not converged", not conv(S['pgd_direct']), (S['pgd_direct']['stop_reason'], S['pgd_direct']['iterations'])),
+    ("pgd staged: goes on to max_it, stages ended", S['pgd']['stop_reason'] == 'max_it' and len(re.findall(r'point stage \d+ of 10 converged', log['pgd'])) >= 2, (S['pgd']['stop_reason'], len(re.findall(r'point stage \d+ of 10 converged', log['pgd'])))),
+  ]
 bad = 0
 for name, good, v in checks:
     print(("ok  " if good else "BAD ") + name + ": " + repr(v)); bad += not good
@@ -60,6 +67,7 @@ sys.exit(bad)
 PY
 C="$G -flow_constraint_points $TMP/p.txt"
 EXPECT="-resume: the checkpoint was written with -flow_points_stages 10, this run has 20" expect_fail timeout 30 $MPIEXEC "$CS_BIN" $C -flow_points_stages 20 -resume "$TMP/c.ck"
+[ "$NP" = 1 ] || exit 0
 EXPECT="-resume: the checkpoint was written with -flow_points_stages 10, this run has 0" expect_fail timeout 30 $MPIEXEC "$CS_BIN" $C -resume "$TMP/c.ck"
 EXPECT="-flow_points_stages -2: use 0 \(off\) or a count of stages" expect_fail timeout 30 $MPIEXEC "$CS_BIN" $C -flow_points_stages -2
 EXPECT="-flow_points_stages" expect_fail timeout 30 $MPIEXEC "$CS_BIN" $C -flow_points_stages ten
