@@ -8,7 +8,8 @@
 # 1. Newton on the KKT system (-flow_type newton -flow_conformal) from the homogeneous torus of B_START (-gen lattice,
 #    tau = i / b) with the n-wave WAVE (-gen_deform_nfold N,WAVE). B_START must lie just above the grid's discrete
 #    branch point of the n-lobe mode (runs/fig17_mode_history.py: where a small wave grows under cgd), or Newton lands
-#    on the homogeneous torus.
+#    on the homogeneous torus. WAVE may instead name an OBJ on the GRID_N x GRID_M grid (vertex (i, j) = i GRID_M + j),
+#    e.g. a lobed torus of another grid moved by runs/fig17_regrid.py: Newton then starts from it in the class B_START.
 # 2. At each b = B_START + k STEP up to B_END: Newton from the previous result in the new class (runs/fig17_lengths.py
 #    writes the class as edge lengths; -mesh_lengths). Small steps keep it on the lobed branch (n = 4: a step of 0.1
 #    from 3.9 lands on the homogeneous torus).
@@ -46,8 +47,13 @@ homogeneous() {
   /usr/bin/python3 -c "import json; s = json.load(open('$d/homogeneous_$1.json')); print('homogeneous torus, b $1 (cgd): W %.10f, %s, EL_scaled %.1e' % (s['willmore'], s['stop_reason'], s['el_residual_scaled']))"
 }
 status=0 b=$b0 r=$d/b$b0
-nice -n 10 timeout 600 bin/confsurf "${base[@]}" -gen lattice -gen_tau 0,$(tau $b) -gen_n $N -gen_m $M -gen_deform_nfold $n,$wave \
-  -summary $r.json -o $r.obj > $r.log 2>&1 || true
+if [ -f "$wave" ]; then
+  /usr/bin/python3 runs/fig17_lengths.py $N $M 0,$(tau $b) "$wave" $r.len
+  start=(-mesh "$wave" -mesh_lengths $r.len)
+else
+  start=(-gen lattice -gen_tau 0,$(tau $b) -gen_n $N -gen_m $M -gen_deform_nfold $n,$wave)
+fi
+nice -n 10 timeout 600 bin/confsurf "${base[@]}" "${start[@]}" -summary $r.json -o $r.obj > $r.log 2>&1 || true
 if report $r $b; then
   for b in $(/usr/bin/python3 -c "import numpy as np; print(' '.join('%.4g' % x for x in np.arange($b0 + $step, $end + 1e-9, $step)))"); do
     prev=$r r=$d/b$b
@@ -56,7 +62,7 @@ if report $r $b; then
     report $r $b || { echo "stopped: b $b is not a converged, $n-fold symmetric, lobed torus"; status=1; break; }
   done
 else
-  echo "stopped: the start b $b0 (wave $wave) is not a converged, $n-fold symmetric, lobed torus"; status=1
+  echo "stopped: the start b $b0 (from $wave) is not a converged, $n-fold symmetric, lobed torus"; status=1
 fi
 homogeneous $b0
 [ "$b" = "$b0" ] || homogeneous $b
