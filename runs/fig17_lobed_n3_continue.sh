@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # soliman2021 Fig. 17 (issue 39): the 3-lobed critical tori continued in the class b up to 3.2, the class of
 # options/cgd_fig17_n3.opts (above the smooth branch point sqrt 8 = 2.828):
-#   bash runs/fig17_lobed_n3_continue.sh   (serially ~10 min under load)
+#   bash runs/fig17_lobed_n3_continue.sh   (serially 4-10 min under load)
 # 1. On 96 x 30 (b = 3.2 gives near-square triangles): Newton from the homogeneous torus of b = 2.85 with the 3-wave
 #    0.25 (the grid's discrete branch point is 2.79, by runs/fig17_mode_history.py), continued in steps of 0.025 to 3.15.
 #    Beyond it 96 x 30 stalls (3.175 from 3.15; 3.18 from 3.17): the necks are squeezed (face areas spread 230).
