@@ -6,10 +6,10 @@
 # axis is tilted from z by round-off, 2e-10 rad, and the error about z is up to 2e-9) but not a torus of revolution: its 4-lobe amplitude
 # |sum rho e^{-4 i phi}| / sum rho over the vertices > 0.05 (measured 0.135; the homogeneous torus has 0 on a 4-fold
 # grid) and its 48-fold error > 1e-2 (0.074); W below the homogeneous torus of the class (37.4924 < 37.5064, cgd from
-# no wave: a different critical point, below it as past a supercritical branch point). Serial only: the 2-rank KKT
-# solve is covered by willmore_newton_kkt, and this grid is the coarsest one measured with a lobed torus (docs/
-# triangle_fields.md "Fig. 17"; 32 x 8 at b = 3.25, 3.3 gave none).
-# nprocs: 1
+# no wave: a different critical point, below it as past a supercritical branch point). On 1 and 2 ranks (2 s and
+# 2.8 s quiet; the 2-rank result: 18 iterations, 4-fold error 1.3e-14, the same W). This grid is the coarsest one measured
+# with a lobed torus (docs/triangle_fields.md "Fig. 17"; 32 x 8 at b = 3.25, 3.3 gave none).
+# nprocs: 1 2
 source tests/lib.sh
 run() { local n=$1; shift; timeout 120 $MPIEXEC "$CS_BIN" "$@" -summary "$TMP/$n.json" -o "$TMP/$n.obj" > "$TMP/$n.log" 2>&1 || { echo "BAD: $n exit $?"; tail "$TMP/$n.log"; exit 1; }; }
 run lobed -options_file options/newton_fig17_lobed_n4.opts -history_csv "$TMP/h.csv"
