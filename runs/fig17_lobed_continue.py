@@ -17,6 +17,8 @@ EL_scaled 1e-6 or 20 iterations: its tail is linear, a saddle above the branch p
 Results: OUTDIR/b<b>.{obj,json,log}. Needs numpy. Numbers: docs/triangle_fields.md "Fig. 17"."""
 import json, os, subprocess, sys
 import numpy as np
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'scripts'))
+import objio  # noqa: E402
 from fig17_regrid import resample  # runs/fig17_regrid.py: the one trigonometric interpolant of a lattice grid
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -26,15 +28,15 @@ NEWTON = ['-task', 'flow', '-flow_type', 'newton', '-flow_conformal', '-flow_con
 
 
 def read_obj(path):
-    lines = open(path).read().splitlines()
-    v = np.array([list(map(float, l.split()[1:4])) for l in lines if l.startswith('v ')])
-    return v, ['f ' + ' '.join(t.split('/')[0] for t in l.split()[1:]) for l in lines if l.startswith('f ')]
+    """vertices as an array and faces as 0-based index lists (scripts/objio.py, the project's OBJ reader)"""
+    v, f = objio.read_obj(path)
+    return np.array(v), f
 
 
 def write_obj(path, v, faces):
     with open(path, 'w') as f:
         f.write(''.join('v %.17g %.17g %.17g\n' % tuple(p) for p in v))
-        f.write('\n'.join(faces) + '\n')
+        f.write(''.join('f %d %d %d\n' % (a + 1, b + 1, c + 1) for a, b, c in faces))
 
 
 def unit(v):
