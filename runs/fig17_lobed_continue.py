@@ -19,6 +19,7 @@ import json, os, subprocess, sys
 import numpy as np
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'scripts'))
 import objio  # noqa: E402
+from fig17_modes import ring_amplitudes  # noqa: E402
 from fig17_regrid import resample  # runs/fig17_regrid.py: the one trigonometric interpolant of a lattice grid
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -55,11 +56,8 @@ def lattice_faces(n, m, start, grid):
 
 def lobes(v, n, m):
     """(largest |rho_2|/rho_0 over the rings, 2-fold error by index over the RMS radius) about the principal axis."""
-    x = v - v.mean(0)
-    w, u = np.linalg.eigh((x * x).sum() * np.eye(3) - x.T @ x)
-    x = x @ u[:, ::-1][:, [1, 2, 0]]  # the axis of the largest moment -> z
-    rho, phi = np.hypot(x[:, 0], x[:, 1]), np.arctan2(x[:, 1], x[:, 0])
-    amp = max(abs((rho[j::m] * np.exp(-2j * phi[j::m])).mean()) / rho[j::m].mean() for j in range(m))
+    amps, x = ring_amplitudes(v, m, 2)  # runs/fig17_modes.py
+    amp = amps[2]
     g = x.reshape(n, m, 3)
     rot = g * np.array([-1.0, -1.0, 1.0])  # rotation by pi about z
     err = np.sqrt(((rot - np.roll(g, -n // 2, axis=0)) ** 2).sum(2)).max() / np.sqrt((x * x).sum(1).mean())
